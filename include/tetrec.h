@@ -1,0 +1,99 @@
+/* tetrec: exact conformal boundary recovery for 3D Delaunay tetrahedralization.
+ *
+ * Public C API. Everything the `tetrec` command does is reachable from here, so a
+ * program that embeds tetrec needs no CLI.
+ *
+ * Conventions, stated once for the whole library:
+ *  - A tetrahedron (v0,v1,v2,v3) is positively oriented iff v3 lies on the side of the
+ *    plane v0v1v2 into which the right-hand normal (v1-v0)x(v2-v0) points, i.e.
+ *    det[v1-v0; v2-v0; v3-v0] > 0. This is the seed paper's hypothesis 2 and CGAL's
+ *    orientation(); it is the opposite sign of Shewchuk's orient3d.
+ *  - Every tetrahedron tetrec writes is positively oriented.
+ *  - Input surface triangles are oriented with right-hand normals pointing out of the
+ *    domain (tetrec repairs inconsistent orientation and reports it).
+ *  - Indices are 0-based in the API; file formats use their own base.
+ *
+ * Every fallible function returns a tr_status; on failure tr_last_error() holds a
+ * message that says what is wrong and where (file, line, element).
+ */
+#ifndef TETREC_H
+#define TETREC_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define TETREC_VERSION_STRING "0.1.0"
+
+typedef enum tr_status {
+  TR_OK = 0,
+  TR_ERR_USAGE = 1,          /* bad arguments or options */
+  TR_ERR_IO = 2,             /* a file could not be opened, read or written */
+  TR_ERR_PARSE = 3,          /* malformed, truncated or unsupported file content */
+  TR_ERR_INPUT = 4,          /* well-formed file, invalid geometry (NaN, bad index, ...) */
+  TR_ERR_DEGENERATE = 5,     /* the point set spans less than 3D */
+  TR_ERR_OPEN = 6,           /* open or non-manifold surface */
+  TR_ERR_SELF_INTERSECT = 7, /* two input elements intersect improperly */
+  TR_ERR_NOMEM = 8,          /* allocation failed or a size limit was exceeded */
+  TR_ERR_INVALID_MESH = 9,   /* the validator found a violated property */
+  TR_ERR_INTERNAL = 10,      /* a bug in tetrec: please report it with the input */
+  TR_ERR_UNSUPPORTED = 11    /* a feature not implemented yet */
+} tr_status;
+
+/* A stable short name ("TR_ERR_PARSE") for a status. */
+const char *tr_status_name(tr_status s);
+/* The detailed message of the last failure in the calling thread ("" if none). */
+const char *tr_last_error(void);
+
+/* ---- input: a piecewise linear complex (points + triangles + segments) ---- */
+typedef struct tr_plc tr_plc;
+
+tr_status tr_plc_create(tr_plc **out);
+void tr_plc_destroy(tr_plc *plc);
+/* Copies the arrays. xyz: 3*npoints doubles; tris: 3*ntris indices; markers may be NULL. */
+tr_status tr_plc_set(tr_plc *plc, const double *xyz, uint32_t npoints, const uint32_t *tris,
+                     uint32_t ntris, const int32_t *markers);
+/* Reads a surface; the format is chosen from the extension (.off .stl .obj .ply .mesh
+ * .node .poly .smesh). Polygons are triangulated exactly in their plane. */
+tr_status tr_plc_read(const char *path, tr_plc **out);
+uint32_t tr_plc_num_points(const tr_plc *plc);
+uint32_t tr_plc_num_triangles(const tr_plc *plc);
+const double *tr_plc_points(const tr_plc *plc);
+const uint32_t *tr_plc_triangles(const tr_plc *plc);
+
+/* ---- output: a tetrahedral mesh ---- */
+typedef struct tr_mesh tr_mesh;
+
+void tr_mesh_destroy(tr_mesh *mesh);
+uint32_t tr_mesh_num_vertices(const tr_mesh *mesh);
+uint32_t tr_mesh_num_tets(const tr_mesh *mesh);
+
+/* ---- the whole pipeline ---- */
+typedef struct tr_options {
+  int smooth;      /* surface diagonal swaps before recovery (default 1) */
+  int allow_open;  /* mesh the convex hull, keep facets as constraints (default 0) */
+  int verbose;     /* 0 quiet, 1 normal, 2 chatty; messages go to stderr */
+} tr_options;
+void tr_options_default(tr_options *opt);
+
+/* The rows of the seed paper's Table 14, plus memory. */
+typedef struct tr_stats {
+  uint64_t surface_nodes, surface_facets;
+  uint64_t volume_nodes, volume_elements;
+  uint64_t missing_edges, edges_recovered_by_swap, points_added_for_edges;
+  uint64_t missing_facets, facets_recovered_by_swap, points_added_for_facets;
+  uint64_t surface_swaps, rounding_repairs;
+  double total_seconds, recovery_seconds;
+  uint64_t peak_memory_bytes;
+} tr_stats;
+
+/* Delaunay tetrahedralization of a point set (duplicates merged and reported). */
+tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

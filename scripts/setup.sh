@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs everything tetrec needs to build, test, fuzz and benchmark on Debian 12.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends \
+  build-essential meson ninja-build pkg-config cmake \
+  libgmp-dev libmpfr-dev libcgal-dev \
+  clang libfuzzer-14-dev libclang-rt-14-dev \
+  tetgen libcgal-demo python3 python3-meshio libopenmesh-dev >/dev/null

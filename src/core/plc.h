@@ -1,0 +1,29 @@
+/* The input piecewise linear complex after reading: points, triangles (polygons already
+ * triangulated in their plane), optional segments. Readers fill it; input/ validates it;
+ * the pipeline consumes it. */
+#ifndef TR_CORE_PLC_H
+#define TR_CORE_PLC_H
+
+#include <stdint.h>
+
+#include "tetrec.h"
+
+struct tr_plc {
+  uint32_t npoints;
+  double *xyz;           /* 3 * npoints */
+  uint32_t ntris;
+  uint32_t *tris;        /* 3 * ntris, 0-based */
+  int32_t *tri_marker;   /* ntris boundary markers (0 when the format has none) */
+  uint32_t *tri_source;  /* ntris: index of the input element (polygon / facet) each
+                            triangle came from, for messages; NULL = identity */
+  uint32_t nsegs;
+  uint32_t *segs;        /* 2 * nsegs, input segments not on any triangle (may be 0) */
+  uint32_t ntets;        /* only Medit/TetGen volume inputs: tets read (for `check`) */
+  uint32_t *tets;        /* 4 * ntets */
+  char *source;          /* file name for messages, or NULL */
+};
+
+/* Frees the arrays and zeroes the struct (not the struct itself). */
+void tr_plc_clear(struct tr_plc *plc);
+
+#endif
