@@ -93,6 +93,28 @@ typedef struct tr_stats {
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported). */
 tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out);
 
+/* ---- I/O, input validation and CLI support (owner: io/input engineer) ---- */
+/* Checks and repairs the input in place: exact duplicate vertices are merged and
+ * duplicate triangles removed, inconsistent orientation is repaired (each closed shell
+ * oriented outward); zero-area triangles (TR_ERR_INPUT), open or non-manifold surfaces
+ * (TR_ERR_OPEN unless opt->allow_open) and improperly intersecting triangles
+ * (TR_ERR_SELF_INTERSECT) are errors naming the elements. opt may be NULL (defaults). */
+tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt);
+/* What the last tr_plc_validate repaired, one line per item ("" if nothing). */
+const char *tr_plc_report(const tr_plc *plc);
+/* Writes the surface (points + triangles + markers) as .mesh, .vtu, .off or TetGen
+ * .node/.face (any other name is a TetGen base name). */
+tr_status tr_plc_write(const tr_plc *plc, const char *path);
+/* Writes a mesh: .mesh (Medit), .vtu (VTK XML), .node/.ele/.face or a TetGen base name
+ * (writes base.node, base.ele, base.face). exact != 0: Steiner points as exact
+ * rationals num/den in the .node file. */
+tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact);
+/* Writes the statistics as one JSON object. */
+tr_status tr_stats_write_json(const tr_stats *stats, const char *path);
+/* The whole pipeline (read -> Delaunay -> recovery -> outer removal). Declared for the
+ * CLI; implemented by the pipeline owner. */
+tr_status tr_mesh_plc(const tr_plc *plc, const tr_options *opt, tr_mesh **out, tr_stats *stats);
+
 #ifdef __cplusplus
 }
 #endif

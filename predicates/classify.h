@@ -17,6 +17,10 @@
 
 #include "qpoint.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum { TR_DEG = 0, TR_NOD = 1, TR_EDG = 2, TR_FAC = 3, TR_INT = 4 };
 
 /* Where an intersection end lies on the segment ab. */
@@ -38,22 +42,52 @@ typedef struct tr_isect {
 } tr_isect;
 
 /* Point p against segment ab: TR_DEG (off), TR_NOD with code 0/1 (at a/b), TR_EDG
- * (interior, code = tr_ecode(0,1)). */
+ * (interior, code = tr_ecode(0,1)). If a == b: NOD 0 when p == a, else DEG.
+ * on_seg is unused (0) in point results. */
 tr_hit tr_classify_point_segment(const tr_point *p, const tr_point *a, const tr_point *b);
 /* Point p against triangle t0t1t2: TR_DEG (off the closed triangle, including off its
- * plane), TR_NOD/TR_EDG/TR_FAC with codes in the triangle. */
+ * plane), TR_NOD/TR_EDG/TR_FAC with codes in the triangle. A degenerate (collinear)
+ * triangle gives TR_DEG for every p. */
 tr_hit tr_classify_point_triangle(const tr_point *p, const tr_point *t0, const tr_point *t1,
                                   const tr_point *t2);
-/* Segment ab against segment cd (codes relative to cd: NOD 0/1, EDG). */
+/* Segment ab against segment cd (codes relative to cd: NOD 0 = c, NOD 1 = d, EDG = the
+ * interior of cd). Cases:
+ *  - not coplanar, parallel and distinct, or apart: n = 0;
+ *  - crossing or touching in one point: n = 1 (T-junctions and shared endpoints
+ *    included; on_seg says whether the point is a, b or inside ab);
+ *  - collinear overlap: n = 2, the overlap's ends ordered from a to b, each end is one
+ *    of a, b, c, d (a NOD when it is c or d, else EDG with on_seg A or B); collinear
+ *    segments touching at one point give n = 1.
+ * A degenerate segment (a == b or c == d) is treated as a point: n = 1 if it lies on the
+ * other segment. */
 tr_isect tr_classify_segment_segment(const tr_point *a, const tr_point *b, const tr_point *c,
                                      const tr_point *d);
-/* Segment ab against the closed triangle t0t1t2 (coplanar overlaps give n == 2). */
+/* Segment ab against the closed triangle t0t1t2. Cases:
+ *  - a and b strictly on one side of the plane: n = 0;
+ *  - transversal (strictly on both sides): n <= 1, the crossing point is FAC 3, EDG on
+ *    an edge or NOD at a vertex, on_seg = TR_SEG_IN;
+ *  - exactly one of a, b in the plane: n <= 1, that endpoint classified in the
+ *    triangle (on_seg A or B);
+ *  - ab in the plane: the overlap of ab with the triangle, n = 0, 1 (touching a vertex or
+ *    an edge from outside, or a == b) or 2 (ordered from a to b; each end NOD/EDG/FAC,
+ *    an end inside ab is where ab crosses the boundary).
+ * A degenerate triangle gives n = 0. */
 tr_isect tr_classify_segment_triangle(const tr_point *a, const tr_point *b,
                                       const tr_point *t0, const tr_point *t1,
                                       const tr_point *t2);
-/* Segment ab against the closed tetrahedron t[0..3] (positively oriented): the part of
- * ab inside it, each end typed NOD/EDG/FAC on the boundary or TR_INT inside. This is
- * the pipel entry/exit classification. */
+/* Segment ab against the closed tetrahedron t[0..3], which must be positively oriented
+ * (tr_orient3d_p(t0,t1,t2,t3) > 0; not checked: a negative tet gives wrong answers):
+ * the part of ab inside it. n = 0: disjoint. n = 1: one common point (the segment
+ * touches a vertex, crosses only an edge (the pipel EDG_DEG case), touches a face from
+ * outside at an endpoint, or a == b inside). n = 2: entry end[0] and exit end[1] in the
+ * order a -> b, each NOD (vertex code), EDG (ECode), FAC (FCode = the face's opposite
+ * vertex) on the boundary, or TR_INT when it is an endpoint a/b strictly inside.
+ * Segments lying in a face plane or along an edge are handled like any other: their
+ * ends are typed by all the faces they lie on (e.g. along an edge: EDG/NOD ends). */
 tr_isect tr_classify_segment_tet(const tr_point *a, const tr_point *b, const tr_point *const t[4]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -6,6 +6,10 @@
 
 #include "qpoint.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* out = the intersection of the line through a,b with the plane of p,q,r. */
 int tr_construct_line_plane(const tr_point *a, const tr_point *b, const tr_point *p,
                             const tr_point *q, const tr_point *r, tr_qpoint *out);
@@ -13,5 +17,9 @@ int tr_construct_line_plane(const tr_point *a, const tr_point *b, const tr_point
  * parallel. */
 int tr_construct_line_line(const tr_point *a, const tr_point *b, const tr_point *c,
                            const tr_point *d, tr_qpoint *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,16 +19,38 @@
 #ifndef TR_PREDICATES_H
 #define TR_PREDICATES_H
 
+#include <math.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 double tr_orient2d(const double a[2], const double b[2], const double c[2]);
-double tr_orient3d(const double a[3], const double b[3], const double c[3], const double d[3]);
 double tr_incircle(const double a[2], const double b[2], const double c[2], const double d[2]);
-double tr_insphere(const double a[3], const double b[3], const double c[3], const double d[3],
-                   const double e[3]);
+/* tr_orient3d and tr_insphere are the static inline filters at the end of this file. */
+
+/* The adaptive and exact stages behind the inline filters (orient.c, insphere.c);
+ * callers use tr_orient3d / tr_insphere. Exact for every finite input. */
+double tr_orient3d_adapt(const double a[3], const double b[3], const double c[3],
+                         const double d[3]);
+double tr_insphere_adapt(const double a[3], const double b[3], const double c[3],
+                         const double d[3], const double e[3]);
+
+/* The exact last stage alone (raw-coordinate expansions, or GMP outside their exact
+ * range), for the tests: same sign conventions. */
+double tr_orient2d_exact(const double a[2], const double b[2], const double c[2]);
+double tr_orient3d_exact(const double a[3], const double b[3], const double c[3],
+                         const double d[3]);
+double tr_incircle_exact(const double a[2], const double b[2], const double c[2],
+                         const double d[2]);
+double tr_insphere_exact(const double a[3], const double b[3], const double c[3],
+                         const double d[3], const double e[3]);
 
 /* orient2d of the projections of 3D points onto the coordinate plane that drops axis
- * `drop` (0 = x, 1 = y, 2 = z). Exact. */
+ * `drop` (0 = x, 1 = y, 2 = z), with the kept axes in cyclic order
+ * u = (drop+1)%3, v = (drop+2)%3, so the 2D sign is the sign of component `drop` of
+ * the triangle normal (b-a)x(c-a). Exact. */
 double tr_orient2d_proj(const double a[3], const double b[3], const double c[3], int drop);
 
 /* Symbolically perturbed predicates (never 0 for distinct points in general enough
@@ -43,5 +65,82 @@ int tr_orient3d_sos(const double a[3], const double b[3], const double c[3], con
                     uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id);
 
 static inline int tr_sign(double x) { return (x > 0) - (x < 0); }
+
+/* ---- inline semi-static filters ----
+ * The hot path of every Delaunay insertion: differences, the floating determinant and
+ * a bound built from the largest difference in each coordinate; only when the sign is
+ * not certified does the out-of-line adaptive code run. The constants are derived in
+ * orient.c (TR_O3_FILTER) and insphere.c (TR_IS_FILTER). The range test keeps every
+ * product away from overflow and makes underflow errors negligible against the slack
+ * in the constants; outside it, or when the bound is not met, the adaptive code
+ * decides. Contraction into FMA would not invalidate the bounds (it only removes
+ * roundings), so C++ callers compiled without -ffp-contract=off stay correct. */
+#define TR_O3_FILTER (49.0 * 0x1p-53)
+#define TR_O3_FLO 0x1p-300
+#define TR_O3_FHI 0x1p300
+#define TR_IS_FILTER (385.0 * 0x1p-53)
+#define TR_IS_FLO 0x1p-180
+#define TR_IS_FHI 0x1p180
+
+/* fabs, not a sign test: random signs would make a branch mispredict. */
+static inline double tr_absmax3_(double a, double b, double c)
+{
+  a = fabs(a);
+  b = fabs(b);
+  c = fabs(c);
+  a = b > a ? b : a;
+  return c > a ? c : a;
+}
+
+static inline double tr_orient3d(const double a[3], const double b[3], const double c[3],
+                                 const double d[3])
+{
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+  const double det =
+      (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
+  const double mx = tr_absmax3_(ux, vx, wx), my = tr_absmax3_(uy, vy, wy),
+               mz = tr_absmax3_(uz, vz, wz);
+  if (mx >= TR_O3_FLO && my >= TR_O3_FLO && mz >= TR_O3_FLO && mx <= TR_O3_FHI &&
+      my <= TR_O3_FHI && mz <= TR_O3_FHI) {
+    const double eb = TR_O3_FILTER * mx * my * mz;
+    if (det > eb || -det > eb)
+      return det;
+  }
+  return tr_orient3d_adapt(a, b, c, d);
+}
+
+static inline double tr_insphere(const double a[3], const double b[3], const double c[3],
+                                 const double d[3], const double e[3])
+{
+  const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
+  const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
+  const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
+  const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
+  const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
+  const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
+  const double ma = (bz * cd - cz * bd) + dz * bc;
+  const double mb = (az * cd - cz * ad) + dz * ac;
+  const double mc = (az * bd - bz * ad) + dz * ab;
+  const double md = (az * bc - bz * ac) + cz * ab;
+  const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
+  const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
+  const double det = (la * ma - lb * mb) + (lc * mc - ld * md);
+  const double mx = tr_absmax3_(ax, bx, tr_absmax3_(cx, dx, 0));
+  const double my = tr_absmax3_(ay, by, tr_absmax3_(cy, dy, 0));
+  const double mz = tr_absmax3_(az, bz, tr_absmax3_(cz, dz, 0));
+  if (mx >= TR_IS_FLO && my >= TR_IS_FLO && mz >= TR_IS_FLO && mx <= TR_IS_FHI &&
+      my <= TR_IS_FHI && mz <= TR_IS_FHI) {
+    const double eb = TR_IS_FILTER * mx * my * mz * ((mx * mx + my * my) + mz * mz);
+    if (det > eb || -det > eb)
+      return det;
+  }
+  return tr_insphere_adapt(a, b, c, d, e);
+}
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -13,6 +13,10 @@
 #include <gmp.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct tr_qpoint {
   mpq_t c[3];      /* exact coordinates */
   double lo[3];    /* largest double <= c[i] */
@@ -44,13 +48,29 @@ void tr_qpoint_set_d(tr_qpoint *q, const double d[3]);
 /* Recomputes lo/hi/near from c (call after changing c). */
 void tr_qpoint_update(tr_qpoint *q);
 /* Correct rounding of a rational to the nearest double (ties to even), subnormals
- * and overflow included. */
+ * included. Overflow follows IEEE round-to-nearest: |x| >= DBL_MAX + ulp(DBL_MAX)/2
+ * gives +-inf. */
 double tr_q_round_nearest(const mpq_t x);
+/* *lo = largest double <= x, *hi = smallest double >= x (equal iff x is a double).
+ * Outside the double range the finite side saturates to +-DBL_MAX and the other side
+ * is +-inf. */
+void tr_q_round_bounds(const mpq_t x, double *lo, double *hi);
+/* q = p exactly (q must be initialised). */
+void tr_qpoint_set_point(tr_qpoint *q, const struct tr_point *p);
 /* Exact coordinate i of p as a rational (sets out). */
 void tr_point_get_q(const tr_point *p, int i, mpq_t out);
+/* Homogeneous integer form of p: coordinate i = X[i] / W with W > 0 (all initialised
+ * by the caller). Exact predicates and constructions work on these to avoid the gcds
+ * of mpq arithmetic. */
+void tr_point_get_hom(const tr_point *p, mpz_t X[3], mpz_t W);
 
 /* Exact predicates on points of either kind; return -1, 0 or +1 with the conventions
- * of predicates.h. */
+ * of predicates.h. Evaluation: all plain doubles -> the adaptive double predicate;
+ * else an interval filter on the boxes [lo, hi]; else exact rational arithmetic.
+ *
+ * tr_orient2d_proj_p projects by dropping axis `drop` and keeps the axes
+ * ((drop+1)%3, (drop+2)%3) in that (cyclic) order, so its sign is the sign of component
+ * `drop` of the normal (b-a)x(c-a). */
 int tr_orient3d_p(const tr_point *a, const tr_point *b, const tr_point *c, const tr_point *d);
 int tr_orient2d_proj_p(const tr_point *a, const tr_point *b, const tr_point *c, int drop);
 int tr_insphere_p(const tr_point *a, const tr_point *b, const tr_point *c, const tr_point *d,
@@ -59,5 +79,13 @@ int tr_insphere_p(const tr_point *a, const tr_point *b, const tr_point *c, const
 int tr_cmp_coord_p(const tr_point *a, const tr_point *b, int i);
 /* 1 iff a and b are the same point exactly. */
 int tr_equal_p(const tr_point *a, const tr_point *b);
+
+/* The exact predicates keep thread-local GMP temporaries so that hot loops do not
+ * allocate; this frees the calling thread's (optional, e.g. before thread exit). */
+void tr_exact_scratch_free(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

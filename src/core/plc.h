@@ -21,6 +21,7 @@ struct tr_plc {
   uint32_t ntets;        /* only Medit/TetGen volume inputs: tets read (for `check`) */
   uint32_t *tets;        /* 4 * ntets */
   char *source;          /* file name for messages, or NULL */
+  char *report;          /* repairs made by tr_plc_validate, one per line, or NULL */
 };
 
 /* Frees the arrays and zeroes the struct (not the struct itself). */

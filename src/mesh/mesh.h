@@ -14,18 +14,177 @@
  * Convex hull: the Delaunay stage uses ghost tets: tets with vertex TR_GHOST in slot 3
  * (see delaunay/), so every real tet has 4 neighbours; ghost tets are skipped by
  * iterators that say so and removed by outer removal.
+ *
+ * Owner: the mesh/delaunay work. Memory per tet slot: tv 16 + tn 16 + flags 1 bytes, plus
+ * 4 bytes of region id only once tr_mesh_enable_regions() was called (37 <= 40).
  */
 #ifndef TR_MESH_H
 #define TR_MESH_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "../../predicates/qpoint.h"
 #include "../core/status.h"
 
-#define TR_NONE UINT32_MAX
+#ifdef __cplusplus
+extern "C" {
+#endif
 
-/* tr_face_vtx[k] = the three vertex codes of face k, ordered as explained above. */
+#define TR_NONE UINT32_MAX
+/* The single vertex "at infinity" of the ghost tets. Never a valid vertex index. */
+#define TR_GHOST (UINT32_MAX - 1)
+
+/* tr_face_vtx[k] = the three vertex codes of face k, ordered as explained above:
+ * {1,3,2}, {0,2,3}, {0,3,1}, {0,1,2}. */
 extern const uint8_t tr_face_vtx[4][3];
+/* The six edges in ECode order 0-1, 0-2, 0-3, 1-2, 1-3, 2-3 (the paper's Table 1). */
+extern const uint8_t tr_edge_vtx[6][2];
+/* tr_face_rot[k][j] (j != k): face j listed in tr_face_vtx[j] order and rotated to begin
+ * with vertex code k is (k, tr_face_rot[k][j][0], tr_face_rot[k][j][1]). Used to glue
+ * tets that share a vertex: two tets sharing face {k,u,v} list it as (k,u,v) and (k,v,u).
+ * tr_face_rot[k][k] is {k,k} (unused). */
+extern const uint8_t tr_face_rot[4][4][2];
+
+/* Per-tet flag bits. TR_TF_MARK is a scratch bit: every routine that sets it clears it
+ * before returning, so at rest it is 0 everywhere. */
+enum {
+  TR_TF_MARK = 1u << 0,    /* scratch: visited by the running traversal */
+  TR_TF_MARK2 = 1u << 1,   /* second scratch bit (same rule) */
+  TR_TF_OUTER = 1u << 2,   /* classified outside the domain (outer removal) */
+  TR_TF_USER = 1u << 4     /* bits 4..7 free for later stages */
+};
+
+/* The public opaque handle of include/tetrec.h is the store itself. */
+struct tr_mesh {
+  /* vertices */
+  uint32_t nv, cap_v;
+  double *xyz;        /* 3 * cap_v; for a Steiner point: its coordinates rounded to nearest */
+  tr_qpoint **vq;     /* NULL, or cap_v entries: exact point of a Steiner vertex (owned),
+                         NULL for input points */
+  uint32_t *v2t;      /* cap_v: one tet incident to the vertex, TR_NONE if none */
+  /* tets */
+  uint32_t nt, cap_t; /* slots in use (free ones included) and capacity */
+  uint32_t *tv, *tn;  /* 4 * cap_t each, see above */
+  uint8_t *flags;     /* cap_t, TR_TF_* bits */
+  uint32_t *region;   /* NULL, or cap_t region ids (see tr_mesh_enable_regions) */
+  uint32_t free_head; /* free list of slots, linked through tn[4*t] */
+  uint32_t nfree;
+  /* Delaunay bookkeeping: duplicate input points */
+  uint32_t ndup;      /* number of input points dropped as duplicates */
+  uint32_t *dup_map;  /* NULL, or nv entries: dup_map[i] = kept vertex equal to point i
+                         (dup_map[i] == i for kept points) */
+};
+typedef struct tr_mesh tr_mesh_store;
+
+/* A growable uint32 array for traversal results (Ball, Shell). Zero-initialise it; free
+ * its `a` with free() or tr_u32buf_free. */
+typedef struct tr_u32buf {
+  uint32_t *a;
+  size_t n, cap;
+} tr_u32buf;
+tr_status tr_u32buf_push(tr_u32buf *b, uint32_t x);
+tr_status tr_u32buf_reserve(tr_u32buf *b, size_t cap);
+void tr_u32buf_free(tr_u32buf *b);
+
+/* ---- life cycle ---- */
+/* An empty store with room for the given numbers of vertices and tets (hints, may be 0). */
+tr_status tr_mesh_create(uint32_t vcap, uint32_t tcap, struct tr_mesh **out);
+/* tr_mesh_destroy() is in tetrec.h. */
+tr_status tr_mesh_reserve_vertices(struct tr_mesh *m, uint32_t vcap);
+tr_status tr_mesh_reserve_tets(struct tr_mesh *m, uint32_t tcap);
+/* Allocates the region array (filled with 0). */
+tr_status tr_mesh_enable_regions(struct tr_mesh *m);
+
+/* ---- vertices ---- */
+/* Appends an input point (copied), *idx = its index. v2t is TR_NONE until a tet uses it. */
+tr_status tr_mesh_add_vertex(struct tr_mesh *m, const double xyz[3], uint32_t *idx);
+/* Appends a Steiner point; the store takes ownership of q (allocated with malloc,
+ * initialised with tr_qpoint_init) and frees it with tr_qpoint_clear + free. */
+tr_status tr_mesh_add_steiner(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx);
+/* The exact point of vertex v (v must not be TR_GHOST). */
+static inline tr_point tr_mesh_point(const struct tr_mesh *m, uint32_t v)
+{
+  if (m->vq && m->vq[v])
+    return tr_pt_q(m->vq[v]);
+  return tr_pt_d(m->xyz + 3 * (size_t)v);
+}
+
+/* ---- tets ---- */
+static inline int tr_tet_is_free(const struct tr_mesh *m, uint32_t t)
+{
+  return m->tv[4 * (size_t)t] == TR_NONE;
+}
+static inline int tr_tet_is_ghost(const struct tr_mesh *m, uint32_t t)
+{
+  return m->tv[4 * (size_t)t + 3] == TR_GHOST;
+}
+/* A live tet that is not a ghost. */
+static inline int tr_tet_is_real(const struct tr_mesh *m, uint32_t t)
+{
+  return !tr_tet_is_free(m, t) && !tr_tet_is_ghost(m, t);
+}
+/* NEIG(t,k) of the paper: the tet across face k, TR_NONE if none. */
+static inline uint32_t TR_NEIG(const struct tr_mesh *m, uint32_t t, int k)
+{
+  uint32_t c = m->tn[4 * (size_t)t + (size_t)k];
+  return c == TR_NONE ? TR_NONE : c >> 2;
+}
+
+/* A new slot (from the free list, else appended) with vertices (a,b,c,d), no neighbours,
+ * flags 0; updates v2t of its vertices. The caller guarantees the orientation. */
+tr_status tr_tet_new(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d,
+                     uint32_t *t);
+/* Frees slot t. Neighbours still pointing to t are the caller's business; v2t entries
+ * pointing to t are not repaired (use tr_mesh_replace for consistent edits). */
+void tr_tet_free(struct tr_mesh *m, uint32_t t);
+/* Links face k1 of t1 with face k2 of t2 (both directions). */
+static inline void tr_glue(struct tr_mesh *m, uint32_t t1, int k1, uint32_t t2, int k2)
+{
+  m->tn[4 * (size_t)t1 + (size_t)k1] = 4 * t2 + (uint32_t)k2;
+  m->tn[4 * (size_t)t2 + (size_t)k2] = 4 * t1 + (uint32_t)k1;
+}
+
+/* ---- the paper's codes ---- */
+/* NCode: slot 0..3 of vertex v in t, -1 if v is not a vertex of t. */
+int tr_ncode(const struct tr_mesh *m, uint32_t t, uint32_t v);
+/* ECode of edge {a,b} in t: start | end << 2 with start < end, -1 if not an edge of t.
+ * (Named tr_tet_ecode because classify.h's tr_ecode(start,end) builds a code.) */
+int tr_tet_ecode(const struct tr_mesh *m, uint32_t t, uint32_t a, uint32_t b);
+/* FCode of face {a,b,c} in t: the slot of the fourth vertex, -1 if not a face of t. */
+int tr_fcode(const struct tr_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c);
+
+/* ---- traversals (iter.c) ---- */
+/* Ball(P): every tet incident to vertex p, found by a breadth-first search through faces
+ * containing p from v2t[p]. Ghost tets are included iff with_ghosts. out is reset first.
+ * TR_ERR_INVALID_MESH if v2t[p] does not contain p. */
+tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out);
+/* Shell(E): the tets around edge {a,b} in rotational order, starting with t0 (a tet that
+ * has edge ab; TR_NONE = find one through Ball(a)). Rotation is right-handed about a->b:
+ * for consecutive tets the third vertices turn counter-clockwise seen from b towards a.
+ * Ghost tets are part of the cycle. *closed = 1 if the cycle closes; 0 if it hits a
+ * missing neighbour, in which case the list starts at one boundary and ends at the other. */
+tr_status tr_shell(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0, tr_u32buf *out,
+                   int *closed);
+
+/* ---- generic edits (replace.c) ---- */
+/* Replaces the tets old[0..nold) by nnew new tets with vertices newv[4*i..4*i+3] (each
+ * positively oriented, ghosts allowed with TR_GHOST in slot 3): the new tets are glued to
+ * each other and to the neighbours of the old region by matching faces, slots are reused,
+ * v2t is repaired. Fails with TR_ERR_INTERNAL (and leaves the mesh unchanged) when the new
+ * tets do not have exactly the boundary of the old region. new_ids (may be NULL) receives
+ * the slots of the new tets. */
+tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
+                          const uint32_t *newv, uint32_t nnew, uint32_t *new_ids);
+
+/* ---- export ---- */
+/* Number of live non-ghost tets (O(slots)). */
+uint32_t tr_mesh_count_real(const struct tr_mesh *m);
+/* The real tets as a compact malloc'ed array of 4 * *ntets vertex ids, in slot order. */
+tr_status tr_mesh_export_tets(const struct tr_mesh *m, uint32_t **tets, uint32_t *ntets);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

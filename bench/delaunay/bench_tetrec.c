@@ -1,0 +1,114 @@
+/* Delaunay benchmark driver for tetrec, and the point generator shared with the CGAL
+ * and tetgen runs (bench/delaunay/run.sh).
+ *   bench_tetrec gen random|grid N out.bin out.node   (grid: N points per axis)
+ *   bench_tetrec run in.bin [check]
+ * .bin: uint32 n, then 3n doubles (native endianness). run prints one line
+ * "tetrec n=.. tets=.. dt_seconds=.." (triangulation only, reading excluded) and with
+ * `check` validates the mesh (links, orientation, Euler, Delaunay) and says so. */
+#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "delaunay/delaunay.h"
+#include "mesh/check.h"
+
+static double now(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int gen(const char *kind, unsigned long n, const char *bin, const char *node)
+{
+  size_t np;
+  double *p;
+  if (!strcmp(kind, "grid")) {
+    np = n * n * n;
+    p = malloc(3 * np * sizeof *p);
+    size_t k = 0;
+    for (unsigned long z = 0; z < n; z++)
+      for (unsigned long y = 0; y < n; y++)
+        for (unsigned long x = 0; x < n; x++, k++) {
+          p[3 * k] = (double)x;
+          p[3 * k + 1] = (double)y;
+          p[3 * k + 2] = (double)z;
+        }
+  } else {
+    np = n;
+    p = malloc(3 * np * sizeof *p);
+    unsigned long long s = 88172645463325252ull;
+    for (size_t i = 0; i < 3 * np; i++) {
+      s ^= s << 13;
+      s ^= s >> 7;
+      s ^= s << 17;
+      p[i] = (double)(s >> 11) * 0x1p-53;
+    }
+  }
+  FILE *f = fopen(bin, "wb");
+  uint32_t n32 = (uint32_t)np;
+  if (!f || fwrite(&n32, 4, 1, f) != 1 || fwrite(p, sizeof *p, 3 * np, f) != 3 * np) {
+    fprintf(stderr, "cannot write %s\n", bin);
+    return 1;
+  }
+  fclose(f);
+  f = fopen(node, "w");
+  if (!f) {
+    fprintf(stderr, "cannot write %s\n", node);
+    return 1;
+  }
+  fprintf(f, "%zu 3 0 0\n", np);
+  for (size_t i = 0; i < np; i++)
+    fprintf(f, "%zu %.17g %.17g %.17g\n", i + 1, p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+  fclose(f);
+  free(p);
+  return 0;
+}
+
+static int run(const char *bin, int check)
+{
+  FILE *f = fopen(bin, "rb");
+  uint32_t n;
+  if (!f || fread(&n, 4, 1, f) != 1) {
+    fprintf(stderr, "cannot read %s\n", bin);
+    return 1;
+  }
+  double *p = malloc(3 * (size_t)n * sizeof *p);
+  if (!p || fread(p, sizeof *p, 3 * (size_t)n, f) != 3 * (size_t)n) {
+    fprintf(stderr, "short file %s\n", bin);
+    return 1;
+  }
+  fclose(f);
+  double t0 = now();
+  struct tr_mesh *m;
+  tr_status s = tr_delaunay_build(p, n, &m);
+  double t1 = now();
+  if (s != TR_OK) {
+    fprintf(stderr, "tetrec: %s: %s\n", tr_status_name(s), tr_last_error());
+    return 1;
+  }
+  printf("tetrec n=%u tets=%u dt_seconds=%.3f\n", n, tr_mesh_num_tets(m), t1 - t0);
+  if (check) {
+    s = tr_check_mesh(m, TR_CHK_ALL_DELAUNAY, NULL);
+    printf("tetrec validator: %s%s%s (%.2f s)\n", s == TR_OK ? "valid Delaunay mesh" : "INVALID",
+           s == TR_OK ? "" : ": ", s == TR_OK ? "" : tr_last_error(), now() - t1);
+    if (s != TR_OK)
+      return 1;
+  }
+  tr_mesh_destroy(m);
+  free(p);
+  return 0;
+}
+
+int main(int argc, char **argv)
+{
+  if (argc >= 6 && !strcmp(argv[1], "gen"))
+    return gen(argv[2], strtoul(argv[3], NULL, 10), argv[4], argv[5]);
+  if (argc >= 3 && !strcmp(argv[1], "run"))
+    return run(argv[2], argc >= 4 && !strcmp(argv[3], "check"));
+  fprintf(stderr, "usage: bench_tetrec gen random|grid N out.bin out.node\n"
+                  "       bench_tetrec run in.bin [check]\n");
+  return 2;
+}

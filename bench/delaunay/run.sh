@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Delaunay peer benchmark: tetrec vs CGAL Delaunay_triangulation_3<Epick> (range insertion,
+# spatially sorted) vs tetgen (Debian 1.5, Delaunay only: `tetgen -NEF`, no output files).
+# Cases: 10^5 and 10^6 uniform random points in the unit cube, the 100^3 integer grid.
+# For each program: the in-process triangulation time (dt: reading excluded; tetgen's own
+# "Delaunay seconds"), the whole-process wall and user time and peak RSS (GNU time,
+# i.e. getrusage of the child), and the ratios tetrec/CGAL and tetrec/tetgen.
+# The grid (and 10^5 random) mesh of tetrec is validated (links, exact orientation,
+# Euler, perturbed Delaunay property) in a separate, untimed run.
+#
+# usage: bench/delaunay/run.sh [build-dir]      (default build-bench, a release build)
+#   REPEAT=n   best of n runs per measurement (default 1)
+#   CASES="random100000 random1000000 grid100"   subset to run
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=${1:-$ROOT/build-bench}
+REPEAT=${REPEAT:-1}
+CASES=${CASES:-"random100000 random1000000 grid100"}
+OUT=$ROOT/bench/out/delaunay
+mkdir -p "$OUT"
+if [ ! -f "$BUILD/build.ninja" ]; then
+  meson setup "$BUILD" "$ROOT" --buildtype=release -Dbench=true >/dev/null
+fi
+ninja -C "$BUILD" -j2 bench/delaunay/bench_tetrec >/dev/null
+TR=$BUILD/bench/delaunay/bench_tetrec
+CG=$BUILD/bench/delaunay/bench_cgal
+ninja -C "$BUILD" -j2 bench/delaunay/bench_cgal >/dev/null 2>&1 || CG=""
+TG=$(command -v tetgen || true)
+
+# measure <label> <cmd...>: best of REPEAT; sets M_DT M_WALL M_USER M_RSS (KB)
+measure() {
+  local label=$1
+  shift
+  M_DT=""; M_WALL=""; M_USER=""; M_RSS=""
+  for _ in $(seq "$REPEAT"); do
+    /usr/bin/time -o "$OUT/time.txt" -f "%e %U %M" "$@" >"$OUT/stdout.txt" 2>&1 || {
+      echo "$label failed:"; cat "$OUT/stdout.txt"; exit 1; }
+    local dt wall user rss
+    dt=$(sed -n 's/.*dt_seconds=\([0-9.]*\).*/\1/p; s/^Delaunay seconds: *\([0-9.e+-]*\).*/\1/p' \
+         "$OUT/stdout.txt" | head -1)
+    read -r wall user rss <"$OUT/time.txt"
+    if [ -z "$M_WALL" ] || awk "BEGIN{exit !($wall < $M_WALL)}"; then
+      M_DT=$dt; M_WALL=$wall; M_USER=$user; M_RSS=$rss
+    fi
+  done
+  printf "  %-8s dt %8.3f s   wall %8.2f s   user %8.2f s   peak RSS %8.1f MB   %s\n" \
+    "$label" "${M_DT:-0}" "$M_WALL" "$M_USER" "$(awk "BEGIN{print $M_RSS/1024}")" \
+    "$(grep -o 'tets=[0-9]*' "$OUT/stdout.txt" || sed -n 's/^ *Mesh tetrahedra: */tets=/p' "$OUT/stdout.txt")"
+}
+ratio() { awk "BEGIN{ if ($2 > 0) printf \"%.2f\", $1 / $2; else printf \"n/a\" }"; }
+
+echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
+for c in $CASES; do
+  case $c in
+    random*) kind=random; n=${c#random} ;;
+    grid*) kind=grid; n=${c#grid} ;;
+    *) echo "unknown case $c"; exit 2 ;;
+  esac
+  "$TR" gen "$kind" "$n" "$OUT/$c.bin" "$OUT/$c.node"
+  echo "== $c"
+  measure tetrec "$TR" run "$OUT/$c.bin"
+  t_dt=$M_DT; t_wall=$M_WALL; t_rss=$M_RSS; t_user=$M_USER
+  if [ -n "$CG" ]; then
+    measure cgal "$CG" "$OUT/$c.bin"
+    echo "  tetrec/CGAL:   dt $(ratio "$t_dt" "$M_DT")   wall $(ratio "$t_wall" "$M_WALL")   user $(ratio "$t_user" "$M_USER")   peak RSS $(ratio "$t_rss" "$M_RSS")"
+  fi
+  if [ -n "$TG" ]; then
+    measure tetgen "$TG" -NEF "$OUT/$c.node"
+    echo "  tetrec/tetgen: dt $(ratio "$t_dt" "$M_DT")   wall $(ratio "$t_wall" "$M_WALL")   user $(ratio "$t_user" "$M_USER")   peak RSS $(ratio "$t_rss" "$M_RSS")"
+  fi
+  if [ "$kind" = grid ] || [ "$n" -le 100000 ]; then
+    "$TR" run "$OUT/$c.bin" check | sed -n 's/^tetrec validator/  validator/p'
+  fi
+  rm -f "$OUT/$c.bin" "$OUT/$c.node"
+done

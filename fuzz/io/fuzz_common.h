@@ -1,0 +1,36 @@
+/* Shared body of the reader fuzzers: parse from memory, then (when the input parsed)
+ * validate it, so the triangulation and validation paths are fuzzed too. Any crash,
+ * leak or sanitizer report is a finding; every error status is a fine answer. */
+#ifndef TR_FUZZ_IO_COMMON_H
+#define TR_FUZZ_IO_COMMON_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/plc.h"
+#include "io/io.h"
+#include "tetrec.h"
+
+typedef tr_status (*tr_fuzz_reader)(const char *, size_t, const char *, struct tr_plc *);
+
+static inline int tr_fuzz_run(tr_fuzz_reader rd, const uint8_t *data, size_t size)
+{
+  /* Validation is superlinear in the worst case: keep the inputs small enough that a
+   * slow unit is a real finding, not the size of the input. */
+  if (size > 1 << 16)
+    return 0;
+  struct tr_plc plc;
+  memset(&plc, 0, sizeof plc);
+  if (rd((const char *)data, size, "fuzz", &plc) == TR_OK) {
+    tr_options o;
+    tr_options_default(&o);
+    o.allow_open = size & 1; /* both the strict and the open census */
+    (void)tr_plc_validate(&plc, &o);
+  }
+  tr_plc_clear(&plc);
+  return 0;
+}
+
+#endif

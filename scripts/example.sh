@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Builds tetrec and runs it on a bundled example surface.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+dir=build
+if [ -f "$dir/build.ninja" ]; then meson setup --reconfigure "$dir" >/dev/null; else meson setup "$dir" >/dev/null; fi
+ninja -C "$dir" src/cli/tetrec >/dev/null
+out=$(mktemp -d)
+"$dir/src/cli/tetrec" delaunay examples/data/cube.off -o "$out/cube.mesh"
+echo "wrote $out/cube.mesh"

@@ -1,0 +1,559 @@
+/* Incremental Bowyer-Watson on the flat tet store (conflict rule in delaunay.h).
+ *
+ * Per point: a visibility walk from the last created tet to the tet containing it (or
+ * to a ghost whose hull face it sees), a breadth-first search of the conflict region
+ * (the cavity), and the star re-triangulation: every cavity boundary face (t, k) gives
+ * the new tet "t with vertex k replaced by p". That keeps the orientation (p is on the
+ * same side of the face as the old vertex k) and keeps TR_GHOST in slot 3. The new tets
+ * are glued to each other through the faces that contain p: such a face is (p, u, v) in
+ * one tet and (p, v, u) in the other, matched through per-vertex lists of directed
+ * edges. All buffers live in the context and are reused, so an insertion allocates
+ * nothing unless the mesh grows.
+ *
+ * During the build, vertices are numbered in insertion order over a copy of the points
+ * in that order: consecutive insertions then touch neighbouring memory (coordinates,
+ * cavity edge matching), which matters more than any arithmetic here. The perturbation still
+ * uses the input indices (orig[]), and the ids are mapped back at the end.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "delaunay.h"
+#include "predicates.h"
+
+/* Scratch marks live in the top bit of vertex slots 0 (in the cavity) and 1 (tested, not
+ * in conflict) of the tet itself: the conflict test reads those slots anyway, so marking
+ * costs no extra cache line. Vertex ids stay below 2^31 (n is capped far lower) and
+ * TR_GHOST only occurs in slot 3. Every mark is cleared before the insertion ends. */
+#define MARK 0x80000000u
+
+typedef struct bface {
+  uint32_t v[4]; /* vertices of the new tet (p already in slot k) */
+  uint32_t out;  /* neighbour code outside the cavity */
+  uint32_t k;    /* slot of p */
+} bface;
+
+typedef struct edge_ent {
+  uint32_t end, code, next;
+} edge_ent;
+
+typedef struct dt {
+  struct tr_mesh *m;
+  const double *xyz;    /* points in insertion order */
+  const uint32_t *orig; /* insertion id -> input index (the perturbation order) */
+  uint32_t n;
+  uint64_t rng;
+  uint32_t last; /* a real tet created by the last insertion: start of the next walk */
+  uint32_t *cav, ncav, capcav;
+  uint32_t *noconf, nnoconf, capnoconf;
+  bface *bf;
+  uint32_t nbf, capbf;
+  uint32_t *head; /* n + 1 entries (the ghost is n), TR_NONE at rest */
+  edge_ent *ent;
+  uint32_t nent, capent;
+  uint32_t *newt, capnewt;
+  uint32_t *lid;   /* n + 1 entries: local index of a cavity boundary vertex, TR_NONE at rest */
+  uint32_t *lverts, nlv;
+  uint32_t *emat;  /* LMAX * LMAX: face code of directed boundary edge (lu, lv) */
+  uint8_t *ltet;   /* 4 per new tet: local numbers of its vertices */
+  uint32_t capltet;
+} dt;
+
+/* Cavities with more boundary vertices than this use the list matcher. */
+#define LMAX 64
+
+static inline const double *X(const dt *D, uint32_t v) { return D->xyz + 3 * (size_t)v; }
+
+static inline uint32_t rnd(dt *D)
+{
+  uint64_t x = D->rng;
+  x ^= x << 13;
+  x ^= x >> 7;
+  x ^= x << 17;
+  D->rng = x;
+  return (uint32_t)(x >> 32);
+}
+
+static tr_status grow_buf(void **p, uint32_t *cap, uint32_t need, size_t size)
+{
+  if (need <= *cap)
+    return TR_OK;
+  uint32_t nc = *cap ? *cap : 64;
+  while (nc < need)
+    nc *= 2;
+  void *q = realloc(*p, (size_t)nc * size);
+  if (!q)
+    return tr_error(TR_ERR_NOMEM, "out of memory in the Delaunay cavity buffers");
+  *p = q;
+  *cap = nc;
+  return TR_OK;
+}
+
+/* Real tet t: does p lie strictly inside its (perturbed) circumsphere? */
+#ifdef TR_DT_STATS
+#include <stdio.h>
+static unsigned long long st_ins, st_walk, st_cav, st_bf, st_pts;
+#define STAT(x) (x)
+#else
+#define STAT(x) ((void)0)
+#endif
+
+static inline int conflict_real(const dt *D, uint32_t t, const double *p, uint32_t pi)
+{
+  STAT(st_ins++);
+  const uint32_t *v = D->m->tv + 4 * (size_t)t;
+  const double *a = X(D, v[0]), *b = X(D, v[1]), *c = X(D, v[2]), *d = X(D, v[3]);
+  double r = tr_insphere(a, b, c, d, p);
+  if (r != 0)
+    return r > 0;
+  const uint32_t *o = D->orig;
+  return tr_insphere_sos(a, b, c, d, p, o[v[0]], o[v[1]], o[v[2]], o[v[3]], o[pi]) > 0;
+}
+
+static int conflict(const dt *D, uint32_t t, const double *p, uint32_t pi)
+{
+  const struct tr_mesh *m = D->m;
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  if (v[3] != TR_GHOST)
+    return conflict_real(D, t, p, pi);
+  double o = tr_orient3d(X(D, v[0]), X(D, v[1]), X(D, v[2]), p);
+  if (o != 0)
+    return o > 0;
+  uint32_t r = m->tn[4 * (size_t)t + 3] >> 2;
+  if (m->tv[4 * (size_t)r] & MARK)
+    return 1;
+  if (m->tv[4 * (size_t)r + 1] & MARK)
+    return 0;
+  return conflict_real(D, r, p, pi);
+}
+
+/* Visibility walk from a real tet: leave through a face that has p strictly on its other
+ * side, trying the faces from a pseudo-random first one so the walk cannot cycle.
+ * Returns the real tet containing p (closed) or a ghost whose hull face p sees. */
+static uint32_t locate(dt *D, uint32_t t, const double *p)
+{
+  const struct tr_mesh *m = D->m;
+  uint32_t prev = TR_NONE;
+  uint32_t r = 0;
+  int bits = 0;
+  for (;;) {
+    if (bits < 2) {
+      r = rnd(D);
+      bits = 32;
+    }
+    int s = (int)(r & 3);
+    r >>= 2;
+    bits -= 2;
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    int moved = 0;
+    for (int i = 0; i < 4; i++) {
+      int k = (s + i) & 3;
+      uint32_t u = m->tn[4 * (size_t)t + (size_t)k] >> 2;
+      if (u == prev)
+        continue;
+      const uint8_t *f = tr_face_vtx[k];
+      if (tr_orient3d(X(D, v[f[0]]), X(D, v[f[1]]), X(D, v[f[2]]), p) < 0) {
+        prev = t;
+        t = u;
+        moved = 1;
+        break;
+      }
+    }
+    STAT(st_walk++);
+    if (!moved || m->tv[4 * (size_t)t + 3] == TR_GHOST)
+      return t;
+  }
+}
+
+/* Glues the faces through vertex `apex` (slot newk[i] of tet newt[i]) of freshly
+ * written tets: face (apex, u, v) of one tet meets (apex, v, u) of another. */
+static tr_status link_star(dt *D, const uint32_t *newt, const uint32_t *newk, uint32_t nnew)
+{
+  struct tr_mesh *m = D->m;
+  TR_CHECK(grow_buf((void **)&D->ent, &D->capent, 3 * nnew, sizeof *D->ent));
+  uint32_t *head = D->head, *tv = m->tv, *tn = m->tn;
+  edge_ent *ent = D->ent;
+  uint32_t nent = 0, nlinked = 0;
+  for (uint32_t i = 0; i < nnew; i++) {
+    uint32_t t = newt[i];
+    int k = (int)newk[i];
+    const uint32_t *v = tv + 4 * (size_t)t;
+    for (int j = 0; j < 4; j++) {
+      if (j == k)
+        continue;
+      uint32_t a = v[tr_face_rot[k][j][0]], b = v[tr_face_rot[k][j][1]];
+      uint32_t hb = b == TR_GHOST ? D->n : b;
+      uint32_t *pe = &head[hb];
+      while (*pe != TR_NONE && ent[*pe].end != a)
+        pe = &ent[*pe].next;
+      if (*pe != TR_NONE) {
+        uint32_t c = ent[*pe].code;
+        tn[4 * (size_t)t + (size_t)j] = c;
+        tn[c] = 4 * t + (uint32_t)j;
+        *pe = ent[*pe].next; /* each directed edge is used once: unlink it */
+        nlinked++;
+      } else {
+        uint32_t ha = a == TR_GHOST ? D->n : a;
+        ent[nent].end = b;
+        ent[nent].code = 4 * t + (uint32_t)j;
+        ent[nent].next = head[ha];
+        head[ha] = nent++;
+      }
+    }
+  }
+  /* Reset the lists: every list head that was touched belongs to some entry's start. */
+  for (uint32_t i = 0; i < nnew; i++) {
+    const uint32_t *v = tv + 4 * (size_t)newt[i];
+    for (int j = 0; j < 4; j++)
+      head[v[j] == TR_GHOST ? D->n : v[j]] = TR_NONE;
+  }
+  if (2 * nlinked != 3 * nnew)
+    return tr_error(TR_ERR_INTERNAL,
+                    "Delaunay: the cavity boundary is not a closed surface (%u of %u star faces "
+                    "matched)",
+                    2 * nlinked, 3 * nnew);
+  return TR_OK;
+}
+
+/* The same gluing for the common small cavity, without searching: boundary vertices get
+ * local numbers, pass 1 writes every star face's code at (u, v) of a small matrix, pass 2
+ * reads its partner at (v, u). Each directed edge occurs exactly once, so no entry is
+ * stale and there is no branch on data. Returns 0 (nothing glued) if the cavity has
+ * more than LMAX boundary vertices. */
+static int link_star_small(dt *D, const uint32_t *newt, const uint32_t *newk, uint32_t nnew)
+{
+  struct tr_mesh *m = D->m;
+  uint32_t *lid = D->lid, *tv = m->tv, *tn = m->tn, *em = D->emat, nlv = 0;
+  uint8_t *lt = D->ltet; /* local numbers of the new tets' vertices (p's slot unused) */
+  int ok = 1;
+  for (uint32_t i = 0; i < nnew && ok; i++) {
+    const uint32_t *v = tv + 4 * (size_t)newt[i];
+    for (uint32_t j = 0; j < 4; j++) {
+      if (j == newk[i])
+        continue;
+      uint32_t h = v[j] == TR_GHOST ? D->n : v[j];
+      if (lid[h] == TR_NONE) {
+        if (nlv == LMAX) {
+          ok = 0;
+          break;
+        }
+        lid[h] = nlv;
+        D->lverts[nlv++] = h;
+      }
+      lt[4 * i + j] = (uint8_t)lid[h];
+    }
+  }
+  for (uint32_t i = 0; i < nlv; i++)
+    lid[D->lverts[i]] = TR_NONE;
+  if (!ok)
+    return 0;
+  for (uint32_t i = 0; i < nnew; i++) {
+    uint32_t t = newt[i], k = newk[i];
+    const uint8_t *l = lt + 4 * i;
+    for (uint32_t j = 0; j < 4; j++)
+      if (j != k)
+        em[l[tr_face_rot[k][j][0]] * LMAX + l[tr_face_rot[k][j][1]]] = 4 * t + j;
+  }
+  for (uint32_t i = 0; i < nnew; i++) {
+    uint32_t t = newt[i], k = newk[i];
+    const uint8_t *l = lt + 4 * i;
+    for (uint32_t j = 0; j < 4; j++)
+      if (j != k)
+        tn[4 * (size_t)t + j] = em[l[tr_face_rot[k][j][1]] * LMAX + l[tr_face_rot[k][j][0]]];
+  }
+  return 1;
+}
+
+static tr_status alloc_slot(struct tr_mesh *m, uint32_t *s)
+{
+  if (m->free_head != TR_NONE) {
+    *s = m->free_head;
+    m->free_head = m->tn[4 * (size_t)*s];
+    m->nfree--;
+    return TR_OK;
+  }
+  if (m->nt == m->cap_t) {
+    uint32_t nc = m->cap_t + m->cap_t / 2 + 64;
+    TR_CHECK(tr_mesh_reserve_tets(m, nc));
+  }
+  *s = m->nt++;
+  return TR_OK;
+}
+
+static tr_status insert(dt *D, uint32_t pi)
+{
+  struct tr_mesh *m = D->m;
+  const double *p = X(D, pi);
+  uint32_t t0 = locate(D, D->last, p);
+  if (m->tv[4 * (size_t)t0 + 3] != TR_GHOST) {
+    const uint32_t *v = m->tv + 4 * (size_t)t0;
+    for (int k = 0; k < 4; k++) {
+      const double *q = X(D, v[k]);
+      if (q[0] == p[0] && q[1] == p[1] && q[2] == p[2])
+        return tr_error(TR_ERR_INTERNAL, "Delaunay: point %u equals vertex %u after "
+                        "duplicate removal", D->orig[pi], D->orig[v[k]]);
+    }
+  }
+  /* The located tet conflicts: p is strictly inside a real tet's closed ball unless it is
+   * a vertex, and strictly beyond a ghost's hull face. */
+  D->ncav = 0;
+  D->nnoconf = 0;
+  D->nbf = 0;
+  D->cav[D->ncav++] = t0;
+  m->tv[4 * (size_t)t0] |= MARK;
+  for (uint32_t i = 0; i < D->ncav; i++) {
+    uint32_t t = D->cav[i];
+    for (int k = 0; k < 4; k++) {
+      uint32_t c = m->tn[4 * (size_t)t + (size_t)k], u = c >> 2;
+      uint32_t *w = m->tv + 4 * (size_t)u;
+      if (w[0] & MARK)
+        continue;
+      if (!(w[1] & MARK)) {
+        if (conflict(D, u, p, pi)) {
+          if (D->ncav == D->capcav)
+            TR_CHECK(grow_buf((void **)&D->cav, &D->capcav, D->ncav + 1, sizeof *D->cav));
+          w[0] |= MARK;
+          D->cav[D->ncav++] = u;
+          continue;
+        }
+        if (D->nnoconf == D->capnoconf)
+          TR_CHECK(grow_buf((void **)&D->noconf, &D->capnoconf, D->nnoconf + 1,
+                            sizeof *D->noconf));
+        w[1] |= MARK;
+        D->noconf[D->nnoconf++] = u;
+      }
+      if (D->nbf == D->capbf)
+        TR_CHECK(grow_buf((void **)&D->bf, &D->capbf, D->nbf + 1, sizeof *D->bf));
+      bface *b = &D->bf[D->nbf++];
+      memcpy(b->v, m->tv + 4 * (size_t)t, sizeof b->v);
+      b->v[0] &= ~MARK;
+      b->v[k] = pi;
+      b->out = c;
+      b->k = (uint32_t)k;
+    }
+  }
+  for (uint32_t i = 0; i < D->nnoconf; i++)
+    m->tv[4 * (size_t)D->noconf[i] + 1] &= ~MARK;
+  STAT((st_cav += D->ncav, st_bf += D->nbf, st_pts++));
+
+  /* Re-triangulate: reuse the cavity's slots first. */
+  TR_CHECK(grow_buf((void **)&D->newt, &D->capnewt, 2 * D->nbf, sizeof *D->newt));
+  uint32_t *newk = D->newt + D->nbf;
+  uint32_t last = TR_NONE;
+  for (uint32_t i = 0; i < D->nbf; i++) {
+    uint32_t s;
+    if (i < D->ncav)
+      s = D->cav[i];
+    else
+      TR_CHECK(alloc_slot(m, &s));
+    const bface *b = &D->bf[i];
+    uint32_t *v = m->tv + 4 * (size_t)s;
+    memcpy(v, b->v, sizeof b->v);
+    m->tn[4 * (size_t)s + b->k] = b->out;
+    m->tn[b->out] = 4 * s + b->k;
+    if (v[3] != TR_GHOST)
+      last = s;
+    D->newt[i] = s;
+    newk[i] = b->k;
+  }
+  for (uint32_t i = D->nbf; i < D->ncav; i++)
+    tr_tet_free(m, D->cav[i]);
+  if (last == TR_NONE)
+    return tr_error(TR_ERR_INTERNAL, "Delaunay: inserting point %u created no real tet",
+                    D->orig[pi]);
+  D->last = last;
+  TR_CHECK(grow_buf((void **)&D->ltet, &D->capltet, 4 * D->nbf, 1));
+  if (link_star_small(D, D->newt, newk, D->nbf))
+    return TR_OK;
+  return link_star(D, D->newt, newk, D->nbf);
+}
+
+/* Are a, b, c collinear? Exactly: all three coordinate projections are degenerate. */
+static int collinear(const double *a, const double *b, const double *c)
+{
+  return tr_orient2d_proj(a, b, c, 0) == 0 && tr_orient2d_proj(a, b, c, 1) == 0 &&
+         tr_orient2d_proj(a, b, c, 2) == 0;
+}
+
+/* Picks four affinely independent points among order[0..m) and moves them to the front.
+ * The messages name input points so that the user can look at them. */
+static tr_status first_simplex(const double *xyz, uint32_t n, uint32_t *order, uint32_t m)
+{
+  if (m < 4) {
+    if (m == 1 && n > 1)
+      return tr_error(TR_ERR_DEGENERATE, "all %u points are the same point", n);
+    return tr_error(TR_ERR_DEGENERATE, "only %u distinct point(s) (of %u): a tetrahedralization "
+                    "needs at least 4 points not in a plane", m, n);
+  }
+  const double *a = xyz + 3 * (size_t)order[0], *b = xyz + 3 * (size_t)order[1];
+  uint32_t j = 2;
+  while (j < m && collinear(a, b, xyz + 3 * (size_t)order[j]))
+    j++;
+  if (j == m)
+    return tr_error(TR_ERR_DEGENERATE, "all %u points are collinear (line through points %u, %u)",
+                    n, order[0], order[1]);
+  uint32_t t = order[2];
+  order[2] = order[j];
+  order[j] = t;
+  const double *c = xyz + 3 * (size_t)order[2];
+  j = 3;
+  while (j < m && tr_orient3d(a, b, c, xyz + 3 * (size_t)order[j]) == 0)
+    j++;
+  if (j == m)
+    return tr_error(TR_ERR_DEGENERATE,
+                    "all %u points are coplanar (plane through points %u, %u, %u)", n, order[0],
+                    order[1], order[2]);
+  t = order[3];
+  order[3] = order[j];
+  order[j] = t;
+  if (tr_orient3d(a, b, c, xyz + 3 * (size_t)order[3]) < 0) {
+    t = order[0];
+    order[0] = order[1];
+    order[1] = t;
+  }
+  return TR_OK;
+}
+
+/* Triangulates the D->n points of D->xyz (insertion ids 0..n-1; 0..3 span 3D). */
+static tr_status build(dt *D)
+{
+  struct tr_mesh *mesh = D->m;
+  uint32_t t0, g[4], gk[4] = {3, 3, 3, 3};
+  TR_CHECK(tr_tet_new(mesh, 0, 1, 2, 3, &t0));
+  for (int k = 0; k < 4; k++) {
+    const uint32_t *v = mesh->tv + 4 * (size_t)t0;
+    const uint8_t *f = tr_face_vtx[k];
+    /* reversed face: the ghost's face 3 looks out of the hull */
+    TR_CHECK(tr_tet_new(mesh, v[f[0]], v[f[2]], v[f[1]], TR_GHOST, &g[k]));
+    tr_glue(mesh, t0, k, g[k], 3);
+  }
+  TR_CHECK(link_star(D, g, gk, 4));
+  D->last = t0;
+  for (uint32_t i = 4; i < D->n; i++)
+    TR_CHECK(insert(D, i));
+#ifdef TR_DT_STATS
+  fprintf(stderr, "points %llu insphere %.2f walk %.2f cavity %.2f boundary %.2f per point\n",
+          st_pts, (double)st_ins / st_pts, (double)st_walk / st_pts, (double)st_cav / st_pts,
+          (double)st_bf / st_pts);
+#endif
+  return TR_OK;
+}
+
+/* Back from insertion ids to input indices: tets, then v2t. */
+static tr_status renumber(struct tr_mesh *m, const uint32_t *order, uint32_t nu)
+{
+  for (size_t i = 0; i < 4 * (size_t)m->nt; i += 4) {
+    uint32_t *v = m->tv + i;
+    if (v[0] == TR_NONE)
+      continue;
+    v[0] = order[v[0]];
+    v[1] = order[v[1]];
+    v[2] = order[v[2]];
+    if (v[3] != TR_GHOST)
+      v[3] = order[v[3]];
+  }
+  memset(m->flags, 0, m->nt); /* the build never sets flags; new slots were not cleared */
+  /* v2t is not needed while building (walks start from the last tet), so it is set
+   * once here instead of at every insertion */
+  (void)nu;
+  for (uint32_t i = 0; i < m->nv; i++)
+    m->v2t[i] = TR_NONE;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    if (v[0] == TR_NONE)
+      continue;
+    for (int k = 0; k < 4; k++)
+      if (v[k] != TR_GHOST)
+        m->v2t[v[k]] = t;
+  }
+  return TR_OK;
+}
+
+tr_status tr_delaunay_build(const double *xyz, uint32_t n, struct tr_mesh **out)
+{
+  *out = NULL;
+  for (uint32_t i = 0; i < n; i++)
+    for (int c = 0; c < 3; c++) {
+      double x = xyz[3 * (size_t)i + (size_t)c];
+      if (!(x - x == 0))
+        return tr_error(TR_ERR_INPUT, "point %u has a non-finite coordinate (%g)", i, x);
+    }
+  if (n >= (TR_GHOST - 1) || n > (UINT32_MAX / 4 - 64) / 7)
+    return tr_error(TR_ERR_NOMEM, "too many points (%u)", n);
+  struct tr_mesh *m;
+  /* ~6.7 tets per point for uniform random points; growth covers the rest. */
+  TR_CHECK(tr_mesh_create(n, 7 * n + 64, &m));
+  tr_status s = TR_OK;
+  dt D;
+  memset(&D, 0, sizeof D);
+  D.m = m;
+  D.rng = 0x2545F4914F6CDD1Dull;
+  uint32_t *order = malloc((n ? n : 1) * sizeof *order);
+  double *P = NULL;
+  m->dup_map = malloc((n ? n : 1) * sizeof *m->dup_map);
+  if (!order || !m->dup_map) {
+    s = tr_error(TR_ERR_NOMEM, "out of memory for %u points", n);
+    goto done;
+  }
+  if (n)
+    memcpy(m->xyz, xyz, 3 * (size_t)n * sizeof *xyz);
+  m->nv = n;
+  for (uint32_t i = 0; i < n; i++)
+    m->v2t[i] = TR_NONE;
+  uint32_t nu = 0;
+  if ((s = tr_spatial_order(xyz, n, order, &nu, m->dup_map)) != TR_OK)
+    goto done;
+  m->ndup = n - nu;
+  if ((s = first_simplex(xyz, n, order, nu)) != TR_OK)
+    goto done;
+  P = malloc(3 * (size_t)nu * sizeof *P);
+  D.head = malloc(((size_t)nu + 1) * sizeof *D.head);
+  D.lid = malloc(((size_t)nu + 1) * sizeof *D.lid);
+  D.lverts = malloc(LMAX * sizeof *D.lverts);
+  D.emat = malloc(LMAX * LMAX * sizeof *D.emat);
+  if (!P || !D.head || !D.lid || !D.lverts || !D.emat) {
+    s = tr_error(TR_ERR_NOMEM, "out of memory for %u points", n);
+    goto done;
+  }
+  for (uint32_t i = 0; i < nu; i++)
+    memcpy(P + 3 * (size_t)i, xyz + 3 * (size_t)order[i], 3 * sizeof *P);
+  memset(D.head, 0xff, ((size_t)nu + 1) * sizeof *D.head);
+  memset(D.lid, 0xff, ((size_t)nu + 1) * sizeof *D.lid);
+  D.xyz = P;
+  D.orig = order;
+  D.n = nu;
+  if ((s = grow_buf((void **)&D.cav, &D.capcav, 256, sizeof *D.cav)) != TR_OK ||
+      (s = grow_buf((void **)&D.noconf, &D.capnoconf, 256, sizeof *D.noconf)) != TR_OK ||
+      (s = grow_buf((void **)&D.bf, &D.capbf, 256, sizeof *D.bf)) != TR_OK)
+    goto done;
+  if ((s = build(&D)) != TR_OK)
+    goto done;
+  s = renumber(m, order, nu);
+done:
+  free(order);
+  free(P);
+  free(D.head);
+  free(D.lid);
+  free(D.lverts);
+  free(D.emat);
+  free(D.ltet);
+  free(D.cav);
+  free(D.noconf);
+  free(D.bf);
+  free(D.ent);
+  free(D.newt);
+  if (s != TR_OK) {
+    tr_mesh_destroy(m);
+    return s;
+  }
+  *out = m;
+  return TR_OK;
+}
+
+tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out)
+{
+  tr_error_clear();
+  if (!out || (!xyz && npoints))
+    return tr_error(TR_ERR_USAGE, "tr_delaunay: NULL argument");
+  return tr_delaunay_build(xyz, npoints, out);
+}

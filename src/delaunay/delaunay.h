@@ -1,0 +1,50 @@
+/* Incremental Bowyer-Watson Delaunay tetrahedralization of a point set.
+ *
+ * The result is the unique Delaunay tetrahedralization of the symbolically perturbed
+ * points (tr_insphere_sos with the input indices as perturbation order), so cospherical
+ * and coplanar inputs such as integer grids get one well-defined answer, the same on
+ * every machine. The convex hull is closed by ghost tets (a, b, c, TR_GHOST): face 3 of
+ * a ghost is a hull face, oriented so that tr_orient3d(a, b, c, x) > 0 exactly for points
+ * x strictly outside the hull across that face.
+ *
+ * Conflict rule (who is in the cavity of a new point p):
+ *   real tet  t: tr_insphere_sos(t, p) > 0.
+ *   ghost tet (a,b,c,G): orient3d(a,b,c,p) > 0 (p strictly beyond the hull face), or
+ *     orient3d(a,b,c,p) == 0 and the real tet behind the face conflicts with p.
+ *   The coplanar case is forced: a ghost and its real neighbour must agree there, else
+ *   the new tet built on their shared face would be flat. It is also what the perturbed
+ *   (lifted) point set says: a coplanar p strictly inside the face's circumcircle is
+ *   strictly inside the neighbour's sphere, strictly outside it is outside, and on the
+ *   circle the perturbation decides, for both tets at once.
+ *
+ * Vertex ids of the mesh are the input indices. Duplicate points: the first (lowest
+ * index) of each group of exactly equal points is kept, the others get no tet;
+ * m->dup_map[i] is the kept index and m->ndup their number.
+ */
+#ifndef TR_DELAUNAY_H
+#define TR_DELAUNAY_H
+
+#include "../mesh/mesh.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Builds the Delaunay mesh (with its ghost tets) of n points. TR_ERR_INPUT for a
+ * non-finite coordinate, TR_ERR_DEGENERATE when the distinct points span less than 3D. */
+tr_status tr_delaunay_build(const double *xyz, uint32_t n, struct tr_mesh **out);
+
+/* Insertion order used by the builder: the distinct points (first of each duplicate
+ * group), in BRIO rounds each sorted along a Hilbert curve. order gets *nuniq indices;
+ * dup_map (n entries) receives the kept index of every point. Deterministic. */
+tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint32_t *nuniq,
+                           uint32_t *dup_map);
+
+/* Hilbert index of an integer point with `bits` bits per coordinate (3*bits <= 64). */
+uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

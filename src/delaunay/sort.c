@@ -1,0 +1,234 @@
+/* Insertion order for Bowyer-Watson: duplicates removed, then BRIO (biased randomized
+ * insertion order, Amenta-Choi-Rote) with every round sorted along a Hilbert curve, so
+ * consecutive points are close (short walks, warm cache) while the rounds keep the
+ * randomness that bounds the expected cavity sizes. All "random" choices come from a
+ * fixed-seed generator: same input, same order. */
+#include "delaunay.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#define KEY_BITS 16      /* per axis: 48-bit keys, 6 radix passes of 8 bits */
+#define BRIO_RATIO 8     /* each round is 1/8 of the points that follow it */
+#define BRIO_MIN 64      /* the first round holds at most this many points */
+
+/* Skilling's transposed Hilbert index ("Programming the Hilbert curve", 2004): undo the
+ * excess work of the Gray code level by level, then Gray-encode; the transposed bits
+ * interleaved from the top give the position along the curve. */
+uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits)
+{
+  uint32_t X[3] = {x, y, z}, M = 1u << (bits - 1), t;
+  for (uint32_t Q = M; Q > 1; Q >>= 1) {
+    uint32_t P = Q - 1;
+    for (int i = 0; i < 3; i++) {
+      /* branch-free form of: if (X[i] & Q) X[0] ^= P; else swap the low bits of X[0]
+       * and X[i] where they differ (the bits are data, so branches mispredict) */
+      uint32_t set = 0u - ((X[i] & Q) != 0);
+      t = (X[0] ^ X[i]) & P & ~set;
+      X[0] ^= (P & set) | t;
+      X[i] ^= t;
+    }
+  }
+  X[1] ^= X[0];
+  X[2] ^= X[1];
+  t = 0;
+  for (uint32_t Q = M; Q > 1; Q >>= 1)
+    if (X[2] & Q)
+      t ^= Q - 1;
+  X[0] ^= t;
+  X[1] ^= t;
+  X[2] ^= t;
+  uint64_t key = 0;
+  for (int b = bits - 1; b >= 0; b--)
+    for (int i = 0; i < 3; i++)
+      key = key << 1 | ((X[i] >> b) & 1u);
+  return key;
+}
+
+typedef struct kv {
+  uint64_t key;
+  uint32_t idx;
+} kv;
+
+/* Stable LSD radix sort of a[0..n) by key (tmp: n entries). Passes whose digit is the
+ * same for every entry are skipped, which is most of them for small ranges. */
+static void radix_sort(kv *a, kv *tmp, size_t n)
+{
+  if (n < 32) {
+    for (size_t i = 1; i < n; i++) {
+      kv x = a[i];
+      size_t j = i;
+      while (j > 0 && a[j - 1].key > x.key) {
+        a[j] = a[j - 1];
+        j--;
+      }
+      a[j] = x;
+    }
+    return;
+  }
+  kv *src = a, *dst = tmp;
+  for (int pass = 0; pass < 3 * KEY_BITS / 8; pass++) {
+    size_t cnt[256] = {0};
+    int sh = 8 * pass;
+    for (size_t i = 0; i < n; i++)
+      cnt[(src[i].key >> sh) & 255]++;
+    if (cnt[(src[0].key >> sh) & 255] == n)
+      continue;
+    size_t sum = 0;
+    for (int d = 0; d < 256; d++) {
+      size_t c = cnt[d];
+      cnt[d] = sum;
+      sum += c;
+    }
+    for (size_t i = 0; i < n; i++)
+      dst[cnt[(src[i].key >> sh) & 255]++] = src[i];
+    kv *s = src;
+    src = dst;
+    dst = s;
+  }
+  if (src != a)
+    memcpy(a, src, n * sizeof *a);
+}
+
+/* Lexicographic (x, y, z, index) order, for grouping exact duplicates. */
+static int less_xyz(const double *xyz, uint32_t a, uint32_t b)
+{
+  const double *p = xyz + 3 * (size_t)a, *q = xyz + 3 * (size_t)b;
+  for (int i = 0; i < 3; i++)
+    if (p[i] != q[i])
+      return p[i] < q[i];
+  return a < b;
+}
+
+static void merge_sort_xyz(const double *xyz, uint32_t *a, uint32_t *tmp, size_t n)
+{
+  if (n < 16) {
+    for (size_t i = 1; i < n; i++) {
+      uint32_t x = a[i];
+      size_t j = i;
+      while (j > 0 && less_xyz(xyz, x, a[j - 1])) {
+        a[j] = a[j - 1];
+        j--;
+      }
+      a[j] = x;
+    }
+    return;
+  }
+  size_t h = n / 2;
+  merge_sort_xyz(xyz, a, tmp, h);
+  merge_sort_xyz(xyz, a + h, tmp, n - h);
+  size_t i = 0, j = h, k = 0;
+  while (i < h && j < n)
+    tmp[k++] = less_xyz(xyz, a[j], a[i]) ? a[j++] : a[i++];
+  while (i < h)
+    tmp[k++] = a[i++];
+  while (j < n)
+    tmp[k++] = a[j++];
+  memcpy(a, tmp, n * sizeof *a);
+}
+
+static uint64_t xorshift(uint64_t *s)
+{
+  uint64_t x = *s;
+  x ^= x << 13;
+  x ^= x >> 7;
+  x ^= x << 17;
+  return *s = x;
+}
+
+tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint32_t *nuniq,
+                           uint32_t *dup_map)
+{
+  *nuniq = 0;
+  if (n == 0)
+    return TR_OK;
+  kv *a = malloc(n * sizeof *a), *tmp = malloc(n * sizeof *tmp);
+  uint64_t *keys = malloc(n * sizeof *keys);
+  if (!a || !tmp || !keys) {
+    free(a);
+    free(tmp);
+    free(keys);
+    return tr_error(TR_ERR_NOMEM, "out of memory sorting %u points", n);
+  }
+  double lo[3], hi[3];
+  for (int i = 0; i < 3; i++)
+    lo[i] = hi[i] = xyz[i];
+  for (uint32_t p = 1; p < n; p++)
+    for (int i = 0; i < 3; i++) {
+      double x = xyz[3 * (size_t)p + (size_t)i];
+      if (x < lo[i])
+        lo[i] = x;
+      if (x > hi[i])
+        hi[i] = x;
+    }
+  /* One scale for all axes keeps the curve's cells cubes in space. The quantisation only
+   * steers the order: exactness never depends on it. */
+  double ext = 0;
+  for (int i = 0; i < 3; i++)
+    if (hi[i] - lo[i] > ext)
+      ext = hi[i] - lo[i];
+  const double cells = (double)((1u << KEY_BITS) - 1);
+  double scale = ext > 0 ? cells / ext : 0;
+  for (uint32_t p = 0; p < n; p++) {
+    uint32_t q[3];
+    for (int i = 0; i < 3; i++) {
+      double c = (xyz[3 * (size_t)p + (size_t)i] - lo[i]) * scale;
+      q[i] = c <= 0 ? 0 : c >= cells ? (uint32_t)cells : (uint32_t)c;
+    }
+    a[p].key = keys[p] = tr_hilbert_key(q[0], q[1], q[2], KEY_BITS);
+    a[p].idx = p;
+  }
+  radix_sort(a, tmp, n);
+
+  /* Exact duplicates share a key: group each run of equal keys by coordinates. The run
+   * is sorted by (x, y, z, index) so the lowest index of a group comes first and is kept. */
+  uint32_t *run = (uint32_t *)tmp, *rtmp = run + n; /* tmp has room for 4n uint32 */
+  uint32_t m = 0;
+  for (uint32_t i = 0; i < n;) {
+    uint32_t j = i + 1;
+    while (j < n && a[j].key == a[i].key)
+      j++;
+    for (uint32_t k = i; k < j; k++)
+      run[k - i] = a[k].idx;
+    merge_sort_xyz(xyz, run, rtmp, j - i);
+    for (uint32_t k = i; k < j; k++) {
+      uint32_t p = run[k - i];
+      /* numeric equality: -0.0 and 0.0 are the same point */
+      const double *c = xyz + 3 * (size_t)p, *d = k > i ? xyz + 3 * (size_t)run[k - i - 1] : c;
+      if (k > i && c[0] == d[0] && c[1] == d[1] && c[2] == d[2]) {
+        dup_map[p] = dup_map[run[k - i - 1]];
+      } else {
+        dup_map[p] = p;
+        order[m++] = p;
+      }
+    }
+    i = j;
+  }
+  *nuniq = m;
+
+  /* BRIO: shuffle, then rounds [m/8, m), [m/64, m/8), ... each sorted along the curve. */
+  uint64_t seed = 0x9E3779B97F4A7C15ull;
+  for (uint32_t i = m; i > 1; i--) {
+    uint32_t j = (uint32_t)(xorshift(&seed) % i), t = order[i - 1];
+    order[i - 1] = order[j];
+    order[j] = t;
+  }
+  for (uint32_t i = 0; i < m; i++) {
+    a[i].key = keys[order[i]];
+    a[i].idx = order[i];
+  }
+  uint32_t end = m;
+  for (;;) {
+    uint32_t start = end > BRIO_MIN ? end / BRIO_RATIO : 0;
+    radix_sort(a + start, tmp, end - start);
+    if (start == 0)
+      break;
+    end = start;
+  }
+  for (uint32_t i = 0; i < m; i++)
+    order[i] = a[i].idx;
+  free(a);
+  free(tmp);
+  free(keys);
+  return TR_OK;
+}

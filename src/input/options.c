@@ -1,0 +1,12 @@
+/* Defaults of tr_options (include/tetrec.h): the CLI and tr_plc_validate start here. */
+#include <string.h>
+
+#include "tetrec.h"
+
+void tr_options_default(tr_options *opt)
+{
+  memset(opt, 0, sizeof *opt);
+  opt->smooth = 1;
+  opt->allow_open = 0;
+  opt->verbose = 1;
+}

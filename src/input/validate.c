@@ -1,0 +1,459 @@
+/* tr_plc_validate: exact input checks and repairs, in the order that makes each step's
+ * assumptions true for the next: merge duplicate vertices -> reject zero-area triangles
+ * -> remove duplicate triangles -> edge census (open / non-manifold) -> orientation
+ * repair -> self-intersection. Messages name input triangle numbers (after polygon
+ * triangulation; "input face" is the polygon it came from) and input vertex numbers,
+ * both 0-based. */
+#include <gmp.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "predicates.h"
+#include "validate.h"
+
+static int cmp_point(const void *ctx, uint32_t a, uint32_t b)
+{
+  const double *x = ctx;
+  for (int k = 0; k < 3; k++) {
+    double p = x[3 * (size_t)a + k], q = x[3 * (size_t)b + k];
+    if (p < q)
+      return -1;
+    if (p > q)
+      return 1;
+  }
+  return 0; /* -0.0 == 0.0 here: they are the same point */
+}
+
+/* Merges exactly equal points into the first of each group and renumbers the rest
+ * compactly; orig[new] = original index. */
+static tr_status merge_vertices(struct tr_plc *plc, uint32_t *orig, tr_report *rep)
+{
+  uint32_t n = plc->npoints;
+  uint32_t *ord = malloc(sizeof *ord * (n ? n : 1)), *map = malloc(sizeof *map * (n ? n : 1));
+  tr_status st = TR_OK;
+  if (!ord || !map) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory checking duplicate vertices");
+    goto done;
+  }
+  for (uint32_t i = 0; i < n; i++)
+    ord[i] = i;
+  if ((st = tr_sort_ids(ord, n, cmp_point, plc->xyz)) != TR_OK)
+    goto done;
+  for (uint32_t i = 0; i < n;) {
+    uint32_t j = i + 1;
+    while (j < n && cmp_point(plc->xyz, ord[i], ord[j]) == 0)
+      j++;
+    for (uint32_t k = i; k < j; k++) {
+      map[ord[k]] = ord[i]; /* stable sort: ord[i] is the lowest index of the group */
+      if (k > i)
+        tr_report_add(rep, TR_REP_DUPV, "vertex %u duplicates vertex %u (merged)", ord[k], ord[i]);
+    }
+    i = j;
+  }
+  uint32_t m = 0;
+  for (uint32_t i = 0; i < n; i++) {
+    if (map[i] == i) {
+      memmove(plc->xyz + 3 * (size_t)m, plc->xyz + 3 * (size_t)i, 3 * sizeof(double));
+      orig[m] = i;
+      map[i] = m++;
+    } else
+      map[i] = map[map[i]]; /* the representative has a lower index: already renumbered */
+  }
+  for (size_t t = 0; t < 3 * (size_t)plc->ntris; t++)
+    plc->tris[t] = map[plc->tris[t]];
+  for (size_t t = 0; t < 2 * (size_t)plc->nsegs; t++)
+    plc->segs[t] = map[plc->segs[t]];
+  for (size_t t = 0; t < 4 * (size_t)plc->ntets; t++)
+    plc->tets[t] = map[plc->tets[t]];
+  plc->npoints = m;
+done:
+  free(ord);
+  free(map);
+  return st;
+}
+
+/* "file: " before messages when the PLC came from a file. */
+#define PRE(plc) (plc)->source ? (plc)->source : "", (plc)->source ? ": " : ""
+
+static uint32_t src_of(const struct tr_plc *plc, uint32_t t)
+{
+  return plc->tri_source ? plc->tri_source[t] : t;
+}
+
+static tr_status zero_area(const struct tr_plc *plc, const uint32_t *orig, const uint32_t *tnum)
+{
+  for (uint32_t t = 0; t < plc->ntris; t++) {
+    const uint32_t *v = plc->tris + 3 * (size_t)t;
+    const double *a = plc->xyz + 3 * (size_t)v[0], *b = plc->xyz + 3 * (size_t)v[1],
+                 *c = plc->xyz + 3 * (size_t)v[2];
+    int flat = v[0] == v[1] || v[1] == v[2] || v[0] == v[2];
+    if (!flat)
+      flat = tr_orient2d_proj(a, b, c, 0) == 0 && tr_orient2d_proj(a, b, c, 1) == 0 &&
+             tr_orient2d_proj(a, b, c, 2) == 0;
+    if (flat)
+      return tr_error(TR_ERR_INPUT,
+                      "%s%striangle %u (input face %u) has zero area: vertices %u %u %u are "
+                      "collinear or repeated",
+                      plc->source ? plc->source : "", plc->source ? ": " : "", tnum[t],
+                      src_of(plc, t), orig[v[0]], orig[v[1]], orig[v[2]]);
+  }
+  return TR_OK;
+}
+
+static void sorted3(const uint32_t *v, uint32_t s[3])
+{
+  uint32_t a = v[0], b = v[1], c = v[2], x;
+  if (a > b) x = a, a = b, b = x;
+  if (b > c) x = b, b = c, c = x;
+  if (a > b) x = a, a = b, b = x;
+  s[0] = a, s[1] = b, s[2] = c;
+}
+
+static int cmp_tri(const void *ctx, uint32_t a, uint32_t b)
+{
+  const uint32_t *t = ctx;
+  uint32_t p[3], q[3];
+  sorted3(t + 3 * (size_t)a, p);
+  sorted3(t + 3 * (size_t)b, q);
+  for (int k = 0; k < 3; k++)
+    if (p[k] != q[k])
+      return p[k] < q[k] ? -1 : 1;
+  return 0;
+}
+
+/* Removes later copies of a triangle (same vertex set, either orientation). */
+static tr_status duplicate_triangles(struct tr_plc *plc, uint32_t *tnum, tr_report *rep)
+{
+  uint32_t n = plc->ntris;
+  uint32_t *ord = malloc(sizeof *ord * (n ? n : 1));
+  char *drop = calloc(n ? n : 1, 1);
+  tr_status st = TR_OK;
+  if (!ord || !drop) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory checking duplicate triangles");
+    goto done;
+  }
+  for (uint32_t i = 0; i < n; i++)
+    ord[i] = i;
+  if ((st = tr_sort_ids(ord, n, cmp_tri, plc->tris)) != TR_OK)
+    goto done;
+  for (uint32_t i = 1; i < n; i++) {
+    uint32_t first = i - 1;
+    while (first > 0 && drop[ord[first]])
+      first--;
+    if (cmp_tri(plc->tris, ord[first], ord[i]) == 0) {
+      drop[ord[i]] = 1;
+      tr_report_add(rep, TR_REP_DUPT, "triangle %u duplicates triangle %u (removed)",
+                    tnum[ord[i]], tnum[ord[first]]);
+    }
+  }
+  uint32_t m = 0;
+  for (uint32_t t = 0; t < n; t++) {
+    if (drop[t])
+      continue;
+    memmove(plc->tris + 3 * (size_t)m, plc->tris + 3 * (size_t)t, 3 * sizeof *plc->tris);
+    if (plc->tri_marker)
+      plc->tri_marker[m] = plc->tri_marker[t];
+    if (plc->tri_source)
+      plc->tri_source[m] = plc->tri_source[t];
+    tnum[m++] = tnum[t];
+  }
+  plc->ntris = m;
+done:
+  free(ord);
+  free(drop);
+  return st;
+}
+
+/* Edge census: e[3t+k] = edge k of triangle t, sorted by (min, max). */
+static int cmp_edge(const void *ctx, uint32_t a, uint32_t b)
+{
+  const uint32_t *t = ctx;
+  uint32_t a0 = t[a], a1 = t[3 * (a / 3) + (a % 3 + 1) % 3];
+  uint32_t b0 = t[b], b1 = t[3 * (b / 3) + (b % 3 + 1) % 3];
+  uint32_t p0 = a0 < a1 ? a0 : a1, p1 = a0 < a1 ? a1 : a0;
+  uint32_t q0 = b0 < b1 ? b0 : b1, q1 = b0 < b1 ? b1 : b0;
+  if (p0 != q0)
+    return p0 < q0 ? -1 : 1;
+  if (p1 != q1)
+    return p1 < q1 ? -1 : 1;
+  return 0;
+}
+
+static void flip(struct tr_plc *plc, uint32_t t)
+{
+  uint32_t x = plc->tris[3 * (size_t)t + 1];
+  plc->tris[3 * (size_t)t + 1] = plc->tris[3 * (size_t)t + 2];
+  plc->tris[3 * (size_t)t + 2] = x;
+}
+
+/* 6 * the signed volume bounded by triangles tris[0..n) (all if tris == NULL): the sum
+ * of det[a; b; c] (origin 0), exact in integers: each double is m * 2^e with an integer
+ * m, so scaling every coordinate by 2^-emin makes them all integers. out = the sum
+ * scaled back (as a rational). */
+static void volume6(const struct tr_plc *plc, const uint32_t *tris, uint32_t n, mpq_t out)
+{
+  int emin = INT32_MAX;
+  for (uint32_t i = 0; i < n; i++)
+    for (int k = 0; k < 3; k++)
+      for (int d = 0; d < 3; d++) {
+        uint32_t t = tris ? tris[i] : i;
+        double x = plc->xyz[3 * (size_t)plc->tris[3 * (size_t)t + k] + d];
+        if (x != 0) {
+          int e;
+          frexp(x, &e);
+          if (e - 53 < emin)
+            emin = e - 53;
+        }
+      }
+  mpq_set_ui(out, 0, 1);
+  if (emin == INT32_MAX)
+    return;
+  mpz_t sum, c[3][3], t1, t2;
+  mpz_inits(sum, t1, t2, NULL);
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      mpz_init(c[i][j]);
+  for (uint32_t i = 0; i < n; i++) {
+    uint32_t t = tris ? tris[i] : i;
+    for (int k = 0; k < 3; k++)
+      for (int d = 0; d < 3; d++) {
+        double x = plc->xyz[3 * (size_t)plc->tris[3 * (size_t)t + k] + d];
+        int e = 0;
+        double f = frexp(x, &e);
+        mpz_set_d(c[k][d], ldexp(f, 53)); /* exact 53-bit integer */
+        if (x != 0)
+          mpz_mul_2exp(c[k][d], c[k][d], (mp_bitcnt_t)(e - 53 - emin));
+      }
+    for (int d = 0; d < 3; d++) { /* a . (b x c) */
+      int d1 = (d + 1) % 3, d2 = (d + 2) % 3;
+      mpz_mul(t1, c[1][d1], c[2][d2]);
+      mpz_mul(t2, c[1][d2], c[2][d1]);
+      mpz_sub(t1, t1, t2);
+      mpz_addmul(sum, c[0][d], t1);
+    }
+  }
+  mpq_set_z(out, sum);
+  if (emin < 0)
+    mpq_div_2exp(out, out, (mp_bitcnt_t)(-3 * (long)emin));
+  else
+    mpq_mul_2exp(out, out, (mp_bitcnt_t)(3 * (long)emin));
+  mpz_clears(sum, t1, t2, NULL);
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      mpz_clear(c[i][j]);
+}
+
+static int shell_volume_sign(const struct tr_plc *plc, const uint32_t *tris, uint32_t n)
+{
+  mpq_t v;
+  mpq_init(v);
+  volume6(plc, tris, n, v);
+  int s = mpq_sgn(v);
+  mpq_clear(v);
+  return s;
+}
+
+tr_status tr_input_volume6(const struct tr_plc *plc, mpq_t out)
+{
+  volume6(plc, NULL, plc->ntris, out);
+  return TR_OK;
+}
+
+/* 1 iff triangle t lists a then b consecutively. */
+static int goes(const uint32_t *v, uint32_t a, uint32_t b)
+{
+  return (v[0] == a && v[1] == b) || (v[1] == a && v[2] == b) || (v[2] == a && v[0] == b);
+}
+
+static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
+                                     const uint32_t *tnum, int allow_open, tr_report *rep)
+{
+  uint32_t nt = plc->ntris, ne = 3 * nt;
+  uint32_t *e = malloc(sizeof *e * (ne ? ne : 1));
+  uint32_t *adj = malloc(sizeof *adj * (ne ? ne : 1)); /* 3t+k -> 3t'+k' across manifold edge */
+  uint32_t *comp = malloc(sizeof *comp * (nt ? nt : 1)), *queue = malloc(sizeof *queue * (nt ? nt : 1));
+  char *flipme = calloc(nt ? nt : 1, 1), *closed = NULL;
+  tr_status st = TR_OK;
+  if (!e || !adj || !comp || !queue || !flipme) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory checking the surface");
+    goto done;
+  }
+  for (uint32_t i = 0; i < ne; i++) {
+    e[i] = i;
+    adj[i] = UINT32_MAX;
+  }
+  if ((st = tr_sort_ids(e, ne, cmp_edge, plc->tris)) != TR_OK)
+    goto done;
+  for (uint32_t i = 0; i < ne;) {
+    uint32_t j = i + 1;
+    while (j < ne && cmp_edge(plc->tris, e[i], e[j]) == 0)
+      j++;
+    uint32_t c = j - i;
+    if (c == 2) {
+      adj[e[i]] = e[i + 1];
+      adj[e[i + 1]] = e[i];
+    } else if (!allow_open) {
+      uint32_t a = plc->tris[e[i]], b = plc->tris[3 * (e[i] / 3) + (e[i] % 3 + 1) % 3];
+      if (c == 1) {
+        st = tr_error(TR_ERR_OPEN,
+                      "%s%sopen surface: edge (%u, %u) belongs to 1 triangle (triangle %u); use "
+                      "--allow-open to mesh it anyway",
+                      PRE(plc),
+                      orig[a < b ? a : b], orig[a < b ? b : a], tnum[e[i] / 3]);
+      } else {
+        st = tr_error(TR_ERR_OPEN,
+                      "%s%snon-manifold surface: edge (%u, %u) is shared by %u triangles (%u, %u, "
+                      "%u%s); use --allow-open to mesh it anyway",
+                      PRE(plc),
+                      orig[a < b ? a : b], orig[a < b ? b : a], c, tnum[e[i] / 3],
+                      tnum[e[i + 1] / 3], tnum[e[i + 2] / 3], c > 3 ? ", ..." : "");
+      }
+      goto done;
+    }
+    i = j;
+  }
+  /* Breadth-first over manifold edges; a neighbour must traverse the shared edge in the
+   * opposite direction, else one of the two is flipped (relative to the start). */
+  for (uint32_t t = 0; t < nt; t++)
+    comp[t] = UINT32_MAX;
+  uint32_t ncomp = 0;
+  for (uint32_t s = 0; s < nt; s++) {
+    if (comp[s] != UINT32_MAX)
+      continue;
+    uint32_t qh = 0, qt = 0;
+    comp[s] = ncomp;
+    queue[qt++] = s;
+    while (qh < qt) {
+      uint32_t t = queue[qh++];
+      for (int k = 0; k < 3; k++) {
+        uint32_t o = adj[3 * t + (uint32_t)k];
+        if (o == UINT32_MAX)
+          continue;
+        uint32_t u = o / 3;
+        uint32_t a = plc->tris[3 * t + (uint32_t)k], b = plc->tris[3 * t + ((uint32_t)k + 1) % 3];
+        /* Effective directions after the flips decided so far. */
+        int dt = goes(plc->tris + 3 * (size_t)t, a, b) ^ flipme[t];
+        int du = goes(plc->tris + 3 * (size_t)u, a, b);
+        int want = !dt; /* u must go b -> a */
+        if (comp[u] == UINT32_MAX) {
+          comp[u] = ncomp;
+          flipme[u] = (char)(du != want);
+          queue[qt++] = u;
+        } else if ((du ^ flipme[u]) != want) {
+          st = tr_error(TR_ERR_INPUT,
+                        "%s%sthe surface is not orientable (Moebius-like): triangles %u and %u "
+                        "cannot agree across edge (%u, %u)",
+                      PRE(plc),
+                        tnum[t], tnum[u], orig[a], orig[b]);
+          goto done;
+        }
+      }
+    }
+    ncomp++;
+  }
+  /* Per shell: closed iff none of its edges is a boundary / non-manifold edge. */
+  closed = malloc(ncomp ? ncomp : 1);
+  if (!closed) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory");
+    goto done;
+  }
+  memset(closed, 1, ncomp ? ncomp : 1);
+  for (uint32_t i = 0; i < ne; i++)
+    if (adj[i] == UINT32_MAX)
+      closed[comp[i / 3]] = 0;
+  for (uint32_t t = 0; t < nt; t++)
+    if (flipme[t])
+      flip(plc, t);
+  /* Orient every closed shell outward: positive enclosed volume. Triangles are grouped
+   * by shell with a counting sort, so the order (and the report) is deterministic. */
+  {
+    uint32_t *start = calloc((size_t)ncomp + 1, sizeof *start), *order = e;
+    if (!start) {
+      st = tr_error(TR_ERR_NOMEM, "out of memory");
+      goto done;
+    }
+    for (uint32_t t = 0; t < nt; t++)
+      start[comp[t] + 1]++;
+    for (uint32_t c = 0; c < ncomp; c++)
+      start[c + 1] += start[c];
+    for (uint32_t c = 0; c < ncomp; c++)
+      queue[c] = start[c]; /* fill pointers; ncomp <= nt */
+    for (uint32_t t = 0; t < nt; t++)
+      order[queue[comp[t]]++] = t;
+    for (uint32_t c = 0; c < ncomp && st == TR_OK; c++) {
+      if (!closed[c])
+        continue;
+      uint32_t n = start[c + 1] - start[c];
+      int sg = shell_volume_sign(plc, order + start[c], n);
+      if (sg == 0)
+        st = tr_error(TR_ERR_INPUT,
+                      "%s%sthe closed shell containing triangle %u encloses zero volume",
+                      PRE(plc),
+                      tnum[order[start[c]]]);
+      else if (sg < 0) {
+        for (uint32_t i = start[c]; i < start[c + 1]; i++) {
+          flip(plc, order[i]);
+          flipme[order[i]] ^= 1;
+        }
+      }
+    }
+    free(start);
+  }
+  /* Report the net change per triangle: flipped for consistency, for outwardness, or
+   * both (then unchanged). */
+  for (uint32_t t = 0; t < nt && st == TR_OK; t++)
+    if (flipme[t])
+      tr_report_add(rep, TR_REP_FLIP,
+                    "triangle %u (input face %u) flipped: orientation repaired to agree with "
+                    "its neighbours and face outward", tnum[t], src_of(plc, t));
+done:
+  free(e);
+  free(adj);
+  free(comp);
+  free(queue);
+  free(flipme);
+  free(closed);
+  return st;
+}
+
+tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt)
+{
+  tr_error_clear();
+  tr_options def;
+  if (!opt) {
+    tr_options_default(&def);
+    opt = &def;
+  }
+  for (size_t i = 0; i < 3 * (size_t)plc->npoints; i++)
+    if (!isfinite(plc->xyz[i]))
+      return tr_error(TR_ERR_INPUT, "vertex %zu: coordinate is NaN or infinite", i / 3);
+  for (size_t i = 0; i < 3 * (size_t)plc->ntris; i++)
+    if (plc->tris[i] >= plc->npoints)
+      return tr_error(TR_ERR_INPUT, "triangle %zu: vertex index %u out of range", i / 3,
+                      plc->tris[i]);
+  tr_report rep;
+  memset(&rep, 0, sizeof rep);
+  uint32_t *orig = malloc(sizeof *orig * (plc->npoints ? plc->npoints : 1));
+  uint32_t *tnum = malloc(sizeof *tnum * (plc->ntris ? plc->ntris : 1));
+  tr_status st = TR_OK;
+  if (!orig || !tnum)
+    st = tr_error(TR_ERR_NOMEM, "out of memory validating the input");
+  for (uint32_t t = 0; st == TR_OK && t < plc->ntris; t++)
+    tnum[t] = t;
+  if (st == TR_OK)
+    st = merge_vertices(plc, orig, &rep);
+  if (st == TR_OK)
+    st = zero_area(plc, orig, tnum);
+  if (st == TR_OK)
+    st = duplicate_triangles(plc, tnum, &rep);
+  if (st == TR_OK)
+    st = manifold_and_orient(plc, orig, tnum, opt->allow_open, &rep);
+  if (st == TR_OK)
+    st = tr_input_self_intersections(plc, tnum);
+  free(plc->report);
+  plc->report = tr_report_finish(&rep);
+  free(orig);
+  free(tnum);
+  return st;
+}

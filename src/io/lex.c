@@ -1,0 +1,197 @@
+#include "lex.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void tr_lex_init(tr_lex *lx, const char *buf, size_t len, const char *name, char comment)
+{
+  lx->p = buf;
+  lx->end = buf + len;
+  lx->name = name ? name : "<buffer>";
+  lx->line = 1;
+  lx->comment = comment;
+  lx->tok = buf;
+  lx->toklen = 0;
+  lx->tokline = 1;
+}
+
+static int is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+static int is_space(char c) { return is_blank(c) || c == '\n'; }
+
+static void skip_comment(tr_lex *lx)
+{
+  while (lx->p < lx->end && *lx->p != '\n')
+    lx->p++;
+}
+
+int tr_lex_next(tr_lex *lx)
+{
+  for (;;) {
+    while (lx->p < lx->end && is_space(*lx->p)) {
+      if (*lx->p == '\n')
+        lx->line++;
+      lx->p++;
+    }
+    if (lx->p >= lx->end)
+      return 0;
+    if (lx->comment && *lx->p == lx->comment) {
+      skip_comment(lx);
+      continue;
+    }
+    break;
+  }
+  lx->tok = lx->p;
+  lx->tokline = lx->line;
+  /* A NUL byte ends a token too, so binary garbage cannot make strtod read past it. */
+  while (lx->p < lx->end && !is_space(*lx->p) && *lx->p != '\0' &&
+         !(lx->comment && *lx->p == lx->comment))
+    lx->p++;
+  if (lx->p == lx->tok) /* a lone NUL: make it a one-byte token so progress is made */
+    lx->p++;
+  lx->toklen = (size_t)(lx->p - lx->tok);
+  return 1;
+}
+
+int tr_lex_at_eol(tr_lex *lx)
+{
+  while (lx->p < lx->end && is_blank(*lx->p))
+    lx->p++;
+  if (lx->p < lx->end && lx->comment && *lx->p == lx->comment)
+    skip_comment(lx);
+  return lx->p >= lx->end || *lx->p == '\n';
+}
+
+void tr_lex_skip_line(tr_lex *lx)
+{
+  skip_comment(lx);
+  if (lx->p < lx->end) {
+    lx->p++;
+    lx->line++;
+  }
+}
+
+int tr_lex_is(const tr_lex *lx, const char *word)
+{
+  size_t n = strlen(word);
+  if (n != lx->toklen)
+    return 0;
+  for (size_t i = 0; i < n; i++) {
+    char a = lx->tok[i], b = word[i];
+    if (a >= 'A' && a <= 'Z')
+      a = (char)(a - 'A' + 'a');
+    if (b >= 'A' && b <= 'Z')
+      b = (char)(b - 'A' + 'a');
+    if (a != b)
+      return 0;
+  }
+  return 1;
+}
+
+tr_status tr_lex_eof(const tr_lex *lx, const char *what)
+{
+  return tr_error(TR_ERR_PARSE, "%s:%lu: unexpected end of file while reading %s", lx->name,
+                  lx->line, what);
+}
+
+int tr_parse_double(const char *s, size_t len, double *out)
+{
+  char buf[512];
+  if (len == 0 || len >= sizeof buf)
+    return -1;
+  memcpy(buf, s, len);
+  buf[len] = '\0';
+  /* strtod would accept "nan", "inf" and "infinity": catch them by the result below. */
+  char *endp;
+  errno = 0;
+  double v = strtod(buf, &endp);
+  if (endp != buf + len)
+    return -1;
+  if (!isfinite(v))
+    return -2;
+  if (errno == ERANGE && (v == HUGE_VAL || v == -HUGE_VAL))
+    return -2;
+  /* Underflow to a subnormal or zero is a correctly rounded result: keep it. */
+  *out = v;
+  return 0;
+}
+
+tr_status tr_lex_tok_double(tr_lex *lx, const char *what, double *out)
+{
+  int r = tr_parse_double(lx->tok, lx->toklen, out);
+  if (r == -2)
+    return tr_error(TR_ERR_INPUT, "%s:%lu: %s '%.*s' is not a finite number (NaN/Inf rejected)",
+                    lx->name, lx->tokline, what, (int)(lx->toklen > 40 ? 40 : lx->toklen),
+                    lx->tok);
+  if (r != 0)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: expected a number for %s, found '%.*s'", lx->name,
+                    lx->tokline, what, (int)(lx->toklen > 40 ? 40 : lx->toklen), lx->tok);
+  return TR_OK;
+}
+
+tr_status tr_lex_double(tr_lex *lx, const char *what, double *out)
+{
+  if (!tr_lex_next(lx))
+    return tr_lex_eof(lx, what);
+  return tr_lex_tok_double(lx, what, out);
+}
+
+tr_status tr_lex_tok_i64(tr_lex *lx, const char *what, int64_t *out)
+{
+  const char *s = lx->tok;
+  size_t n = lx->toklen, i = 0;
+  int neg = 0;
+  if (n > 0 && (s[0] == '-' || s[0] == '+')) {
+    neg = s[0] == '-';
+    i = 1;
+  }
+  if (i == n)
+    goto bad;
+  uint64_t v = 0;
+  for (; i < n; i++) {
+    if (s[i] < '0' || s[i] > '9')
+      goto bad;
+    if (v > (UINT64_C(1) << 62))
+      return tr_error(TR_ERR_INPUT, "%s:%lu: %s '%.*s' is out of range", lx->name, lx->tokline,
+                      what, (int)(n > 40 ? 40 : n), s);
+    v = v * 10 + (uint64_t)(s[i] - '0');
+  }
+  *out = neg ? -(int64_t)v : (int64_t)v;
+  return TR_OK;
+bad:
+  return tr_error(TR_ERR_PARSE, "%s:%lu: expected an integer for %s, found '%.*s'", lx->name,
+                  lx->tokline, what, (int)(n > 40 ? 40 : n), s);
+}
+
+tr_status tr_lex_i64(tr_lex *lx, const char *what, int64_t *out)
+{
+  if (!tr_lex_next(lx))
+    return tr_lex_eof(lx, what);
+  return tr_lex_tok_i64(lx, what, out);
+}
+
+tr_status tr_lex_u64(tr_lex *lx, const char *what, uint64_t *out)
+{
+  int64_t v;
+  TR_CHECK(tr_lex_i64(lx, what, &v));
+  if (v < 0)
+    return tr_error(TR_ERR_INPUT, "%s:%lu: %s must not be negative (found %lld)", lx->name,
+                    lx->tokline, what, (long long)v);
+  *out = (uint64_t)v;
+  return TR_OK;
+}
+
+tr_status tr_check_room(const char *name, unsigned long line, uint64_t count, const char *what,
+                        size_t bytes_left, size_t min_bytes, uint32_t limit)
+{
+  uint64_t room = min_bytes ? (uint64_t)(bytes_left + 1) / min_bytes : UINT64_MAX;
+  if (count > room)
+    return tr_error(TR_ERR_PARSE,
+                    "%s:%lu: header declares %llu %s but the file has room for at most %llu",
+                    name, line, (unsigned long long)count, what, (unsigned long long)room);
+  if (count > limit)
+    return tr_error(TR_ERR_NOMEM, "%s:%lu: %llu %s exceed the limit of %lu", name, line,
+                    (unsigned long long)count, what, (unsigned long)limit);
+  return TR_OK;
+}

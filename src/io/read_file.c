@@ -1,0 +1,138 @@
+/* Loading files and choosing the reader by extension. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io.h"
+
+int tr_io_has_ext(const char *path, const char *ext)
+{
+  size_t n = strlen(path), m = strlen(ext);
+  if (n < m)
+    return 0;
+  for (size_t i = 0; i < m; i++) {
+    char a = path[n - m + i], b = ext[i];
+    if (a >= 'A' && a <= 'Z')
+      a = (char)(a - 'A' + 'a');
+    if (a != b)
+      return 0;
+  }
+  return 1;
+}
+
+tr_status tr_io_load(const char *path, char **buf, size_t *len)
+{
+  FILE *f = fopen(path, "rb");
+  if (!f)
+    return tr_error(TR_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+  size_t cap = 1 << 16, n = 0;
+  char *b = malloc(cap);
+  while (b) {
+    size_t r = fread(b + n, 1, cap - n - 1, f);
+    n += r;
+    if (n + 1 < cap) {
+      if (ferror(f)) {
+        free(b);
+        fclose(f);
+        return tr_error(TR_ERR_IO, "%s: read error: %s", path, strerror(errno));
+      }
+      break;
+    }
+    char *nb = cap < ((size_t)1 << 40) ? realloc(b, cap * 2) : NULL;
+    if (!nb)
+      free(b);
+    b = nb;
+    cap *= 2;
+  }
+  fclose(f);
+  if (!b)
+    return tr_error(TR_ERR_NOMEM, "%s: out of memory loading the file", path);
+  b[n] = '\0';
+  *buf = b;
+  *len = n;
+  return TR_OK;
+}
+
+/* base + new extension, e.g. "cube.poly" -> "cube.node". */
+static char *sibling(const char *path, const char *ext)
+{
+  const char *dot = strrchr(path, '.');
+  size_t n = dot ? (size_t)(dot - path) : strlen(path);
+  char *s = malloc(n + strlen(ext) + 1);
+  if (s) {
+    memcpy(s, path, n);
+    strcpy(s + n, ext);
+  }
+  return s;
+}
+
+tr_status tr_io_read_file(const char *path, struct tr_plc *plc)
+{
+  char *buf = NULL, *nbuf = NULL, *npath = NULL;
+  size_t len = 0, nlen = 0;
+  tr_status st;
+  int kind = -1;
+  static const char *exts[] = {".off", ".stl", ".obj", ".ply", ".mesh",
+                               ".node", ".poly", ".smesh", ".ele"};
+  for (int i = 0; i < 9; i++)
+    if (tr_io_has_ext(path, exts[i]))
+      kind = i;
+  if (kind < 0)
+    return tr_error(TR_ERR_USAGE,
+                    "%s: unknown file extension (supported: .off .stl .obj .ply .mesh .node "
+                    ".poly .smesh .ele)", path);
+  if (kind == 8) {
+    /* .ele: the points come from the .node next to it. */
+    npath = sibling(path, ".node");
+    if (!npath)
+      return tr_error(TR_ERR_NOMEM, "out of memory");
+    st = tr_io_read_file(npath, plc);
+    free(npath);
+    if (st != TR_OK)
+      return st;
+    st = tr_io_load(path, &buf, &len);
+    if (st == TR_OK)
+      st = tr_read_ele_buf(buf, len, path, plc);
+    free(buf);
+    return st;
+  }
+  TR_CHECK(tr_io_load(path, &buf, &len));
+  switch (kind) {
+  case 0: st = tr_read_off_buf(buf, len, path, plc); break;
+  case 1: st = tr_read_stl_buf(buf, len, path, plc); break;
+  case 2: st = tr_read_obj_buf(buf, len, path, plc); break;
+  case 3: st = tr_read_ply_buf(buf, len, path, plc); break;
+  case 4: st = tr_read_medit_buf(buf, len, path, plc); break;
+  case 5: st = tr_read_tetgen_buf(TR_TETGEN_NODE, buf, len, path, NULL, 0, NULL, plc); break;
+  default: {
+    /* A .poly/.smesh may leave its points to the .node of the same name. */
+    npath = sibling(path, ".node");
+    if (npath) {
+      FILE *f = fopen(npath, "rb");
+      if (f) {
+        fclose(f);
+        st = tr_io_load(npath, &nbuf, &nlen);
+        if (st != TR_OK) {
+          free(buf);
+          free(npath);
+          return st;
+        }
+      }
+    }
+    st = tr_read_tetgen_buf(kind == 6 ? TR_TETGEN_POLY : TR_TETGEN_SMESH, buf, len, path, nbuf,
+                            nlen, npath, plc);
+    break;
+  }
+  }
+  free(buf);
+  free(nbuf);
+  free(npath);
+  if (st == TR_OK && !plc->source) {
+    size_t n = strlen(path);
+    plc->source = malloc(n + 1);
+    if (plc->source)
+      memcpy(plc->source, path, n + 1);
+  }
+  return st;
+}

@@ -1,0 +1,293 @@
+/* TetGen files: .node (points), .poly (facets = polygons with hole points), .smesh
+ * (facets = single polygons), .ele (tetrahedra, for `tetrec check`).
+ *
+ * Indices may start at 0 or 1: the first point's number decides, as in TetGen.
+ * Coordinates may be written as exact rationals "num/den" (tetrec's --exact output);
+ * they are read exactly and rounded to the nearest double, ties to even. */
+#include <gmp.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io.h"
+#include "lex.h"
+#include "soup.h"
+
+/* Nearest double to q (ties to even). mpq_get_d truncates, so compare the truncation
+ * and its neighbour away from zero exactly. */
+static double q_nearest(const mpq_t q)
+{
+  double t = mpq_get_d(q);
+  if (!isfinite(t))
+    return t;
+  mpq_t d, e;
+  mpq_inits(d, e, NULL);
+  mpq_set_d(d, t);
+  if (mpq_equal(d, q)) {
+    mpq_clears(d, e, NULL);
+    return t;
+  }
+  double u = nextafter(t, mpq_sgn(q) > 0 ? INFINITY : -INFINITY);
+  if (!isfinite(u)) {
+    mpq_clears(d, e, NULL);
+    return u;
+  }
+  mpq_sub(d, q, d); /* q - t */
+  mpq_abs(d, d);
+  mpq_set_d(e, u);
+  mpq_sub(e, e, q); /* u - q */
+  mpq_abs(e, e);
+  int c = mpq_cmp(d, e);
+  mpq_clears(d, e, NULL);
+  if (c < 0)
+    return t;
+  if (c > 0)
+    return u;
+  uint64_t bt;
+  memcpy(&bt, &t, 8);
+  return (bt & 1) ? u : t;
+}
+
+static tr_status coord(tr_lex *lx, double *out)
+{
+  if (!tr_lex_next(lx))
+    return tr_lex_eof(lx, "a point coordinate");
+  const char *slash = memchr(lx->tok, '/', lx->toklen);
+  if (!slash)
+    return tr_lex_tok_double(lx, "a point coordinate", out);
+  char buf[4096];
+  if (lx->toklen >= sizeof buf)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: rational coordinate too long", lx->name, lx->tokline);
+  memcpy(buf, lx->tok, lx->toklen);
+  buf[lx->toklen] = '\0';
+  /* mpq_set_str accepts leading blanks and a sign only on the numerator; keep to
+   * [-]digits/digits so junk cannot slip through. */
+  size_t i = buf[0] == '-' ? 1 : 0, ndig = 0, ddig = 0;
+  for (; buf[i] >= '0' && buf[i] <= '9'; i++)
+    ndig++;
+  if (buf[i] == '/')
+    for (i++; buf[i] >= '0' && buf[i] <= '9'; i++)
+      ddig++;
+  if (buf[i] != '\0' || !ndig || !ddig)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: bad rational coordinate '%.40s'", lx->name,
+                    lx->tokline, buf);
+  mpq_t q;
+  mpq_init(q);
+  tr_status st = TR_OK;
+  if (mpq_set_str(q, buf, 10) != 0 || mpz_sgn(mpq_denref(q)) == 0)
+    st = tr_error(TR_ERR_PARSE, "%s:%lu: bad rational coordinate '%.40s'", lx->name, lx->tokline,
+                  buf);
+  else {
+    mpq_canonicalize(q);
+    *out = q_nearest(q);
+    if (!isfinite(*out))
+      st = tr_error(TR_ERR_INPUT, "%s:%lu: rational coordinate overflows a double", lx->name,
+                    lx->tokline);
+  }
+  mpq_clear(q);
+  return st;
+}
+
+/* Reads a node list (header + points) into s; *base = first index (0 or 1). */
+static tr_status node_list(tr_lex *lx, tr_soup *s, int64_t *base)
+{
+  int64_t n, dim, nattr, nbm;
+  TR_CHECK(tr_lex_i64(lx, "the point count", &n));
+  unsigned long hline = lx->tokline;
+  TR_CHECK(tr_lex_i64(lx, "the dimension", &dim));
+  TR_CHECK(tr_lex_i64(lx, "the attribute count", &nattr));
+  TR_CHECK(tr_lex_i64(lx, "the boundary marker flag", &nbm));
+  if (n < 0 || nattr < 0 || nbm < 0 || nbm > 1)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: bad node list header", lx->name, hline);
+  if (n > 0 && dim != 3)
+    return tr_error(TR_ERR_UNSUPPORTED, "%s:%lu: dimension %lld (only 3 is supported)", lx->name,
+                    hline, (long long)dim);
+  TR_CHECK(tr_check_room(lx->name, hline, (uint64_t)n, "points", tr_lex_left(lx), 8,
+                         TR_IO_MAX_COUNT / 3));
+  TR_CHECK(tr_soup_reserve_points(s, (uint32_t)n));
+  for (int64_t i = 0; i < n; i++) {
+    int64_t id;
+    double p[3];
+    TR_CHECK(tr_lex_i64(lx, "a point number", &id));
+    if (i == 0) {
+      if (id != 0 && id != 1)
+        return tr_error(TR_ERR_INPUT, "%s:%lu: first point is numbered %lld (0 or 1 expected)",
+                        lx->name, lx->tokline, (long long)id);
+      *base = id;
+    } else if (id != *base + i)
+      return tr_error(TR_ERR_INPUT, "%s:%lu: point number %lld out of sequence (%lld expected)",
+                      lx->name, lx->tokline, (long long)id, (long long)(*base + i));
+    for (int k = 0; k < 3; k++)
+      TR_CHECK(coord(lx, &p[k]));
+    TR_CHECK(tr_soup_add_point(s, p));
+    if (!tr_lex_at_eol(lx))
+      tr_lex_skip_line(lx); /* attributes and marker */
+  }
+  return TR_OK;
+}
+
+static tr_status vindex(tr_lex *lx, const tr_soup *s, int64_t base, uint32_t *out)
+{
+  int64_t v;
+  TR_CHECK(tr_lex_i64(lx, "a vertex number", &v));
+  if (v < base || v - base >= (int64_t)s->npoints)
+    return tr_error(TR_ERR_INPUT, "%s:%lu: vertex number %lld out of range (%lld..%lld)",
+                    lx->name, lx->tokline, (long long)v, (long long)base,
+                    (long long)(base + s->npoints - 1));
+  *out = (uint32_t)(v - base);
+  return TR_OK;
+}
+
+static tr_status polygon(tr_lex *lx, tr_soup *s, int64_t base, unsigned long *line)
+{
+  int64_t k;
+  TR_CHECK(tr_lex_i64(lx, "a polygon size", &k));
+  *line = lx->tokline;
+  if (k < 1 || (uint64_t)k > tr_lex_left(lx))
+    return tr_error(TR_ERR_INPUT, "%s:%lu: polygon with %lld vertices", lx->name, lx->tokline,
+                    (long long)k);
+  if (k < 3)
+    return tr_error(TR_ERR_UNSUPPORTED,
+                    "%s:%lu: polygon with %lld vertices (segments and isolated points in "
+                    "facets are not supported)", lx->name, lx->tokline, (long long)k);
+  TR_CHECK(tr_soup_begin_loop(s));
+  for (int64_t j = 0; j < k; j++) {
+    uint32_t v = 0;
+    TR_CHECK(vindex(lx, s, base, &v));
+    TR_CHECK(tr_soup_add_index(s, v));
+  }
+  return TR_OK;
+}
+
+static tr_status facets(tr_lex *lx, tr_soup *s, int64_t base, int smesh)
+{
+  int64_t nf, nbm = 0;
+  TR_CHECK(tr_lex_i64(lx, "the facet count", &nf));
+  unsigned long hline = lx->tokline;
+  if (!tr_lex_at_eol(lx))
+    TR_CHECK(tr_lex_i64(lx, "the facet marker flag", &nbm));
+  if (nf < 0)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: negative facet count", lx->name, hline);
+  TR_CHECK(tr_check_room(lx->name, hline, (uint64_t)nf, "facets", tr_lex_left(lx), 8,
+                         TR_IO_MAX_COUNT / 3));
+  for (int64_t f = 0; f < nf; f++) {
+    int64_t npoly = 1, nholes = 0, marker = 0;
+    unsigned long line = lx->line;
+    if (smesh) {
+      TR_CHECK(tr_soup_begin_facet(s, 0, line));
+      TR_CHECK(polygon(lx, s, base, &line));
+      if (nbm && !tr_lex_at_eol(lx)) {
+        TR_CHECK(tr_lex_i64(lx, "a facet marker", &marker));
+        s->facet_marker.a[s->facet_marker.n - 1] = (uint32_t)(int32_t)marker;
+      }
+      s->facet_line.a[s->facet_line.n - 1] = (uint32_t)line;
+      if (!tr_lex_at_eol(lx))
+        tr_lex_skip_line(lx);
+      continue;
+    }
+    TR_CHECK(tr_lex_i64(lx, "a facet's polygon count", &npoly));
+    line = lx->tokline;
+    if (!tr_lex_at_eol(lx))
+      TR_CHECK(tr_lex_i64(lx, "a facet's hole count", &nholes));
+    if (nbm && !tr_lex_at_eol(lx))
+      TR_CHECK(tr_lex_i64(lx, "a facet marker", &marker));
+    if (npoly < 0 || nholes < 0 || (uint64_t)npoly > tr_lex_left(lx) ||
+        (uint64_t)nholes > tr_lex_left(lx))
+      return tr_error(TR_ERR_PARSE, "%s:%lu: bad facet header", lx->name, line);
+    TR_CHECK(tr_soup_begin_facet(s, (int32_t)marker, line));
+    for (int64_t p = 0; p < npoly; p++) {
+      unsigned long pl;
+      TR_CHECK(polygon(lx, s, base, &pl));
+      if (!tr_lex_at_eol(lx))
+        tr_lex_skip_line(lx);
+    }
+    for (int64_t h = 0; h < nholes; h++) {
+      int64_t id;
+      double q[3];
+      TR_CHECK(tr_lex_i64(lx, "a hole number", &id));
+      for (int k = 0; k < 3; k++)
+        TR_CHECK(coord(lx, &q[k]));
+      TR_CHECK(tr_soup_add_hole(s, q));
+    }
+  }
+  /* Volume holes and regions follow; they do not change the surface. */
+  return TR_OK;
+}
+
+static tr_status parse(enum tr_tetgen_kind kind, tr_lex *lx, tr_lex *nodes, tr_soup *s)
+{
+  int64_t base = 0;
+  TR_CHECK(node_list(lx, s, &base));
+  if (kind == TR_TETGEN_NODE)
+    return TR_OK;
+  if (s->npoints == 0) {
+    if (!nodes)
+      return tr_error(TR_ERR_INPUT, "%s: the point list is empty and no .node file was found",
+                      lx->name);
+    TR_CHECK(node_list(nodes, s, &base));
+  }
+  return facets(lx, s, base, kind == TR_TETGEN_SMESH);
+}
+
+tr_status tr_read_tetgen_buf(enum tr_tetgen_kind kind, const char *buf, size_t len,
+                             const char *name, const char *node_buf, size_t node_len,
+                             const char *node_name, struct tr_plc *plc)
+{
+  tr_lex lx, nl;
+  tr_soup s;
+  if (kind == TR_TETGEN_ELE)
+    return tr_read_ele_buf(buf, len, name, plc);
+  tr_lex_init(&lx, buf, len, name, '#');
+  if (node_buf)
+    tr_lex_init(&nl, node_buf, node_len, node_name, '#');
+  tr_soup_init(&s, lx.name);
+  tr_status st = parse(kind, &lx, node_buf ? &nl : NULL, &s);
+  if (st == TR_OK)
+    st = tr_soup_to_plc(&s, plc);
+  tr_soup_free(&s);
+  return st;
+}
+
+tr_status tr_read_ele_buf(const char *buf, size_t len, const char *name, struct tr_plc *plc)
+{
+  tr_lex lx;
+  tr_lex_init(&lx, buf, len, name, '#');
+  int64_t n, per, nattr = 0, base = 0;
+  TR_CHECK(tr_lex_i64(&lx, "the tetrahedron count", &n));
+  unsigned long hline = lx.tokline;
+  TR_CHECK(tr_lex_i64(&lx, "the nodes per tetrahedron", &per));
+  if (!tr_lex_at_eol(&lx))
+    TR_CHECK(tr_lex_i64(&lx, "the attribute count", &nattr));
+  if (n < 0 || (per != 4 && per != 10))
+    return tr_error(TR_ERR_PARSE, "%s:%lu: bad .ele header", lx.name, hline);
+  TR_CHECK(tr_check_room(lx.name, hline, (uint64_t)n, "tetrahedra", tr_lex_left(&lx), 10,
+                         TR_IO_MAX_COUNT / 4));
+  uint32_t *t = malloc(sizeof *t * 4 * (size_t)(n ? n : 1));
+  if (!t)
+    return tr_error(TR_ERR_NOMEM, "out of memory reading %s", lx.name);
+  tr_status st = TR_OK;
+  for (int64_t i = 0; i < n && st == TR_OK; i++) {
+    int64_t id, v;
+    st = tr_lex_i64(&lx, "a tetrahedron number", &id);
+    if (st == TR_OK && i == 0)
+      base = id == 1 ? 1 : 0;
+    for (int k = 0; k < 4 && st == TR_OK; k++) {
+      st = tr_lex_i64(&lx, "a vertex number", &v);
+      if (st == TR_OK && (v < base || v - base >= (int64_t)plc->npoints))
+        st = tr_error(TR_ERR_INPUT, "%s:%lu: tetrahedron %lld: vertex number %lld out of range",
+                      lx.name, lx.tokline, (long long)id, (long long)v);
+      if (st == TR_OK)
+        t[4 * i + k] = (uint32_t)(v - base);
+    }
+    if (st == TR_OK && !tr_lex_at_eol(&lx))
+      tr_lex_skip_line(&lx);
+  }
+  if (st != TR_OK) {
+    free(t);
+    return st;
+  }
+  free(plc->tets);
+  plc->tets = t;
+  plc->ntets = (uint32_t)n;
+  return TR_OK;
+}

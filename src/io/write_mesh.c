@@ -1,0 +1,82 @@
+/* Public writers: tr_mesh_write (from the mesh store) and tr_plc_write (a surface), both
+ * through struct tr_mesh_view so that the format writers never see the store. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "io.h"
+#include "mesh/mesh.h"
+
+/* Boundary faces of the kept tets: a face is written when the tet across it is missing,
+ * a ghost, or outside the domain, or belongs to another region. Each face is listed as
+ * seen from its tet (right-hand normal pointing out of it). */
+static int keep(const struct tr_mesh *m, uint32_t t)
+{
+  return tr_tet_is_real(m, t) && !(m->flags && (m->flags[t] & TR_TF_OUTER));
+}
+
+tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
+{
+  tr_error_clear();
+  const struct tr_mesh *m = mesh;
+  if (!m)
+    return tr_error(TR_ERR_USAGE, "tr_mesh_write: no mesh");
+  uint32_t nt = 0, nf = 0;
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (keep(m, t)) {
+      nt++;
+      for (int k = 0; k < 4; k++) {
+        uint32_t o = TR_NEIG(m, t, k);
+        if (o == TR_NONE || !keep(m, o) || (m->region && m->region[o] != m->region[t] && o > t))
+          nf++;
+      }
+    }
+  uint32_t *tets = malloc(sizeof *tets * 4 * (size_t)(nt ? nt : 1));
+  int32_t *reg = m->region ? malloc(sizeof *reg * (nt ? nt : 1)) : NULL;
+  uint32_t *tris = malloc(sizeof *tris * 3 * (size_t)(nf ? nf : 1));
+  int32_t *mark = calloc(nf ? nf : 1, sizeof *mark);
+  if (!tets || (m->region && !reg) || !tris || !mark) {
+    free(tets);
+    free(reg);
+    free(tris);
+    free(mark);
+    return tr_error(TR_ERR_NOMEM, "out of memory writing %s", path);
+  }
+  uint32_t i = 0, f = 0;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!keep(m, t))
+      continue;
+    memcpy(tets + 4 * (size_t)i, m->tv + 4 * (size_t)t, 4 * sizeof *tets);
+    if (reg)
+      reg[i] = (int32_t)m->region[t];
+    i++;
+    for (int k = 0; k < 4; k++) {
+      uint32_t o = TR_NEIG(m, t, k);
+      if (o == TR_NONE || !keep(m, o) || (m->region && m->region[o] != m->region[t] && o > t)) {
+        /* tr_face_vtx order has the normal pointing into the tet: reverse it. */
+        tris[3 * (size_t)f] = m->tv[4 * (size_t)t + tr_face_vtx[k][0]];
+        tris[3 * (size_t)f + 1] = m->tv[4 * (size_t)t + tr_face_vtx[k][2]];
+        tris[3 * (size_t)f + 2] = m->tv[4 * (size_t)t + tr_face_vtx[k][1]];
+        mark[f] = 1;
+        f++;
+      }
+    }
+  }
+  struct tr_mesh_view v = {m->nv, m->xyz, (const tr_qpoint *const *)m->vq, nt, tets, reg,
+                           nf, tris, mark};
+  tr_status st = tr_write_mesh_view(&v, path, exact);
+  free(tets);
+  free(reg);
+  free(tris);
+  free(mark);
+  return st;
+}
+
+tr_status tr_plc_write(const tr_plc *plc, const char *path)
+{
+  tr_error_clear();
+  struct tr_mesh_view v = {plc->npoints, plc->xyz, NULL, plc->ntets, plc->tets, NULL,
+                           plc->ntris, plc->tris, plc->tri_marker};
+  if (tr_io_has_ext(path, ".off"))
+    return tr_write_off(&v, path);
+  return tr_write_mesh_view(&v, path, 0);
+}

@@ -1,0 +1,105 @@
+/* TetGen .node/.ele/.face output, 1-based like TetGen's default.
+ *
+ * Exact format (--exact): a vertex that has an exact rational position (a Steiner point)
+ * has each coordinate written as "num/den" in lowest terms, base 10, den > 0 (den == 1 is
+ * written as a plain integer); every other coordinate is the double in %.17g. tetrec's
+ * .node reader accepts both forms and rounds a rational to the nearest double. The first
+ * line of such a file is the comment "# tetrec exact rationals". */
+#include <errno.h>
+#include <stdio.h> /* before gmp.h: enables mpq_out_str */
+#include <gmp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io.h"
+
+static FILE *open_ext(const char *base, const char *ext, tr_status *st)
+{
+  size_t n = strlen(base);
+  char *p = malloc(n + strlen(ext) + 1);
+  if (!p) {
+    *st = tr_error(TR_ERR_NOMEM, "out of memory");
+    return NULL;
+  }
+  memcpy(p, base, n);
+  strcpy(p + n, ext);
+  FILE *f = fopen(p, "w");
+  if (!f)
+    *st = tr_error(TR_ERR_IO, "%s: cannot create: %s", p, strerror(errno));
+  free(p);
+  return f;
+}
+
+static tr_status done(FILE *f, const char *base, const char *ext)
+{
+  int bad = ferror(f);
+  if (fclose(f) != 0 || bad)
+    return tr_error(TR_ERR_IO, "%s%s: write failed", base, ext);
+  return TR_OK;
+}
+
+tr_status tr_write_tetgen(const struct tr_mesh_view *m, const char *base, int exact)
+{
+  tr_status st = TR_OK;
+  FILE *f = open_ext(base, ".node", &st);
+  if (!f)
+    return st;
+  if (exact && m->exact)
+    fprintf(f, "# tetrec exact rationals\n");
+  fprintf(f, "%u 3 0 0\n", m->nverts);
+  for (uint32_t i = 0; i < m->nverts; i++) {
+    const tr_qpoint *q = exact && m->exact ? m->exact[i] : NULL;
+    fprintf(f, "%u", i + 1);
+    for (int k = 0; k < 3; k++) {
+      if (q) {
+        fputc(' ', f);
+        mpq_out_str(f, 10, q->c[k]);
+      } else
+        fprintf(f, " %.17g", m->xyz[3 * (size_t)i + k]);
+    }
+    fputc('\n', f);
+  }
+  TR_CHECK(done(f, base, ".node"));
+  if (!(f = open_ext(base, ".ele", &st)))
+    return st;
+  fprintf(f, "%u 4 %d\n", m->ntets, m->region ? 1 : 0);
+  for (uint32_t t = 0; t < m->ntets; t++) {
+    const uint32_t *v = m->tets + 4 * (size_t)t;
+    fprintf(f, "%u %u %u %u %u", t + 1, v[0] + 1, v[1] + 1, v[2] + 1, v[3] + 1);
+    if (m->region)
+      fprintf(f, " %d", (int)m->region[t]);
+    fputc('\n', f);
+  }
+  TR_CHECK(done(f, base, ".ele"));
+  if (!(f = open_ext(base, ".face", &st)))
+    return st;
+  fprintf(f, "%u 1\n", m->ntris);
+  for (uint32_t t = 0; t < m->ntris; t++) {
+    const uint32_t *v = m->tris + 3 * (size_t)t;
+    fprintf(f, "%u %u %u %u %d\n", t + 1, v[0] + 1, v[1] + 1, v[2] + 1,
+            m->tri_marker ? (int)m->tri_marker[t] : 0);
+  }
+  return done(f, base, ".face");
+}
+
+tr_status tr_write_mesh_view(const struct tr_mesh_view *m, const char *path, int exact)
+{
+  if (tr_io_has_ext(path, ".mesh"))
+    return tr_write_medit(m, path);
+  if (tr_io_has_ext(path, ".vtu"))
+    return tr_write_vtu(m, path);
+  size_t n = strlen(path);
+  if (tr_io_has_ext(path, ".node") || tr_io_has_ext(path, ".ele") ||
+      tr_io_has_ext(path, ".face")) {
+    char *base = malloc(n + 1);
+    if (!base)
+      return tr_error(TR_ERR_NOMEM, "out of memory");
+    memcpy(base, path, n + 1);
+    *strrchr(base, '.') = '\0';
+    tr_status st = tr_write_tetgen(m, base, exact);
+    free(base);
+    return st;
+  }
+  /* Anything else is a TetGen base name such as "cube.1". */
+  return tr_write_tetgen(m, path, exact);
+}

@@ -1,0 +1,137 @@
+/* Ball(P) and Shell(E): the two neighbourhoods the recovery stages walk. */
+#include "mesh.h"
+
+#include <stdlib.h>
+
+tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out)
+{
+  out->n = 0;
+  if (p >= m->nv)
+    return tr_error(TR_ERR_INTERNAL, "Ball(%u): no such vertex (%u vertices)", p, m->nv);
+  uint32_t t0 = m->v2t[p];
+  if (t0 == TR_NONE || t0 >= m->nt || tr_ncode(m, t0, p) < 0)
+    return tr_error(TR_ERR_INVALID_MESH, "Ball(%u): v2t[%u] = %u does not contain the vertex",
+                    p, p, t0);
+  /* The buffer doubles as the BFS queue. Ghosts are always traversed: a hull vertex's
+   * real tets are connected through faces containing p anyway, but v2t may name a ghost. */
+  TR_CHECK(tr_u32buf_push(out, t0));
+  m->flags[t0] |= TR_TF_MARK;
+  tr_status s = TR_OK;
+  for (size_t i = 0; i < out->n && s == TR_OK; i++) {
+    uint32_t t = out->a[i];
+    for (int k = 0; k < 4; k++) {
+      if (m->tv[4 * (size_t)t + (size_t)k] == p)
+        continue;
+      uint32_t u = TR_NEIG(m, t, k);
+      if (u == TR_NONE || (m->flags[u] & TR_TF_MARK))
+        continue;
+      m->flags[u] |= TR_TF_MARK;
+      if ((s = tr_u32buf_push(out, u)) != TR_OK)
+        break;
+    }
+  }
+  size_t j = 0;
+  for (size_t i = 0; i < out->n; i++) {
+    uint32_t t = out->a[i];
+    m->flags[t] &= (uint8_t)~TR_TF_MARK;
+    if (with_ghosts || !tr_tet_is_ghost(m, t))
+      out->a[j++] = t;
+  }
+  out->n = j;
+  return s;
+}
+
+/* For tet t containing a (slot i) and b (slot j): the slots c, d such that (a,b,c,d) is
+ * an even permutation of the slots, i.e. a positively oriented listing of t. */
+static void shell_cd(int i, int j, int *c, int *d)
+{
+  int x = -1, y = -1;
+  for (int k = 0; k < 4; k++)
+    if (k != i && k != j) {
+      if (x < 0)
+        x = k;
+      else
+        y = k;
+    }
+  int perm[4] = {i, j, x, y}, inv = 0;
+  for (int p = 0; p < 4; p++)
+    for (int q = p + 1; q < 4; q++)
+      inv += perm[p] > perm[q];
+  if (inv % 2 == 0) {
+    *c = x;
+    *d = y;
+  } else {
+    *c = y;
+    *d = x;
+  }
+}
+
+tr_status tr_shell(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0, tr_u32buf *out,
+                   int *closed)
+{
+  out->n = 0;
+  *closed = 0;
+  if (t0 == TR_NONE) {
+    tr_u32buf ball = {0};
+    tr_status s = tr_ball(m, a, 1, &ball);
+    if (s == TR_OK) {
+      for (size_t i = 0; i < ball.n && t0 == TR_NONE; i++)
+        if (tr_ncode(m, ball.a[i], b) >= 0)
+          t0 = ball.a[i];
+    }
+    tr_u32buf_free(&ball);
+    TR_CHECK(s);
+    if (t0 == TR_NONE)
+      return tr_error(TR_ERR_INTERNAL, "Shell(%u,%u): the edge is not in the mesh", a, b);
+  }
+  if (tr_tet_ecode(m, t0, a, b) < 0)
+    return tr_error(TR_ERR_INTERNAL, "Shell(%u,%u): tet %u does not have this edge", a, b, t0);
+  /* Forward: across the face opposite c (it holds a, b, d). */
+  uint32_t t = t0, limit = m->nt + 1;
+  for (;;) {
+    TR_CHECK(tr_u32buf_push(out, t));
+    int c, d;
+    shell_cd(tr_ncode(m, t, a), tr_ncode(m, t, b), &c, &d);
+    uint32_t u = TR_NEIG(m, t, c);
+    if (u == t0) {
+      *closed = 1;
+      return TR_OK;
+    }
+    if (u == TR_NONE)
+      break;
+    if (tr_tet_ecode(m, u, a, b) < 0 || out->n > limit)
+      return tr_error(TR_ERR_INVALID_MESH, "Shell(%u,%u): tet %u does not close around the edge",
+                      a, b, u);
+    t = u;
+  }
+  /* Open shell: walk backwards from t0 (across the face opposite d) and put those first. */
+  size_t nfwd = out->n;
+  t = t0;
+  for (;;) {
+    int c, d;
+    shell_cd(tr_ncode(m, t, a), tr_ncode(m, t, b), &c, &d);
+    uint32_t u = TR_NEIG(m, t, d);
+    if (u == TR_NONE)
+      break;
+    if (tr_tet_ecode(m, u, a, b) < 0 || out->n > limit)
+      return tr_error(TR_ERR_INVALID_MESH, "Shell(%u,%u): tet %u does not close around the edge",
+                      a, b, u);
+    TR_CHECK(tr_u32buf_push(out, u));
+    t = u;
+  }
+  /* out = fwd[0..nfwd) back[nfwd..n): reorder to reverse(back) fwd. */
+  size_t nb = out->n - nfwd;
+  if (nb) {
+    uint32_t *tmp = malloc(out->n * sizeof *tmp);
+    if (!tmp)
+      return tr_error(TR_ERR_NOMEM, "out of memory in Shell");
+    for (size_t i = 0; i < nb; i++)
+      tmp[i] = out->a[out->n - 1 - i];
+    for (size_t i = 0; i < nfwd; i++)
+      tmp[nb + i] = out->a[i];
+    for (size_t i = 0; i < out->n; i++)
+      out->a[i] = tmp[i];
+    free(tmp);
+  }
+  return TR_OK;
+}

@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""CLI side of the malformed-input table: each file gives the documented exit code
+(= tr_status) and its message on stderr. Also checks the CLI conventions: --help
+documents the exit codes, --version, usage errors, default output names, --stats."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+tetrec, data, table = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
+fails = 0
+
+
+def run(args, cwd=None):
+    p = subprocess.run([tetrec] + args, capture_output=True, text=True, cwd=cwd)
+    return p.returncode, p.stdout, p.stderr
+
+
+def expect(cond, what):
+    global fails
+    if not cond:
+        print("FAILED:", what, file=sys.stderr)
+        fails += 1
+
+
+n = 0
+for line in open(table):
+    line = line.rstrip("\n")
+    if not line or line.startswith("#"):
+        continue
+    f, status, code, msg, cmd = line.split("|")
+    rc, _, err = run(cmd.split() + [os.path.join(data, "bad", f)])
+    expect(rc == int(code), f"{f}: exit {rc}, expected {code} ({err.strip()})")
+    expect(msg in err, f"{f}: stderr lacks '{msg}': {err.strip()}")
+    if int(code) != 0:
+        expect(status in err, f"{f}: stderr lacks the status name {status}")
+    n += 1
+expect(n >= 20, f"only {n} cases")
+
+rc, out, _ = run(["--help"])
+expect(rc == 0 and "exit status" in out and "7 self-intersecting" in out, "--help documents exit codes")
+rc, out, _ = run(["--version"])
+expect(rc == 0 and out.startswith("tetrec "), "--version")
+rc, _, err = run(["frobnicate", "x.off"])
+expect(rc == 1 and "unknown command" in err, f"unknown command -> 1: {rc} {err}")
+rc, _, err = run(["mesh"])
+expect(rc == 1, "missing file -> usage error 1")
+rc, _, err = run(["mesh", "--bogus", "x.off"])
+expect(rc == 1 and "unknown option" in err, "unknown option -> 1")
+rc, _, err = run(["mesh", "/nonexistent/x.off"])
+expect(rc == 2 and "cannot open" in err, f"missing file -> I/O error 2: {rc} {err}")
+rc, _, err = run(["mesh", "x.xyz"])
+expect(rc == 1 and "unknown file extension" in err, f"unknown extension -> 1: {rc}")
+
+with tempfile.TemporaryDirectory() as d:
+    src = os.path.join(data, "tet.off")
+    shutil.copy(src, os.path.join(d, "t.off"))
+    rc, _, err = run(["mesh", "t.off"], cwd=d)
+    expect(rc == 11 and "not implemented" in err, f"mesh -> 11 until recovery exists: {rc} {err}")
+    rc, _, err = run(["mesh", "--check-only", "--stats", "s.json", "t.off"], cwd=d)
+    expect(rc == 0, f"--check-only: {rc} {err}")
+    st = json.load(open(os.path.join(d, "s.json")))
+    expect(st["surface_nodes"] == 4 and st["surface_facets"] == 4, f"stats json {st}")
+    rc, _, err = run(["delaunay", "-q", "t.off"], cwd=d)
+    expect(rc == 0 and err == "", f"delaunay -q: {rc} {err}")
+    for ext in (".node", ".ele", ".face"):
+        expect(os.path.exists(os.path.join(d, "t.1" + ext)), "default output t.1" + ext)
+    rc, _, err = run(["check", "t.off", "t.1.node"], cwd=d)
+    expect(rc == 0, f"check of the Delaunay mesh of a tetrahedron: {rc} {err}")
+    rc, _, err = run(["delaunay", "-q", "t.off", "-o", "a.mesh"], cwd=d)
+    rc2, _, _ = run(["delaunay", "-q", "t.off", "-o", "b.mesh"], cwd=d)
+    expect(rc == 0 and rc2 == 0 and open(os.path.join(d, "a.mesh")).read() == open(os.path.join(d, "b.mesh")).read(),
+           "same input, same output byte for byte")
+    rc, _, err = run(["convert", os.path.join(data, "forms.obj"), "c.off"], cwd=d)
+    expect(rc == 0, f"convert obj -> off: {rc} {err}")
+    rc, _, err = run(["mesh", "--check-only", "c.off"], cwd=d)
+    expect(rc == 0, f"converted surface valid: {rc} {err}")
+    # a tet flipped in the mesh file must be reported by check
+    lines = open(os.path.join(d, "a.mesh")).read().split("\n")
+    i = lines.index("Tetrahedra") + 2
+    v = lines[i].split()
+    v[0], v[1] = v[1], v[0]
+    lines[i] = " ".join(v)
+    open(os.path.join(d, "bad.mesh"), "w").write("\n".join(lines))
+    rc, _, err = run(["check", "t.off", "bad.mesh"], cwd=d)
+    expect(rc == 9, f"check of an inverted tet -> 9: {rc} {err}")
+
+sys.exit(1 if fails else 0)

@@ -1,0 +1,497 @@
+/* I/O and validation tests. Each subcommand checks one property named by its meson test;
+ * a failure prints what differed. Usage: test_io SUBTEST DATADIR TMPDIR */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/plc.h"
+#include "input/validate.h"
+#include "io/io.h"
+#include "qpoint.h"
+#include "tetrec.h"
+
+static const char *data, *tmp;
+static int failures;
+
+#define EXPECT(cond, ...)                                                                    \
+  do {                                                                                       \
+    if (!(cond)) {                                                                           \
+      fprintf(stderr, "%s:%d: FAILED %s: ", __FILE__, __LINE__, #cond);                      \
+      fprintf(stderr, __VA_ARGS__);                                                          \
+      fputc('\n', stderr);                                                                   \
+      failures++;                                                                            \
+    }                                                                                        \
+  } while (0)
+
+static char *path(const char *dir, const char *name)
+{
+  static char buf[4][1024];
+  static int k;
+  k = (k + 1) % 4;
+  snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
+  return buf[k];
+}
+
+static struct tr_plc *read_ok(const char *file)
+{
+  struct tr_plc *p = calloc(1, sizeof *p);
+  tr_status s = tr_io_read_file(file, p);
+  EXPECT(s == TR_OK, "reading %s: %s (%s)", file, tr_status_name(s), tr_last_error());
+  return p;
+}
+
+static void destroy(struct tr_plc *p) { tr_plc_destroy(p); }
+
+static const double tet_xyz[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+static const uint32_t tet_tris[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+
+static void expect_tet(const struct tr_plc *p, const char *what)
+{
+  EXPECT(p->npoints == 4 && p->ntris == 4, "%s: %u points %u triangles (4, 4 expected)", what,
+         p->npoints, p->ntris);
+  if (p->npoints == 4)
+    EXPECT(memcmp(p->xyz, tet_xyz, sizeof tet_xyz) == 0, "%s: coordinates differ", what);
+  if (p->ntris == 4)
+    EXPECT(memcmp(p->tris, tet_tris, sizeof tet_tris) == 0, "%s: triangles differ", what);
+}
+
+/* Twice the signed area of triangle t projected on z (exact for small integers). */
+static double area2z(const struct tr_plc *p, uint32_t t)
+{
+  const double *a = p->xyz + 3 * p->tris[3 * t], *b = p->xyz + 3 * p->tris[3 * t + 1],
+               *c = p->xyz + 3 * p->tris[3 * t + 2];
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+static void t_off_variants(void)
+{
+  const char *f[] = {"tet.off", "variant_coff.off", "variant_noff.off"};
+  for (int i = 0; i < 3; i++) {
+    struct tr_plc *p = read_ok(path(data, f[i]));
+    expect_tet(p, f[i]);
+    destroy(p);
+  }
+}
+
+static void t_off_polygons(void)
+{
+  struct tr_plc *p = read_ok(path(data, "lshape.off"));
+  EXPECT(p->ntris == 5, "L-shaped 7-gon gives %u triangles (5 expected)", p->ntris);
+  double sum = 0;
+  for (uint32_t t = 0; t < p->ntris; t++) {
+    double a = area2z(p, t);
+    EXPECT(a > 0, "triangle %u has area2 %g: not positive (orientation lost or degenerate)", t, a);
+    sum += a;
+    EXPECT(p->tri_source[t] == 0, "triangle %u comes from face %u", t, p->tri_source[t]);
+  }
+  EXPECT(sum == 12, "triangles cover twice-area %g (12 expected)", sum);
+  destroy(p);
+  p = calloc(1, sizeof *p);
+  tr_status s = tr_io_read_file(path(data, "../../examples/data/cube.off"), p);
+  EXPECT(s == TR_OK && p->ntris == 12, "cube of 6 quads: %s, %u triangles", tr_last_error(),
+         p->ntris);
+  if (s == TR_OK) {
+    s = tr_plc_validate(p, NULL);
+    EXPECT(s == TR_OK && strcmp(tr_plc_report(p), "") == 0,
+           "triangulated cube must be valid without repair: %s / %s", tr_last_error(),
+           tr_plc_report(p));
+  }
+  destroy(p);
+}
+
+static void t_stl(void)
+{
+  struct tr_plc *p = read_ok(path(data, "tet_ascii.stl"));
+  /* First-occurrence order: (0,0,0) (0,1,0) (1,0,0) (0,0,1); -0 merged with 0. */
+  static const double xyz[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1};
+  static const uint32_t tris[12] = {0, 1, 2, 0, 2, 3, 0, 3, 1, 2, 1, 3};
+  EXPECT(p->npoints == 4 && p->ntris == 4, "ascii STL: %u points %u triangles", p->npoints,
+         p->ntris);
+  if (p->npoints == 4 && p->ntris == 4) {
+    EXPECT(memcmp(p->xyz, xyz, sizeof xyz) == 0, "ascii STL: merged points differ");
+    EXPECT(memcmp(p->tris, tris, sizeof tris) == 0, "ascii STL: triangles differ");
+    EXPECT(!signbit(p->xyz[0]), "-0.0 must be stored as the merged +0.0");
+  }
+  destroy(p);
+  /* Binary, header starting with "solid": decided by the size 84 + 50 n. */
+  unsigned char b[84 + 2 * 50];
+  memset(b, 0, sizeof b);
+  memcpy(b, "solid but binary", 16);
+  b[80] = 2;
+  float v[2][9] = {{0, 0, 0, 0, 1, 0, 1, 0, 0}, {-0.0f, 0, 0, 1, 0, 0, 0.1f, 0, 1}};
+  for (int t = 0; t < 2; t++)
+    memcpy(b + 84 + 50 * t + 12, v[t], 36); /* little-endian host assumed by the test */
+  p = calloc(1, sizeof *p);
+  tr_status s = tr_read_stl_buf((const char *)b, sizeof b, "mem.stl", p);
+  EXPECT(s == TR_OK, "binary STL: %s", tr_last_error());
+  EXPECT(p->npoints == 4 && p->ntris == 2, "binary STL: %u points %u triangles (4, 2)",
+         p->npoints, p->ntris);
+  if (p->npoints == 4) {
+    EXPECT(p->tris[3] == 0 && p->tris[4] == 2, "binary STL: -0.0 and 1,0,0 must merge");
+    EXPECT(p->xyz[9] == (double)0.1f, "float 0.1f must widen exactly: %.17g", p->xyz[9]);
+  }
+  destroy(p);
+}
+
+static void t_obj(void)
+{
+  struct tr_plc *p = read_ok(path(data, "forms.obj"));
+  EXPECT(p->npoints == 8 && p->ntris == 12, "OBJ: %u points %u triangles (8, 12)", p->npoints,
+         p->ntris);
+  for (uint32_t t = 0; t < p->ntris; t++)
+    if (p->tri_source[t] == 4)
+      for (int k = 0; k < 3; k++) {
+        uint32_t v = p->tris[3 * t + k];
+        EXPECT(v == 2 || v == 3 || v == 6 || v == 7,
+               "negative indices -5 -1 -2 -6 must be vertices 3 7 6 2, got %u", v);
+      }
+  tr_status s = tr_plc_validate(p, NULL);
+  EXPECT(s == TR_OK && !*tr_plc_report(p), "OBJ cube valid without repair: %s %s",
+         tr_last_error(), tr_plc_report(p));
+  destroy(p);
+}
+
+static size_t put(unsigned char *b, size_t at, const void *x, int n, int big)
+{
+  for (int i = 0; i < n; i++)
+    b[at + i] = ((const unsigned char *)x)[big ? n - 1 - i : i];
+  return at + n;
+}
+
+static void t_ply(void)
+{
+  struct tr_plc *p = read_ok(path(data, "tet_ascii.ply"));
+  expect_tet(p, "ascii PLY");
+  destroy(p);
+  for (int big = 0; big < 2; big++) {
+    unsigned char b[1024];
+    int h = snprintf((char *)b, sizeof b,
+                     "ply\nformat %s 1.0\ncomment binary test\nelement vertex 4\n"
+                     "property double x\nproperty float y\nproperty int z\nproperty uchar c\n"
+                     "element face 4\nproperty list uchar uint vertex_indices\n"
+                     "property short s\nend_header\n",
+                     big ? "binary_big_endian" : "binary_little_endian");
+    size_t at = (size_t)h;
+    for (int i = 0; i < 4; i++) {
+      double x = tet_xyz[3 * i];
+      float y = (float)tet_xyz[3 * i + 1];
+      int32_t z = (int32_t)tet_xyz[3 * i + 2];
+      unsigned char c = 200;
+      at = put(b, at, &x, 8, big);
+      at = put(b, at, &y, 4, big);
+      at = put(b, at, &z, 4, big);
+      at = put(b, at, &c, 1, big);
+    }
+    for (int f = 0; f < 4; f++) {
+      unsigned char n = 3;
+      int16_t s = -1;
+      at = put(b, at, &n, 1, big);
+      for (int k = 0; k < 3; k++)
+        at = put(b, at, &tet_tris[3 * f + k], 4, big);
+      at = put(b, at, &s, 2, big);
+    }
+    p = calloc(1, sizeof *p);
+    tr_status s = tr_read_ply_buf((const char *)b, at, big ? "be.ply" : "le.ply", p);
+    EXPECT(s == TR_OK, "binary PLY (%s): %s", big ? "big" : "little", tr_last_error());
+    expect_tet(p, big ? "binary big-endian PLY" : "binary little-endian PLY");
+    destroy(p);
+    /* Truncated: one byte short. */
+    p = calloc(1, sizeof *p);
+    s = tr_read_ply_buf((const char *)b, at - 1, "short.ply", p);
+    EXPECT(s == TR_ERR_PARSE && strstr(tr_last_error(), "unexpected end of file"),
+           "truncated binary PLY: %s %s", tr_status_name(s), tr_last_error());
+    destroy(p);
+  }
+}
+
+static void t_medit(void)
+{
+  struct tr_plc *p = read_ok(path(data, "tet.mesh"));
+  EXPECT(p->npoints == 4 && p->ntris == 4 && p->ntets == 1, "Medit: %u %u %u", p->npoints,
+         p->ntris, p->ntets);
+  if (p->ntris == 4) {
+    EXPECT(memcmp(p->tris, tet_tris, sizeof tet_tris) == 0, "Medit triangles (1-based) differ");
+    for (int t = 0; t < 4; t++)
+      EXPECT(p->tri_marker[t] == 10 + t, "marker %d of triangle %d", p->tri_marker[t], t);
+  }
+  if (p->ntets == 1)
+    EXPECT(p->tets[0] == 0 && p->tets[3] == 3, "tet vertices %u..%u", p->tets[0], p->tets[3]);
+  destroy(p);
+}
+
+static void t_tetgen(void)
+{
+  struct tr_plc *p = read_ok(path(data, "tet.node"));
+  EXPECT(p->npoints == 4 && p->ntris == 0, ".node: %u points", p->npoints);
+  if (p->npoints == 4)
+    EXPECT(p->xyz[11] == 1.0 / 3.0, "1/3 must read as the nearest double, got %.17g",
+           p->xyz[11]);
+  destroy(p);
+  p = read_ok(path(data, "tet.smesh"));
+  expect_tet(p, ".smesh");
+  for (uint32_t t = 0; t < p->ntris; t++)
+    EXPECT(p->tri_marker[t] == 5 + (int)t, ".smesh marker %d", p->tri_marker[t]);
+  destroy(p);
+  p = read_ok(path(data, "cube_facets.poly"));
+  EXPECT(p->npoints == 8 && p->ntris == 12, ".poly with .node: %u points %u triangles",
+         p->npoints, p->ntris);
+  EXPECT(p->ntris == 12 && p->tri_marker[11] == 6, ".poly facet markers");
+  destroy(p);
+  p = read_ok(path(data, "frame.poly"));
+  EXPECT(p->ntris == 8, "square with a square hole: %u triangles (8 expected)", p->ntris);
+  double sum = 0;
+  for (uint32_t t = 0; t < p->ntris; t++) {
+    double a = area2z(p, t);
+    EXPECT(a > 0, "frame triangle %u has area2 %g", t, a);
+    sum += a;
+    double cx = 0, cy = 0;
+    for (int k = 0; k < 3; k++) {
+      cx += p->xyz[3 * p->tris[3 * t + k]];
+      cy += p->xyz[3 * p->tris[3 * t + k] + 1];
+    }
+    EXPECT(!(cx > 3 && cx < 9 && cy > 3 && cy < 9), "triangle %u lies in the hole", t);
+    EXPECT(p->tri_marker[t] == 3, "frame marker %d", p->tri_marker[t]);
+  }
+  EXPECT(sum == 24, "frame twice-area %g (24 expected)", sum);
+  destroy(p);
+}
+
+/* Awkward doubles survive every writer + reader exactly. */
+static void t_roundtrip(void)
+{
+  double xyz[12] = {0.1, -0.0, 1e-300, 1.0 / 3, 2.5e300, -7.25, 0x1.fffffffffffffp-1, 5e-324,
+                    123456789.123456789, -1.0 / 7, 3, 4};
+  uint32_t tris[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  int32_t mark[4] = {1, -2, 3, 40};
+  tr_plc *p;
+  EXPECT(tr_plc_create(&p) == TR_OK, "create");
+  EXPECT(tr_plc_set(p, xyz, 4, tris, 4, mark) == TR_OK, "set: %s", tr_last_error());
+  const char *outs[] = {"rt.mesh", "rt.off", "rt.node"};
+  for (int i = 0; i < 3; i++) {
+    tr_status s = tr_plc_write(p, path(tmp, outs[i]));
+    EXPECT(s == TR_OK, "writing %s: %s", outs[i], tr_last_error());
+    struct tr_plc *q = read_ok(path(tmp, outs[i]));
+    EXPECT(q->npoints == 4 && memcmp(q->xyz, xyz, sizeof xyz) == 0,
+           "%s: coordinates not bitwise equal after the round trip", outs[i]);
+    if (i < 2)
+      EXPECT(q->ntris == 4 && memcmp(q->tris, tris, sizeof tris) == 0, "%s: triangles differ",
+             outs[i]);
+    if (i == 0)
+      EXPECT(q->ntris == 4 && memcmp(q->tri_marker, mark, sizeof mark) == 0,
+             "%s: markers differ", outs[i]);
+    destroy(q);
+  }
+  EXPECT(tr_plc_write(p, path(tmp, "rt.vtu")) == TR_OK, "vtu: %s", tr_last_error());
+  char *buf;
+  size_t len;
+  if (tr_io_load(path(tmp, "rt.vtu"), &buf, &len) == TR_OK) {
+    EXPECT(strstr(buf, "NumberOfPoints=\"4\" NumberOfCells=\"4\"") != NULL, "vtu counts");
+    EXPECT(strstr(buf, "Name=\"region\"") != NULL, "vtu region data");
+    EXPECT(strstr(buf, "0.33333333333333331") != NULL, "vtu %%.17g coordinates");
+    free(buf);
+  } else
+    EXPECT(0, "vtu not readable");
+  tr_plc_destroy(p);
+}
+
+/* A Delaunay mesh written in every format reads back with the same tets; --exact
+ * rationals read back as the nearest doubles. */
+static void t_mesh_write(void)
+{
+  static const double cube[24] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                  0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  tr_mesh *m = NULL;
+  tr_status s = tr_delaunay(cube, 8, &m);
+  EXPECT(s == TR_OK, "delaunay: %s", tr_last_error());
+  if (s != TR_OK)
+    return;
+  uint32_t nt = tr_mesh_num_tets(m);
+  EXPECT(tr_mesh_write(m, path(tmp, "dm.mesh"), 0) == TR_OK, "%s", tr_last_error());
+  EXPECT(tr_mesh_write(m, path(tmp, "dm.1"), 0) == TR_OK, "%s", tr_last_error());
+  EXPECT(tr_mesh_write(m, path(tmp, "dm.vtu"), 0) == TR_OK, "%s", tr_last_error());
+  struct tr_plc *q = read_ok(path(tmp, "dm.mesh"));
+  EXPECT(q->ntets == nt && q->npoints == 8, ".mesh: %u tets (%u expected)", q->ntets, nt);
+  EXPECT(q->ntris == 12, "hull of the cube: %u boundary triangles (12 expected)", q->ntris);
+  destroy(q);
+  q = read_ok(path(tmp, "dm.1.ele"));
+  EXPECT(q->ntets == nt && q->npoints == 8, ".ele: %u tets (%u expected)", q->ntets, nt);
+  destroy(q);
+  tr_mesh_destroy(m);
+  /* exact rationals */
+  tr_qpoint qp;
+  tr_qpoint_init(&qp);
+  mpq_set_si(qp.c[0], 1, 3);
+  mpq_set_si(qp.c[1], 2, 7);
+  mpq_set_si(qp.c[2], -5, 11);
+  tr_qpoint_update(&qp);
+  const tr_qpoint *ex[4] = {NULL, &qp, NULL, NULL};
+  double xyz[12] = {0, 0, 0, qp.near[0], qp.near[1], qp.near[2], 0, 1, 0, 0, 0, 1};
+  uint32_t tet[4] = {0, 1, 2, 3};
+  struct tr_mesh_view v = {4, xyz, ex, 1, tet, NULL, 0, NULL, NULL};
+  EXPECT(tr_write_tetgen(&v, path(tmp, "ex"), 1) == TR_OK, "%s", tr_last_error());
+  char *buf;
+  size_t len;
+  if (tr_io_load(path(tmp, "ex.node"), &buf, &len) == TR_OK) {
+    EXPECT(strstr(buf, "2 1/3 2/7 -5/11\n") != NULL, "exact .node line missing:\n%s", buf);
+    free(buf);
+  }
+  q = read_ok(path(tmp, "ex.node"));
+  EXPECT(q->npoints == 4 && q->xyz[3] == 1.0 / 3 && q->xyz[4] == 2.0 / 7 &&
+             q->xyz[5] == -5.0 / 11,
+         "rationals must read as the nearest doubles");
+  destroy(q);
+  tr_qpoint_clear(&qp);
+}
+
+static tr_status parse_status(const char *s)
+{
+  for (int i = 0; i <= 11; i++)
+    if (!strcmp(s, tr_status_name((tr_status)i)))
+      return (tr_status)i;
+  return (tr_status)-1;
+}
+
+/* Every malformed input gives its status and its message (library side; the CLI side
+ * is checked by cli_errors.py from the same table). */
+static void t_malformed(void)
+{
+  char *tab;
+  size_t len;
+  if (tr_io_load(path(data, "../io/malformed.txt"), &tab, &len) != TR_OK) {
+    EXPECT(0, "cannot read malformed.txt");
+    return;
+  }
+  int n = 0;
+  for (char *line = strtok(tab, "\n"); line; line = strtok(NULL, "\n")) {
+    if (line[0] == '#')
+      continue;
+    char *f = line, *st = strchr(f, '|'), *code, *msg, *end;
+    if (!st || !(code = strchr(st + 1, '|')) || !(msg = strchr(code + 1, '|')) ||
+        !(end = strchr(msg + 1, '|'))) {
+      EXPECT(0, "bad table line '%s'", line);
+      continue;
+    }
+    *st++ = *code++ = *msg++ = *end = '\0';
+    *strchr(st, '\0') = '\0';
+    tr_status want = parse_status(st);
+    tr_plc *p = NULL;
+    char full[1024];
+    snprintf(full, sizeof full, "%s/bad/%s", data, f);
+    tr_status s = tr_plc_read(full, &p);
+    if (s == TR_OK)
+      s = tr_plc_validate(p, NULL);
+    const char *text = want == TR_OK ? tr_plc_report(p) : tr_last_error();
+    EXPECT(s == want, "%s: status %s, expected %s (%s)", f, tr_status_name(s), st,
+           tr_last_error());
+    EXPECT(text && strstr(text, msg), "%s: message '%s' lacks '%s'", f, text ? text : "", msg);
+    tr_plc_destroy(p);
+    n++;
+  }
+  EXPECT(n >= 20, "only %d malformed cases", n);
+  free(tab);
+}
+
+/* Orientation repair gives exactly the outward tetrahedron; duplicate vertices merge. */
+static void t_repairs(void)
+{
+  const char *f[] = {"bad/inconsistent.off", "bad/inverted.off", "bad/dup_vertex.off",
+                     "bad/dup_tri.off"};
+  for (int i = 0; i < 4; i++) {
+    tr_plc *p = NULL;
+    tr_status s = tr_plc_read(path(data, f[i]), &p);
+    if (s == TR_OK)
+      s = tr_plc_validate(p, NULL);
+    EXPECT(s == TR_OK, "%s: %s", f[i], tr_last_error());
+    if (s != TR_OK) {
+      tr_plc_destroy(p);
+      continue;
+    }
+    EXPECT(p->npoints == 4 && p->ntris == 4, "%s: %u points %u triangles", f[i], p->npoints,
+           p->ntris);
+    /* Each repaired triangle is a cyclic rotation of the outward one. */
+    for (uint32_t t = 0; t < p->ntris && p->ntris == 4; t++) {
+      int found = 0;
+      for (int u = 0; u < 4; u++)
+        for (int r = 0; r < 3; r++)
+          found |= p->tris[3 * t] == tet_tris[3 * u + r] &&
+                   p->tris[3 * t + 1] == tet_tris[3 * u + (r + 1) % 3] &&
+                   p->tris[3 * t + 2] == tet_tris[3 * u + (r + 2) % 3];
+      EXPECT(found, "%s: triangle %u (%u %u %u) is not an outward face", f[i], t,
+             p->tris[3 * t], p->tris[3 * t + 1], p->tris[3 * t + 2]);
+    }
+    tr_plc_destroy(p);
+  }
+}
+
+static tr_status check_pair(const double *xyz, uint32_t n, const uint32_t *tris)
+{
+  tr_plc *p;
+  tr_plc_create(&p);
+  tr_status s = tr_plc_set(p, xyz, n, tris, 2, NULL);
+  tr_options o;
+  tr_options_default(&o);
+  o.allow_open = 1;
+  if (s == TR_OK)
+    s = tr_plc_validate(p, &o);
+  tr_plc_destroy(p);
+  return s;
+}
+
+/* Exact improper-intersection rules for two triangles. */
+static void t_selfint(void)
+{
+  /* shared edge, coplanar, opposite sides: allowed */
+  double a[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0};
+  uint32_t ta[] = {0, 1, 2, 1, 0, 3};
+  EXPECT(check_pair(a, 4, ta) == TR_OK, "coplanar neighbours across an edge: %s", tr_last_error());
+  /* shared edge, coplanar, same side (overlap) */
+  double b[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.25, 0.25, 0};
+  uint32_t tb[] = {0, 1, 2, 1, 0, 3};
+  EXPECT(check_pair(b, 4, tb) == TR_ERR_SELF_INTERSECT, "overlap across a shared edge");
+  /* shared vertex only, crossing through the other's interior */
+  double c[] = {0, 0, 0, 2, 0, 0, 0, 2, 0, 1, 1, -1, 0.2, 0.2, 1};
+  uint32_t tc[] = {0, 1, 2, 0, 3, 4};
+  EXPECT(check_pair(c, 5, tc) == TR_ERR_SELF_INTERSECT, "piercing triangles sharing a vertex");
+  /* shared vertex only, non-coplanar, touching only there: allowed */
+  double d[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 1};
+  uint32_t td[] = {0, 1, 2, 0, 3, 4};
+  EXPECT(check_pair(d, 5, td) == TR_OK, "triangles sharing one vertex: %s", tr_last_error());
+  /* T-junction: a vertex on the other's edge */
+  double e[] = {0, 0, 0, 2, 0, 0, 0, 2, 0, 1, 0, 0, 1, 0, 1, 1, -1, 1};
+  uint32_t te[] = {0, 1, 2, 3, 4, 5};
+  EXPECT(check_pair(e, 6, te) == TR_ERR_SELF_INTERSECT, "vertex touching an edge interior");
+  /* disjoint */
+  double g[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1e-300, 1, 0, 1e-300, 0, 1, 1e-300};
+  uint32_t tg[] = {0, 1, 2, 3, 4, 5};
+  EXPECT(check_pair(g, 6, tg) == TR_OK, "parallel triangles 1e-300 apart: %s", tr_last_error());
+  EXPECT(strstr(tr_last_error(), "") != NULL, "message");
+}
+
+int main(int argc, char **argv)
+{
+  if (argc < 4) {
+    fprintf(stderr, "usage: test_io SUBTEST DATADIR TMPDIR\n");
+    return 2;
+  }
+  data = argv[2];
+  tmp = argv[3];
+  static const struct {
+    const char *name;
+    void (*fn)(void);
+  } tests[] = {{"off_variants", t_off_variants}, {"off_polygons", t_off_polygons},
+               {"stl", t_stl},                   {"obj", t_obj},
+               {"ply", t_ply},                   {"medit", t_medit},
+               {"tetgen", t_tetgen},             {"roundtrip", t_roundtrip},
+               {"mesh_write", t_mesh_write},     {"malformed", t_malformed},
+               {"repairs", t_repairs},           {"selfint", t_selfint}};
+  for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++)
+    if (!strcmp(argv[1], tests[i].name)) {
+      tests[i].fn();
+      if (failures)
+        fprintf(stderr, "%s: %d check(s) failed\n", argv[1], failures);
+      return failures ? 1 : 0;
+    }
+  fprintf(stderr, "unknown subtest %s\n", argv[1]);
+  return 2;
+}

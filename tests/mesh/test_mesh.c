@@ -1,0 +1,296 @@
+/* Mesh store tests: tables against the orientation convention, the paper's codes,
+ * tr_mesh_replace (2-3 and 3-2 flips), Ball/Shell, and that the validator catches each
+ * kind of corruption. Usage: test_mesh <case>. */
+#include <gmp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "delaunay/delaunay.h"
+#include "mesh/check.h"
+#include "mesh/mesh.h"
+#include "predicates.h"
+#include "tcommon.h"
+
+/* The standard positive tet: orient3d(v0,v1,v2,v3) = det[I] = 1 > 0. */
+static const double unit_tet[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
+static int face_table_matches_orientation(void)
+{
+  EXPECT(tr_orient3d(unit_tet[0], unit_tet[1], unit_tet[2], unit_tet[3]) > 0,
+         "the reference tet must be positive");
+  for (int k = 0; k < 4; k++) {
+    const uint8_t *f = tr_face_vtx[k];
+    EXPECT(f[0] != k && f[1] != k && f[2] != k && f[0] != f[1] && f[1] != f[2] && f[0] != f[2],
+           "face %d must list the three other vertices", k);
+    double o = tr_orient3d(unit_tet[f[0]], unit_tet[f[1]], unit_tet[f[2]], unit_tet[k]);
+    EXPECT(o > 0, "orient3d(face %d, v%d) = %g, must be > 0 (normal into the tet)", k, k, o);
+  }
+  /* face_rot: face j rotated to start at k */
+  for (int k = 0; k < 4; k++)
+    for (int j = 0; j < 4; j++) {
+      if (j == k)
+        continue;
+      const uint8_t *f = tr_face_vtx[j];
+      int r = f[0] == k ? 0 : f[1] == k ? 1 : 2;
+      EXPECT(f[r] == k, "face %d must contain vertex %d", j, k);
+      EXPECT(tr_face_rot[k][j][0] == f[(r + 1) % 3] && tr_face_rot[k][j][1] == f[(r + 2) % 3],
+             "tr_face_rot[%d][%d] = {%d,%d}, expected {%d,%d}", k, j, tr_face_rot[k][j][0],
+             tr_face_rot[k][j][1], f[(r + 1) % 3], f[(r + 2) % 3]);
+    }
+  /* edge table is the paper's order and ECode packing */
+  static const int codes[6] = {0 | 1 << 2, 0 | 2 << 2, 0 | 3 << 2, 1 | 2 << 2, 1 | 3 << 2, 2 | 3 << 2};
+  for (int e = 0; e < 6; e++)
+    EXPECT((tr_edge_vtx[e][0] | tr_edge_vtx[e][1] << 2) == codes[e], "edge %d code", e);
+  return 0;
+}
+
+static tr_status two_tets(struct tr_mesh **out, uint32_t t[2])
+{
+  /* tets (0,1,2,3) and (0,2,1,4): share face 012, 4 below it, 3 above */
+  static const double pts[5][3] = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, 3}, {0.5, 0.5, -3}};
+  struct tr_mesh *m;
+  TR_CHECK(tr_mesh_create(0, 0, &m));
+  uint32_t id;
+  for (int i = 0; i < 5; i++)
+    TR_CHECK(tr_mesh_add_vertex(m, pts[i], &id));
+  TR_CHECK(tr_tet_new(m, 0, 1, 2, 3, &t[0]));
+  TR_CHECK(tr_tet_new(m, 0, 2, 1, 4, &t[1]));
+  tr_glue(m, t[0], 3, t[1], 3);
+  *out = m;
+  return TR_OK;
+}
+
+static int codes_are_the_papers(void)
+{
+  struct tr_mesh *m;
+  uint32_t t[2];
+  EXPECT_OK(two_tets(&m, t), "build");
+  EXPECT(tr_ncode(m, t[1], 0) == 0 && tr_ncode(m, t[1], 2) == 1 && tr_ncode(m, t[1], 4) == 3 &&
+             tr_ncode(m, t[1], 3) == -1,
+         "NCode is the slot of the vertex, -1 when absent");
+  EXPECT(tr_tet_ecode(m, t[1], 1, 0) == (0 | 2 << 2), "ECode(0-1 in (0,2,1,4)) = 0|2<<2, got %d",
+         tr_tet_ecode(m, t[1], 1, 0));
+  EXPECT(tr_tet_ecode(m, t[1], 4, 2) == (1 | 3 << 2), "ECode(2-4) = 1|3<<2");
+  EXPECT(tr_tet_ecode(m, t[1], 4, 3) == -1, "ECode of a non-edge is -1");
+  EXPECT(tr_fcode(m, t[0], 2, 0, 1) == 3 && tr_fcode(m, t[1], 4, 0, 1) == 1,
+         "FCode is the slot of the vertex not on the face");
+  EXPECT(TR_NEIG(m, t[0], 3) == t[1] && TR_NEIG(m, t[1], 3) == t[0] &&
+             TR_NEIG(m, t[0], 0) == TR_NONE,
+         "NEIG follows the glued face and is TR_NONE elsewhere");
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+static int replace_flips_keep_volume_and_links(void)
+{
+  struct tr_mesh *m;
+  uint32_t t[2];
+  EXPECT_OK(two_tets(&m, t), "build");
+  mpq_t v0;
+  mpq_init(v0);
+  tr_mesh_volume6(m, v0);
+  EXPECT(mpq_cmp_si(v0, 24, 1) == 0, "6*volume of the two tets is exactly 24, got %g",
+         mpq_get_d(v0));
+  EXPECT_OK(tr_check_mesh(m, TR_CHK_TOPOLOGY, v0), "two tets valid");
+  /* 2-3 flip: edge 3-4 replaces face 012 */
+  uint32_t nv[12] = {0, 1, 4, 3, 1, 2, 4, 3, 2, 0, 4, 3}, ids[3];
+  for (int i = 0; i < 3; i++) {
+    const double *x = m->xyz;
+    EXPECT(tr_orient3d(x + 3 * nv[4 * i], x + 3 * nv[4 * i + 1], x + 3 * nv[4 * i + 2],
+                       x + 3 * nv[4 * i + 3]) > 0,
+           "new tet %d of the 2-3 flip must be positive (test data)", i);
+  }
+  EXPECT_OK(tr_mesh_replace(m, t, 2, nv, 3, ids), "2-3 flip");
+  EXPECT(tr_mesh_count_real(m) == 3, "3 tets after 2-3");
+  EXPECT_OK(tr_check_mesh(m, TR_CHK_TOPOLOGY, v0), "valid after 2-3, same exact volume");
+  for (int i = 0; i < 3; i++)
+    EXPECT(TR_NEIG(m, ids[i], 0) != TR_NONE && TR_NEIG(m, ids[i], 1) != TR_NONE,
+           "each new tet is glued to two others");
+  /* a wrong replacement is refused and leaves the mesh as it was */
+  uint32_t bad[4] = {0, 1, 2, 3};
+  tr_status s = tr_mesh_replace(m, ids, 3, bad, 1, NULL);
+  EXPECT(s == TR_ERR_INTERNAL, "replace with a region of another shape must fail, got %s",
+         tr_status_name(s));
+  EXPECT_OK(tr_check_mesh(m, TR_CHK_TOPOLOGY, v0), "unchanged after a refused replace");
+  /* 3-2 back */
+  uint32_t back[8] = {0, 1, 2, 3, 0, 2, 1, 4};
+  EXPECT_OK(tr_mesh_replace(m, ids, 3, back, 2, NULL), "3-2 flip");
+  EXPECT(tr_mesh_count_real(m) == 2 && m->nfree == 1, "2 tets and one free slot after 3-2");
+  EXPECT_OK(tr_check_mesh(m, TR_CHK_TOPOLOGY, v0), "valid after 3-2");
+  /* the free slot is reused */
+  uint32_t nt = m->nt, t2;
+  EXPECT_OK(tr_tet_new(m, 0, 1, 3, 2, &t2), "new");
+  EXPECT(m->nt == nt && m->nfree == 0, "tr_tet_new takes the free slot first");
+  mpq_clear(v0);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+static int validator_catches_corruption(void)
+{
+  struct tr_mesh *m;
+  uint32_t t[2];
+  EXPECT_OK(two_tets(&m, t), "build");
+  /* inverted tet */
+  uint32_t save = m->tv[1];
+  m->tv[1] = m->tv[2];
+  m->tv[2] = save;
+  EXPECT(tr_check_mesh(m, TR_CHK_ORIENT, NULL) == TR_ERR_INVALID_MESH &&
+             strstr(tr_last_error(), "inverted"),
+         "an inverted tet is reported: %s", tr_last_error());
+  m->tv[2] = m->tv[1];
+  m->tv[1] = save;
+  /* one-sided link */
+  m->tn[4 * t[1] + 3] = TR_NONE;
+  EXPECT(tr_check_mesh(m, TR_CHK_LINKS, NULL) == TR_ERR_INVALID_MESH &&
+             strstr(tr_last_error(), "link back"),
+         "an asymmetric link is reported: %s", tr_last_error());
+  tr_glue(m, t[0], 3, t[1], 3);
+  /* a link between faces that differ */
+  tr_glue(m, t[0], 0, t[1], 0);
+  EXPECT(tr_check_mesh(m, TR_CHK_LINKS, NULL) == TR_ERR_INVALID_MESH &&
+             strstr(tr_last_error(), "not the same face"),
+         "a link across different faces is reported: %s", tr_last_error());
+  m->tn[4 * t[0]] = m->tn[4 * t[1]] = TR_NONE;
+  /* stale v2t */
+  m->v2t[3] = t[1];
+  EXPECT(tr_check_mesh(m, TR_CHK_V2T, NULL) == TR_ERR_INVALID_MESH &&
+             strstr(tr_last_error(), "v2t"),
+         "a stale vertex->tet entry is reported: %s", tr_last_error());
+  m->v2t[3] = t[0];
+  /* wrong volume */
+  mpq_t v;
+  mpq_init(v);
+  mpq_set_si(v, 25, 1);
+  EXPECT(tr_check_mesh(m, 0, v) == TR_ERR_INVALID_MESH, "a volume mismatch is reported");
+  mpq_set_si(v, 24, 1);
+  EXPECT_OK(tr_check_mesh(m, TR_CHK_TOPOLOGY, v), "repaired mesh is valid");
+  /* a face in three tets: a third tet on face 012 (same side as tet 1) */
+  uint32_t t3, id;
+  static const double below[3] = {1, 1, -5};
+  EXPECT_OK(tr_mesh_add_vertex(m, below, &id), "add");
+  EXPECT_OK(tr_tet_new(m, 0, 2, 1, id, &t3), "third tet");
+  EXPECT(tr_check_mesh(m, TR_CHK_V2T, NULL) == TR_ERR_INVALID_MESH &&
+             strstr(tr_last_error(), "more than two"),
+         "a face in three tets is reported: %s", tr_last_error());
+  mpq_clear(v);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+/* Ball and Shell on the Delaunay mesh of a 4x4x4 grid, against brute force. */
+static int ball_and_shell_match_brute_force(void)
+{
+  double pts[64 * 3];
+  int n = 0;
+  for (int i = 0; i < 4; i++)
+    for (int j = 0; j < 4; j++)
+      for (int k = 0; k < 4; k++) {
+        pts[3 * n] = i;
+        pts[3 * n + 1] = j;
+        pts[3 * n + 2] = k;
+        n++;
+      }
+  struct tr_mesh *m;
+  EXPECT_OK(tr_delaunay_build(pts, (uint32_t)n, &m), "delaunay");
+  EXPECT_OK(tr_check_mesh(m, TR_CHK_ALL_DELAUNAY, NULL), "delaunay mesh valid");
+  tr_u32buf ball = {0}, shell = {0};
+  for (uint32_t v = 0; v < (uint32_t)n; v++) {
+    EXPECT_OK(tr_ball(m, v, 1, &ball), "ball");
+    uint32_t cnt = 0;
+    for (uint32_t t = 0; t < m->nt; t++)
+      cnt += !tr_tet_is_free(m, t) && tr_ncode(m, t, v) >= 0;
+    EXPECT(ball.n == cnt, "Ball(%u) has %zu tets, brute force %u", v, ball.n, cnt);
+    for (size_t i = 0; i < ball.n; i++)
+      EXPECT(tr_ncode(m, ball.a[i], v) >= 0 && !(m->flags[ball.a[i]] & TR_TF_MARK),
+             "Ball tets contain the vertex and are left unmarked");
+  }
+  /* every edge of every real tet: Shell closed (ghosts included), right-handed order */
+  uint32_t nedges = 0;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    for (int e = 0; e < 6; e++) {
+      uint32_t a = m->tv[4 * t + tr_edge_vtx[e][0]], b = m->tv[4 * t + tr_edge_vtx[e][1]];
+      int closed;
+      EXPECT_OK(tr_shell(m, a, b, t, &shell, &closed), "shell");
+      EXPECT(closed, "Shell(%u,%u) closes with ghosts", a, b);
+      uint32_t cnt = 0;
+      for (uint32_t u = 0; u < m->nt; u++)
+        cnt += !tr_tet_is_free(m, u) && tr_tet_ecode(m, u, a, b) >= 0;
+      EXPECT(shell.n == cnt, "Shell(%u,%u) has %zu tets, brute force %u", a, b, shell.n, cnt);
+      EXPECT(shell.a[0] == t, "Shell starts at the given tet");
+      for (size_t i = 0; i + 1 < shell.n; i++) {
+        uint32_t x = shell.a[i], y = shell.a[i + 1];
+        if (tr_tet_is_ghost(m, x) || tr_tet_is_ghost(m, y))
+          continue;
+        /* c: third vertex of x left behind, d: the one x and y share besides a, b;
+         * right-handed about a->b means orient3d(a, b, c, d) > 0 */
+        uint32_t c = TR_NONE, d = TR_NONE;
+        for (int k = 0; k < 4; k++) {
+          uint32_t w = m->tv[4 * x + k];
+          if (tr_ncode(m, y, w) < 0)
+            c = w;
+          else if (w != a && w != b)
+            d = w;
+        }
+        EXPECT(c != TR_NONE && d != TR_NONE, "consecutive Shell tets share a face");
+        const double *X = m->xyz;
+        EXPECT(tr_orient3d(X + 3 * a, X + 3 * b, X + 3 * c, X + 3 * d) > 0,
+               "Shell(%u,%u) turns right-handed about a->b", a, b);
+      }
+      nedges++;
+    }
+  }
+  EXPECT(nedges > 0, "edges visited");
+  tr_u32buf_free(&ball);
+  tr_u32buf_free(&shell);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+static int hilbert_curve_is_continuous(void)
+{
+  /* walking the 8^3 cells in key order, each step moves to a face-adjacent cell */
+  enum { B = 3, S = 1 << B };
+  static int seen[S * S * S][3];
+  static int filled[S * S * S];
+  for (int x = 0; x < S; x++)
+    for (int y = 0; y < S; y++)
+      for (int z = 0; z < S; z++) {
+        uint64_t k = tr_hilbert_key((uint32_t)x, (uint32_t)y, (uint32_t)z, B);
+        EXPECT(k < S * S * S && !filled[k], "key %llu is a bijection onto [0, 512)",
+               (unsigned long long)k);
+        filled[k] = 1;
+        seen[k][0] = x;
+        seen[k][1] = y;
+        seen[k][2] = z;
+      }
+  for (int k = 1; k < S * S * S; k++) {
+    int d = abs(seen[k][0] - seen[k - 1][0]) + abs(seen[k][1] - seen[k - 1][1]) +
+            abs(seen[k][2] - seen[k - 1][2]);
+    EXPECT(d == 1, "cells %d and %d of the curve are not neighbours", k - 1, k);
+  }
+  return 0;
+}
+
+int main(int argc, char **argv)
+{
+  if (argc < 2)
+    return 2;
+  const char *c = argv[1];
+  if (!strcmp(c, "face_table"))
+    return face_table_matches_orientation();
+  if (!strcmp(c, "codes"))
+    return codes_are_the_papers();
+  if (!strcmp(c, "replace"))
+    return replace_flips_keep_volume_and_links();
+  if (!strcmp(c, "validator"))
+    return validator_catches_corruption();
+  if (!strcmp(c, "ball_shell"))
+    return ball_and_shell_match_brute_force();
+  if (!strcmp(c, "hilbert"))
+    return hilbert_curve_is_continuous();
+  fprintf(stderr, "unknown case %s\n", c);
+  return 2;
+}
