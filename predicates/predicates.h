@@ -57,7 +57,9 @@ double tr_orient2d_proj(const double a[3], const double b[3], const double c[3],
  * position; see perturb.c for the exact scheme and its proof of consistency).
  * ia..ie are the global indices of the points: the perturbation is index-ordered, so
  * equal inputs give equal answers in every call, on every machine.
- * Return -1 or +1 (0 only where documented in perturb.c). */
+ * Return -1 or +1 (0 only where documented in perturb.c): tr_insphere_sos is nonzero
+ * whenever a,b,c,d are not coplanar, tr_orient3d_sos whenever the four indices are
+ * distinct (even for coincident points). */
 int tr_insphere_sos(const double a[3], const double b[3], const double c[3], const double d[3],
                     const double e[3], uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id,
                     uint32_t ie);

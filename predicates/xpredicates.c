@@ -29,6 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "construct.h"
 #include "predicates.h"
 #include "qpoint.h"
 
@@ -51,6 +52,7 @@ static void scratch_init(void)
 
 void tr_exact_scratch_free(void)
 {
+  tr_construct_scratch_free();
   if (!scratch_ready)
     return;
   for (int i = 0; i < NSCRATCH_Q; i++)

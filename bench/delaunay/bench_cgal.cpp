@@ -1,10 +1,11 @@
 // CGAL peer for the Delaunay benchmark: Delaunay_triangulation_3 with Epick, built by
 // range insertion (which spatially sorts the points). Reads the .bin of bench_tetrec.
-//   bench_cgal in.bin   ->  "cgal n=.. tets=.. dt_seconds=.."
+//   bench_cgal in.bin   ->  "cgal n=.. tets=.. dt_seconds=.. dt_cpu=.." (wall, CPU)
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <chrono>
+#include <ctime>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
@@ -35,9 +36,13 @@ int main(int argc, char **argv)
   for (size_t i = 0; i < n; i++)
     pts.emplace_back(c[3 * i], c[3 * i + 1], c[3 * i + 2]);
   auto t0 = std::chrono::steady_clock::now();
+  std::clock_t c0 = std::clock();
   DT dt(pts.begin(), pts.end());
+  std::clock_t c1 = std::clock();
   auto t1 = std::chrono::steady_clock::now();
-  std::printf("cgal n=%u tets=%zu dt_seconds=%.3f\n", n, (size_t)dt.number_of_finite_cells(),
-              std::chrono::duration<double>(t1 - t0).count());
+  std::printf("cgal n=%u tets=%zu dt_seconds=%.3f dt_cpu=%.3f\n", n,
+              (size_t)dt.number_of_finite_cells(),
+              std::chrono::duration<double>(t1 - t0).count(),
+              (double)(c1 - c0) / CLOCKS_PER_SEC);
   return 0;
 }

@@ -272,12 +272,19 @@ template <class S> int check_line_plane(S &s, Case &c)
   }
   L[3] = frame_point(s, f, 2, true);
   L[4] = frame_point(s, f, 2, coin(s, 3, 4));
+  if (coin(s, 1, 16))  // a repeated vertex: no plane, construct.h promises -1
+    L[2] = L[below(s, 2)];
   realize_all(s, c, L, 5, rational);
   const tr_point *t = c.tp;
   const P3 *g = c.cg;
-  if (g[3] == g[4] || CGAL::collinear(g[0], g[1], g[2]))
-    return -1;
   int ret = tr_construct_line_plane(&t[3], &t[4], &t[0], &t[1], &t[2], &c.out.q);
+  if (g[3] == g[4] || CGAL::collinear(g[0], g[1], g[2])) {
+    int ok = compare_construction("tr_construct_line_plane with a == b or p,q,r collinear", c,
+                                  ret, nullptr);
+    if (ok == 1)
+      note(0);
+    return ok;
+  }
   auto res = CGAL::intersection(L3(g[3], g[4]), Pl3(g[0], g[1], g[2]));
   const P3 *x = point_of(res);
   int ok = compare_construction("tr_construct_line_plane(line p3 p4, plane p0 p1 p2)", c, ret, x);
@@ -298,11 +305,20 @@ template <class S> int check_line_plane(S &s, Case &c)
     return mismatch("tr_classify_point_triangle(constructed line-plane point, p0,p1,p2)", c,
                     got.type, want.type);
   }
+  // construct.h: out may be the qpoint behind an input. Overwrites p3, so last.
+  if (c.isq[3] && coin(s, 1, 4)) {
+    int ret2 = tr_construct_line_plane(&t[3], &t[4], &t[0], &t[1], &t[2], &c.q[3].q);
+    if (ret2 != 0 || !qpoint_equals(c.q[3].q, *x))
+      return mismatch("tr_construct_line_plane with out == the qpoint of a (p3, now "
+                      "overwritten; rerun the case to see the input)",
+                      c, ret2, 0);
+  }
   return 1;
 }
 
-// Two coplanar lines, both on lattice points of a frame plane, or one through a
-// rational Steiner point that tetrec constructed on that plane.
+// Two lines on lattice points of a frame plane (coplanar: crossing, parallel or
+// equal), sometimes skew, sometimes through a rational Steiner point that tetrec
+// constructed on that plane.
 template <class S> int check_line_line(S &s, Case &c)
 {
   bool rational = coin(s, 1, 2);
@@ -310,6 +326,8 @@ template <class S> int check_line_line(S &s, Case &c)
   LP L[6];
   for (int i = 0; i < 4; i++)
     L[i] = frame_point(s, f, 2, false);
+  if (coin(s, 1, 8))  // off the plane: skew lines (or not, by luck)
+    L[3] = frame_point(s, f, 3, true);
   L[4] = frame_point(s, f, 2, true);  // a line through these two crosses the plane
   L[5] = frame_point(s, f, 2, true);
   realize_all(s, c, L, 6, rational);
@@ -332,11 +350,14 @@ template <class S> int check_line_line(S &s, Case &c)
     g[0] = *x;
     tt[0] = tr_pt_q(&c.q[MAXP - 1].q);
   }
-  if (g[0] == g[1] || g[2] == g[3] || !CGAL::coplanar(g[0], g[1], g[2], g[3]))
-    return -1;
   int ret = tr_construct_line_line(&tt[0], &tt[1], &tt[2], &tt[3], &c.out.q);
-  auto res = CGAL::intersection(L3(g[0], g[1]), L3(g[2], g[3]));
-  const P3 *x = point_of(res);
+  // construct.h: -1 for a == b, c == d, skew (CGAL: no intersection) or parallel lines
+  const P3 *x = nullptr;
+  decltype(CGAL::intersection(L3(g[0], g[1]), L3(g[2], g[3]))) res;
+  if (!(g[0] == g[1] || g[2] == g[3])) {
+    res = CGAL::intersection(L3(g[0], g[1]), L3(g[2], g[3]));
+    x = point_of(res);
+  }
   int ok = compare_construction("tr_construct_line_line(line p0 p1, line p2 p3)", c, ret, x);
   if (ok == 1)
     note(x != nullptr);

@@ -183,13 +183,32 @@ static int cmd_mesh(const args *a)
   if (!a->quiet)
     fprintf(stderr, "tetrec: %s: %u vertices, %u triangles: valid\n", a->in,
             tr_plc_num_points(plc), tr_plc_num_triangles(plc));
-  tr_plc_destroy(plc);
   stats.total_seconds = now() - t0;
-  if (a->check_only)
+  if (a->check_only) {
+    tr_plc_destroy(plc);
     return write_stats(a, &stats);
-  /* The recovery pipeline (tr_mesh_plc) is wired by its owner; until then `mesh` stops
-   * after validation with an honest status rather than writing a wrong mesh. */
-  return fail(tr_error(TR_ERR_UNSUPPORTED, "boundary recovery is not implemented yet"));
+  }
+  /* The pipeline (src/pipeline): Delaunay, edge and facet recovery, outer removal. */
+  tr_mesh *mesh = NULL;
+  progress("meshing", a->in);
+  s = tr_mesh_plc(plc, &opt, &mesh, &stats);
+  tr_plc_destroy(plc);
+  if (s != TR_OK)
+    return fail(s);
+  char *out = a->out ? NULL : default_out(a->in);
+  const char *path = a->out ? a->out : out;
+  progress("writing", path);
+  s = path ? tr_mesh_write(mesh, path, a->exact) : TR_ERR_NOMEM;
+  stats.total_seconds = now() - t0;
+  if (s == TR_OK && !a->quiet)
+    fprintf(stderr, "tetrec: %s: %u vertices, %u tetrahedra, %llu Steiner points\n", path,
+            tr_mesh_num_vertices(mesh), tr_mesh_num_tets(mesh),
+            (unsigned long long)(stats.points_added_for_edges + stats.points_added_for_facets));
+  tr_mesh_destroy(mesh);
+  free(out);
+  if (s != TR_OK)
+    return fail(s);
+  return write_stats(a, &stats);
 }
 
 static int cmd_delaunay(const args *a)

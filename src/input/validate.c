@@ -381,6 +381,13 @@ static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
       queue[c] = start[c]; /* fill pointers; ncomp <= nt */
     for (uint32_t t = 0; t < nt; t++)
       order[queue[comp[t]]++] = t;
+    /* A cavity (inside an odd number of shells) faces inward: negative volume. The
+     * nesting test needs consistently oriented shells, which they are by now. */
+    char *cavity = malloc(ncomp ? ncomp : 1);
+    if (!cavity)
+      st = tr_error(TR_ERR_NOMEM, "out of memory");
+    else
+      st = tr_input_shell_cavities(plc, order, start, closed, ncomp, cavity);
     for (uint32_t c = 0; c < ncomp && st == TR_OK; c++) {
       if (!closed[c])
         continue;
@@ -391,13 +398,14 @@ static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
                       "%s%sthe closed shell containing triangle %u encloses zero volume",
                       PRE(plc),
                       tnum[order[start[c]]]);
-      else if (sg < 0) {
+      else if (sg != (cavity[c] ? -1 : 1)) {
         for (uint32_t i = start[c]; i < start[c + 1]; i++) {
           flip(plc, order[i]);
           flipme[order[i]] ^= 1;
         }
       }
     }
+    free(cavity);
     free(start);
   }
   /* Report the net change per triangle: flipped for consistency, for outwardness, or

@@ -33,6 +33,12 @@ tr_status tr_input_self_intersections(const struct tr_plc *plc, const uint32_t *
 /* out = 6 * the signed volume enclosed by the triangles (sum of det[a; b; c]), exact. */
 tr_status tr_input_volume6(const struct tr_plc *plc, mpq_t out);
 
+/* cavity[c] = 1 iff closed shell c lies inside an odd number of other closed shells.
+ * Shell c's triangles are order[start[c] .. start[c+1]). */
+tr_status tr_input_shell_cavities(const struct tr_plc *plc, const uint32_t *order,
+                                  const uint32_t *start, const char *closed, uint32_t ncomp,
+                                  char *cavity);
+
 /* Stable merge sort of ids by cmp(ctx, a, b) (<0, 0, >0). */
 tr_status tr_sort_ids(uint32_t *ids, uint32_t n, int (*cmp)(const void *, uint32_t, uint32_t),
                       const void *ctx);

@@ -31,6 +31,8 @@ static int o2(const ptab *t, uint32_t a, uint32_t b, uint32_t c)
   return tr_sign(tr_orient2d(t->p[a], t->p[b], t->p[c]));
 }
 
+static int sgn(double x) { return (x > 0) - (x < 0); }
+
 /* 1 iff q lies on the closed segment ab, given orient(a,b,q) == 0. */
 static int on_seg(const ptab *t, uint32_t a, uint32_t b, uint32_t q)
 {
@@ -286,9 +288,10 @@ static tr_status check_simple(const ptab *t, uint32_t *const *L, const uint32_t 
             uint32_t s = (t->id[a] == t->id[c] || t->id[a] == t->id[d]) ? a : b;
             uint32_t x = s == a ? b : a;
             uint32_t y = (t->id[c] == t->id[s]) ? d : c;
+            /* Signs of differences of doubles are exact (a product could underflow). */
             bad = o2(t, s, x, y) == 0 &&
-                  ((t->p[x][0] - t->p[s][0]) * (t->p[y][0] - t->p[s][0]) > 0 ||
-                   (t->p[x][1] - t->p[s][1]) * (t->p[y][1] - t->p[s][1]) > 0);
+                  (sgn(t->p[x][0] - t->p[s][0]) * sgn(t->p[y][0] - t->p[s][0]) > 0 ||
+                   sgn(t->p[x][1] - t->p[s][1]) * sgn(t->p[y][1] - t->p[s][1]) > 0);
           } else
             bad = seg_hit(t, a, b, c, d);
           if (bad)

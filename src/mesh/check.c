@@ -151,6 +151,10 @@ static tr_status check_incidence(const struct tr_mesh *m, unsigned what)
       nreal += (uint32_t)tr_tet_is_real(m, inc[i]);
       has_v2t |= inc[i] == m->v2t[v];
     }
+    if ((what & TR_CHK_V2T) && e == b && m->v2t[v] != TR_NONE) {
+      s = tr_error(TR_ERR_INVALID_MESH, "vertex %u: in no tet but v2t = %u", v, m->v2t[v]);
+      break;
+    }
     if ((what & TR_CHK_V2T) && e > b && !has_v2t) {
       s = tr_error(TR_ERR_INVALID_MESH, "vertex %u: v2t = %u is not one of its %u tets", v,
                    m->v2t[v], e - b);

@@ -6,6 +6,7 @@
 
 #include "classify.h"
 #include "construct.h"
+#include "recover_edges/edgeset.h"
 #include "recover_edges/swap.h"
 
 void tr_pipe_free(tr_pipe *p)
@@ -365,10 +366,8 @@ done:
   return s;
 }
 
-/* Swap23 applies when the pipe is two tets sharing the face ab crosses; Swap44 when it
- * is the four tets around an edge cd that ab crosses. Returns *done. */
-static tr_status try_swaps(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
-                           tr_edge_stats *st, int *done)
+tr_status tr_pipe_try_swaps(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
+                            const struct tr_edgeset *cons, tr_edge_stats *st, int *done)
 {
   *done = 0;
   for (uint32_t i = 0; i < p->n; i++)
@@ -406,6 +405,8 @@ static tr_status try_swaps(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_p
         return TR_OK;
       }
     }
+    if (tr_edgeset_get(cons, c, d) != TR_EDGESET_NONE)
+      return TR_OK;
     uint32_t out[4];
     TR_CHECK(tr_swap44(m, a, b, c, d, out, done));
     if (*done)
@@ -414,18 +415,50 @@ static tr_status try_swaps(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_p
   return TR_OK;
 }
 
+/* Which table a decomposed pipel went through (its raw type, cut edges and DType). */
+static int pipel_kind(const tr_pipel *pl)
+{
+  switch (tr_pipel_case(pl->type & 15)) {
+  case 1: return TR_PK_CASE1;
+  case 2: {
+    int s0 = tr_ecode_start(pl->iCod1), e0 = tr_ecode_end(pl->iCod1);
+    int s1 = tr_ecode_start(pl->iCod2), e1 = tr_ecode_end(pl->iCod2);
+    if (!(s0 == s1 || s0 == e1 || e0 == s1 || e0 == e1))
+      return TR_PK_CASE2_I;
+    return (pl->type & 0xF0) ? TR_PK_CASE2_Z : TR_PK_CASE2_S;
+  }
+  case 3: return TR_PK_CASE3;
+  case 4: return TR_PK_CASE4;
+  default: return TR_PK_CASE5;
+  }
+}
+
+tr_status tr_pipe_decompose(struct tr_mesh *m, tr_pipe *p, tr_edge_stats *st)
+{
+  for (uint32_t i = 0; i < p->n; i++) {
+    tr_pipel *pl = &p->pl[i];
+    if (pl->ghost) {
+      st->ghosts_split++;
+      continue;
+    }
+    TR_CHECK(tr_pipel_decompose(m, p->pl, p->n, pl));
+    st->pipels[pipel_kind(pl)]++;
+    st->raw[pl->type & 15]++;
+  }
+  return split_ghosts(m, p);
+}
+
 tr_status tr_recover_edge(struct tr_mesh *m, uint32_t a, uint32_t b, tr_edge_stats *st)
 {
-  /* explicit stack of sub-segments: splitting at existing vertices */
-  uint32_t stack[2 * 64];
-  int top = 0;
-  stack[top++] = a;
-  stack[top++] = b;
+  /* explicit stack of sub-segments still to recover: splitting at existing vertices */
+  tr_u32buf stack = {0};
   tr_pipe pipe = {0};
-  tr_status s = TR_OK;
-  while (top > 0 && s == TR_OK) {
-    uint32_t v1 = stack[top - 1], v0 = stack[top - 2];
-    top -= 2;
+  tr_status s = tr_u32buf_push(&stack, a);
+  if (s == TR_OK)
+    s = tr_u32buf_push(&stack, b);
+  while (stack.n > 0 && s == TR_OK) {
+    uint32_t v1 = stack.a[stack.n - 1], v0 = stack.a[stack.n - 2];
+    stack.n -= 2;
     int yes;
     if ((s = tr_mesh_has_edge(m, v0, v1, &yes)) != TR_OK)
       break;
@@ -437,15 +470,10 @@ tr_status tr_recover_edge(struct tr_mesh *m, uint32_t a, uint32_t b, tr_edge_sta
     if ((s = tr_pipe_collect(m, v0, v1, &pipe, &via)) != TR_OK)
       break;
     if (via != TR_NONE) {
-      if (top + 4 > (int)(sizeof stack / sizeof stack[0])) {
-        s = tr_error(TR_ERR_UNSUPPORTED, "edge %u-%u passes through too many vertices", a, b);
-        break;
-      }
       st->split_at_vertex++;
-      stack[top++] = via;
-      stack[top++] = v1;
-      stack[top++] = v0;
-      stack[top++] = via;
+      uint32_t four[4] = {via, v1, v0, via};
+      for (int i = 0; i < 4 && s == TR_OK; i++)
+        s = tr_u32buf_push(&stack, four[i]);
       continue;
     }
     if (pipe.n == 0) {
@@ -453,20 +481,16 @@ tr_status tr_recover_edge(struct tr_mesh *m, uint32_t a, uint32_t b, tr_edge_sta
       break;
     }
     int done;
-    if ((s = try_swaps(m, v0, v1, &pipe, st, &done)) != TR_OK || done)
+    if ((s = tr_pipe_try_swaps(m, v0, v1, &pipe, NULL, st, &done)) != TR_OK || done)
       continue;
     uint32_t nadd;
     if ((s = tr_pipe_add_steiner(m, v0, v1, &pipe, &nadd)) != TR_OK)
       break;
     st->steiner_points += nadd;
-    for (uint32_t i = 0; i < pipe.n && s == TR_OK; i++)
-      if (!pipe.pl[i].ghost)
-        s = tr_pipel_decompose(m, pipe.pl, pipe.n, &pipe.pl[i]);
-    if (s == TR_OK)
-      s = split_ghosts(m, &pipe);
-    if (s == TR_OK)
+    if ((s = tr_pipe_decompose(m, &pipe, st)) == TR_OK)
       st->by_pipels++;
   }
+  tr_u32buf_free(&stack);
   tr_pipe_free(&pipe);
   return s;
 }

@@ -34,12 +34,42 @@ tr_status tr_pipe_collect(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *pi
 tr_status tr_pipe_add_steiner(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *pipe,
                               uint32_t *nadded);
 
+/* Decomposed pipels by the case of Table 2 and the table that was applied. */
+enum {
+  TR_PK_CASE1,    /* Table 5: NOD_EDG, EDG_NOD, EDG_DEG */
+  TR_PK_CASE2_I,  /* Table 6 I: EDG_EDG on opposite edges */
+  TR_PK_CASE2_S,  /* Table 6 II, S-type */
+  TR_PK_CASE2_Z,  /* Table 6 II, Z-type */
+  TR_PK_CASE3,    /* Table 7: NOD_FAC, FAC_NOD */
+  TR_PK_CASE4,    /* Table 8: EDG_FAC, FAC_EDG */
+  TR_PK_CASE5,    /* Table 9: FAC_FAC */
+  TR_PK_COUNT
+};
+
 typedef struct tr_edge_stats {
   uint32_t by_swap23, by_swap44, by_pipels, already, split_at_vertex;
   uint32_t steiner_points;
+  uint32_t pipels[TR_PK_COUNT]; /* decomposed pipels per kind */
+  uint32_t raw[16];             /* decomposed pipels per raw type (low 4 bits) */
+  uint32_t ghosts_split;        /* ghost tets replaced because their hull face was split */
 } tr_edge_stats;
 
-/* Recovers segment ab (two mesh vertices) as a chain of mesh edges. */
+struct tr_edgeset;
+
+/* Tries Swap23 (the pipe is two tets sharing the face ab crosses) or Swap44 (the four
+ * tets around an edge cd that ab crosses). A Swap44 whose cd is in cons (the constraint
+ * edges, may be NULL) is refused: it would delete a recovered input edge. *done = 1 iff
+ * ab is now a mesh edge. */
+tr_status tr_pipe_try_swaps(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
+                            const struct tr_edgeset *cons, tr_edge_stats *st, int *done);
+
+/* Decomposes every pipel of a pipe whose Steiner points were added (tr_pipe_add_steiner)
+ * and splits the cut hull faces; counts the pipels in st->pipels / raw / ghosts_split. */
+tr_status tr_pipe_decompose(struct tr_mesh *m, tr_pipe *p, tr_edge_stats *st);
+
+/* Recovers segment ab (two mesh vertices) as a chain of mesh edges, alone: swaps if
+ * possible, else Steiner points (the all-edges driver with the paper's order is
+ * tr_recover_edges in recover_edges.h). */
 tr_status tr_recover_edge(struct tr_mesh *m, uint32_t a, uint32_t b, tr_edge_stats *st);
 
 /* 1 iff {a,b} is an edge of the mesh (searches Ball(a)). */

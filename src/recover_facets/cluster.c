@@ -30,10 +30,82 @@ static int in_closed_triangle(const tr_point *p, const tr_point *e, const tr_poi
   return tr_classify_point_triangle(p, e, f, g).type != TR_DEG;
 }
 
+/* Per-collection memo of each vertex's side of the plane and, for vertices on it,
+ * whether it lies in the closed triangle. A vertex is shared by ~20 tets of the search
+ * and the on-plane answers (the facet's own boundary vertices, often rational Steiner
+ * points) always need the exact evaluation, so this removes most of the exact work. */
+typedef struct vcache {
+  uint32_t *key; /* TR_NONE: empty */
+  uint8_t *val;  /* (side + 1) | in_closed << 2 */
+  uint32_t mask, n;
+} vcache;
+
+static tr_status vcache_grow(vcache *c)
+{
+  uint32_t cap = c->key ? 2 * (c->mask + 1) : 256;
+  uint32_t *nk = malloc(cap * sizeof *nk);
+  uint8_t *nv = malloc(cap);
+  if (!nk || !nv) {
+    free(nk);
+    free(nv);
+    return tr_error(TR_ERR_NOMEM, "cluster: out of memory");
+  }
+  for (uint32_t i = 0; i < cap; i++)
+    nk[i] = TR_NONE;
+  for (uint32_t i = 0; c->key && i <= c->mask; i++) {
+    if (c->key[i] == TR_NONE)
+      continue;
+    uint32_t h = (c->key[i] * 2654435761u) & (cap - 1);
+    while (nk[h] != TR_NONE)
+      h = (h + 1) & (cap - 1);
+    nk[h] = c->key[i];
+    nv[h] = c->val[i];
+  }
+  free(c->key);
+  free(c->val);
+  c->key = nk;
+  c->val = nv;
+  c->mask = cap - 1;
+  return TR_OK;
+}
+
+static void vcache_free(vcache *c)
+{
+  free(c->key);
+  free(c->val);
+}
+
+/* Side of vertex v (point p) and, on the plane, membership in the closed triangle. */
+static tr_status vertex_side(vcache *c, uint32_t v, const tr_point *p, const tr_point *e,
+                             const tr_point *f, const tr_point *g, int *side, int *in)
+{
+  uint32_t h = 0;
+  if (c) {
+    if (!c->key || 2 * (c->n + 1) > c->mask + 1)
+      TR_CHECK(vcache_grow(c));
+    h = (v * 2654435761u) & c->mask;
+    while (c->key[h] != TR_NONE && c->key[h] != v)
+      h = (h + 1) & c->mask;
+    if (c->key[h] == v) {
+      *side = (c->val[h] & 3) - 1;
+      *in = c->val[h] >> 2;
+      return TR_OK;
+    }
+  }
+  *side = tr_orient3d_p(e, f, g, p);
+  *in = *side == 0 && in_closed_triangle(p, e, f, g);
+  if (c) {
+    c->key[h] = v;
+    c->val[h] = (uint8_t)((*side + 1) | (*in << 2));
+    c->n++;
+  }
+  return TR_OK;
+}
+
 /* Classification plus the "touches the closed triangle" answer the search needs. */
 static tr_status classify(const struct tr_mesh *m, uint32_t t, const tr_point *e,
                           const tr_point *f, const tr_point *g, tr_clusterel *out,
-                          int *member, int *touch)
+                          int *member, int *touch, vcache *vc)
 {
   tr_point p[4];
   int s[4], n0 = 0, nin = 0;
@@ -42,10 +114,11 @@ static tr_status classify(const struct tr_mesh *m, uint32_t t, const tr_point *e
   *touch = 0;
   for (int k = 0; k < 4; k++) {
     p[k] = tr_mesh_point(m, tv[k]);
-    s[k] = tr_orient3d_p(e, f, g, &p[k]);
+    int in;
+    TR_CHECK(vertex_side(vc, tv[k], &p[k], e, f, g, &s[k], &in));
     if (s[k] == 0) {
       n0++;
-      if (in_closed_triangle(&p[k], e, f, g)) {
+      if (in) {
         nin++;
         *touch = 1;
       }
@@ -97,7 +170,9 @@ static tr_status classify(const struct tr_mesh *m, uint32_t t, const tr_point *e
   for (int k = 0; k < 4; k++) {
     if (s[k] != 0)
       continue;
-    if (!in_closed_triangle(&p[k], e, f, g))
+    int in;
+    TR_CHECK(vertex_side(vc, tv[k], &p[k], e, f, g, &s[k], &in));
+    if (!in)
       return tr_error(TR_ERR_INVALID_MESH,
                       "cluster: tet %u crosses the missing facet but its vertex %u on the "
                       "plane is outside the facet", t, tv[k]);
@@ -119,7 +194,7 @@ tr_status tr_clusterel_classify(const struct tr_mesh *m, uint32_t t, const tr_po
                                 int *member)
 {
   int touch;
-  return classify(m, t, e, f, g, out, member, &touch);
+  return classify(m, t, e, f, g, out, member, &touch, NULL);
 }
 
 static int cmp_clusterel(const void *a, const void *b)
@@ -133,18 +208,24 @@ static tr_status collect(struct tr_mesh *m, const tr_point *pe, const tr_point *
                          uint32_t *n)
 {
   size_t cap = 0;
+  vcache vc = {0};
+  tr_status st = TR_OK;
   /* queue->a[0..n) are the seeds, already marked; the queue grows behind them. */
   for (size_t head = 0; head < queue->n; head++) {
     uint32_t t = queue->a[head];
     tr_clusterel c;
     int member, touch;
-    TR_CHECK(classify(m, t, pe, pf, pg, &c, &member, &touch));
+    st = classify(m, t, pe, pf, pg, &c, &member, &touch, &vc);
+    if (st != TR_OK)
+      break;
     if (member) {
       if (*n == cap) {
         size_t nc = cap ? 2 * cap : 16;
         tr_clusterel *r = realloc(*out, nc * sizeof *r);
-        if (!r)
-          return tr_error(TR_ERR_NOMEM, "cluster: out of memory");
+        if (!r) {
+          st = tr_error(TR_ERR_NOMEM, "cluster: out of memory");
+          break;
+        }
         *out = r;
         cap = nc;
       }
@@ -159,10 +240,15 @@ static tr_status collect(struct tr_mesh *m, const tr_point *pe, const tr_point *
       if (u == TR_NONE || tr_tet_is_ghost(m, u) || (m->flags[u] & TR_TF_MARK))
         continue;
       m->flags[u] |= TR_TF_MARK;
-      TR_CHECK(tr_u32buf_push(queue, u));
+      st = tr_u32buf_push(queue, u);
+      if (st != TR_OK)
+        break;
     }
+    if (st != TR_OK)
+      break;
   }
-  return TR_OK;
+  vcache_free(&vc);
+  return st;
 }
 
 tr_status tr_cluster_collect(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,

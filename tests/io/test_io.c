@@ -8,6 +8,7 @@
 #include "core/plc.h"
 #include "input/validate.h"
 #include "io/io.h"
+#include "io/soup.h"
 #include "qpoint.h"
 #include "tetrec.h"
 
@@ -424,6 +425,113 @@ static void t_repairs(void)
   }
 }
 
+/* A cavity shell faces into the cavity (out of the domain); disjoint shells face out.
+ * Checked through the exact enclosed volume: 6 * (64 - 8) for the cube with a cavity. */
+static void t_cavity(void)
+{
+  const char *f[] = {"cavity.off", "two_cubes.off"};
+  const long want6[] = {6 * (64 - 8), 6 * 2};
+  /* 12 flips: 10 listed, then "... and 2 more flipped triangles" (the log is capped) */
+  const int flips[] = {11, 0};
+  for (int i = 0; i < 2; i++) {
+    tr_plc *p = NULL;
+    tr_status s = tr_plc_read(path(data, f[i]), &p);
+    if (s == TR_OK)
+      s = tr_plc_validate(p, NULL);
+    EXPECT(s == TR_OK, "%s: %s", f[i], tr_last_error());
+    if (s != TR_OK) {
+      tr_plc_destroy(p);
+      continue;
+    }
+    mpq_t v;
+    mpq_init(v);
+    tr_input_volume6(p, v);
+    EXPECT(mpq_cmp_si(v, want6[i], 1) == 0, "%s: 6 * volume = %s, expected %ld", f[i],
+           mpq_get_str(NULL, 10, v), want6[i]);
+    mpq_clear(v);
+    int n = 0;
+    for (const char *r = tr_plc_report(p); (r = strstr(r, "flipped")) != NULL; r++)
+      n++;
+    EXPECT(n == flips[i], "%s: %d triangles reported flipped, expected %d", f[i], n, flips[i]);
+    if (i == 0)
+      EXPECT(strstr(tr_plc_report(p), "... and 2 more flipped triangles") != NULL,
+             "cavity: the capped log must count the rest: %s", tr_plc_report(p));
+    tr_plc_destroy(p);
+  }
+}
+
+/* Random star-shaped polygons with integer corners, on the tilted plane z = x + 2y:
+ * the triangulation has n - 2 triangles, each with the polygon's orientation, and they
+ * cover exactly the polygon's area (all arithmetic exact in int64). */
+static void t_polygon_random(void)
+{
+  uint64_t seed = 12345;
+  int tested = 0;
+  for (int iter = 0; iter < 400; iter++) {
+    int n = 3 + iter % 38;
+    double xyz[3 * 40];
+    uint32_t idx[40], first = 0;
+    int64_t P[40][2];
+    double ang[40];
+    for (int i = 0; i < n; i++) {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      ang[i] = (double)(seed >> 11) / 9007199254740992.0 * 6.283185307179586;
+    }
+    for (int i = 1; i < n; i++) /* insertion sort of the angles */
+      for (int j = i; j > 0 && ang[j] < ang[j - 1]; j--) {
+        double t = ang[j];
+        ang[j] = ang[j - 1];
+        ang[j - 1] = t;
+      }
+    for (int i = 0; i < n; i++) {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      double r = 1 + (double)((seed >> 33) % 1000);
+      P[i][0] = (int64_t)llround(r * cos(ang[i]));
+      P[i][1] = (int64_t)llround(r * sin(ang[i]));
+    }
+    int ok = 1; /* strictly increasing angles after rounding: a simple star polygon */
+    for (int i = 0; i < n; i++) {
+      int64_t *a = P[i], *b = P[(i + 1) % n];
+      if (a[0] * b[1] - a[1] * b[0] <= 0)
+        ok = 0;
+    }
+    if (!ok)
+      continue;
+    int rev = iter & 1; /* both orientations */
+    int64_t area2 = 0;
+    for (int i = 0; i < n; i++) {
+      int k = rev ? n - 1 - i : i;
+      xyz[3 * i] = (double)P[k][0];
+      xyz[3 * i + 1] = (double)P[k][1];
+      xyz[3 * i + 2] = (double)(P[k][0] + 2 * P[k][1]);
+      idx[i] = (uint32_t)i;
+    }
+    for (int i = 0; i < n; i++) {
+      const double *a = xyz + 3 * i, *b = xyz + 3 * ((i + 1) % n);
+      area2 += (int64_t)a[0] * (int64_t)b[1] - (int64_t)a[1] * (int64_t)b[0];
+    }
+    tr_u32vec out = {0};
+    tr_status st = tr_triangulate_facet(xyz, idx, &first, 1, (uint32_t)n, NULL, 0, &out, "star");
+    EXPECT(st == TR_OK, "star polygon %d (n=%d): %s", iter, n, tr_last_error());
+    EXPECT(out.n == 3 * (uint32_t)(n - 2), "star polygon %d: %u triangles for n=%d", iter,
+           out.n / 3, n);
+    int64_t sum = 0;
+    for (uint32_t t = 0; t + 2 < out.n; t += 3) {
+      const double *a = xyz + 3 * out.a[t], *b = xyz + 3 * out.a[t + 1], *c = xyz + 3 * out.a[t + 2];
+      int64_t s2 = ((int64_t)b[0] - (int64_t)a[0]) * ((int64_t)c[1] - (int64_t)a[1]) -
+                   ((int64_t)b[1] - (int64_t)a[1]) * ((int64_t)c[0] - (int64_t)a[0]);
+      EXPECT(s2 != 0 && (s2 > 0) == (area2 > 0), "star %d: triangle with area2 %lld", iter,
+             (long long)s2);
+      sum += s2;
+    }
+    EXPECT(sum == area2, "star %d: triangles cover %lld, polygon %lld", iter, (long long)sum,
+           (long long)area2);
+    tr_u32vec_free(&out);
+    tested++;
+  }
+  EXPECT(tested > 100, "only %d star polygons survived rounding", tested);
+}
+
 static tr_status check_pair(const double *xyz, uint32_t n, const uint32_t *tris)
 {
   tr_plc *p;
@@ -484,7 +592,8 @@ int main(int argc, char **argv)
                {"ply", t_ply},                   {"medit", t_medit},
                {"tetgen", t_tetgen},             {"roundtrip", t_roundtrip},
                {"mesh_write", t_mesh_write},     {"malformed", t_malformed},
-               {"repairs", t_repairs},           {"selfint", t_selfint}};
+               {"repairs", t_repairs},           {"selfint", t_selfint},
+               {"cavity", t_cavity},             {"polygon_random", t_polygon_random}};
   for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++)
     if (!strcmp(argv[1], tests[i].name)) {
       tests[i].fn();

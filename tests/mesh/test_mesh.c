@@ -77,6 +77,18 @@ static int codes_are_the_papers(void)
   EXPECT(TR_NEIG(m, t[0], 3) == t[1] && TR_NEIG(m, t[1], 3) == t[0] &&
              TR_NEIG(m, t[0], 0) == TR_NONE,
          "NEIG follows the glued face and is TR_NONE elsewhere");
+  /* edge 0-1 lies in both tets and on the boundary: an open Shell of 2 tets */
+  tr_u32buf sh = {0};
+  int closed = -1;
+  EXPECT_OK(tr_shell(m, 0, 1, TR_NONE, &sh, &closed), "open shell");
+  EXPECT(sh.n == 2 && closed == 0 && sh.a[0] != sh.a[1] &&
+             (sh.a[0] == t[0] || sh.a[0] == t[1]) && (sh.a[1] == t[0] || sh.a[1] == t[1]),
+         "Shell(0,1) of two glued tets is open with both tets (n = %zu, closed = %d)", sh.n,
+         closed);
+  /* right-handed about 0->1: orient3d(0, 1, c, 2) > 0 for c the vertex of the first tet
+   * off the shared face 012; here that is vertex 4, so the Shell is (t[1], t[0]) */
+  EXPECT(sh.a[0] == t[1], "open Shell(0,1) turns right-handed: starts at the tet with vertex 4");
+  tr_u32buf_free(&sh);
   tr_mesh_destroy(m);
   return 0;
 }

@@ -1,0 +1,34 @@
+/* Exact conformity of a tet mesh to its input PLC (used by the pipeline tests, the model
+ * runs and `tetrec check`). The mesh must hold only the domain's tets (as tr_mesh_plc
+ * outputs them: no ghosts kept, outer tets removed); tets flagged TR_TF_OUTER and ghosts
+ * are ignored. Checks, in this order, and reports the first violation with where:
+ *  1. every tet strictly positive (exact);
+ *  2. every vertex of an input triangle or segment is a mesh vertex (equal coordinates);
+ *  3. every input edge (triangle edges and segments) is a chain of collinear mesh edges;
+ *  4. every input triangle is exactly covered: the mesh faces lying in it (all three
+ *     vertices in the closed triangle, exact) have a total projected area equal to its
+ *     own, exactly (mpq); and every boundary face of the mesh (no tet behind it, or a tet
+ *     of another region) lies in some input triangle;
+ *  5. the exact sum of 6 * volume of the tets equals volume6, or when volume6 is NULL and
+ *     every input edge has exactly two triangles, the sum of det over the input
+ *     triangles (the volume the surface encloses; a cavity shell oriented inward counts
+ *     negatively). Non-manifold inputs (internal facets) and nested outward shells need
+ *     the caller's volume6: their triangle sum is not the domain's volume. */
+#ifndef TR_MESH_CONFORM_H
+#define TR_MESH_CONFORM_H
+
+#include <gmp.h>
+
+#include "core/plc.h"
+#include "mesh.h"
+
+enum {
+  /* the input was open and meshed within its convex hull (tr_options.allow_open): mesh
+   * boundary faces need not lie in an input triangle */
+  TR_CONF_OPEN = 1u << 0
+};
+
+tr_status tr_check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
+                              mpq_srcptr volume6, unsigned flags);
+
+#endif

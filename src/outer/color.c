@@ -1,0 +1,243 @@
+/* Outer removal by coloring: see color.h for the rule and its limits. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "color.h"
+#include "flage.h"
+
+typedef struct {
+  uint32_t k[3]; /* sorted vertex ids */
+  uint32_t id;   /* sub-face index */
+} fkey;
+
+static int cmp_fkey(const void *pa, const void *pb)
+{
+  const fkey *a = pa, *b = pb;
+  for (int i = 0; i < 3; i++)
+    if (a->k[i] != b->k[i])
+      return a->k[i] < b->k[i] ? -1 : 1;
+  return a->id < b->id ? -1 : a->id > b->id;
+}
+
+static void sort3(uint32_t *s)
+{
+  for (int i = 0; i < 2; i++)
+    for (int j = 0; j < 2 - i; j++)
+      if (s[j] > s[j + 1]) {
+        uint32_t x = s[j];
+        s[j] = s[j + 1];
+        s[j + 1] = x;
+      }
+}
+
+static void sort4(uint32_t *s)
+{
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3 - i; j++)
+      if (s[j] > s[j + 1]) {
+        uint32_t x = s[j];
+        s[j] = s[j + 1];
+        s[j + 1] = x;
+      }
+}
+
+static const fkey *find_face(const fkey *keys, uint32_t n, const uint32_t s[3])
+{
+  uint32_t lo = 0, hi = n;
+  while (lo < hi) {
+    uint32_t mid = lo + (hi - lo) / 2;
+    int c = 0;
+    for (int i = 0; i < 3 && !c; i++)
+      c = keys[mid].k[i] < s[i] ? -1 : keys[mid].k[i] > s[i];
+    if (c < 0)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  if (lo < n && keys[lo].k[0] == s[0] && keys[lo].k[1] == s[1] && keys[lo].k[2] == s[2])
+    return keys + lo;
+  return NULL;
+}
+
+typedef struct {
+  uint32_t v[4]; /* smallest tet of the component, sorted vertex ids */
+  uint32_t comp;
+} ckey;
+
+static int cmp_ckey(const void *pa, const void *pb)
+{
+  const ckey *a = pa, *b = pb;
+  for (int i = 0; i < 4; i++)
+    if (a->v[i] != b->v[i])
+      return a->v[i] < b->v[i] ? -1 : 1;
+  return a->comp < b->comp ? -1 : a->comp > b->comp;
+}
+
+static int less4(const uint32_t *a, const uint32_t *b)
+{
+  for (int i = 0; i < 4; i++)
+    if (a[i] != b[i])
+      return a[i] < b[i];
+  return 0;
+}
+
+tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
+                         uint32_t *nregions)
+{
+  *nregions = 0;
+  uint32_t ns = sub->n, nt = m->nt;
+  fkey *keys = malloc(sizeof *keys * (ns ? ns : 1));
+  uint8_t *cmask = calloc(nt ? nt : 1, 1);   /* bit k: face k is a constraint */
+  uint32_t *seen = calloc(ns ? ns : 1, sizeof *seen);
+  uint32_t *comp = malloc(sizeof *comp * (nt ? nt : 1));
+  uint32_t *queue = malloc(sizeof *queue * (nt ? nt : 1));
+  uint8_t *cflag = NULL;  /* per component: 1 ghost, 2 inner vote */
+  ckey *ck = NULL;
+  uint32_t *rid = NULL;
+  tr_status st = TR_OK;
+  if (!keys || !cmask || !seen || !comp || !queue) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory coloring %u tets", nt);
+    goto done;
+  }
+  for (uint32_t j = 0; j < ns; j++) {
+    memcpy(keys[j].k, sub->v + 3 * (size_t)j, 3 * sizeof(uint32_t));
+    sort3(keys[j].k);
+    keys[j].id = j;
+  }
+  qsort(keys, ns, sizeof *keys, cmp_fkey);
+  /* Constraint faces, marked on both sides; the FLAGE votes are taken after the
+   * components are known. */
+  for (uint32_t t = 0; t < nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    for (int k = 0; k < 4; k++) {
+      uint32_t s[3];
+      for (int i = 0; i < 3; i++)
+        s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
+      sort3(s);
+      const fkey *f = find_face(keys, ns, s);
+      if (!f)
+        continue;
+      /* Duplicated sub-faces (the same face listed twice) all mark the same face. */
+      for (const fkey *g = f; g < keys + ns && g->k[0] == s[0] && g->k[1] == s[1] &&
+                              g->k[2] == s[2]; g++)
+        seen[g->id] = 1;
+      cmask[t] |= (uint8_t)(1u << k);
+      uint32_t o = TR_NEIG(m, t, k);
+      if (o != TR_NONE)
+        cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
+    }
+  }
+  for (uint32_t j = 0; j < ns; j++)
+    if (!seen[j]) {
+      st = tr_error(TR_ERR_INTERNAL,
+                    "outer removal: sub-face %u (%u, %u, %u) of input triangle %u is not a "
+                    "face of the mesh",
+                    j, sub->v[3 * (size_t)j], sub->v[3 * (size_t)j + 1],
+                    sub->v[3 * (size_t)j + 2], sub->tri[j]);
+      goto done;
+    }
+  /* Components across non-constraint faces, in slot order (deterministic). */
+  uint32_t nc = 0;
+  for (uint32_t t = 0; t < nt; t++)
+    comp[t] = TR_NONE;
+  for (uint32_t s0 = 0; s0 < nt; s0++) {
+    if (tr_tet_is_free(m, s0) || comp[s0] != TR_NONE)
+      continue;
+    uint32_t qh = 0, qt = 0;
+    comp[s0] = nc;
+    queue[qt++] = s0;
+    while (qh < qt) {
+      uint32_t t = queue[qh++];
+      for (int k = 0; k < 4; k++) {
+        if (cmask[t] & (1u << k))
+          continue;
+        uint32_t o = TR_NEIG(m, t, k);
+        if (o == TR_NONE || comp[o] != TR_NONE || tr_tet_is_free(m, o))
+          continue;
+        /* keep_hull: the hull is a barrier, so the outside is the ghosts alone */
+        if (keep_hull && tr_tet_is_ghost(m, o) != tr_tet_is_ghost(m, t))
+          continue;
+        comp[o] = nc;
+        queue[qt++] = o;
+      }
+    }
+    nc++;
+  }
+  cflag = calloc(nc ? nc : 1, 1);
+  ck = malloc(sizeof *ck * (nc ? nc : 1));
+  rid = calloc(nc ? nc : 1, sizeof *rid);
+  if (!cflag || !ck || !rid) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory coloring %u components", nc);
+    goto done;
+  }
+  for (uint32_t c = 0; c < nc; c++) {
+    memset(ck[c].v, 0xff, sizeof ck[c].v);
+    ck[c].comp = c;
+  }
+  for (uint32_t t = 0; t < nt; t++) {
+    if (tr_tet_is_free(m, t))
+      continue;
+    uint32_t c = comp[t];
+    if (tr_tet_is_ghost(m, t)) {
+      cflag[c] |= 1;
+      continue;
+    }
+    uint32_t v[4];
+    memcpy(v, m->tv + 4 * (size_t)t, sizeof v);
+    sort4(v);
+    if (less4(v, ck[c].v))
+      memcpy(ck[c].v, v, sizeof v);
+    for (int k = 0; k < 4; k++) {
+      if (!(cmask[t] & (1u << k)) || (cflag[c] & 2))
+        continue;
+      uint32_t s[3];
+      for (int i = 0; i < 3; i++)
+        s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
+      sort3(s);
+      const fkey *f = find_face(keys, ns, s);
+      const uint32_t *a = sub->v + 3 * (size_t)f->id;
+      /* FLAGE from the NCodes: the sub-face is ordered like its (outward) triangle. */
+      int e = tr_flage(tr_ncode(m, t, a[0]), tr_ncode(m, t, a[1]), tr_ncode(m, t, a[2]), k);
+      if (e < 0) {
+        st = tr_error(TR_ERR_INTERNAL, "outer removal: FLAGE undefined at tet %u face %d", t,
+                      k);
+        goto done;
+      }
+      if (e == TR_INNER)
+        cflag[c] |= 2;
+    }
+  }
+  /* Inner components sorted by their smallest tet: ids 1..k. */
+  uint32_t ni = 0;
+  for (uint32_t c = 0; c < nc; c++) {
+    int inner = !(cflag[c] & 1) && (keep_hull || (cflag[c] & 2));
+    if (inner)
+      ck[ni++] = ck[c];
+  }
+  qsort(ck, ni, sizeof *ck, cmp_ckey);
+  for (uint32_t i = 0; i < ni; i++)
+    rid[ck[i].comp] = i + 1;
+  if ((st = tr_mesh_enable_regions(m)) != TR_OK)
+    goto done;
+  for (uint32_t t = 0; t < nt; t++) {
+    if (tr_tet_is_free(m, t))
+      continue;
+    m->region[t] = rid[comp[t]];
+    if (rid[comp[t]] == 0)
+      m->flags[t] |= TR_TF_OUTER;
+    else
+      m->flags[t] &= (uint8_t)~TR_TF_OUTER;
+  }
+  *nregions = ni;
+done:
+  free(keys);
+  free(cmask);
+  free(seen);
+  free(comp);
+  free(queue);
+  free(cflag);
+  free(ck);
+  free(rid);
+  return st;
+}

@@ -1,0 +1,33 @@
+/* Removal of outer tets by coloring, and region numbering (the seed paper's "Removal of
+ * outer elements", with the FLAGE labels of flage.h as seeds).
+ *
+ * Rule. The constraint faces are the recovered sub-faces. The tets (ghosts included) are
+ * split into components that are connected across non-constraint faces. A component that
+ * holds a ghost tet touches the outside of the convex hull: OUTER. Any other component is
+ * INNER iff at least one of its tets, seen from an adjacent sub-face oriented like its
+ * input triangle (outward), is labelled INNER by FLAGE. Why "at least one" and not a
+ * majority: a component bounded by an outer shell and by an internal facet (multi-region
+ * input) gets OUTER votes from the internal facet's wrong side but INNER votes from its
+ * own part of the outer shell, and it is inside; a component whose every adjacent
+ * sub-face votes OUTER (e.g. the inside of a shell oriented inward, i.e. a cavity) is a
+ * hole. Limits: a component enclosed only by internal facets that all happen to be
+ * oriented away from it is classified OUTER (the input gives no outward direction for
+ * it); tr_plc_validate orients every closed shell outward, so nested closed shells make
+ * nested regions, not cavities.
+ *
+ * Regions: the INNER components get ids 1..k ordered by their lexicographically
+ * smallest tet (sorted vertex ids), which does not depend on slot layout. */
+#ifndef TR_OUTER_COLOR_H
+#define TR_OUTER_COLOR_H
+
+#include "mesh/mesh.h"
+#include "recover_facets/recover_facets.h"
+
+/* Sets TR_TF_OUTER on every outer tet (ghosts included), enables m->region and writes
+ * 1..k into the inner tets (0 into outer ones). keep_hull != 0: every non-ghost
+ * component is inner (open surfaces meshed within their convex hull). *nregions = k.
+ * TR_ERR_INTERNAL if a sub-face is not a face of the mesh. */
+tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
+                         uint32_t *nregions);
+
+#endif

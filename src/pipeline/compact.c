@@ -1,0 +1,77 @@
+/* The output mesh: the domain's tets only, numbered densely and deterministically. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "pipeline.h"
+
+static int keep(const struct tr_mesh *m, uint32_t t)
+{
+  return tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER);
+}
+
+tr_status tr_pipeline_compact(struct tr_mesh *m, struct tr_mesh **out)
+{
+  *out = NULL;
+  uint32_t nv = m->nv, nt = m->nt, kt = 0, kv = 0;
+  uint32_t *vmap = malloc(sizeof *vmap * (nv ? nv : 1));
+  uint32_t *tmap = malloc(sizeof *tmap * (nt ? nt : 1));
+  struct tr_mesh *o = NULL;
+  tr_status st = TR_OK;
+  if (!vmap || !tmap) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory compacting the mesh");
+    goto done;
+  }
+  for (uint32_t v = 0; v < nv; v++)
+    vmap[v] = TR_NONE;
+  for (uint32_t t = 0; t < nt; t++) {
+    tmap[t] = TR_NONE;
+    if (!keep(m, t))
+      continue;
+    tmap[t] = kt++;
+    for (int k = 0; k < 4; k++)
+      vmap[m->tv[4 * (size_t)t + k]] = 0;
+  }
+  for (uint32_t v = 0; v < nv; v++)
+    if (vmap[v] == 0)
+      vmap[v] = kv++;
+  if ((st = tr_mesh_create(kv, kt, &o)) != TR_OK)
+    goto done;
+  for (uint32_t v = 0; v < nv && st == TR_OK; v++) {
+    if (vmap[v] == TR_NONE)
+      continue;
+    uint32_t id;
+    if (m->vq && m->vq[v]) {
+      /* moved, not copied: the working store is destroyed right after */
+      st = tr_mesh_add_steiner(o, m->vq[v], &id);
+      if (st == TR_OK)
+        m->vq[v] = NULL;
+    } else
+      st = tr_mesh_add_vertex(o, m->xyz + 3 * (size_t)v, &id);
+  }
+  if (st == TR_OK && m->region)
+    st = tr_mesh_enable_regions(o);
+  for (uint32_t t = 0; t < nt && st == TR_OK; t++) {
+    if (tmap[t] == TR_NONE)
+      continue;
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    uint32_t id;
+    st = tr_tet_new(o, vmap[v[0]], vmap[v[1]], vmap[v[2]], vmap[v[3]], &id);
+    if (st != TR_OK)
+      break;
+    for (int k = 0; k < 4; k++) {
+      uint32_t c = m->tn[4 * (size_t)t + (size_t)k];
+      o->tn[4 * (size_t)id + (size_t)k] =
+          c == TR_NONE || tmap[c >> 2] == TR_NONE ? TR_NONE : 4 * tmap[c >> 2] + (c & 3);
+    }
+    if (m->region)
+      o->region[id] = m->region[t];
+  }
+done:
+  free(vmap);
+  free(tmap);
+  if (st != TR_OK)
+    tr_mesh_destroy(o);
+  else
+    *out = o;
+  return st;
+}

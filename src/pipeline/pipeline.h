@@ -1,0 +1,42 @@
+/* The `tetrec mesh` pipeline (tr_mesh_plc in include/tetrec.h), split by concern:
+ *   mesh_plc.c  orchestration, timing, statistics
+ *   stages.c    input edges, the two recovery stages (or the exact "nothing missing"
+ *               fallback when the library is built without them)
+ *   compact.c   the output mesh: inner tets only, dense deterministic numbering */
+#ifndef TR_PIPELINE_H
+#define TR_PIPELINE_H
+
+#include <stdint.h>
+
+#include "core/plc.h"
+#include "mesh/mesh.h"
+#include "recover_facets/recover_facets.h"
+
+/* tr_mesh_plc, and *used (may be NULL) receives the PLC actually meshed: validated
+ * (duplicates merged, orientation repaired) and smoothed. The output mesh's first
+ * vertices are used's points that appear in a tet, in order. The caller destroys it. */
+tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *opt, tr_mesh **out,
+                         tr_stats *stats, tr_plc **used);
+
+/* The unique undirected edges of the triangles and segments, a < b, sorted; *nopen =
+ * number of edges with exactly one triangle (segments do not count). */
+tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t *n,
+                            uint32_t *nopen);
+
+/* Edge then facet recovery on m (vertex ids = plc point ids). Fills sub and the stats
+ * rows; secs[0], secs[1] = time of each stage. */
+tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
+                              const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
+                              tr_stats *stats, double secs[2]);
+/* Frees sub's arrays (works whether or not the facet stage is built). */
+void tr_pipeline_subfaces_free(tr_subfaces *sub);
+
+/* A new store holding the non-outer real tets of m, vertices renumbered densely in
+ * increasing old id (input points first, Steiner points in creation order), tets in slot
+ * order, neighbours and regions kept. Steiner points are moved out of m. */
+tr_status tr_pipeline_compact(struct tr_mesh *m, struct tr_mesh **out);
+
+/* Monotonic clock in seconds. */
+double tr_pipeline_now(void);
+
+#endif

@@ -1,0 +1,392 @@
+/* The all-edges driver of edge recovery (see recover_edges.h).
+ *
+ * Order (the paper's): pass 1 runs over every missing input edge and recovers what the
+ * swaps alone can recover (Swap23, Swap44, with the edge split at existing vertices it
+ * passes through); pass 2 recovers what is left with Steiner points, pipel by pipel
+ * (a sub-segment whose pipe happens to admit a swap by then still takes the swap: it
+ * costs no point).
+ *
+ * Constraint edges: the mesh edges that are pieces of input edges are kept in a hash map
+ * (edgeset.h) so that a Swap44 never deletes one and a Steiner point is never put on
+ * one. For a valid PLC both are impossible anyway (the swapped / cut edge is crossed by
+ * the edge being recovered); for crossing input edges this is where the crossing is
+ * found and reported.
+ *
+ * Chains are computed once at the end, by walking the mesh from each input edge's first
+ * end to its second along collinear mesh edges (exact point-on-segment tests). They are
+ * not maintained incrementally because the vertex sequence of a recovered edge can still
+ * change after its recovery: a later edge may be split at a vertex lying on it, and
+ * pipel decompositions of later edges rebuild the tets around it; the mesh is the only
+ * source of truth, and a walk over it is cheap (one Ball per chain vertex) and exact. The
+ * same walk also proves the result: if an input edge is not a chain of mesh edges at the
+ * end, the stage fails naming it.
+ */
+#include "recover_edges/recover_edges.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "classify.h"
+#include "recover_edges/edgeset.h"
+#include "recover_edges/pipe.h"
+
+_Static_assert(TR_EDGE_PIPEL_KINDS == TR_PK_COUNT, "pipel kinds of recover_edges.h and pipe.h");
+
+typedef struct ctx {
+  struct tr_mesh *m;
+  const uint32_t *edges;
+  uint32_t n;
+  tr_edgeset cons;   /* constraint mesh edges -> input edge index */
+  tr_u32buf stack;   /* sub-segments still to recover (pairs) */
+  tr_u32buf walk;    /* scratch: one chain */
+  tr_u32buf ball;    /* scratch: Ball(v) */
+  tr_pipe pipe;
+  tr_edge_stats est; /* detailed counters (pipe.h) */
+  uint32_t nv0;      /* vertices before the stage: ids from nv0 on are its Steiner points */
+} ctx;
+
+/* Wraps the message of a failure inside the recovery of input edge i with the edge's
+ * vertex ids and coordinates, so that a user can locate it in the input. */
+static tr_status edge_fail(const ctx *c, uint32_t i, tr_status s)
+{
+  char inner[768];
+  strncpy(inner, tr_last_error(), sizeof inner - 1);
+  inner[sizeof inner - 1] = '\0';
+  uint32_t a = c->edges[2 * (size_t)i], b = c->edges[2 * (size_t)i + 1];
+  const double *pa = c->m->xyz + 3 * (size_t)a, *pb = c->m->xyz + 3 * (size_t)b;
+  return tr_error(s, "input edge %u (%u (%.17g, %.17g, %.17g) - %u (%.17g, %.17g, %.17g)): %s",
+                  i, a, pa[0], pa[1], pa[2], b, pb[0], pb[1], pb[2], inner);
+}
+
+/* The vertices of the chain from a to b: starting at a, the next vertex is the mesh
+ * neighbour of the current one lying exactly on the open segment (current, b], the
+ * nearest one should there be several (impossible in a valid mesh: two neighbours on
+ * one ray would make one edge contain a vertex). Each step strictly advances towards b,
+ * so the walk ends after at most nv steps or fails with TR_ERR_INTERNAL. */
+static tr_status walk_chain(ctx *c, uint32_t a, uint32_t b, tr_u32buf *out)
+{
+  struct tr_mesh *m = c->m;
+  out->n = 0;
+  TR_CHECK(tr_u32buf_push(out, a));
+  tr_point pb = tr_mesh_point(m, b);
+  /* the dominant axis of ab orders points along it exactly */
+  tr_point pa = tr_mesh_point(m, a);
+  int axis = 0;
+  double best = -1;
+  for (int k = 0; k < 3; k++) {
+    double d = pb.d[k] - pa.d[k];
+    d = d < 0 ? -d : d;
+    if (d > best) {
+      best = d;
+      axis = k;
+    }
+  }
+  int dir = tr_cmp_coord_p(&pa, &pb, axis);
+  if (dir == 0)
+    return tr_error(TR_ERR_INTERNAL, "walk %u-%u: no separating axis", a, b);
+  uint32_t v = a;
+  for (uint32_t steps = 0; v != b; steps++) {
+    if (steps > m->nv)
+      return tr_error(TR_ERR_INTERNAL, "walk %u-%u does not end", a, b);
+    TR_CHECK(tr_ball(m, v, 0, &c->ball));
+    tr_point pv = tr_mesh_point(m, v);
+    uint32_t next = TR_NONE;
+    tr_point pn = pv;
+    for (size_t i = 0; i < c->ball.n && next != b; i++) {
+      const uint32_t *tv = m->tv + 4 * (size_t)c->ball.a[i];
+      for (int k = 0; k < 4 && next != b; k++) {
+        uint32_t w = tv[k];
+        if (w == v || w == next)
+          continue;
+        if (w == b) {
+          next = b;
+          break;
+        }
+        tr_point pw = tr_mesh_point(m, w);
+        if (tr_classify_point_segment(&pw, &pv, &pb).type != TR_EDG)
+          continue;
+        if (next == TR_NONE || tr_cmp_coord_p(&pw, &pn, axis) == -dir) {
+          next = w;
+          pn = pw;
+        }
+      }
+    }
+    if (next == TR_NONE)
+      return tr_error(TR_ERR_INTERNAL,
+                      "not a chain of mesh edges: vertex %u (piece %zu from %u) has no mesh "
+                      "edge along the segment towards %u", v, out->n, a, b);
+    TR_CHECK(tr_u32buf_push(out, next));
+    v = next;
+  }
+  return TR_OK;
+}
+
+/* Records the current chain of sub-segment v0-v1 of input edge i as constraints. */
+static tr_status add_constraints(ctx *c, uint32_t i, uint32_t v0, uint32_t v1)
+{
+  TR_CHECK(walk_chain(c, v0, v1, &c->walk));
+  for (size_t k = 0; k + 1 < c->walk.n; k++)
+    TR_CHECK(tr_edgeset_put(&c->cons, c->walk.a[k], c->walk.a[k + 1], i));
+  return TR_OK;
+}
+
+/* A Steiner point on a constraint edge would split a recovered input edge: that happens
+ * only when two input edges cross. */
+static tr_status check_cut_edges(ctx *c, uint32_t i)
+{
+  for (uint32_t p = 0; p < c->pipe.n; p++) {
+    const tr_pipel *pl = &c->pipe.pl[p];
+    for (int e = 0; e < 2 && !pl->ghost; e++) {
+      int ty = e ? (pl->type >> 2) & 3 : pl->type & 3;
+      if (ty != TR_EDG)
+        continue;
+      int code = e ? pl->iCod2 : pl->iCod1;
+      const uint32_t *tv = c->m->tv + 4 * (size_t)pl->iEle;
+      uint32_t u = tv[tr_ecode_start(code)], w = tv[tr_ecode_end(code)];
+      uint32_t j = tr_edgeset_get(&c->cons, u, w);
+      if (j != TR_EDGESET_NONE)
+        return tr_error(TR_ERR_SELF_INTERSECT,
+                        "it crosses input edge %u (%u-%u) at the interior of its piece %u-%u",
+                        j, c->edges[2 * (size_t)j], c->edges[2 * (size_t)j + 1], u, w);
+    }
+  }
+  (void)i;
+  return TR_OK;
+}
+
+/* Recovers input edge i as far as allowed: with steiner == 0 only by swaps (and splits at
+ * existing vertices); sub-segments that would need Steiner points are left and *complete
+ * is cleared. *npoints counts the Steiner points added. */
+static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uint32_t *npoints)
+{
+  struct tr_mesh *m = c->m;
+  *complete = 1;
+  *npoints = 0;
+  c->stack.n = 0;
+  TR_CHECK(tr_u32buf_push(&c->stack, c->edges[2 * (size_t)i]));
+  TR_CHECK(tr_u32buf_push(&c->stack, c->edges[2 * (size_t)i + 1]));
+  while (c->stack.n > 0) {
+    uint32_t v1 = c->stack.a[c->stack.n - 1], v0 = c->stack.a[c->stack.n - 2];
+    c->stack.n -= 2;
+    int yes;
+    TR_CHECK(tr_mesh_has_edge(m, v0, v1, &yes));
+    if (yes) {
+      TR_CHECK(tr_edgeset_put(&c->cons, v0, v1, i));
+      continue;
+    }
+    uint32_t via;
+    TR_CHECK(tr_pipe_collect(m, v0, v1, &c->pipe, &via));
+    if (via != TR_NONE) {
+      /* A Steiner point of this stage lies on another input edge: passing through it
+       * means crossing that edge. (Input vertices on the edge are fine: the edge is
+       * split there, chain A-V-B.) */
+      if (via >= c->nv0)
+        return tr_error(TR_ERR_SELF_INTERSECT,
+                        "it passes through Steiner point %u of another input edge "
+                        "(the two input edges cross)", via);
+      /* v0-via first: pushed last */
+      uint32_t four[4] = {via, v1, v0, via};
+      for (int k = 0; k < 4; k++)
+        TR_CHECK(tr_u32buf_push(&c->stack, four[k]));
+      c->est.split_at_vertex++;
+      continue;
+    }
+    if (c->pipe.n == 0)
+      return tr_error(TR_ERR_INTERNAL, "sub-segment %u-%u: empty pipe for a missing edge",
+                      v0, v1);
+    int done;
+    TR_CHECK(tr_pipe_try_swaps(m, v0, v1, &c->pipe, &c->cons, &c->est, &done));
+    if (done) {
+      TR_CHECK(tr_edgeset_put(&c->cons, v0, v1, i));
+      continue;
+    }
+    if (!steiner) {
+      *complete = 0;
+      continue;
+    }
+    TR_CHECK(check_cut_edges(c, i));
+    uint32_t nadd;
+    TR_CHECK(tr_pipe_add_steiner(m, v0, v1, &c->pipe, &nadd));
+    *npoints += nadd;
+    c->est.steiner_points += nadd;
+    TR_CHECK(tr_pipe_decompose(m, &c->pipe, &c->est));
+    c->est.by_pipels++;
+    TR_CHECK(add_constraints(c, i, v0, v1));
+  }
+  return TR_OK;
+}
+
+static tr_status check_input(const struct tr_mesh *m, const uint32_t *edges, uint32_t n)
+{
+  for (uint32_t i = 0; i < n; i++) {
+    uint32_t a = edges[2 * (size_t)i], b = edges[2 * (size_t)i + 1];
+    if (a >= b || b >= m->nv)
+      return tr_error(TR_ERR_INPUT, "input edge %u (%u-%u): vertex ids must satisfy a < b < %u",
+                      i, a, b, m->nv);
+    if (m->v2t[a] == TR_NONE || m->v2t[b] == TR_NONE)
+      return tr_error(TR_ERR_INPUT, "input edge %u (%u-%u): a vertex is not in the mesh "
+                      "(a dropped duplicate?)", i, a, b);
+    if (i > 0 && (edges[2 * (size_t)i - 2] > a ||
+                  (edges[2 * (size_t)i - 2] == a && edges[2 * (size_t)i - 1] >= b)))
+      return tr_error(TR_ERR_INPUT, "input edges %u and %u are not sorted and unique", i - 1, i);
+  }
+  return TR_OK;
+}
+
+static tr_status build_chains(ctx *c, tr_edge_chains *ch)
+{
+  size_t cap = 2 * (size_t)c->n + 16, nv = 0;
+  ch->n = c->n;
+  ch->start = malloc(((size_t)c->n + 1) * sizeof *ch->start);
+  ch->v = malloc(cap * sizeof *ch->v);
+  if (!ch->start || !ch->v)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u edge chains", c->n);
+  for (uint32_t i = 0; i < c->n; i++) {
+    ch->start[i] = (uint32_t)nv;
+    tr_status s = walk_chain(c, c->edges[2 * (size_t)i], c->edges[2 * (size_t)i + 1], &c->walk);
+    if (s != TR_OK)
+      return edge_fail(c, i, s);
+    if (nv + c->walk.n > cap) {
+      while (nv + c->walk.n > cap)
+        cap *= 2;
+      uint32_t *q = realloc(ch->v, cap * sizeof *q);
+      if (!q)
+        return tr_error(TR_ERR_NOMEM, "out of memory for edge chains");
+      ch->v = q;
+    }
+    memcpy(ch->v + nv, c->walk.a, c->walk.n * sizeof *ch->v);
+    nv += c->walk.n;
+    if (nv >= UINT32_MAX)
+      return tr_error(TR_ERR_NOMEM, "edge chains: more than 2^32 entries");
+  }
+  ch->start[c->n] = (uint32_t)nv;
+  return TR_OK;
+}
+
+static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
+{
+  struct tr_mesh *m = c->m;
+  uint32_t *missing = NULL, nmiss = 0;
+  uint8_t *left = NULL;
+  tr_status s = TR_OK;
+  if (c->n) {
+    missing = malloc((size_t)c->n * sizeof *missing);
+    left = calloc(c->n, 1);
+    if (!missing || !left) {
+      s = tr_error(TR_ERR_NOMEM, "out of memory for %u input edges", c->n);
+      goto done;
+    }
+  }
+  /* the constraints first: pass 1 must not swap away an edge that is already there */
+  for (uint32_t i = 0; i < c->n && s == TR_OK; i++) {
+    int yes;
+    uint32_t a = c->edges[2 * (size_t)i], b = c->edges[2 * (size_t)i + 1];
+    if ((s = tr_mesh_has_edge(m, a, b, &yes)) != TR_OK) {
+      s = edge_fail(c, i, s);
+    } else if (yes) {
+      s = tr_edgeset_put(&c->cons, a, b, i);
+    } else {
+      missing[nmiss++] = i;
+    }
+  }
+  st->missing_edges = nmiss;
+  /* pass 1: swaps only */
+  for (uint32_t k = 0; k < nmiss && s == TR_OK; k++) {
+    int complete;
+    uint32_t np;
+    uint32_t sw = c->est.by_swap23 + c->est.by_swap44;
+    if ((s = recover_one(c, missing[k], 0, &complete, &np)) != TR_OK) {
+      s = edge_fail(c, missing[k], s);
+      break;
+    }
+    left[k] = !complete;
+    if (complete && c->est.by_swap23 + c->est.by_swap44 > sw)
+      st->recovered_by_swap++;
+    else if (complete)
+      st->through_vertices++;
+  }
+  /* pass 2: Steiner points for the rest */
+  for (uint32_t k = 0; k < nmiss && s == TR_OK; k++) {
+    if (!left[k])
+      continue;
+    int complete;
+    uint32_t np;
+    if ((s = recover_one(c, missing[k], 1, &complete, &np)) != TR_OK) {
+      s = edge_fail(c, missing[k], s);
+      break;
+    }
+    st->points_added += np;
+    if (np == 0)
+      st->recovered_by_swap++; /* a swap became possible after other edges moved */
+    else
+      st->recovered_by_steiner++;
+  }
+  if (s == TR_OK)
+    s = build_chains(c, chains);
+  if (s == TR_OK) {
+    st->swap23 = c->est.by_swap23;
+    st->swap44 = c->est.by_swap44;
+    st->split_at_vertex = c->est.split_at_vertex;
+    st->ghosts_split = c->est.ghosts_split;
+    for (int k = 0; k < TR_PK_COUNT; k++)
+      st->pipels[k] = c->est.pipels[k];
+    for (int k = 0; k < 16; k++)
+      st->pipels_raw[k] = c->est.raw[k];
+  }
+done:
+  free(missing);
+  free(left);
+  return s;
+}
+
+tr_status tr_recover_edges(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
+                           tr_edge_chains *chains, tr_edge_recovery_stats *st)
+{
+  memset(chains, 0, sizeof *chains);
+  memset(st, 0, sizeof *st);
+  TR_CHECK(check_input(m, edges, n));
+  ctx c;
+  memset(&c, 0, sizeof c);
+  c.m = m;
+  c.edges = edges;
+  c.n = n;
+  c.nv0 = m->nv;
+  tr_status s = run(&c, chains, st);
+  tr_edgeset_free(&c.cons);
+  tr_u32buf_free(&c.stack);
+  tr_u32buf_free(&c.walk);
+  tr_u32buf_free(&c.ball);
+  tr_pipe_free(&c.pipe);
+  if (s != TR_OK)
+    tr_edge_chains_free(chains);
+  return s;
+}
+
+void tr_edge_chains_free(tr_edge_chains *c)
+{
+  free(c->start);
+  free(c->v);
+  memset(c, 0, sizeof *c);
+}
+
+uint32_t tr_edge_chains_find(const tr_edge_chains *c, const uint32_t *edges, uint32_t a,
+                             uint32_t b)
+{
+  uint32_t lo = 0, hi = c->n;
+  if (a > b) {
+    uint32_t t = a;
+    a = b;
+    b = t;
+  }
+  while (lo < hi) {
+    uint32_t mid = lo + (hi - lo) / 2;
+    uint32_t x = edges[2 * (size_t)mid], y = edges[2 * (size_t)mid + 1];
+    if (x == a && y == b)
+      return mid;
+    if (x < a || (x == a && y < b))
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return TR_NONE;
+}

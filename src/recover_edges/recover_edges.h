@@ -1,0 +1,57 @@
+/* Stage 2 of the pipeline: recovery of every missing input edge (the paper's "RECOVERY OF
+ * MISSING EDGES"): first the swaps (Swap23, Swap44) over all missing edges, then Steiner
+ * points pipel by pipel for those the swaps could not recover.
+ *
+ * Input edges are given as pairs of mesh vertex ids (the PLC's points are the first mesh
+ * vertices, duplicates already merged). On success every input edge is a chain of
+ * collinear mesh edges, recorded in `chains`.
+ */
+#ifndef TR_RECOVER_EDGES_H
+#define TR_RECOVER_EDGES_H
+
+#include "mesh/mesh.h"
+
+/* The chains of recovered input edges: edge i is the vertex sequence
+ * v[start[i] .. start[i+1]-1], from its first end to its second (2 vertices when the
+ * edge is a mesh edge). */
+typedef struct tr_edge_chains {
+  uint32_t n;
+  uint32_t *start; /* n + 1 */
+  uint32_t *v;
+} tr_edge_chains;
+void tr_edge_chains_free(tr_edge_chains *c);
+/* Index of the chain of input edge {a,b} (either order), TR_NONE if it is not an input
+ * edge. Relies on the sorted order documented at tr_recover_edges. */
+uint32_t tr_edge_chains_find(const tr_edge_chains *c, const uint32_t *edges, uint32_t a,
+                             uint32_t b);
+
+/* The paper's Table 14 rows for this stage. */
+#define TR_EDGE_PIPEL_KINDS 7
+typedef struct tr_edge_recovery_stats {
+  uint64_t missing_edges;          /* input edges not mesh edges after Delaunay */
+  uint64_t recovered_by_swap;      /* by Swap23 / Swap44 alone */
+  uint64_t points_added;           /* Steiner points on edges */
+  /* Details (added by the edge recovery work; the three rows above are the paper's). A
+   * missing edge is counted in exactly one of recovered_by_swap (no Steiner point, at
+   * least one swap), through_vertices (only split at existing vertices it passes
+   * through, every piece already a mesh edge) and recovered_by_steiner. */
+  uint64_t through_vertices;
+  uint64_t recovered_by_steiner;
+  uint64_t swap23, swap44;          /* swaps performed */
+  uint64_t split_at_vertex;         /* sub-segment splits at existing vertices */
+  uint64_t ghosts_split;            /* ghost tets replaced (a hull face was split) */
+  /* decomposed pipels by table: Case 1 (Table 5), Case 2 I, Case 2 II S, Case 2 II Z
+   * (Table 6), Case 3 (Table 7), Case 4 (Table 8), Case 5 (Table 9) */
+  uint64_t pipels[TR_EDGE_PIPEL_KINDS];
+  /* decomposed pipels by raw type (second << 2 | first, classify.h's TR_NOD..TR_FAC) */
+  uint64_t pipels_raw[16];
+} tr_edge_recovery_stats;
+
+/* edges: 2*n mesh vertex ids, the unique undirected input edges with
+ * edges[2i] < edges[2i+1], sorted lexicographically (the pipeline builds them so; it makes
+ * the run deterministic and lets later stages find an edge's chain by binary search).
+ * chains keeps that order and direction. */
+tr_status tr_recover_edges(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
+                           tr_edge_chains *chains, tr_edge_recovery_stats *st);
+
+#endif

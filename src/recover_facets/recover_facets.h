@@ -1,0 +1,36 @@
+/* Stage 3 of the pipeline: recovery of every missing input triangle (the paper's
+ * "RECOVERY OF MISSING FACETS"): Swap32 first, then clusterel decomposition with exact
+ * Steiner points on the facet.
+ *
+ * Precondition: tr_recover_edges succeeded, so every edge of every input triangle is a
+ * chain of mesh edges. On success every input triangle is exactly the union of the mesh
+ * faces listed for it in `sub`.
+ */
+#ifndef TR_RECOVER_FACETS_H
+#define TR_RECOVER_FACETS_H
+
+#include "mesh/mesh.h"
+#include "recover_edges/recover_edges.h"
+
+/* Sub-faces of the input triangles: face j = (v[3j], v[3j+1], v[3j+2]) ordered so that its
+ * right-hand normal has the direction of its input triangle's, tri[j] = the input
+ * triangle's index. Sorted by tri, then by vertex ids (deterministic). */
+typedef struct tr_subfaces {
+  uint32_t n;
+  uint32_t *v;   /* 3 * n */
+  uint32_t *tri; /* n */
+} tr_subfaces;
+void tr_subfaces_free(tr_subfaces *s);
+
+typedef struct tr_facet_recovery_stats {
+  uint64_t missing_facets;     /* input triangles not unions of mesh faces after edges */
+  uint64_t recovered_by_swap;  /* by Swap32 alone */
+  uint64_t points_added;       /* Steiner points on facets (and the extra points H) */
+} tr_facet_recovery_stats;
+
+/* tris: 3*n mesh vertex ids (outward oriented), chains from edge recovery. */
+tr_status tr_recover_facets(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
+                            const tr_edge_chains *chains, tr_subfaces *sub,
+                            tr_facet_recovery_stats *st);
+
+#endif

@@ -1,0 +1,156 @@
+/* Surface diagonal swaps: see smooth.h for the conditions and the exact incircle. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "predicates.h"
+#include "smooth.h"
+
+/* An axis along which the normal of abc has a non-zero component, -1 if abc is flat. */
+static int normal_axis(const double *a, const double *b, const double *c)
+{
+  for (int k = 0; k < 3; k++)
+    if (tr_orient2d_proj(a, b, c, k) != 0)
+      return k;
+  return -1;
+}
+
+int tr_coplanar_incircle(const double a[3], const double b[3], const double c[3],
+                         const double d[3])
+{
+  int ax = normal_axis(a, b, c);
+  if (ax < 0)
+    return 0;
+  double x[3] = {a[0], a[1], a[2]};
+  /* Any change of coordinate ax alone leaves the plane (the normal has a non-zero
+   * component there); stay finite for huge coordinates. */
+  x[ax] = a[ax] + (fabs(a[ax]) + 1.0);
+  if (!isfinite(x[ax]) || x[ax] == a[ax])
+    x[ax] = a[ax] - (fabs(a[ax]) + 1.0);
+  if (!isfinite(x[ax]) || x[ax] == a[ax])
+    x[ax] = nextafter(a[ax], 0.0);
+  int o = tr_sign(tr_orient3d(a, b, c, x));
+  int s = tr_sign(tr_insphere(a, b, c, x, d));
+  return o * s > 0;
+}
+
+typedef struct {
+  uint32_t a, b; /* a < b */
+  uint32_t slot; /* 3 * triangle + position of the directed edge */
+} ekey;
+
+static int cmp_ekey(const void *pa, const void *pb)
+{
+  const ekey *x = pa, *y = pb;
+  if (x->a != y->a)
+    return x->a < y->a ? -1 : 1;
+  if (x->b != y->b)
+    return x->b < y->b ? -1 : 1;
+  return x->slot < y->slot ? -1 : x->slot > y->slot;
+}
+
+static int has_edge(const ekey *e, uint32_t n, uint32_t a, uint32_t b)
+{
+  if (a > b) {
+    uint32_t x = a;
+    a = b;
+    b = x;
+  }
+  uint32_t lo = 0, hi = n;
+  while (lo < hi) {
+    uint32_t mid = lo + (hi - lo) / 2;
+    if (e[mid].a < a || (e[mid].a == a && e[mid].b < b))
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo < n && e[lo].a == a && e[lo].b == b;
+}
+
+/* Strictly convex quadrilateral with diagonals AC and BD: each diagonal separates the
+ * other two points strictly, decided in a projection where the quad is not flat. */
+static int convex_quad(const double *A, const double *B, const double *C, const double *D)
+{
+  int ax = normal_axis(A, C, B);
+  if (ax < 0)
+    return 0;
+  int s1 = tr_sign(tr_orient2d_proj(A, C, B, ax)), s2 = tr_sign(tr_orient2d_proj(A, C, D, ax));
+  int s3 = tr_sign(tr_orient2d_proj(B, D, A, ax)), s4 = tr_sign(tr_orient2d_proj(B, D, C, ax));
+  return s1 * s2 < 0 && s3 * s4 < 0;
+}
+
+tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
+{
+  *nswaps = 0;
+  uint32_t nt = plc->ntris, ne = 3 * nt, nv = plc->npoints;
+  if (nt < 2)
+    return TR_OK;
+  ekey *e = malloc(sizeof *e * ne);
+  uint8_t *vused = calloc(nv ? nv : 1, 1);
+  if (!e || !vused) {
+    free(e);
+    free(vused);
+    return tr_error(TR_ERR_NOMEM, "out of memory smoothing %u triangles", nt);
+  }
+  uint32_t *T = plc->tris;
+  const double *X = plc->xyz;
+  for (int pass = 0; pass < TR_SMOOTH_MAX_PASSES; pass++) {
+    for (uint32_t s = 0; s < ne; s++) {
+      uint32_t a = T[s], b = T[3 * (s / 3) + (s % 3 + 1) % 3];
+      e[s].a = a < b ? a : b;
+      e[s].b = a < b ? b : a;
+      e[s].slot = s;
+    }
+    qsort(e, ne, sizeof *e, cmp_ekey);
+    memset(vused, 0, nv ? nv : 1);
+    uint64_t done = 0;
+    for (uint32_t i = 0; i + 1 < ne; i++) {
+      /* exactly two triangles on the edge */
+      if (e[i].a != e[i + 1].a || e[i].b != e[i + 1].b)
+        continue;
+      if (i + 2 < ne && e[i + 2].a == e[i].a && e[i + 2].b == e[i].b) {
+        while (i + 1 < ne && e[i + 1].a == e[i].a && e[i + 1].b == e[i].b)
+          i++;
+        continue;
+      }
+      if (i > 0 && e[i - 1].a == e[i].a && e[i - 1].b == e[i].b)
+        continue;
+      uint32_t s1 = e[i].slot, s2 = e[i + 1].slot, t1 = s1 / 3, t2 = s2 / 3;
+      /* t1 = (A, C, B) with directed edge A->C; t2 must hold C->A, third vertex D. */
+      uint32_t A = T[s1], C = T[3 * t1 + (s1 % 3 + 1) % 3], B = T[3 * t1 + (s1 % 3 + 2) % 3];
+      uint32_t p = T[s2], q = T[3 * t2 + (s2 % 3 + 1) % 3], D = T[3 * t2 + (s2 % 3 + 2) % 3];
+      if (p != C || q != A || B == D)
+        continue; /* inconsistent orientation: leave it alone */
+      if (vused[A] || vused[B] || vused[C] || vused[D])
+        continue;
+      if (plc->tri_marker && plc->tri_marker[t1] != plc->tri_marker[t2])
+        continue;
+      const double *pa = X + 3 * (size_t)A, *pb = X + 3 * (size_t)B, *pc = X + 3 * (size_t)C,
+                   *pd = X + 3 * (size_t)D;
+      if (tr_orient3d(pa, pb, pc, pd) != 0)
+        continue;
+      if (!convex_quad(pa, pb, pc, pd))
+        continue;
+      if (!tr_coplanar_incircle(pa, pc, pb, pd))
+        continue;
+      if (has_edge(e, ne, B, D))
+        continue;
+      /* Quad A, D, C, B counter-clockwise about the normal: new (B, A, D), (D, C, B). */
+      T[3 * t1] = B;
+      T[3 * t1 + 1] = A;
+      T[3 * t1 + 2] = D;
+      T[3 * t2] = D;
+      T[3 * t2 + 1] = C;
+      T[3 * t2 + 2] = B;
+      vused[A] = vused[B] = vused[C] = vused[D] = 1;
+      done++;
+      i++;
+    }
+    *nswaps += done;
+    if (!done)
+      break;
+  }
+  free(e);
+  free(vused);
+  return TR_OK;
+}
