@@ -6,5 +6,6 @@ dir=build
 if [ -f "$dir/build.ninja" ]; then meson setup --reconfigure "$dir" >/dev/null; else meson setup "$dir" >/dev/null; fi
 ninja -C "$dir" src/cli/tetrec >/dev/null
 out=$(mktemp -d)
-"$dir/src/cli/tetrec" delaunay examples/data/cube.off -o "$out/cube.mesh"
+"$dir/src/cli/tetrec" mesh examples/data/cube.off -o "$out/cube.mesh" --stats "$out/cube.json"
+"$dir/src/cli/tetrec" check examples/data/cube.off "$out/cube.mesh"
 echo "wrote $out/cube.mesh"

@@ -6,16 +6,17 @@
  * the new tet "t with vertex k replaced by p". That keeps the orientation (p is on the
  * same side of the face as the old vertex k) and keeps TR_GHOST in slot 3. The new tets
  * are glued to each other through the faces that contain p: such a face is (p, u, v) in
- * one tet and (p, v, u) in the other, matched through per-vertex lists of directed
- * edges. All buffers live in the context and are reused, so an insertion allocates
- * nothing unless the mesh grows.
+ * one tet and (p, v, u) in the other, matched through a small per-cavity hash table of
+ * directed boundary edges (star_glue_tet). All buffers live in the context and are
+ * reused, so an insertion allocates nothing unless the mesh grows.
  *
  * During the build, vertices are numbered in insertion order over a copy of the points
- * in that order: consecutive insertions then touch neighbouring memory (coordinates,
- * cavity edge matching), which matters more than any arithmetic here. The perturbation still
+ * in that order: consecutive insertions then touch neighbouring memory (coordinates),
+ * which matters more than any arithmetic here. The perturbation still
  * uses the input indices (orig[]), and the ids are mapped back at the end.
  */
 #include <stdlib.h>
+#include <math.h>
 #include <string.h>
 
 #include "delaunay.h"
@@ -33,9 +34,12 @@ typedef struct bface {
   uint32_t k;    /* slot of p */
 } bface;
 
-typedef struct edge_ent {
-  uint32_t end, code, next;
-} edge_ent;
+/* Entry of the star's edge table: the side face (p, a, b) of a new tet, code 4*t+j. Its
+ * partner is the face (p, b, a). Live iff gen equals the context's current generation,
+ * so the table is never cleared between insertions. */
+typedef struct hent {
+  uint32_t a, b, code, gen;
+} hent;
 
 typedef struct dt {
   struct tr_mesh *m;
@@ -48,19 +52,11 @@ typedef struct dt {
   uint32_t *noconf, nnoconf, capnoconf;
   bface *bf;
   uint32_t nbf, capbf;
-  uint32_t *head; /* n + 1 entries (the ghost is n), TR_NONE at rest */
-  edge_ent *ent;
-  uint32_t nent, capent;
-  uint32_t *newt, capnewt;
-  uint32_t *lid;   /* n + 1 entries: local index of a cavity boundary vertex, TR_NONE at rest */
-  uint32_t *lverts, nlv;
-  uint32_t *emat;  /* LMAX * LMAX: face code of directed boundary edge (lu, lv) */
-  uint8_t *ltet;   /* 4 per new tet: local numbers of its vertices */
-  uint32_t capltet;
+  double is_bound; /* static insphere filter bound (conflict_real) */
+  double o3_bound; /* static orient3d filter bound (orient_neg) */
+  hent *ht;        /* the edge table, capht entries (a power of two) */
+  uint32_t capht, htbits, gen, nglued;
 } dt;
-
-/* Cavities with more boundary vertices than this use the list matcher. */
-#define LMAX 64
 
 static inline const double *X(const dt *D, uint32_t v) { return D->xyz + 3 * (size_t)v; }
 
@@ -99,16 +95,82 @@ static unsigned long long st_ins, st_walk, st_cav, st_bf, st_pts;
 #define STAT(x) ((void)0)
 #endif
 
-/* Real tet t: does p lie strictly inside its (perturbed) circumsphere? tr_insphere_sos
- * runs the inline filter itself; calling tr_insphere here first would evaluate every
- * exactly cospherical case (all of a grid's cubes) twice in exact arithmetic. */
-static inline int conflict_real(const dt *D, uint32_t t, const double *p, uint32_t pi)
+/* Real tet t: does p lie strictly inside its (perturbed) circumsphere?
+ *
+ * A static filter first: the determinant of tr_insphere (predicates.h: same differences,
+ * same evaluation order) and one comparison against D->is_bound, a bound on its rounding
+ * error valid for every five points of the input's bounding box. insphere.c bounds that
+ * error by 385 eps mx my mz (mx^2 + my^2 + mz^2), with mx the largest rounded |x
+ * difference|; that bound grows with mx, my, mz, and a rounded difference of two
+ * coordinates in [lo, hi] is at most the rounded hi - lo (rounding is monotone), so
+ * mx, my, mz <= ext (the largest rounded extent) gives 3 * 385 eps ext^5; is_bound is
+ * 8 * 385 eps ext^5, which also covers its own roundings and the absolute underflow
+ * errors (at most ~2^-1075 per product, times factors below 2^310 while 2^-100 <= ext
+ * <= 2^100, against is_bound >= 2^-550). Outside that range is_bound is infinite and
+ * every test takes the full path. An uncertain sign goes to tr_insphere_sos (its own
+ * per-tet filter, then exact arithmetic, then the perturbation); calling tr_insphere
+ * (whose fallback is already exact) first would evaluate every exactly cospherical case
+ * (all of a grid's cubes) twice. */
+static inline int conflict_real(const dt *D, uint32_t t, const double *e, uint32_t pi)
 {
   STAT(st_ins++);
   const uint32_t *v = D->m->tv + 4 * (size_t)t;
   const double *a = X(D, v[0]), *b = X(D, v[1]), *c = X(D, v[2]), *d = X(D, v[3]);
+  const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
+  const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
+  const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
+  const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
+  const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
+  const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
+  const double ma = (bz * cd - cz * bd) + dz * bc;
+  const double mb = (az * cd - cz * ad) + dz * ac;
+  const double mc = (az * bd - bz * ad) + dz * ab;
+  const double md = (az * bc - bz * ac) + cz * ab;
+  const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
+  const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
+  const double det = (la * ma - lb * mb) + (lc * mc - ld * md);
+  if (det > D->is_bound)
+    return 1;
+  if (-det > D->is_bound)
+    return 0;
   const uint32_t *o = D->orig;
-  return tr_insphere_sos(a, b, c, d, p, o[v[0]], o[v[1]], o[v[2]], o[v[3]], o[pi]) > 0;
+  return tr_insphere_sos(a, b, c, d, e, o[v[0]], o[v[1]], o[v[2]], o[v[3]], o[pi]) > 0;
+}
+
+/* The static filter's bound for points whose coordinate extents are at most ext (see
+ * conflict_real); infinite (filter off) outside the range its proof covers. */
+static double static_is_bound(double ext)
+{
+  if (!(ext >= 0x1p-100 && ext <= 0x1p100))
+    return INFINITY;
+  return 8.0 * TR_IS_FILTER * ext * ext * ext * ext * ext;
+}
+
+/* tr_orient3d(a, b, c, d) < 0, with the same static filter idea as conflict_real: the
+ * determinant of tr_orient3d (predicates.h, same evaluation order) against D->o3_bound =
+ * 4 * 49 eps ext^3, at least twice orient.c's bound 49 eps mx my mz (which grows with
+ * mx, my, mz <= ext) and far above any underflow error for 2^-100 <= ext <= 2^100
+ * (infinite otherwise). An uncertain sign is decided by tr_orient3d. */
+static inline int orient_neg(const dt *D, const double *a, const double *b, const double *c,
+                             const double *d)
+{
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+  const double det =
+      (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
+  if (det > D->o3_bound)
+    return 0;
+  if (-det > D->o3_bound)
+    return 1;
+  return tr_orient3d(a, b, c, d) < 0;
+}
+
+static double static_o3_bound(double ext)
+{
+  if (!(ext >= 0x1p-100 && ext <= 0x1p100))
+    return INFINITY;
+  return 4.0 * TR_O3_FILTER * ext * ext * ext;
 }
 
 static int conflict(const dt *D, uint32_t t, const double *p, uint32_t pi)
@@ -153,7 +215,7 @@ static uint32_t locate(dt *D, uint32_t t, const double *p)
       if (u == prev)
         continue;
       const uint8_t *f = tr_face_vtx[k];
-      if (tr_orient3d(X(D, v[f[0]]), X(D, v[f[1]]), X(D, v[f[2]]), p) < 0) {
+      if (orient_neg(D, X(D, v[f[0]]), X(D, v[f[1]]), X(D, v[f[2]]), p)) {
         prev = t;
         t = u;
         moved = 1;
@@ -166,103 +228,99 @@ static uint32_t locate(dt *D, uint32_t t, const double *p)
   }
 }
 
-/* Glues the faces through vertex `apex` (slot newk[i] of tet newt[i]) of freshly
- * written tets: face (apex, u, v) of one tet meets (apex, v, u) of another. */
-static tr_status link_star(dt *D, const uint32_t *newt, const uint32_t *newk, uint32_t nnew)
+/* Gluing the star: every side face (p, a, b) of a new tet meets the face (p, b, a) of
+ * another, i.e. a directed edge of the cavity boundary meets its reverse. A small open
+ * addressing table keyed on the edge, with a hash symmetric in a and b, finds the partner
+ * at the first probe position the partner itself would use: one probe sequence per side
+ * face, no per-vertex arrays, nothing to clear afterwards (generation stamps).
+ * star_begin sizes the table for nnew new tets (at most 3 * nnew entries, load <= 3/4,
+ * so a probe always ends). */
+static tr_status star_begin(dt *D, uint32_t nnew)
 {
-  struct tr_mesh *m = D->m;
-  TR_CHECK(grow_buf((void **)&D->ent, &D->capent, 3 * nnew, sizeof *D->ent));
-  uint32_t *head = D->head, *tv = m->tv, *tn = m->tn;
-  edge_ent *ent = D->ent;
-  uint32_t nent = 0, nlinked = 0;
-  for (uint32_t i = 0; i < nnew; i++) {
-    uint32_t t = newt[i];
-    int k = (int)newk[i];
-    const uint32_t *v = tv + 4 * (size_t)t;
-    for (int j = 0; j < 4; j++) {
-      if (j == k)
-        continue;
-      uint32_t a = v[tr_face_rot[k][j][0]], b = v[tr_face_rot[k][j][1]];
-      uint32_t hb = b == TR_GHOST ? D->n : b;
-      uint32_t *pe = &head[hb];
-      while (*pe != TR_NONE && ent[*pe].end != a)
-        pe = &ent[*pe].next;
-      if (*pe != TR_NONE) {
-        uint32_t c = ent[*pe].code;
-        tn[4 * (size_t)t + (size_t)j] = c;
-        tn[c] = 4 * t + (uint32_t)j;
-        *pe = ent[*pe].next; /* each directed edge is used once: unlink it */
-        nlinked++;
-      } else {
-        uint32_t ha = a == TR_GHOST ? D->n : a;
-        ent[nent].end = b;
-        ent[nent].code = 4 * t + (uint32_t)j;
-        ent[nent].next = head[ha];
-        head[ha] = nent++;
-      }
-    }
+  uint32_t bits = 6;
+  while ((1u << bits) < 4 * nnew)
+    bits++;
+  if ((1u << bits) > D->capht) {
+    free(D->ht);
+    D->ht = calloc((size_t)1 << bits, sizeof *D->ht);
+    if (!D->ht)
+      return tr_error(TR_ERR_NOMEM, "out of memory in the Delaunay cavity buffers");
+    D->capht = 1u << bits;
+    D->gen = 0;
   }
-  /* Reset the lists: every list head that was touched belongs to some entry's start. */
-  for (uint32_t i = 0; i < nnew; i++) {
-    const uint32_t *v = tv + 4 * (size_t)newt[i];
-    for (int j = 0; j < 4; j++)
-      head[v[j] == TR_GHOST ? D->n : v[j]] = TR_NONE;
+  D->htbits = bits;
+  if (++D->gen == 0) { /* wrapped: stale stamps could look live */
+    memset(D->ht, 0, (size_t)D->capht * sizeof *D->ht);
+    D->gen = 1;
   }
-  if (2 * nlinked != 3 * nnew)
-    return tr_error(TR_ERR_INTERNAL,
-                    "Delaunay: the cavity boundary is not a closed surface (%u of %u star faces "
-                    "matched)",
-                    2 * nlinked, 3 * nnew);
+  D->nglued = 0;
   return TR_OK;
 }
 
-/* The same gluing for the common small cavity, without searching: boundary vertices get
- * local numbers, pass 1 writes every star face's code at (u, v) of a small matrix, pass 2
- * reads its partner at (v, u). Each directed edge occurs exactly once, so no entry is
- * stale and there is no branch on data. Returns 0 (nothing glued) if the cavity has
- * more than LMAX boundary vertices. */
-static int link_star_small(dt *D, const uint32_t *newt, const uint32_t *newk, uint32_t nnew)
+/* The side faces of new tet t, whose slot k holds p: SIDE[k][i] = {j, u, w}, face j
+ * (j != k) listed from p as (p, v[u], v[w]); the rows are tr_face_rot[k][j] (mesh.h),
+ * spelled out so the compiler sees constants (build() checks that they agree). */
+static const uint8_t SIDE[4][3][3] = {
+    {{1, 2, 3}, {2, 3, 1}, {3, 1, 2}},
+    {{0, 3, 2}, {2, 0, 3}, {3, 2, 0}},
+    {{0, 1, 3}, {1, 3, 0}, {3, 0, 1}},
+    {{0, 2, 1}, {1, 0, 2}, {2, 1, 0}},
+};
+
+/* Glues side face j = (p, a, b) of new tet t (h, sh, mask, g: the table, in locals that
+ * the stores into tn cannot be suspected to change). */
+static inline uint32_t star_glue(hent *h, uint32_t sh, uint32_t mask, uint32_t g, uint32_t *tn,
+                                 uint32_t t, uint32_t j, uint32_t a, uint32_t b)
 {
-  struct tr_mesh *m = D->m;
-  uint32_t *lid = D->lid, *tv = m->tv, *tn = m->tn, *em = D->emat, nlv = 0;
-  uint8_t *lt = D->ltet; /* local numbers of the new tets' vertices (p's slot unused) */
-  int ok = 1;
-  for (uint32_t i = 0; i < nnew && ok; i++) {
-    const uint32_t *v = tv + 4 * (size_t)newt[i];
-    for (uint32_t j = 0; j < 4; j++) {
-      if (j == newk[i])
-        continue;
-      uint32_t h = v[j] == TR_GHOST ? D->n : v[j];
-      if (lid[h] == TR_NONE) {
-        if (nlv == LMAX) {
-          ok = 0;
-          break;
-        }
-        lid[h] = nlv;
-        D->lverts[nlv++] = h;
-      }
-      lt[4 * i + j] = (uint8_t)lid[h];
+  for (uint32_t i = ((a + b) * 0x9E3779B1u) >> sh;; i = (i + 1) & mask) {
+    hent *e = &h[i];
+    if (e->gen != g) {
+      e->a = a;
+      e->b = b;
+      e->code = 4 * t + j;
+      e->gen = g;
+      return 0;
+    }
+    if (e->a == b && e->b == a) {
+      tn[4 * (size_t)t + j] = e->code;
+      tn[e->code] = 4 * t + j;
+      e->a = e->b = TR_NONE; /* an edge is glued once; a third use would be an error */
+      return 1;
     }
   }
-  for (uint32_t i = 0; i < nlv; i++)
-    lid[D->lverts[i]] = TR_NONE;
-  if (!ok)
-    return 0;
-  for (uint32_t i = 0; i < nnew; i++) {
-    uint32_t t = newt[i], k = newk[i];
-    const uint8_t *l = lt + 4 * i;
-    for (uint32_t j = 0; j < 4; j++)
-      if (j != k)
-        em[l[tr_face_rot[k][j][0]] * LMAX + l[tr_face_rot[k][j][1]]] = 4 * t + j;
+}
+
+/* Glues the three side faces of new tet t, whose slot k holds p (one case per k so that
+ * the slots are constants). */
+static inline void star_glue_tet(dt *D, uint32_t t, uint32_t k)
+{
+  uint32_t *tn = D->m->tn;
+  const uint32_t *v = D->m->tv + 4 * (size_t)t;
+  hent *h = D->ht;
+  const uint32_t sh = 32 - D->htbits, mask = (1u << D->htbits) - 1, g = D->gen;
+  uint32_t ng = 0;
+#define SIDE1(k, i) \
+  star_glue(h, sh, mask, g, tn, t, SIDE[k][i][0], v[SIDE[k][i][1]], v[SIDE[k][i][2]])
+#define SIDES(k) ng += SIDE1(k, 0); ng += SIDE1(k, 1); ng += SIDE1(k, 2)
+  switch (k) {
+  case 0: SIDES(0); break;
+  case 1: SIDES(1); break;
+  case 2: SIDES(2); break;
+  default: SIDES(3); break;
   }
-  for (uint32_t i = 0; i < nnew; i++) {
-    uint32_t t = newt[i], k = newk[i];
-    const uint8_t *l = lt + 4 * i;
-    for (uint32_t j = 0; j < 4; j++)
-      if (j != k)
-        tn[4 * (size_t)t + j] = em[l[tr_face_rot[k][j][1]] * LMAX + l[tr_face_rot[k][j][0]]];
-  }
-  return 1;
+#undef SIDES
+#undef SIDE1
+  D->nglued += ng;
+}
+
+static tr_status star_end(const dt *D, uint32_t nnew)
+{
+  if (2 * D->nglued != 3 * nnew)
+    return tr_error(TR_ERR_INTERNAL,
+                    "Delaunay: the cavity boundary is not a closed surface (%u of %u star faces "
+                    "matched)",
+                    2 * D->nglued, 3 * nnew);
+  return TR_OK;
 }
 
 static tr_status alloc_slot(struct tr_mesh *m, uint32_t *s)
@@ -337,9 +395,9 @@ static tr_status insert(dt *D, uint32_t pi)
     m->tv[4 * (size_t)D->noconf[i] + 1] &= ~MARK;
   STAT((st_cav += D->ncav, st_bf += D->nbf, st_pts++));
 
-  /* Re-triangulate: reuse the cavity's slots first. */
-  TR_CHECK(grow_buf((void **)&D->newt, &D->capnewt, 2 * D->nbf, sizeof *D->newt));
-  uint32_t *newk = D->newt + D->nbf;
+  /* Re-triangulate: reuse the cavity's slots first; glue each new tet as it is written
+   * (its partners written earlier are found in the edge table, later ones find it). */
+  TR_CHECK(star_begin(D, D->nbf));
   uint32_t last = TR_NONE;
   for (uint32_t i = 0; i < D->nbf; i++) {
     uint32_t s;
@@ -354,8 +412,7 @@ static tr_status insert(dt *D, uint32_t pi)
     m->tn[b->out] = 4 * s + b->k;
     if (v[3] != TR_GHOST)
       last = s;
-    D->newt[i] = s;
-    newk[i] = b->k;
+    star_glue_tet(D, s, b->k);
   }
   for (uint32_t i = D->nbf; i < D->ncav; i++)
     tr_tet_free(m, D->cav[i]);
@@ -363,10 +420,7 @@ static tr_status insert(dt *D, uint32_t pi)
     return tr_error(TR_ERR_INTERNAL, "Delaunay: inserting point %u created no real tet",
                     D->orig[pi]);
   D->last = last;
-  TR_CHECK(grow_buf((void **)&D->ltet, &D->capltet, 4 * D->nbf, 1));
-  if (link_star_small(D, D->newt, newk, D->nbf))
-    return TR_OK;
-  return link_star(D, D->newt, newk, D->nbf);
+  return star_end(D, D->nbf);
 }
 
 /* Are a, b, c collinear? Exactly: all three coordinate projections are degenerate. */
@@ -419,7 +473,13 @@ static tr_status first_simplex(const double *xyz, uint32_t n, uint32_t *order, u
 static tr_status build(dt *D)
 {
   struct tr_mesh *mesh = D->m;
-  uint32_t t0, g[4], gk[4] = {3, 3, 3, 3};
+  uint32_t t0, g[4];
+  for (int k = 0; k < 4; k++)
+    for (int i = 0; i < 3; i++) {
+      int j = SIDE[k][i][0];
+      if (SIDE[k][i][1] != tr_face_rot[k][j][0] || SIDE[k][i][2] != tr_face_rot[k][j][1])
+        return tr_error(TR_ERR_INTERNAL, "Delaunay: SIDE disagrees with tr_face_rot");
+    }
   TR_CHECK(tr_tet_new(mesh, 0, 1, 2, 3, &t0));
   for (int k = 0; k < 4; k++) {
     const uint32_t *v = mesh->tv + 4 * (size_t)t0;
@@ -428,7 +488,11 @@ static tr_status build(dt *D)
     TR_CHECK(tr_tet_new(mesh, v[f[0]], v[f[2]], v[f[1]], TR_GHOST, &g[k]));
     tr_glue(mesh, t0, k, g[k], 3);
   }
-  TR_CHECK(link_star(D, g, gk, 4));
+  /* the ghosts' faces through TR_GHOST: the star of the ghost vertex */
+  TR_CHECK(star_begin(D, 4));
+  for (int k = 0; k < 4; k++)
+    star_glue_tet(D, g[k], 3);
+  TR_CHECK(star_end(D, 4));
   D->last = t0;
   for (uint32_t i = 4; i < D->n; i++)
     TR_CHECK(insert(D, i));
@@ -508,19 +572,27 @@ tr_status tr_delaunay_build(const double *xyz, uint32_t n, struct tr_mesh **out)
   if ((s = first_simplex(xyz, n, order, nu)) != TR_OK)
     goto done;
   P = malloc(3 * (size_t)nu * sizeof *P);
-  D.head = malloc(((size_t)nu + 1) * sizeof *D.head);
-  D.lid = malloc(((size_t)nu + 1) * sizeof *D.lid);
-  D.lverts = malloc(LMAX * sizeof *D.lverts);
-  D.emat = malloc(LMAX * LMAX * sizeof *D.emat);
-  if (!P || !D.head || !D.lid || !D.lverts || !D.emat) {
+  if (!P) {
     s = tr_error(TR_ERR_NOMEM, "out of memory for %u points", n);
     goto done;
   }
   for (uint32_t i = 0; i < nu; i++)
     memcpy(P + 3 * (size_t)i, xyz + 3 * (size_t)order[i], 3 * sizeof *P);
-  memset(D.head, 0xff, ((size_t)nu + 1) * sizeof *D.head);
-  memset(D.lid, 0xff, ((size_t)nu + 1) * sizeof *D.lid);
   D.xyz = P;
+  {
+    double lo[3], hi[3], ext = 0;
+    for (int c = 0; c < 3; c++)
+      lo[c] = hi[c] = P[c];
+    for (size_t i = 3; i < 3 * (size_t)nu; i += 3)
+      for (int c = 0; c < 3; c++) {
+        lo[c] = P[i + c] < lo[c] ? P[i + c] : lo[c];
+        hi[c] = P[i + c] > hi[c] ? P[i + c] : hi[c];
+      }
+    for (int c = 0; c < 3; c++)
+      ext = hi[c] - lo[c] > ext ? hi[c] - lo[c] : ext;
+    D.is_bound = static_is_bound(ext);
+    D.o3_bound = static_o3_bound(ext);
+  }
   D.orig = order;
   D.n = nu;
   if ((s = grow_buf((void **)&D.cav, &D.capcav, 256, sizeof *D.cav)) != TR_OK ||
@@ -533,16 +605,10 @@ tr_status tr_delaunay_build(const double *xyz, uint32_t n, struct tr_mesh **out)
 done:
   free(order);
   free(P);
-  free(D.head);
-  free(D.lid);
-  free(D.lverts);
-  free(D.emat);
-  free(D.ltet);
   free(D.cav);
   free(D.noconf);
   free(D.bf);
-  free(D.ent);
-  free(D.newt);
+  free(D.ht);
   if (s != TR_OK) {
     tr_mesh_destroy(m);
     return s;

@@ -12,6 +12,18 @@
 #define BRIO_RATIO 8     /* each round is 1/8 of the points that follow it */
 #define BRIO_MIN 64      /* the first round holds at most this many points */
 
+/* The low 21 bits of x spread to every third bit (bit b to bit 3b). */
+static inline uint64_t spread3(uint32_t x)
+{
+  uint64_t v = x & 0x1fffffu;
+  v = (v | v << 32) & 0x1f00000000ffffull;
+  v = (v | v << 16) & 0x1f0000ff0000ffull;
+  v = (v | v << 8) & 0x100f00f00f00f00full;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+  v = (v | v << 2) & 0x1249249249249249ull;
+  return v;
+}
+
 /* Skilling's transposed Hilbert index ("Programming the Hilbert curve", 2004): undo the
  * excess work of the Gray code level by level, then Gray-encode; the transposed bits
  * interleaved from the top give the position along the curve. */
@@ -31,18 +43,19 @@ uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits)
   }
   X[1] ^= X[0];
   X[2] ^= X[1];
-  t = 0;
-  for (uint32_t Q = M; Q > 1; Q >>= 1)
-    if (X[2] & Q)
-      t ^= Q - 1;
+  /* t ^= Q - 1 for every set bit Q > 1 of X[2]: bit j of t is the parity of the bits of
+   * X[2] above j, a suffix XOR of X[2] >> 1 */
+  t = X[2] >> 1;
+  t ^= t >> 1;
+  t ^= t >> 2;
+  t ^= t >> 4;
+  t ^= t >> 8;
+  t ^= t >> 16;
   X[0] ^= t;
   X[1] ^= t;
   X[2] ^= t;
-  uint64_t key = 0;
-  for (int b = bits - 1; b >= 0; b--)
-    for (int i = 0; i < 3; i++)
-      key = key << 1 | ((X[i] >> b) & 1u);
-  return key;
+  /* interleave from the top bit down, x first: bit b of X[i] goes to bit 3b + 2 - i */
+  return spread3(X[0]) << 2 | spread3(X[1]) << 1 | spread3(X[2]);
 }
 
 typedef struct kv {

@@ -15,16 +15,17 @@ static int kept(const struct tr_mesh *m, uint32_t t)
 }
 
 /* ---- vertices: input point -> mesh vertex with the same coordinates ---- */
-static const double *vx_ctx;
-static int cmp_vx(const void *pa, const void *pb)
+typedef struct {
+  double x[3];
+  uint32_t v;
+} vkey;
+static int cmp_vkey(const void *pa, const void *pb)
 {
-  uint32_t a = *(const uint32_t *)pa, b = *(const uint32_t *)pb;
-  for (int k = 0; k < 3; k++) {
-    double p = vx_ctx[3 * (size_t)a + k], q = vx_ctx[3 * (size_t)b + k];
-    if (p != q)
-      return p < q ? -1 : 1;
-  }
-  return a < b ? -1 : a > b;
+  const vkey *a = pa, *b = pb;
+  for (int k = 0; k < 3; k++)
+    if (a->x[k] != b->x[k])
+      return a->x[k] < b->x[k] ? -1 : 1;
+  return a->v < b->v ? -1 : a->v > b->v;
 }
 
 static int cmp_pt(const double *x, const double *y)
@@ -223,7 +224,7 @@ tr_status tr_check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
   tr_status st = TR_OK;
   uint32_t np = plc->npoints, ntri = plc->ntris, nv = m->nv;
   uint32_t *pv = malloc(sizeof *pv * (np ? np : 1));
-  uint32_t *ord = malloc(sizeof *ord * (nv ? nv : 1));
+  vkey *ord = malloc(sizeof *ord * (nv ? nv : 1));
   uint8_t *used = calloc(nv ? nv : 1, 1), *need = calloc(np ? np : 1, 1);
   uint32_t *astart = calloc((size_t)nv + 1, sizeof *astart);
   edge *adj = NULL, *ie = NULL;
@@ -297,10 +298,11 @@ tr_status tr_check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
     need[plc->segs[i]] = 1;
   uint32_t nd = 0;
   for (uint32_t v = 0; v < nv; v++)
-    if (used[v] && !(m->vq && m->vq[v]))
-      ord[nd++] = v;
-  vx_ctx = m->xyz;
-  qsort(ord, nd, sizeof *ord, cmp_vx);
+    if (used[v] && !(m->vq && m->vq[v])) {
+      memcpy(ord[nd].x, m->xyz + 3 * (size_t)v, sizeof ord[nd].x);
+      ord[nd++].v = v;
+    }
+  qsort(ord, nd, sizeof *ord, cmp_vkey);
   for (uint32_t i = 0; i < np; i++) {
     pv[i] = TR_NONE;
     if (!need[i])
@@ -309,18 +311,18 @@ tr_status tr_check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
     uint32_t lo = 0, hi = nd;
     while (lo < hi) {
       uint32_t mid = lo + (hi - lo) / 2;
-      if (cmp_pt(m->xyz + 3 * (size_t)ord[mid], x) < 0)
+      if (cmp_pt(ord[mid].x, x) < 0)
         lo = mid + 1;
       else
         hi = mid;
     }
-    if (lo == nd || cmp_pt(m->xyz + 3 * (size_t)ord[lo], x) != 0) {
+    if (lo == nd || cmp_pt(ord[lo].x, x) != 0) {
       st = tr_error(TR_ERR_INVALID_MESH,
                     "conformity: input vertex %u (%.17g, %.17g, %.17g) is not a mesh vertex", i,
                     x[0], x[1], x[2]);
       goto done;
     }
-    pv[i] = ord[lo];
+    pv[i] = ord[lo].v;
   }
   /* 3. input edges are chains of collinear mesh edges */
   size_t nie = 3 * (size_t)ntri + plc->nsegs;

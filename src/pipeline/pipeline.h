@@ -2,7 +2,11 @@
  *   mesh_plc.c  orchestration, timing, statistics
  *   stages.c    input edges, the two recovery stages (or the exact "nothing missing"
  *               fallback when the library is built without them)
- *   compact.c   the output mesh: inner tets only, dense deterministic numbering */
+ *   compact.c   the output mesh: inner tets only, dense deterministic numbering
+ * Smoothing (src/smooth, on by default, `--no-smooth` / tr_options.smooth = 0 turns it
+ * off) replaces input edges interior to a coplanar region of one marker by Delaunay
+ * diagonals: the surface as a point set is unchanged, but the recovered edges are those of
+ * the smoothed PLC (returned by tr_mesh_plc_ex), not necessarily the caller's. */
 #ifndef TR_PIPELINE_H
 #define TR_PIPELINE_H
 

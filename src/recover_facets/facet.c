@@ -488,18 +488,25 @@ static tr_status try_swap32(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t 
 }
 
 tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t f, uint32_t g,
-                           const tr_facet_opts *opt, tr_facet_detail *d, int *outcome)
+                           const tr_facet_opts *opt, tr_facet_detail *d, int *outcome,
+                           tr_u32buf *faces)
 {
   int present = 0;
   *outcome = TR_FACET_PRESENT;
-  TR_CHECK(tr_facet_faces(m, idx, e, f, g, &present, NULL));
-  if (present)
-    return TR_OK;
   tr_clusterel *cl = NULL;
   uint32_t ncl = 0;
+  /* the degenerate-facet test comes first: the cluster search relies on a plane */
+  tr_point pe = tr_mesh_point(m, e), pf = tr_mesh_point(m, f), pg = tr_mesh_point(m, g);
+  if (!tr_orient2d_proj_p(&pe, &pf, &pg, 0) && !tr_orient2d_proj_p(&pe, &pf, &pg, 1) &&
+      !tr_orient2d_proj_p(&pe, &pf, &pg, 2))
+    return tr_error(TR_ERR_UNSUPPORTED, "facet %u (%u %u %u) is degenerate", idx, e, f, g);
   TR_CHECK(tr_cluster_collect(m, e, f, g, &cl, &ncl));
+  tr_status st = tr_facet_faces_of_cluster(m, idx, e, f, g, cl, ncl, 0, &present, faces);
+  if (st != TR_OK || present) {
+    free(cl);
+    return st;
+  }
   int done = 0;
-  tr_status st = TR_OK;
   if (!(opt && opt->no_swap))
     st = try_swap32(m, e, f, g, cl, ncl, &done);
   if (st == TR_OK && done) {
@@ -521,7 +528,7 @@ tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t
   }
   free(cl);
   TR_CHECK(st);
-  TR_CHECK(tr_facet_faces(m, idx, e, f, g, &present, NULL));
+  TR_CHECK(tr_facet_faces(m, idx, e, f, g, &present, faces));
   if (!present)
     return tr_error(TR_ERR_INTERNAL, "facet %u (%u %u %u) still missing after %s", idx, e, f, g,
                     *outcome == TR_FACET_BY_SWAP32 ? "Swap32" : "clusterel decomposition");

@@ -8,8 +8,9 @@
  * both sides of F's plane, so an edge crossing the plane at a point of its section
  * polygon, which lies inside F (cluster.h) and not on F's boundary. Then F is covered by
  * mesh faces, edges and vertices, i.e. F is the union of the coplanar faces of the
- * CO_PLAN clusterels. The sum of their exact (projected, rational) areas must then equal
- * F's area; an inequality is reported as an internal error, never ignored.
+ * CO_PLAN clusterels. After a recovery changed the mesh, the sum of their exact
+ * (projected, rational) areas must also equal F's area (an inequality is reported as an
+ * internal error, never ignored); for facets already present it is not recomputed.
  *
  * Recovery: Swap32 (Table 10) when the only crossing tets are the three around one edge
  * AB whose ring is EFG; otherwise every crossing clusterel is decomposed (ONE_EDG: Table 5
@@ -52,15 +53,25 @@ typedef struct tr_facet_detail {
 enum { TR_FACET_PRESENT = 0, TR_FACET_BY_SWAP32 = 1, TR_FACET_BY_CLUSTER = 2 };
 
 /* Recovers input triangle number idx = (e, f, g) (idx only names it in messages).
- * *outcome = TR_FACET_*. opt may be NULL. d is added to (may be NULL).
+ * *outcome = TR_FACET_*. opt may be NULL. d is added to (may be NULL). If faces != NULL,
+ * F's faces afterwards are appended to it as tr_facet_faces does.
  * TR_ERR_UNSUPPORTED for a degenerate triangle (repeated or collinear corners). */
 tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t f, uint32_t g,
-                           const tr_facet_opts *opt, tr_facet_detail *d, int *outcome);
+                           const tr_facet_opts *opt, tr_facet_detail *d, int *outcome,
+                           tr_u32buf *faces);
 
 /* The presence test above. *present = 1 iff F is the union of mesh faces; then, if
  * faces != NULL, the faces are appended to it (3 ids each, right-hand normal in the
  * direction of efg's, rotated to start at their smallest id, sorted). */
 tr_status tr_facet_faces(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t f, uint32_t g,
                          int *present, tr_u32buf *faces);
+
+struct tr_clusterel;
+/* The same on an already collected Cluster(F); area_check = 0 skips the exact area sum
+ * (the boundary-closure argument alone; tr_recover_facet uses that for facets that were
+ * already present, and always checks the area after it changed the mesh). */
+tr_status tr_facet_faces_of_cluster(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t f,
+                                    uint32_t g, const struct tr_clusterel *cl, uint32_t ncl,
+                                    int area_check, int *present, tr_u32buf *faces);
 
 #endif

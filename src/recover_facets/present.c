@@ -58,23 +58,32 @@ tr_status tr_facet_faces(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t f
                          int *present, tr_u32buf *faces)
 {
   *present = 0;
-  int fsign = 0, drop = facet_axis(m, e, f, g, &fsign);
-  if (drop < 0)
+  int fsign = 0;
+  if (facet_axis(m, e, f, g, &fsign) < 0)
     return tr_error(TR_ERR_UNSUPPORTED, "facet %u (%u %u %u) is degenerate", idx, e, f, g);
   tr_clusterel *cl = NULL;
   uint32_t ncl = 0;
   TR_CHECK(tr_cluster_collect(m, e, f, g, &cl, &ncl));
+  tr_status st = tr_facet_faces_of_cluster(m, idx, e, f, g, cl, ncl, 1, present, faces);
+  free(cl);
+  return st;
+}
+
+tr_status tr_facet_faces_of_cluster(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t f,
+                                    uint32_t g, const tr_clusterel *cl, uint32_t ncl,
+                                    int area_check, int *present, tr_u32buf *faces)
+{
+  *present = 0;
+  int fsign = 0, drop = facet_axis(m, e, f, g, &fsign);
+  if (drop < 0)
+    return tr_error(TR_ERR_UNSUPPORTED, "facet %u (%u %u %u) is degenerate", idx, e, f, g);
   for (uint32_t i = 0; i < ncl; i++)
-    if (cl[i].type != TR_CO_PLAN) {
-      free(cl);
+    if (cl[i].type != TR_CO_PLAN)
       return TR_OK; /* a tet crosses F: missing */
-    }
   /* The coplanar faces, each once (both tets around it are CO_PLAN clusterels). */
   uint32_t *tri = malloc(3 * (size_t)(ncl ? ncl : 1) * sizeof *tri);
-  if (!tri) {
-    free(cl);
+  if (!tri)
     return tr_error(TR_ERR_NOMEM, "facet %u: out of memory", idx);
-  }
   uint32_t nt = 0;
   for (uint32_t i = 0; i < ncl; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)cl[i].iele;
@@ -87,7 +96,6 @@ tr_status tr_facet_faces(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t f
       tri[3 * nt + q] = w[q];
     nt++;
   }
-  free(cl);
   qsort(tri, nt, 3 * sizeof *tri, cmp_tri);
   uint32_t nu = 0;
   for (uint32_t i = 0; i < nt; i++)
@@ -106,6 +114,14 @@ tr_status tr_facet_faces(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t f
     uint32_t *w = tri + 3 * i;
     tr_point p0 = tr_mesh_point(m, w[0]), p1 = tr_mesh_point(m, w[1]),
              p2 = tr_mesh_point(m, w[2]);
+    if (!area_check) {
+      if (tr_orient2d_proj_p(&p0, &p1, &p2, drop) != fsign) {
+        uint32_t t = w[1];
+        w[1] = w[2];
+        w[2] = t;
+      }
+      continue;
+    }
     proj_area(a, &p0, &p1, &p2, drop, tmp);
     if (mpq_sgn(a) != fsign) { /* never 0: a mesh face is not flat */
       uint32_t t = w[1];
@@ -115,9 +131,12 @@ tr_status tr_facet_faces(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t f
     }
     mpq_add(sum, sum, a);
   }
-  tr_point pe = tr_mesh_point(m, e), pf = tr_mesh_point(m, f), pg = tr_mesh_point(m, g);
-  proj_area(a, &pe, &pf, &pg, drop, tmp);
-  int equal = mpq_equal(sum, a);
+  int equal = 1;
+  if (area_check) {
+    tr_point pe = tr_mesh_point(m, e), pf = tr_mesh_point(m, f), pg = tr_mesh_point(m, g);
+    proj_area(a, &pe, &pf, &pg, drop, tmp);
+    equal = mpq_equal(sum, a);
+  }
   mpq_clear(sum);
   mpq_clear(a);
   for (int q = 0; q < 5; q++)

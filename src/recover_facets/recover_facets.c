@@ -1,7 +1,4 @@
-/* Stage 3 driver: every input triangle in input order, then the sub-faces of all of them
- * (collected at the end: recovering a later facet never splits an earlier one's faces,
- * since its Steiner points lie in its own open interior, but reading them last makes the
- * listing independent of that argument). */
+/* Stage 3 driver: every input triangle in input order, with its sub-faces. */
 #include "recover_facets/recover_facets.h"
 
 #include <stdlib.h>
@@ -33,32 +30,29 @@ tr_status tr_recover_facets(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
     sub->v = NULL;
     sub->tri = NULL;
   }
-  for (uint32_t i = 0; i < n; i++) {
+  /* Each facet's faces are listed right after its recovery: a later facet never splits
+   * them (its Steiner points lie in its own open interior, which meets no other input
+   * triangle), and the tests check the final listing against the final mesh. */
+  tr_u32buf v = {0}, tri = {0};
+  tr_status r = TR_OK;
+  for (uint32_t i = 0; i < n && r == TR_OK; i++) {
     int outcome;
-    TR_CHECK(tr_recover_facet(m, i, tris[3 * i], tris[3 * i + 1], tris[3 * i + 2], NULL, &d,
-                              &outcome));
+    size_t before = v.n;
+    r = tr_recover_facet(m, i, tris[3 * i], tris[3 * i + 1], tris[3 * i + 2], NULL, &d,
+                         &outcome, sub ? &v : NULL);
+    if (r != TR_OK)
+      break;
     if (outcome != TR_FACET_PRESENT)
       s.missing_facets++;
     if (outcome == TR_FACET_BY_SWAP32)
       s.recovered_by_swap++;
+    for (size_t k = before; k < v.n && r == TR_OK; k += 3)
+      r = tr_u32buf_push(&tri, i);
   }
   s.points_added = d.steiner + d.h_points;
   if (st)
     *st = s;
-  if (!sub)
-    return TR_OK;
-  tr_u32buf v = {0}, tri = {0};
-  tr_status r = TR_OK;
-  for (uint32_t i = 0; i < n && r == TR_OK; i++) {
-    size_t before = v.n;
-    int present;
-    r = tr_facet_faces(m, i, tris[3 * i], tris[3 * i + 1], tris[3 * i + 2], &present, &v);
-    if (r == TR_OK && !present)
-      r = tr_error(TR_ERR_INTERNAL, "facet %u missing after recovery", i);
-    for (size_t k = before; k < v.n && r == TR_OK; k += 3)
-      r = tr_u32buf_push(&tri, i);
-  }
-  if (r != TR_OK) {
+  if (r != TR_OK || !sub) {
     tr_u32buf_free(&v);
     tr_u32buf_free(&tri);
     return r;

@@ -412,6 +412,61 @@ static void t_errors(void)
   tr_plc_destroy(p);
 }
 
+/* The conformity validator is not vacuous: each kind of violation is reported. */
+static void t_conform_negative(void)
+{
+  builder b = {0};
+  double lo[3] = {0, 0, 0}, hi[3] = {2, 2, 2};
+  box(&b, lo, hi, 1, -1);
+  tr_plc *p1 = make(&b);
+  box(&b, lo, hi, 2, -1);
+  tr_plc *p2 = make(&b);
+  double lo3[3] = {0, 0, 0}, hi3[3] = {2, 2, 3};
+  box(&b, lo3, hi3, 1, -1);
+  tr_plc *p3 = make(&b);
+  tr_options opt;
+  tr_options_default(&opt);
+  opt.verbose = 0;
+  tr_mesh *m = NULL;
+  tr_plc *used = NULL;
+  if (tr_mesh_plc_ex(p1, &opt, &m, NULL, &used) != TR_OK) {
+    EXPECT(0, "conform_negative: meshing the cube failed: %s", tr_last_error());
+    return;
+  }
+  EXPECT(tr_check_conformity(m, used, NULL, 0) == TR_OK, "conform_negative: good mesh rejected");
+  /* p2 has face-centre vertices the mesh lacks */
+  EXPECT(tr_check_conformity(m, p2, NULL, 0) == TR_ERR_INVALID_MESH &&
+             strstr(tr_last_error(), "is not a mesh vertex"),
+         "conform_negative: missing vertex not reported (%s)", tr_last_error());
+  mpq_t v;
+  mpq_init(v);
+  mpq_set_ui(v, 47, 1);
+  EXPECT(tr_check_conformity(m, used, v, 0) == TR_ERR_INVALID_MESH &&
+             strstr(tr_last_error(), "volume"),
+         "conform_negative: wrong volume not reported (%s)", tr_last_error());
+  mpq_clear(v);
+  /* p3 is taller: its top corners are not in the mesh */
+  EXPECT(tr_check_conformity(m, p3, NULL, 0) == TR_ERR_INVALID_MESH,
+         "conform_negative: other box not reported");
+  /* one tet dropped: its faces become boundary faces inside the cube */
+  m->flags[0] |= TR_TF_OUTER;
+  EXPECT(tr_check_conformity(m, used, NULL, 0) == TR_ERR_INVALID_MESH,
+         "conform_negative: hole in the mesh not reported");
+  m->flags[0] &= (uint8_t)~TR_TF_OUTER;
+  /* an inverted tet */
+  uint32_t x = m->tv[0];
+  m->tv[0] = m->tv[1];
+  m->tv[1] = x;
+  EXPECT(tr_check_conformity(m, used, NULL, 0) == TR_ERR_INVALID_MESH &&
+             strstr(tr_last_error(), "not positive"),
+         "conform_negative: inverted tet not reported (%s)", tr_last_error());
+  tr_mesh_destroy(m);
+  tr_plc_destroy(used);
+  tr_plc_destroy(p1);
+  tr_plc_destroy(p2);
+  tr_plc_destroy(p3);
+}
+
 int main(int argc, char **argv)
 {
   const char *w = argc > 1 ? argv[1] : "all";
@@ -436,6 +491,8 @@ int main(int argc, char **argv)
     t_smooth();
   if (all || !strcmp(w, "determinism"))
     t_determinism();
+  if (all || !strcmp(w, "conform_negative"))
+    t_conform_negative();
   if (all || !strcmp(w, "errors"))
     t_errors();
   if (failures)

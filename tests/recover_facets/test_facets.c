@@ -192,7 +192,7 @@ static void run_one(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,
   tr_mesh_volume6(m, vol);
   uint32_t nv0 = m->nv;
   uint64_t st0 = d->steiner, h0 = d->h_points;
-  tr_status s = tr_recover_facet(m, 0, e, f, g, o, d, outcome);
+  tr_status s = tr_recover_facet(m, 0, e, f, g, o, d, outcome, NULL);
   CHECK(s == TR_OK, "%s: recovery failed: %s", what, tr_last_error());
   if (s == TR_OK) {
     s = tr_check_mesh(m, TR_CHK_TOPOLOGY, vol);
