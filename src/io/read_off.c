@@ -93,13 +93,5 @@ static tr_status parse(tr_lex *lx, tr_soup *s)
 
 tr_status tr_read_off_buf(const char *buf, size_t len, const char *name, struct tr_plc *plc)
 {
-  tr_lex lx;
-  tr_soup s;
-  tr_lex_init(&lx, buf, len, name, '#');
-  tr_soup_init(&s, lx.name);
-  tr_status st = parse(&lx, &s);
-  if (st == TR_OK)
-    st = tr_soup_to_plc(&s, plc);
-  tr_soup_free(&s);
-  return st;
+  return tr_soup_read_text(buf, len, name, '#', parse, plc);
 }

@@ -180,3 +180,17 @@ tr_status tr_soup_to_plc(tr_soup *s, struct tr_plc *plc)
   }
   return TR_OK;
 }
+
+tr_status tr_soup_read_text(const char *buf, size_t len, const char *name, char comment,
+                            tr_soup_parse_fn parse, struct tr_plc *plc)
+{
+  tr_lex lx;
+  tr_soup s;
+  tr_lex_init(&lx, buf, len, name, comment);
+  tr_soup_init(&s, lx.name);
+  tr_status st = parse(&lx, &s);
+  if (st == TR_OK)
+    st = tr_soup_to_plc(&s, plc);
+  tr_soup_free(&s);
+  return st;
+}

@@ -10,6 +10,7 @@
 
 #include "../core/plc.h"
 #include "../core/status.h"
+#include "lex.h"
 
 /* The largest element count any array may reach; indices stay below UINT32_MAX so that
  * UINT32_MAX can keep meaning "none" elsewhere. */
@@ -52,6 +53,12 @@ static inline uint32_t tr_soup_nfacets(const tr_soup *s) { return s->facet_loop.
 /* Checks indices, triangulates every facet, and moves the result into plc (which must
  * be zeroed or cleared). plc->tri_source[t] = the facet (0-based) triangle t came from. */
 tr_status tr_soup_to_plc(tr_soup *s, struct tr_plc *plc);
+
+/* The whole of a line-oriented text reader (OFF, OBJ, Medit): tokenise buf with the given
+ * comment character, let `parse` fill a soup, then triangulate it into plc. */
+typedef tr_status (*tr_soup_parse_fn)(tr_lex *lx, tr_soup *s);
+tr_status tr_soup_read_text(const char *buf, size_t len, const char *name, char comment,
+                            tr_soup_parse_fn parse, struct tr_plc *plc);
 
 /* Exact triangulation of one planar facet given as loops of vertex indices into xyz.
  * Loops after the first are holes if a hole point lies inside them, or if there are no
