@@ -94,14 +94,44 @@ static inline double tr_absmax3_(double a, double b, double c)
   return c > a ? c : a;
 }
 
+/* The floating-point determinants of the filters, in one place: the filter bounds in
+ * orient.c / insphere.c are derived for exactly this evaluation order, and the Delaunay
+ * kernel's static filters (delaunay/bw.c) reuse those bounds, so they must evaluate the
+ * very same expression. */
+static inline double tr_orient3d_det_(const double a[3], const double b[3], const double c[3],
+                                      const double d[3])
+{
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+  return (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
+}
+
+static inline double tr_insphere_det_(const double a[3], const double b[3], const double c[3],
+                                      const double d[3], const double e[3])
+{
+  const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
+  const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
+  const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
+  const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
+  const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
+  const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
+  const double ma = (bz * cd - cz * bd) + dz * bc;
+  const double mb = (az * cd - cz * ad) + dz * ac;
+  const double mc = (az * bd - bz * ad) + dz * ab;
+  const double md = (az * bc - bz * ac) + cz * ab;
+  const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
+  const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
+  return (la * ma - lb * mb) + (lc * mc - ld * md);
+}
+
 static inline double tr_orient3d(const double a[3], const double b[3], const double c[3],
                                  const double d[3])
 {
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
   const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
-  const double det =
-      (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
+  const double det = tr_orient3d_det_(a, b, c, d);
   const double mx = tr_absmax3_(ux, vx, wx), my = tr_absmax3_(uy, vy, wy),
                mz = tr_absmax3_(uz, vz, wz);
   if (mx >= TR_O3_FLO && my >= TR_O3_FLO && mz >= TR_O3_FLO && mx <= TR_O3_FHI &&
@@ -120,15 +150,7 @@ static inline double tr_insphere(const double a[3], const double b[3], const dou
   const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
   const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
   const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
-  const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
-  const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
-  const double ma = (bz * cd - cz * bd) + dz * bc;
-  const double mb = (az * cd - cz * ad) + dz * ac;
-  const double mc = (az * bd - bz * ad) + dz * ab;
-  const double md = (az * bc - bz * ac) + cz * ab;
-  const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
-  const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
-  const double det = (la * ma - lb * mb) + (lc * mc - ld * md);
+  const double det = tr_insphere_det_(a, b, c, d, e);
   const double mx = tr_absmax3_(ax, bx, tr_absmax3_(cx, dx, 0));
   const double my = tr_absmax3_(ay, by, tr_absmax3_(cy, dy, 0));
   const double mz = tr_absmax3_(az, bz, tr_absmax3_(cz, dz, 0));

@@ -116,19 +116,7 @@ static inline int conflict_real(const dt *D, uint32_t t, const double *e, uint32
   STAT(st_ins++);
   const uint32_t *v = D->m->tv + 4 * (size_t)t;
   const double *a = X(D, v[0]), *b = X(D, v[1]), *c = X(D, v[2]), *d = X(D, v[3]);
-  const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
-  const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
-  const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
-  const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
-  const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
-  const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
-  const double ma = (bz * cd - cz * bd) + dz * bc;
-  const double mb = (az * cd - cz * ad) + dz * ac;
-  const double mc = (az * bd - bz * ad) + dz * ab;
-  const double md = (az * bc - bz * ac) + cz * ab;
-  const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
-  const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
-  const double det = (la * ma - lb * mb) + (lc * mc - ld * md);
+  const double det = tr_insphere_det_(a, b, c, d, e);
   if (det > D->is_bound)
     return 1;
   if (-det > D->is_bound)
@@ -154,11 +142,7 @@ static double static_is_bound(double ext)
 static inline int orient_neg(const dt *D, const double *a, const double *b, const double *c,
                              const double *d)
 {
-  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
-  const double det =
-      (ux * (vy * wz - vz * wy) + uy * (vz * wx - vx * wz)) + uz * (vx * wy - vy * wx);
+  const double det = tr_orient3d_det_(a, b, c, d);
   if (det > D->o3_bound)
     return 0;
   if (-det > D->o3_bound)
