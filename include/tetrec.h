@@ -96,8 +96,10 @@ tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out);
 /* ---- I/O, input validation and CLI support (owner: io/input engineer) ---- */
 /* Checks and repairs the input in place: exact duplicate vertices are merged and
  * duplicate triangles removed, inconsistent orientation is repaired (each closed shell
- * oriented outward); zero-area triangles (TR_ERR_INPUT), open or non-manifold surfaces
- * (TR_ERR_OPEN unless opt->allow_open) and improperly intersecting triangles
+ * oriented outward). Edges of three or more triangles (internal facets between regions)
+ * and free edges inside the domain (cracks, internal fins) are valid. Zero-area
+ * triangles (TR_ERR_INPUT), free edges outside the domain, i.e. an open surface
+ * (TR_ERR_OPEN unless opt->allow_open), and improperly intersecting triangles
  * (TR_ERR_SELF_INTERSECT) are errors naming the elements. opt may be NULL (defaults). */
 tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt);
 /* What the last tr_plc_validate repaired, one line per item ("" if nothing). */

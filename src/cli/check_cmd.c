@@ -1,6 +1,8 @@
 /* `tetrec check IN MESH`: rebuild a mesh store from the tets of MESH (neighbours glued by
- * matching faces), run the validator of src/mesh/check.h on it, and compare its exact
- * volume with the volume enclosed by the surface IN. */
+ * matching faces), run the validator of src/mesh/check.h on it and, when every vertex is
+ * known exactly (no Steiner point, or an --exact .node whose num/den coordinates are read
+ * as rationals), the exact conformity validator of src/mesh/conform.h and the exact
+ * volume comparison with the volume enclosed by the surface IN. */
 #include <gmp.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,7 +11,9 @@
 #include "core/plc.h"
 #include "input/validate.h"
 #include "mesh/check.h"
+#include "mesh/conform.h"
 #include "mesh/mesh.h"
+#include "smooth/smooth.h"
 
 typedef struct {
   const uint32_t *key; /* 3 sorted vertices per face */
@@ -24,7 +28,7 @@ static int cmp_face(const void *ctx, uint32_t a, uint32_t b)
   return 0;
 }
 
-static tr_status build(const struct tr_plc *vol, struct tr_mesh **out)
+static tr_status build(const struct tr_plc *vol, tr_qpoint **exact, struct tr_mesh **out)
 {
   struct tr_mesh *m = NULL;
   uint32_t nf = 4 * vol->ntets;
@@ -35,7 +39,12 @@ static tr_status build(const struct tr_plc *vol, struct tr_mesh **out)
     st = tr_mesh_create(vol->npoints, vol->ntets, &m);
   for (uint32_t i = 0; st == TR_OK && i < vol->npoints; i++) {
     uint32_t idx;
-    st = tr_mesh_add_vertex(m, vol->xyz + 3 * (size_t)i, &idx);
+    if (exact && exact[i]) {
+      st = tr_mesh_add_steiner(m, exact[i], &idx);
+      if (st == TR_OK)
+        exact[i] = NULL;
+    } else
+      st = tr_mesh_add_vertex(m, vol->xyz + 3 * (size_t)i, &idx);
   }
   for (uint32_t t = 0; st == TR_OK && t < vol->ntets; t++) {
     const uint32_t *v = vol->tets + 4 * (size_t)t;
@@ -85,30 +94,104 @@ static tr_status build(const struct tr_plc *vol, struct tr_mesh **out)
   return TR_OK;
 }
 
-tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, int verbose)
+/* A copy of p's triangles and segments with the pipeline's diagonal swaps applied;
+ * *nswaps = how many. */
+static tr_status smoothed_copy(const struct tr_plc *p, struct tr_plc **out, uint64_t *nswaps)
+{
+  *nswaps = 0;
+  TR_CHECK(tr_plc_create(out));
+  struct tr_plc *c = *out;
+  tr_status st = tr_plc_set(c, p->xyz, p->npoints, p->tris, p->ntris, p->tri_marker);
+  if (st == TR_OK && p->nsegs) {
+    c->segs = malloc(sizeof *c->segs * 2 * (size_t)p->nsegs);
+    if (!c->segs)
+      st = tr_error(TR_ERR_NOMEM, "out of memory");
+    else {
+      memcpy(c->segs, p->segs, sizeof *c->segs * 2 * (size_t)p->nsegs);
+      c->nsegs = p->nsegs;
+    }
+  }
+  if (st == TR_OK)
+    st = tr_smooth_surface(c, nswaps);
+  if (st != TR_OK) {
+    tr_plc_destroy(c);
+    *out = NULL;
+  }
+  return st;
+}
+
+/* Exact conformity to the surface; `tetrec mesh` swaps coplanar diagonals of the surface
+ * by default (src/smooth), so a mesh that does not conform to IN's own triangles is
+ * checked again against IN with those swaps: the same point set, the same facets. */
+static tr_status conformity(const struct tr_mesh *m, const struct tr_plc *surface,
+                            mpq_srcptr v6, unsigned flags, int *smoothed)
+{
+  *smoothed = 0;
+  tr_status st = tr_check_conformity(m, surface, v6, flags);
+  if (st != TR_ERR_INVALID_MESH)
+    return st;
+  char first[512];
+  snprintf(first, sizeof first, "%s", tr_last_error());
+  struct tr_plc *c = NULL;
+  uint64_t nswaps = 0;
+  tr_status st2 = smoothed_copy(surface, &c, &nswaps);
+  if (st2 == TR_OK && nswaps == 0)
+    st2 = tr_error(st, "%s", first);
+  else if (st2 == TR_OK) {
+    st2 = tr_check_conformity(m, c, v6, flags);
+    if (st2 == TR_OK)
+      *smoothed = 1;
+    else if (st2 == TR_ERR_INVALID_MESH) {
+      char second[512];
+      snprintf(second, sizeof second, "%s", tr_last_error());
+      st2 = tr_error(st2, "%s (and with the surface's coplanar diagonals swapped as "
+                     "`tetrec mesh` does: %s)", first, second);
+    }
+  }
+  tr_plc_destroy(c);
+  return st2;
+}
+
+tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, tr_qpoint **exact,
+                       int exact_file, int allow_open, int verbose)
 {
   struct tr_mesh *m = NULL;
   if (vol->ntets == 0)
     return tr_error(TR_ERR_INVALID_MESH, "the mesh file has no tetrahedra");
-  TR_CHECK(build(vol, &m));
+  TR_CHECK(build(vol, exact, &m));
   mpq_t v6;
   mpq_init(v6);
-  /* A mesh file holds its Steiner points as rounded doubles: a point that was exactly on
-   * a facet may now be a hair off it, so the exact volume of the file's mesh need not
-   * equal the enclosed volume even when the mesh tetrec built does. Comparing would
-   * report a false failure, and any tolerance would hide real ones; so with Steiner points
-   * the volume is not compared, and the output says so. */
-  int steiner = vol->npoints > surface->npoints;
+  /* Without --exact a mesh file holds its Steiner points as rounded doubles (moved where
+   * needed to keep every tet positive): a point that was exactly on a facet is a hair off
+   * it, so neither exact conformity nor the exact volume can be verified on them, and any
+   * tolerance would hide real failures. Then links and orientation are checked exactly on
+   * the doubles, and the output says what was skipped. With an open surface the mesh
+   * fills its convex hull: the enclosed volume means nothing. */
+  uint32_t nsteiner = vol->npoints > surface->npoints ? vol->npoints - surface->npoints : 0;
+  int rounded = nsteiner && !exact_file;
+  int with_volume = !rounded && !allow_open;
+  int smoothed = 0;
   tr_status st = tr_input_volume6(surface, v6);
   if (st == TR_OK)
-    st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, steiner ? NULL : v6);
-  if (st == TR_OK && steiner)
-    fprintf(stderr, "tetrec: check: %u Steiner points read as rounded doubles: the exact "
-            "volume comparison is skipped (links and orientation checked on the rounded "
-            "coordinates)\n", vol->npoints - surface->npoints);
-  if (st == TR_OK && verbose)
-    fprintf(stderr, "tetrec: check: %u tets, links and orientation are valid%s\n",
-            vol->ntets, steiner ? "" : ", volume equals the enclosed volume");
+    st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, with_volume ? v6 : NULL);
+  if (st == TR_OK && !rounded)
+    st = conformity(m, surface, with_volume ? v6 : NULL, allow_open ? TR_CONF_OPEN : 0,
+                    &smoothed);
+  if (st == TR_OK && rounded)
+    fprintf(stderr, "tetrec: check: %u Steiner points read as rounded doubles: exact "
+            "conformity and the exact volume cannot be verified on them (write the mesh with "
+            "--exact for that); links and orientation checked exactly on the doubles\n",
+            nsteiner);
+  if (st == TR_OK && verbose) {
+    if (rounded)
+      fprintf(stderr, "tetrec: check: %u tets, links and orientation are valid\n", vol->ntets);
+    else
+      fprintf(stderr, "tetrec: check: %u tets%s, links and orientation are valid, the mesh "
+              "conforms exactly to the surface%s%s\n", vol->ntets,
+              nsteiner ? " (Steiner points read exactly)" : "",
+              smoothed ? " with its coplanar diagonals swapped" : "",
+              with_volume ? ", volume equals the enclosed volume" : "");
+  }
   mpq_clear(v6);
   tr_mesh_destroy(m);
   return st;

@@ -6,8 +6,17 @@
 
 #include "core/plc.h"
 #include "core/status.h"
+#include "qpoint.h"
 
-/* `check`: validator result on the tets of vol, volume compared with surface. */
-tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, int verbose);
+/* `check`: the validator on the tets of vol, and, when every vertex is known exactly,
+ * the exact conformity validator and the exact volume against surface (validated).
+ * exact: NULL, or vol->npoints entries, each NULL (the vertex is vol's double) or the
+ * exact point read from an --exact .node; the points are moved into the check (entries
+ * set to NULL). exact_file: the .node was written with --exact, so its doubles are exact
+ * too (without it, vertices beyond the surface's are Steiner points rounded to doubles,
+ * whose conformity cannot be verified exactly). allow_open: the surface may be open. */
+tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, tr_qpoint **exact,
+                       int exact_file, int allow_open, int verbose);
+
 
 #endif

@@ -9,6 +9,7 @@
 
 #include "cli.h"
 #include "io/io.h"
+#include "pipeline/pipeline.h"
 #include "tetrec.h"
 
 static const char usage[] =
@@ -30,6 +31,12 @@ static const char usage[] =
     "  -v                verbose\n"
     "  --stats FILE      write statistics as JSON\n"
     "  --exact           write Steiner points as exact rationals num/den in .node\n"
+    "                    (exactly on their edges and facets). Without it every output\n"
+    "                    coordinate is a double: a Steiner point is its nearest double,\n"
+    "                    moved by a few ulps where that is needed to keep every tet\n"
+    "                    strictly positive, so it may lie a hair off its facet. `check`\n"
+    "                    verifies exact conformity and volume on an --exact .node, and\n"
+    "                    only links and orientation on rounded Steiner points\n"
     "  --allow-open      accept open or non-manifold surfaces\n"
     "  --check-only      only read and validate the input (mesh)\n"
     "  --no-smooth       no surface diagonal swaps before recovery\n"
@@ -191,7 +198,14 @@ static int cmd_mesh(const args *a)
   /* The pipeline (src/pipeline): Delaunay, edge and facet recovery, outer removal. */
   tr_mesh *mesh = NULL;
   progress("meshing", a->in);
-  s = tr_mesh_plc(plc, &opt, &mesh, &stats);
+  /* With --exact, a .node output carries the exact points: a rounding that cannot be
+   * repaired is then a warning, not a failure (the .vtu and .mesh writers print doubles). */
+  const char *dest = a->out ? a->out : a->in;
+  unsigned flags = a->exact && !(a->out && (tr_io_has_ext(dest, ".vtu") ||
+                                            tr_io_has_ext(dest, ".mesh")))
+                       ? TR_PIPE_KEEP_EXACT
+                       : 0;
+  s = tr_mesh_plc_flags(plc, &opt, &mesh, &stats, NULL, flags);
   tr_plc_destroy(plc);
   if (s != TR_OK)
     return fail(s);
@@ -246,9 +260,49 @@ static int cmd_delaunay(const args *a)
   return write_stats(a, &stats);
 }
 
+/* The .node file of a TetGen mesh name (.node or .ele), read exactly; nothing for other
+ * formats. */
+static tr_status read_exact_node(const char *mesh, const tr_plc *vol, tr_qpoint ***q,
+                                 int *exact_file)
+{
+  *q = NULL;
+  *exact_file = 0;
+  if (!tr_io_has_ext(mesh, ".node") && !tr_io_has_ext(mesh, ".ele"))
+    return TR_OK;
+  size_t n = strlen(mesh);
+  char *path = malloc(n + 2);
+  if (!path)
+    return tr_error(TR_ERR_NOMEM, "out of memory");
+  memcpy(path, mesh, n + 1);
+  strcpy(strrchr(path, '.'), ".node");
+  char *buf = NULL;
+  size_t len = 0;
+  uint32_t np = 0;
+  tr_status s = tr_io_load(path, &buf, &len);
+  if (s == TR_OK)
+    s = tr_read_node_exact_buf(buf, len, path, q, &np, exact_file);
+  if (s == TR_OK && np != vol->npoints)
+    s = tr_error(TR_ERR_INTERNAL, "%s: %u points read exactly, %u as doubles", path, np,
+                 vol->npoints);
+  if (s != TR_OK && *q) {
+    for (uint32_t i = 0; i < np; i++)
+      if ((*q)[i]) {
+        tr_qpoint_clear((*q)[i]);
+        free((*q)[i]);
+      }
+    free(*q);
+    *q = NULL;
+  }
+  free(buf);
+  free(path);
+  return s;
+}
+
 static int cmd_check(const args *a)
 {
   tr_plc *surf = NULL, *vol = NULL;
+  tr_qpoint **exact = NULL;
+  int exact_file = 0;
   tr_options opt;
   tr_options_default(&opt);
   opt.allow_open = a->allow_open;
@@ -272,7 +326,15 @@ static int cmd_check(const args *a)
       s = tr_plc_read(a->in2, &vol);
   }
   if (s == TR_OK)
-    s = tr_cli_check(surf, vol, !a->quiet);
+    s = read_exact_node(a->in2, vol, &exact, &exact_file);
+  if (s == TR_OK)
+    s = tr_cli_check(surf, vol, exact, exact_file, a->allow_open, !a->quiet);
+  for (uint32_t i = 0; exact && i < vol->npoints; i++)
+    if (exact[i]) {
+      tr_qpoint_clear(exact[i]);
+      free(exact[i]);
+    }
+  free(exact);
   tr_plc_destroy(surf);
   tr_plc_destroy(vol);
   return s == TR_OK ? 0 : fail(s);

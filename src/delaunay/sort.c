@@ -1,16 +1,23 @@
 /* Insertion order for Bowyer-Watson: duplicates removed, then BRIO (biased randomized
  * insertion order, Amenta-Choi-Rote) with every round sorted along a Hilbert curve, so
  * consecutive points are close (short walks, warm cache) while the rounds keep the
- * randomness that bounds the expected cavity sizes. All "random" choices come from a
- * fixed-seed generator: same input, same order. */
+ * randomness that bounds the expected cavity sizes.
+ *
+ * One radix sort does all of it: a point's round comes from a hash of its coordinates
+ * (round r from the end with probability 7/8^(r+1), the BRIO sample), and the key is
+ * (round, Hilbert index). Equal points hash alike, so they share round and key and end
+ * up next to each other, where the duplicates are found. The hash is of the coordinate
+ * bits: same input, same order, on every machine. */
 #include "delaunay.h"
 
+#include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define KEY_BITS 16      /* per axis: 48-bit keys, 6 radix passes of 8 bits */
+#define KEY_BITS 16      /* per axis: 48-bit Hilbert indices */
+#define ROUND_SHIFT 48   /* the round above them: at most 7 radix passes of 8 bits */
 #define BRIO_RATIO 8     /* each round is 1/8 of the points that follow it */
-#define BRIO_MIN 64      /* the first round holds at most this many points */
+#define BRIO_MIN 64      /* the first round holds about this many points or fewer */
 
 /* The low 21 bits of x spread to every third bit (bit b to bit 3b). */
 static inline uint64_t spread3(uint32_t x)
@@ -63,8 +70,8 @@ typedef struct kv {
   uint32_t idx;
 } kv;
 
-/* Stable LSD radix sort of a[0..n) by key (tmp: n entries). Passes whose digit is the
- * same for every entry are skipped, which is most of them for small ranges. */
+/* Stable LSD radix sort of a[0..n) by key (tmp: n entries). One read counts the digits
+ * of every pass; passes whose digit is the same for every entry are skipped. */
 static void radix_sort(kv *a, kv *tmp, size_t n)
 {
   if (n < 32) {
@@ -79,25 +86,54 @@ static void radix_sort(kv *a, kv *tmp, size_t n)
     }
     return;
   }
+  enum { PASSES = 7 };
+  static_assert(ROUND_SHIFT + 4 <= 8 * PASSES, "the key fits the passes");
+  uint32_t (*cnt)[256] = calloc(PASSES, sizeof *cnt);
   kv *src = a, *dst = tmp;
-  for (int pass = 0; pass < 3 * KEY_BITS / 8; pass++) {
-    size_t cnt[256] = {0};
-    int sh = 8 * pass;
-    for (size_t i = 0; i < n; i++)
-      cnt[(src[i].key >> sh) & 255]++;
-    if (cnt[(src[0].key >> sh) & 255] == n)
-      continue;
-    size_t sum = 0;
-    for (int d = 0; d < 256; d++) {
-      size_t c = cnt[d];
-      cnt[d] = sum;
-      sum += c;
+  if (!cnt) { /* no room for the tables: count pass by pass on the stack */
+    for (int pass = 0; pass < PASSES; pass++) {
+      uint32_t c1[256] = {0};
+      const int sh = 8 * pass;
+      for (size_t i = 0; i < n; i++)
+        c1[(src[i].key >> sh) & 255]++;
+      if (c1[(src[0].key >> sh) & 255] == n)
+        continue;
+      uint32_t sum = 0;
+      for (int d = 0; d < 256; d++) {
+        uint32_t c = c1[d];
+        c1[d] = sum;
+        sum += c;
+      }
+      for (size_t i = 0; i < n; i++)
+        dst[c1[(src[i].key >> sh) & 255]++] = src[i];
+      kv *s = src;
+      src = dst;
+      dst = s;
     }
-    for (size_t i = 0; i < n; i++)
-      dst[cnt[(src[i].key >> sh) & 255]++] = src[i];
-    kv *s = src;
-    src = dst;
-    dst = s;
+  } else {
+    for (size_t i = 0; i < n; i++) {
+      const uint64_t k = a[i].key;
+      for (int pass = 0; pass < PASSES; pass++)
+        cnt[pass][(k >> 8 * pass) & 255]++;
+    }
+    for (int pass = 0; pass < PASSES; pass++) {
+      uint32_t *c1 = cnt[pass];
+      const int sh = 8 * pass;
+      if (c1[(src[0].key >> sh) & 255] == n)
+        continue;
+      uint32_t sum = 0;
+      for (int d = 0; d < 256; d++) {
+        uint32_t c = c1[d];
+        c1[d] = sum;
+        sum += c;
+      }
+      for (size_t i = 0; i < n; i++)
+        dst[c1[(src[i].key >> sh) & 255]++] = src[i];
+      kv *s = src;
+      src = dst;
+      dst = s;
+    }
+    free(cnt);
   }
   if (src != a)
     memcpy(a, src, n * sizeof *a);
@@ -140,13 +176,29 @@ static void merge_sort_xyz(const double *xyz, uint32_t *a, uint32_t *tmp, size_t
   memcpy(a, tmp, n * sizeof *a);
 }
 
-static uint64_t xorshift(uint64_t *s)
+/* A 64-bit finaliser (the xorshift-multiply mixer of splitmix64): every input bit
+ * reaches every output bit. */
+static inline uint64_t mix64(uint64_t x)
 {
-  uint64_t x = *s;
-  x ^= x << 13;
-  x ^= x >> 7;
-  x ^= x << 17;
-  return *s = x;
+  x ^= x >> 30;
+  x *= 0xBF58476D1CE4E5B9ull;
+  x ^= x >> 27;
+  x *= 0x94D049BB133111EBull;
+  x ^= x >> 31;
+  return x;
+}
+
+/* The hash of a point's value: -0.0 counts as 0.0, since those are the same point. */
+static inline uint64_t point_hash(const double *p)
+{
+  uint64_t h = 0x9E3779B97F4A7C15ull;
+  for (int i = 0; i < 3; i++) {
+    double x = p[i] == 0 ? 0.0 : p[i];
+    uint64_t b;
+    memcpy(&b, &x, sizeof b);
+    h = mix64(h ^ b);
+  }
+  return h;
 }
 
 tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint32_t *nuniq,
@@ -156,11 +208,9 @@ tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint3
   if (n == 0)
     return TR_OK;
   kv *a = malloc(n * sizeof *a), *tmp = malloc(n * sizeof *tmp);
-  uint64_t *keys = malloc(n * sizeof *keys);
-  if (!a || !tmp || !keys) {
+  if (!a || !tmp) {
     free(a);
     free(tmp);
-    free(keys);
     return tr_error(TR_ERR_NOMEM, "out of memory sorting %u points", n);
   }
   double lo[3], hi[3];
@@ -182,13 +232,25 @@ tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint3
       ext = hi[i] - lo[i];
   const double cells = (double)((1u << KEY_BITS) - 1);
   double scale = ext > 0 ? cells / ext : 0;
+  /* rounds: the last holds 7/8 of the points, the one before 7/64, ...; the first takes
+   * the rest, about BRIO_MIN points or fewer */
+  uint32_t last = 0;
+  for (uint64_t s = n; s > BRIO_MIN; s /= BRIO_RATIO)
+    last++;
   for (uint32_t p = 0; p < n; p++) {
+    const double *c = xyz + 3 * (size_t)p;
     uint32_t q[3];
     for (int i = 0; i < 3; i++) {
-      double c = (xyz[3 * (size_t)p + (size_t)i] - lo[i]) * scale;
-      q[i] = c <= 0 ? 0 : c >= cells ? (uint32_t)cells : (uint32_t)c;
+      double t = (c[i] - lo[i]) * scale;
+      q[i] = t <= 0 ? 0 : t >= cells ? (uint32_t)cells : (uint32_t)t;
     }
-    a[p].key = keys[p] = tr_hilbert_key(q[0], q[1], q[2], KEY_BITS);
+    /* round r from the end iff the hash ends in exactly r zero octal digits: probability
+     * 7/8^(r+1) (the first round, r = last, takes every longer run of zeros too) */
+    const uint64_t h = point_hash(c);
+    uint32_t r = 0;
+    while (r < last && ((h >> 3 * r) & 7) == 0)
+      r++;
+    a[p].key = (uint64_t)(last - r) << ROUND_SHIFT | tr_hilbert_key(q[0], q[1], q[2], KEY_BITS);
     a[p].idx = p;
   }
   radix_sort(a, tmp, n);
@@ -201,6 +263,12 @@ tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint3
     uint32_t j = i + 1;
     while (j < n && a[j].key == a[i].key)
       j++;
+    if (j == i + 1) {
+      dup_map[a[i].idx] = a[i].idx;
+      order[m++] = a[i].idx;
+      i = j;
+      continue;
+    }
     for (uint32_t k = i; k < j; k++)
       run[k - i] = a[k].idx;
     merge_sort_xyz(xyz, run, rtmp, j - i);
@@ -218,30 +286,7 @@ tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint3
     i = j;
   }
   *nuniq = m;
-
-  /* BRIO: shuffle, then rounds [m/8, m), [m/64, m/8), ... each sorted along the curve. */
-  uint64_t seed = 0x9E3779B97F4A7C15ull;
-  for (uint32_t i = m; i > 1; i--) {
-    uint32_t j = (uint32_t)(xorshift(&seed) % i), t = order[i - 1];
-    order[i - 1] = order[j];
-    order[j] = t;
-  }
-  for (uint32_t i = 0; i < m; i++) {
-    a[i].key = keys[order[i]];
-    a[i].idx = order[i];
-  }
-  uint32_t end = m;
-  for (;;) {
-    uint32_t start = end > BRIO_MIN ? end / BRIO_RATIO : 0;
-    radix_sort(a + start, tmp, end - start);
-    if (start == 0)
-      break;
-    end = start;
-  }
-  for (uint32_t i = 0; i < m; i++)
-    order[i] = a[i].idx;
   free(a);
   free(tmp);
-  free(keys);
   return TR_OK;
 }

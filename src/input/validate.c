@@ -1,9 +1,13 @@
 /* tr_plc_validate: exact input checks and repairs, in the order that makes each step's
  * assumptions true for the next: merge duplicate vertices -> reject zero-area triangles
- * -> remove duplicate triangles -> edge census (open / non-manifold) -> orientation
- * repair -> self-intersection. Messages name input triangle numbers (after polygon
- * triangulation; "input face" is the polygon it came from) and input vertex numbers,
- * both 0-based. */
+ * -> remove duplicate triangles -> edge census -> orientation repair -> self-intersection.
+ * A union of closed 2-manifold shells (every edge in two triangles) is oriented shell by
+ * shell (outward, cavities inward: nesting.c). Any other surface (internal facets:
+ * edges in 3+ triangles; cracks and open surfaces: edges in 1) is checked for
+ * self-intersections first and then oriented by its cells (cells.c), which also decides
+ * whether its free edges lie inside the domain. Messages name input triangle numbers
+ * (after polygon triangulation; "input face" is the polygon it came from) and input
+ * vertex numbers, both 0-based. */
 #include <gmp.h>
 #include <math.h>
 #include <stdlib.h>
@@ -260,6 +264,13 @@ tr_status tr_input_volume6(const struct tr_plc *plc, mpq_t out)
   return TR_OK;
 }
 
+tr_status tr_input_volume6_of(const struct tr_plc *plc, const uint32_t *tris, uint32_t n,
+                              mpq_t out)
+{
+  volume6(plc, tris, n, out);
+  return TR_OK;
+}
+
 /* 1 iff triangle t lists a then b consecutively. */
 static int goes(const uint32_t *v, uint32_t a, uint32_t b)
 {
@@ -267,7 +278,8 @@ static int goes(const uint32_t *v, uint32_t a, uint32_t b)
 }
 
 static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
-                                     const uint32_t *tnum, int allow_open, tr_report *rep)
+                                     const uint32_t *tnum, int allow_open, tr_report *rep,
+                                     int *selfint_done)
 {
   uint32_t nt = plc->ntris, ne = 3 * nt;
   uint32_t *e = malloc(sizeof *e * (ne ? ne : 1));
@@ -285,32 +297,19 @@ static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
   }
   if ((st = tr_sort_ids(e, ne, cmp_edge, plc->tris)) != TR_OK)
     goto done;
+  /* Edges with 1 triangle (free) or 3+ (internal facets, shells touching along an
+   * edge) are legal; they send the surface to the cell analysis of cells.c, which
+   * decides whether free edges lie inside the domain. */
+  int general = 0;
   for (uint32_t i = 0; i < ne;) {
     uint32_t j = i + 1;
     while (j < ne && cmp_edge(plc->tris, e[i], e[j]) == 0)
       j++;
-    uint32_t c = j - i;
-    if (c == 2) {
+    if (j - i == 2) {
       adj[e[i]] = e[i + 1];
       adj[e[i + 1]] = e[i];
-    } else if (!allow_open) {
-      uint32_t a = plc->tris[e[i]], b = plc->tris[3 * (e[i] / 3) + (e[i] % 3 + 1) % 3];
-      if (c == 1) {
-        st = tr_error(TR_ERR_OPEN,
-                      "%s%sopen surface: edge (%u, %u) belongs to 1 triangle (triangle %u); use "
-                      "--allow-open to mesh it anyway",
-                      PRE(plc),
-                      orig[a < b ? a : b], orig[a < b ? b : a], tnum[e[i] / 3]);
-      } else {
-        st = tr_error(TR_ERR_OPEN,
-                      "%s%snon-manifold surface: edge (%u, %u) is shared by %u triangles (%u, %u, "
-                      "%u%s); use --allow-open to mesh it anyway",
-                      PRE(plc),
-                      orig[a < b ? a : b], orig[a < b ? b : a], c, tnum[e[i] / 3],
-                      tnum[e[i + 1] / 3], tnum[e[i + 2] / 3], c > 3 ? ", ..." : "");
-      }
-      goto done;
-    }
+    } else
+      general = 1;
     i = j;
   }
   /* Breadth-first over manifold edges; a neighbour must traverse the shared edge in the
@@ -365,8 +364,17 @@ static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
   for (uint32_t t = 0; t < nt; t++)
     if (flipme[t])
       flip(plc, t);
-  /* Orient every closed shell outward: positive enclosed volume. Triangles are grouped
-   * by shell with a counting sort, so the order (and the report) is deterministic. */
+  if (general) {
+    /* the cell analysis assumes triangles meet only in shared vertices and edges */
+    st = tr_input_self_intersections(plc, tnum);
+    if (st == TR_OK)
+      st = tr_input_orient_cells(plc, tnum, orig, allow_open, flipme);
+    *selfint_done = 1;
+    goto report;
+  }
+  /* Every edge has two triangles: a union of closed shells. Orient every closed shell
+   * outward: positive enclosed volume. Triangles are grouped by shell with a counting
+   * sort, so the order (and the report) is deterministic. */
   {
     uint32_t *start = calloc((size_t)ncomp + 1, sizeof *start), *order = e;
     if (!start) {
@@ -408,6 +416,7 @@ static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
     free(cavity);
     free(start);
   }
+report:
   /* Report the net change per triangle: flipped for consistency, for outwardness, or
    * both (then unchanged). */
   for (uint32_t t = 0; t < nt && st == TR_OK; t++)
@@ -455,9 +464,10 @@ tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt)
     st = zero_area(plc, orig, tnum);
   if (st == TR_OK)
     st = duplicate_triangles(plc, tnum, &rep);
+  int selfint_done = 0;
   if (st == TR_OK)
-    st = manifold_and_orient(plc, orig, tnum, opt->allow_open, &rep);
-  if (st == TR_OK)
+    st = manifold_and_orient(plc, orig, tnum, opt->allow_open, &rep, &selfint_done);
+  if (st == TR_OK && !selfint_done)
     st = tr_input_self_intersections(plc, tnum);
   free(plc->report);
   plc->report = tr_report_finish(&rep);

@@ -1,6 +1,8 @@
 /* Input validation of a PLC (tr_plc_validate in include/tetrec.h). Split by concern:
  * validate.c   duplicates, zero area, manifoldness, orientation
  * selfint.c    exact detection of improperly intersecting triangles
+ * nesting.c    which closed shells are cavities (inputs where every edge has 2 triangles)
+ * cells.c      orientation and openness of any other surface, by its cells
  * report.c     the repair log kept in plc->report */
 #ifndef TR_INPUT_VALIDATE_H
 #define TR_INPUT_VALIDATE_H
@@ -33,11 +35,37 @@ tr_status tr_input_self_intersections(const struct tr_plc *plc, const uint32_t *
 /* out = 6 * the signed volume enclosed by the triangles (sum of det[a; b; c]), exact. */
 tr_status tr_input_volume6(const struct tr_plc *plc, mpq_t out);
 
+/* The same over the triangles tris[0..n). */
+tr_status tr_input_volume6_of(const struct tr_plc *plc, const uint32_t *tris, uint32_t n,
+                              mpq_t out);
+
+/* out = 6 * the volume of the domain of any validated surface (internal facets, cracks,
+ * cavities, several regions): the sum over the triangles that separate the domain from
+ * the outside, oriented outward by the cell analysis of cells.c. For a union of closed
+ * 2-manifold shells it equals tr_input_volume6. The surface must have no improper
+ * intersections (tr_plc_validate checked). */
+tr_status tr_input_domain_volume6(const struct tr_plc *plc, mpq_t out);
+
+/* sides[t] for each triangle of a validated surface, in its current orientation: bit 0 =
+ * the side its right-hand normal points to lies in the domain, bit 1 = the other side
+ * does (0: outside on both sides, e.g. a facet between two cavities; 3: an internal
+ * facet or a crack). What the outer coloring needs to decide a component bounded only
+ * by internal facets. */
+tr_status tr_input_side_domains(const struct tr_plc *plc, uint8_t *sides);
+
 /* cavity[c] = 1 iff closed shell c lies inside an odd number of other closed shells.
  * Shell c's triangles are order[start[c] .. start[c+1]). */
 tr_status tr_input_shell_cavities(const struct tr_plc *plc, const uint32_t *order,
                                   const uint32_t *start, const char *closed, uint32_t ncomp,
                                   char *cavity);
+
+/* Orients a surface with free edges (1 triangle) or edges of 3+ triangles by its cells
+ * (cells.c): each triangle between the domain and the outside faces the outside;
+ * internal facets and cracks keep their orientation. TR_ERR_OPEN if a triangle with a
+ * free edge lies outside the domain, unless allow_open. Needs a surface without
+ * improper intersections. flipped[t] is toggled for every triangle turned. */
+tr_status tr_input_orient_cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t *orig,
+                                int allow_open, char *flipped);
 
 /* Stable merge sort of ids by cmp(ctx, a, b) (<0, 0, >0). */
 tr_status tr_sort_ids(uint32_t *ids, uint32_t n, int (*cmp)(const void *, uint32_t, uint32_t),

@@ -23,6 +23,13 @@ tr_status tr_read_ply_buf(const char *buf, size_t len, const char *name, struct 
  * Tetrahedra (kept in plc->tets for `tetrec check`). */
 tr_status tr_read_medit_buf(const char *buf, size_t len, const char *name, struct tr_plc *plc);
 
+/* Exact reading of a TetGen .node buffer: *out = *npoints entries (free each with
+ * tr_qpoint_clear + free, then the array), NULL for a point whose three coordinates are doubles, else its exact point;
+ * *exact_file = the file starts with tetrec's "# tetrec exact rationals" line or has a
+ * num/den coordinate. */
+tr_status tr_read_node_exact_buf(const char *buf, size_t len, const char *name,
+                                 tr_qpoint ***out, uint32_t *npoints, int *exact_file);
+
 /* TetGen formats. .node alone gives points only. For .poly/.smesh, node_buf may hold the
  * companion .node file used when the .poly declares 0 points (NULL if none). */
 enum tr_tetgen_kind { TR_TETGEN_NODE, TR_TETGEN_POLY, TR_TETGEN_SMESH, TR_TETGEN_ELE };

@@ -3,7 +3,8 @@
  *
  * Indices may start at 0 or 1: the first point's number decides, as in TetGen.
  * Coordinates may be written as exact rationals "num/den" (tetrec's --exact output);
- * they are read exactly and rounded to the nearest double, ties to even. */
+ * the readers round them to the nearest double, ties to even, and
+ * tr_read_node_exact_buf (for `tetrec check`) keeps them exact. */
 #include <gmp.h>
 #include <math.h>
 #include <stdlib.h>
@@ -48,6 +49,44 @@ static double q_nearest(const mpq_t q)
   return (bt & 1) ? u : t;
 }
 
+/* The current token, [-]digits/digits or [-]digits, as an exact rational (canonical).
+ * mpq_set_str accepts leading blanks and a sign only on the numerator; keep to this form
+ * so junk cannot slip through. */
+static tr_status rational_tok(tr_lex *lx, mpq_t q)
+{
+  char buf[4096];
+  if (lx->toklen >= sizeof buf)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: rational coordinate too long", lx->name, lx->tokline);
+  memcpy(buf, lx->tok, lx->toklen);
+  buf[lx->toklen] = '\0';
+  size_t i = buf[0] == '-' ? 1 : 0, ndig = 0, ddig = 0;
+  for (; buf[i] >= '0' && buf[i] <= '9'; i++)
+    ndig++;
+  int slash = buf[i] == '/';
+  if (slash)
+    for (i++; buf[i] >= '0' && buf[i] <= '9'; i++)
+      ddig++;
+  if (buf[i] != '\0' || !ndig || (slash && !ddig) ||
+      mpq_set_str(q, buf, 10) != 0 || mpz_sgn(mpq_denref(q)) == 0)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: bad rational coordinate '%.40s'", lx->name,
+                    lx->tokline, buf);
+  mpq_canonicalize(q);
+  return TR_OK;
+}
+
+/* 1 iff the current token is an integer or a fraction (exact in rationals, possibly not
+ * in doubles). */
+static int rational_form(const tr_lex *lx)
+{
+  size_t i = lx->toklen && lx->tok[0] == '-' ? 1 : 0;
+  if (i >= lx->toklen)
+    return 0;
+  for (; i < lx->toklen; i++)
+    if (!((lx->tok[i] >= '0' && lx->tok[i] <= '9') || lx->tok[i] == '/'))
+      return 0;
+  return 1;
+}
+
 static tr_status coord(tr_lex *lx, double *out)
 {
   if (!tr_lex_next(lx))
@@ -55,30 +94,10 @@ static tr_status coord(tr_lex *lx, double *out)
   const char *slash = memchr(lx->tok, '/', lx->toklen);
   if (!slash)
     return tr_lex_tok_double(lx, "a point coordinate", out);
-  char buf[4096];
-  if (lx->toklen >= sizeof buf)
-    return tr_error(TR_ERR_PARSE, "%s:%lu: rational coordinate too long", lx->name, lx->tokline);
-  memcpy(buf, lx->tok, lx->toklen);
-  buf[lx->toklen] = '\0';
-  /* mpq_set_str accepts leading blanks and a sign only on the numerator; keep to
-   * [-]digits/digits so junk cannot slip through. */
-  size_t i = buf[0] == '-' ? 1 : 0, ndig = 0, ddig = 0;
-  for (; buf[i] >= '0' && buf[i] <= '9'; i++)
-    ndig++;
-  if (buf[i] == '/')
-    for (i++; buf[i] >= '0' && buf[i] <= '9'; i++)
-      ddig++;
-  if (buf[i] != '\0' || !ndig || !ddig)
-    return tr_error(TR_ERR_PARSE, "%s:%lu: bad rational coordinate '%.40s'", lx->name,
-                    lx->tokline, buf);
   mpq_t q;
   mpq_init(q);
-  tr_status st = TR_OK;
-  if (mpq_set_str(q, buf, 10) != 0 || mpz_sgn(mpq_denref(q)) == 0)
-    st = tr_error(TR_ERR_PARSE, "%s:%lu: bad rational coordinate '%.40s'", lx->name, lx->tokline,
-                  buf);
-  else {
-    mpq_canonicalize(q);
+  tr_status st = rational_tok(lx, q);
+  if (st == TR_OK) {
     *out = q_nearest(q);
     if (!isfinite(*out))
       st = tr_error(TR_ERR_INPUT, "%s:%lu: rational coordinate overflows a double", lx->name,
@@ -289,5 +308,88 @@ tr_status tr_read_ele_buf(const char *buf, size_t len, const char *name, struct 
   free(plc->tets);
   plc->tets = t;
   plc->ntets = (uint32_t)n;
+  return TR_OK;
+}
+
+/* The exact reading of a .node file for `tetrec check` (declared in src/cli/cli.h). */
+static void free_points(tr_qpoint **q, uint32_t n)
+{
+  for (uint32_t i = 0; q && i < n; i++)
+    if (q[i]) {
+      tr_qpoint_clear(q[i]);
+      free(q[i]);
+    }
+  free(q);
+}
+
+tr_status tr_read_node_exact_buf(const char *buf, size_t len, const char *name,
+                                 tr_qpoint ***out, uint32_t *npoints, int *exact_file)
+{
+  static const char mark[] = "# tetrec exact rationals";
+  *out = NULL;
+  *npoints = 0;
+  *exact_file = len >= sizeof mark - 1 && !memcmp(buf, mark, sizeof mark - 1);
+  tr_lex lx;
+  tr_lex_init(&lx, buf, len, name, '#');
+  int64_t n, dim, nattr, nbm;
+  TR_CHECK(tr_lex_i64(&lx, "the point count", &n));
+  unsigned long hline = lx.tokline;
+  TR_CHECK(tr_lex_i64(&lx, "the dimension", &dim));
+  TR_CHECK(tr_lex_i64(&lx, "the attribute count", &nattr));
+  TR_CHECK(tr_lex_i64(&lx, "the boundary marker flag", &nbm));
+  if (n < 0 || (n > 0 && dim != 3))
+    return tr_error(TR_ERR_PARSE, "%s:%lu: bad node list header", lx.name, hline);
+  TR_CHECK(tr_check_room(lx.name, hline, (uint64_t)n, "points", tr_lex_left(&lx), 8,
+                         TR_IO_MAX_COUNT / 3));
+  tr_qpoint **q = calloc(n ? (size_t)n : 1, sizeof *q);
+  tr_qpoint *cur = malloc(sizeof *cur);
+  if (!q || !cur) {
+    free(q);
+    free(cur);
+    return tr_error(TR_ERR_NOMEM, "out of memory reading %s", lx.name);
+  }
+  tr_qpoint_init(cur);
+  tr_status st = TR_OK;
+  for (int64_t i = 0; i < n && st == TR_OK; i++) {
+    int64_t id;
+    st = tr_lex_i64(&lx, "a point number", &id);
+    for (int k = 0; k < 3 && st == TR_OK; k++) {
+      double d;
+      if (!tr_lex_next(&lx))
+        st = tr_lex_eof(&lx, "a point coordinate");
+      else if (rational_form(&lx)) {
+        st = rational_tok(&lx, cur->c[k]);
+        *exact_file |= memchr(lx.tok, '/', lx.toklen) != NULL;
+      } else if ((st = tr_lex_tok_double(&lx, "a point coordinate", &d)) == TR_OK)
+        mpq_set_d(cur->c[k], d);
+    }
+    if (st != TR_OK)
+      break;
+    tr_qpoint_update(cur);
+    int is_double = 1;
+    for (int k = 0; k < 3; k++)
+      is_double &= cur->lo[k] == cur->hi[k];
+    /* a point that is a double stays a plain point (as an input point would) */
+    if (!is_double) {
+      q[i] = cur;
+      if (!(cur = malloc(sizeof *cur))) {
+        st = tr_error(TR_ERR_NOMEM, "out of memory reading %s", lx.name);
+        break;
+      }
+      tr_qpoint_init(cur);
+    }
+    if (!tr_lex_at_eol(&lx))
+      tr_lex_skip_line(&lx);
+  }
+  if (cur) {
+    tr_qpoint_clear(cur);
+    free(cur);
+  }
+  if (st != TR_OK) {
+    free_points(q, (uint32_t)n);
+    return st;
+  }
+  *out = q;
+  *npoints = (uint32_t)n;
   return TR_OK;
 }

@@ -5,6 +5,7 @@
 
 #include "io.h"
 #include "mesh/mesh.h"
+#include "output/round.h"
 
 /* Boundary faces of the kept tets: a face is written when the tet across it is missing,
  * a ghost, or outside the domain, or belongs to another region. Each face is listed as
@@ -20,6 +21,15 @@ tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
   const struct tr_mesh *m = mesh;
   if (!m)
     return tr_error(TR_ERR_USAGE, "tr_mesh_write: no mesh");
+  /* A mesh that tr_mesh_plc returned under TR_PIPE_KEEP_EXACT may have tets that are flat
+   * or inverted on the doubles: only its exact TetGen output is a valid mesh. */
+  uint32_t bad;
+  if (!(exact && (tr_io_has_ext(path, ".node") || tr_io_has_ext(path, ".ele") ||
+                  tr_io_has_ext(path, ".face"))) && tr_round_count_nonpositive(m, &bad) > 0)
+    return tr_error(TR_ERR_INVALID_MESH,
+                    "%s: tet %u is flat or inverted once its Steiner points are written as "
+                    "doubles; only the exact output (--exact, .node) is valid for this mesh",
+                    path, bad);
   uint32_t nt = 0, nf = 0;
   for (uint32_t t = 0; t < m->nt; t++)
     if (keep(m, t)) {

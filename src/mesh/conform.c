@@ -218,8 +218,8 @@ static int chain_ok(const struct tr_mesh *m, const uint32_t *astart, const edge 
   return 0;
 }
 
-tr_status tr_check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
-                              mpq_srcptr volume6, unsigned flags)
+static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
+                                  mpq_srcptr volume6, unsigned flags)
 {
   tr_status st = TR_OK;
   uint32_t np = plc->npoints, ntri = plc->ntris, nv = m->nv;
@@ -472,10 +472,14 @@ tr_status tr_check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
     }
   }
   /* 5. volume */
-  if (volume6 || manifold) {
+  if (volume6 || manifold || !(flags & TR_CONF_OPEN)) {
     if (volume6)
       mpq_set(want, volume6);
-    else if ((st = tr_input_volume6(plc, want)) != TR_OK)
+    else if (manifold)
+      st = tr_input_volume6(plc, want);
+    else
+      st = tr_input_domain_volume6(plc, want);
+    if (st != TR_OK)
       goto done;
     if ((st = tr_mesh_volume6(m, v6)) != TR_OK)
       goto done;
@@ -509,5 +513,81 @@ done:
   free(axes);
   free(G.start);
   free(G.tri);
+  return st;
+}
+
+/* *closed = every triangle edge has exactly two triangles and there are no segments. */
+static tr_status census(const struct tr_plc *plc, int *closed)
+{
+  size_t ne = 3 * (size_t)plc->ntris;
+  edge *e = malloc(sizeof *e * (ne ? ne : 1));
+  if (!e)
+    return tr_error(TR_ERR_NOMEM, "out of memory checking conformity");
+  for (uint32_t t = 0; t < plc->ntris; t++)
+    for (int k = 0; k < 3; k++) {
+      uint32_t a = plc->tris[3 * (size_t)t + k], b = plc->tris[3 * (size_t)t + (k + 1) % 3];
+      e[3 * (size_t)t + k].a = a < b ? a : b;
+      e[3 * (size_t)t + k].b = a < b ? b : a;
+    }
+  qsort(e, ne, sizeof *e, cmp_edge);
+  *closed = plc->nsegs == 0;
+  for (size_t i = 0; i < ne && *closed;) {
+    size_t j = i + 1;
+    while (j < ne && !cmp_edge(&e[i], &e[j]))
+      j++;
+    *closed = j - i == 2;
+    i = j;
+  }
+  free(e);
+  return TR_OK;
+}
+
+/* A triangle with the outside on both of its sides (a facet between two cavities) bounds
+ * no tet of the domain: its vertices, edges and area are not in the mesh. The checks
+ * then run on the other triangles, with the whole input's domain volume. */
+tr_status tr_check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
+                              mpq_srcptr volume6, unsigned flags)
+{
+  int closed = 0;
+  if (flags & TR_CONF_OPEN)
+    return check_conformity(m, plc, volume6, flags);
+  TR_CHECK(census(plc, &closed));
+  if (closed)
+    return check_conformity(m, plc, volume6, flags);
+  uint8_t *sides = malloc(plc->ntris ? plc->ntris : 1);
+  uint32_t *tris = malloc(sizeof *tris * 3 * ((size_t)plc->ntris + 1));
+  tr_status st = TR_OK;
+  if (!sides || !tris) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory checking conformity");
+    goto done;
+  }
+  if ((st = tr_input_side_domains(plc, sides)) != TR_OK)
+    goto done;
+  uint32_t n = 0;
+  for (uint32_t t = 0; t < plc->ntris; t++)
+    if (sides[t])
+      memcpy(tris + 3 * (size_t)n++, plc->tris + 3 * (size_t)t, 3 * sizeof *tris);
+  if (n == plc->ntris) {
+    st = check_conformity(m, plc, volume6, flags);
+    goto done;
+  }
+  mpq_t want;
+  mpq_init(want);
+  if (volume6)
+    mpq_set(want, volume6);
+  else
+    st = tr_input_domain_volume6(plc, want);
+  if (st == TR_OK) {
+    struct tr_plc sub = *plc;
+    sub.ntris = n;
+    sub.tris = tris;
+    sub.tri_marker = NULL;
+    sub.tri_source = NULL; /* messages then number the bounding triangles only */
+    st = check_conformity(m, &sub, want, flags);
+  }
+  mpq_clear(want);
+done:
+  free(sides);
+  free(tris);
   return st;
 }

@@ -9,11 +9,13 @@
  *     vertices in the closed triangle, exact) have a total projected area equal to its
  *     own, exactly (mpq); and every boundary face of the mesh (no tet behind it, or a tet
  *     of another region) lies in some input triangle;
- *  5. the exact sum of 6 * volume of the tets equals volume6, or when volume6 is NULL and
- *     every input edge has exactly two triangles, the sum of det over the input
+ *  5. the exact sum of 6 * volume of the tets equals volume6, or when volume6 is NULL:
+ *     when every input edge has exactly two triangles, the sum of det over the input
  *     triangles (the volume the surface encloses; a cavity shell oriented inward counts
- *     negatively). Non-manifold inputs (internal facets) and nested outward shells need
- *     the caller's volume6: their triangle sum is not the domain's volume. */
+ *     negatively); otherwise (internal facets, cracks) the domain volume of the input's
+ *     cell analysis (tr_input_domain_volume6), except under TR_CONF_OPEN (no volume
+ *     check: the domain is the convex hull). Nested outward shells need the caller's
+ *     volume6: their triangle sum is not the domain's volume. */
 #ifndef TR_MESH_CONFORM_H
 #define TR_MESH_CONFORM_H
 

@@ -168,6 +168,20 @@ tr_status tr_mesh_add_steiner(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx)
   return TR_OK;
 }
 
+tr_status tr_mesh_add_constructed(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx)
+{
+  size_t bits = 0;
+  for (int k = 0; k < 3; k++)
+    bits += mpz_sizeinbase(mpq_numref(q->c[k]), 2) + mpz_sizeinbase(mpq_denref(q->c[k]), 2);
+  if (bits > TR_STEINER_MAX_BITS)
+    return tr_error(TR_ERR_UNSUPPORTED,
+                    "exact Steiner point %u near (%.17g, %.17g, %.17g) needs %zu bits (limit "
+                    "%d): Steiner points built on Steiner points grew too large; this input's "
+                    "near-degenerate configuration is beyond this version",
+                    m->nv, q->near[0], q->near[1], q->near[2], bits, TR_STEINER_MAX_BITS);
+  return tr_mesh_add_steiner(m, q, idx);
+}
+
 tr_status tr_tet_new(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d,
                      uint32_t *t)
 {

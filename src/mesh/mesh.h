@@ -59,7 +59,8 @@ enum {
 struct tr_mesh {
   /* vertices */
   uint32_t nv, cap_v;
-  double *xyz;        /* 3 * cap_v; for a Steiner point: its coordinates rounded to nearest */
+  double *xyz;        /* 3 * cap_v; for a Steiner point: its nearest double, or after
+                       * tr_mesh_plc its repaired double (src/output/round.h) */
   tr_qpoint **vq;     /* NULL, or cap_v entries: exact point of a Steiner vertex (owned),
                          NULL for input points */
   uint32_t *v2t;      /* cap_v: one tet incident to the vertex, TR_NONE if none */
@@ -102,6 +103,14 @@ tr_status tr_mesh_add_vertex(struct tr_mesh *m, const double xyz[3], uint32_t *i
 /* Appends a Steiner point; the store takes ownership of q (allocated with malloc,
  * initialised with tr_qpoint_init) and frees it with tr_qpoint_clear + free. */
 tr_status tr_mesh_add_steiner(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx);
+/* The same for a point the recovery just constructed, after a size guard: exact Steiner
+ * points built from earlier Steiner points can grow in bit size from one to the next
+ * (an intersection's coordinates have the sizes of its inputs added up), and past
+ * TR_STEINER_MAX_BITS (numerators and denominators of the three coordinates together)
+ * every predicate on them takes seconds. Past it: TR_ERR_UNSUPPORTED with a message, q
+ * not taken (the caller frees it), instead of a run that does not end. */
+#define TR_STEINER_MAX_BITS 8192
+tr_status tr_mesh_add_constructed(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx);
 /* The exact point of vertex v (v must not be TR_GHOST). */
 static inline tr_point tr_mesh_point(const struct tr_mesh *m, uint32_t v)
 {

@@ -82,7 +82,7 @@ static int less4(const uint32_t *a, const uint32_t *b)
 }
 
 tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
-                         uint32_t *nregions)
+                         const uint8_t *sides, uint32_t *nregions)
 {
   *nregions = 0;
   uint32_t ns = sub->n, nt = m->nt;
@@ -91,7 +91,7 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
   uint32_t *seen = calloc(ns ? ns : 1, sizeof *seen);
   uint32_t *comp = malloc(sizeof *comp * (nt ? nt : 1));
   uint32_t *queue = malloc(sizeof *queue * (nt ? nt : 1));
-  uint8_t *cflag = NULL;  /* per component: 1 ghost, 2 inner vote */
+  uint8_t *cflag = NULL;  /* per component: 1 ghost, 2 inner vote, 4 outer vote */
   ckey *ck = NULL;
   uint32_t *rid = NULL;
   tr_status st = TR_OK;
@@ -189,7 +189,7 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
     if (less4(v, ck[c].v))
       memcpy(ck[c].v, v, sizeof v);
     for (int k = 0; k < 4; k++) {
-      if (!(cmask[t] & (1u << k)) || (cflag[c] & 2))
+      if (!(cmask[t] & (1u << k)) || (!sides && (cflag[c] & 2)))
         continue;
       uint32_t s[3];
       for (int i = 0; i < 3; i++)
@@ -204,10 +204,23 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
                       k);
         goto done;
       }
-      if (e == TR_INNER)
+      if (sides) {
+        /* FLAGE INNER: t is on the side opposite the triangle's right-hand normal (bit 1) */
+        uint8_t sd = sides[sub->tri[f->id]];
+        cflag[c] |= ((e == TR_INNER) ? (sd & 2) : (sd & 1)) ? 2 : 4;
+      } else if (e == TR_INNER) {
         cflag[c] |= 2;
+      }
     }
   }
+  if (sides)
+    for (uint32_t c = 0; c < nc; c++)
+      if ((cflag[c] & 6) == 6 && !(cflag[c] & 1)) {
+        st = tr_error(TR_ERR_INTERNAL,
+                      "outer removal: a component of the mesh touches sub-faces that put it "
+                      "both inside and outside the domain");
+        goto done;
+      }
   /* Inner components sorted by their smallest tet: ids 1..k. */
   uint32_t ni = 0;
   for (uint32_t c = 0; c < nc; c++) {

@@ -25,9 +25,13 @@
 
 /* Sets TR_TF_OUTER on every outer tet (ghosts included), enables m->region and writes
  * 1..k into the inner tets (0 into outer ones). keep_hull != 0: every non-ghost
- * component is inner (open surfaces meshed within their convex hull). *nregions = k.
+ * component is inner (open surfaces meshed within their convex hull). sides (may be
+ * NULL; tr_input_side_domains of src/input/validate.h, per input triangle sub->tri[j]):
+ * a component is inner iff the side of an adjacent sub-face it lies on is in the domain
+ * (votes must agree, else TR_ERR_INTERNAL); this replaces the FLAGE vote rule above for
+ * inputs with internal facets or cracks, and has none of its limits. *nregions = k.
  * TR_ERR_INTERNAL if a sub-face is not a face of the mesh. */
 tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
-                         uint32_t *nregions);
+                         const uint8_t *sides, uint32_t *nregions);
 
 #endif

@@ -1,6 +1,10 @@
 /* tr_mesh_plc: validate -> smooth -> Delaunay -> edge recovery -> facet recovery ->
- * outer removal and regions -> rounding check -> compact output, with the seed paper's
- * Table 14 statistics. */
+ * outer removal and regions -> compact output -> rounding of Steiner points to doubles
+ * (src/output/round.h), with the seed paper's Table 14 statistics.
+ *
+ * Rounding runs on the compact store, after outer removal: its tets are exactly the ones
+ * written, so the tets that are discarded do not constrain where a Steiner point's double
+ * may move, and its xyz is the array the writers print. */
 #define _DEFAULT_SOURCE
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,9 +12,10 @@
 #include <sys/resource.h>
 
 #include "delaunay/delaunay.h"
+#include "input/validate.h"
 #include "outer/color.h"
+#include "output/round.h"
 #include "pipeline.h"
-#include "predicates.h"
 #include "smooth/smooth.h"
 
 static tr_status copy_plc(const tr_plc *in, tr_plc **out)
@@ -34,34 +39,14 @@ static tr_status copy_plc(const tr_plc *in, tr_plc **out)
   return st;
 }
 
-/* Tets that would not be positive once their Steiner points are rounded to doubles: the
- * exact mesh is valid, the double output may not be (written exactly with --exact). */
-static uint64_t rounding_inversions(const struct tr_mesh *m)
-{
-  uint64_t n = 0;
-  if (!m->vq)
-    return 0;
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t) || (m->flags[t] & TR_TF_OUTER))
-      continue;
-    const uint32_t *v = m->tv + 4 * (size_t)t;
-    if (!m->vq[v[0]] && !m->vq[v[1]] && !m->vq[v[2]] && !m->vq[v[3]])
-      continue;
-    if (tr_orient3d(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
-                    m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3]) <= 0)
-      n++;
-  }
-  return n;
-}
-
 static void say(const tr_options *opt, int level, const char *what, double secs)
 {
   if (opt->verbose >= level)
     fprintf(stderr, "tetrec: %-22s %.3f s\n", what, secs);
 }
 
-tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *optin, tr_mesh **out,
-                         tr_stats *stats, tr_plc **used)
+tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh **out,
+                            tr_stats *stats, tr_plc **used, unsigned flags)
 {
   tr_error_clear();
   double t0 = tr_pipeline_now();
@@ -82,7 +67,8 @@ tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *optin, tr_mesh **o
     return tr_error(TR_ERR_USAGE, "tr_mesh_plc: NULL argument");
   tr_plc *p = NULL;
   struct tr_mesh *m = NULL, *res = NULL;
-  uint32_t *edges = NULL, ne = 0, nopen = 0, nreg = 0;
+  uint32_t *edges = NULL, ne = 0, nopen = 0, nmulti = 0, nreg = 0;
+  uint8_t *sides = NULL;
   tr_subfaces sub;
   memset(&sub, 0, sizeof sub);
   double secs[2];
@@ -104,7 +90,7 @@ tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *optin, tr_mesh **o
     say(&opt, 2, "surface smoothing", tr_pipeline_now() - t1);
   }
   if (st == TR_OK)
-    st = tr_pipeline_edges(p, &edges, &ne, &nopen);
+    st = tr_pipeline_edges(p, &edges, &ne, &nopen, &nmulti);
   double t2 = tr_pipeline_now();
   if (st == TR_OK)
     st = tr_delaunay_build(p->xyz, p->npoints, &m);
@@ -119,18 +105,36 @@ tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *optin, tr_mesh **o
     say(&opt, 2, "facet recovery", secs[1]);
   }
   double t4 = tr_pipeline_now();
-  if (st == TR_OK)
-    st = tr_outer_color(m, &sub, opt.allow_open && (nopen > 0 || p->nsegs > 0), &nreg);
-  if (st == TR_OK) {
-    uint64_t inv = rounding_inversions(m);
-    if (inv && opt.verbose >= 1)
-      fprintf(stderr,
-              "tetrec: warning: %llu tets are not positive once Steiner points are rounded "
-              "to doubles (the exact mesh is valid; write it with --exact)\n",
-              (unsigned long long)inv);
+  int keep_hull = opt.allow_open && (nopen > 0 || p->nsegs > 0);
+  /* Not a union of closed 2-manifold shells (internal facets, cracks): which side of each
+   * triangle is in the domain comes from the input's cell analysis, since FLAGE votes
+   * cannot tell a region bounded only by internal facets from a cavity. */
+  if (st == TR_OK && !keep_hull && (nopen > 0 || nmulti > 0)) {
+    if (!(sides = malloc(p->ntris ? p->ntris : 1)))
+      st = tr_error(TR_ERR_NOMEM, "out of memory for %u triangle sides", p->ntris);
+    else
+      st = tr_input_side_domains(p, sides);
   }
   if (st == TR_OK)
+    st = tr_outer_color(m, &sub, keep_hull, sides, &nreg);
+  free(sides);
+  sides = NULL;
+  if (st == TR_OK)
     st = tr_pipeline_compact(m, &res);
+  if (st == TR_OK) {
+    st = tr_round_steiner(res, &stats->rounding_repairs);
+    if (st == TR_ERR_INVALID_MESH && (flags & TR_PIPE_KEEP_EXACT)) {
+      /* the caller writes the exact points: the mesh it gets is valid */
+      if (opt.verbose >= 1)
+        fprintf(stderr, "tetrec: warning: %s; only the exact output is valid\n",
+                tr_last_error());
+      st = TR_OK;
+    } else if (st == TR_OK && stats->rounding_repairs && opt.verbose >= 1)
+      fprintf(stderr,
+              "tetrec: %llu Steiner points moved off their nearest double so that every "
+              "tet is positive in doubles (exact positions: --exact)\n",
+              (unsigned long long)stats->rounding_repairs);
+  }
   say(&opt, 2, "outer removal, output", tr_pipeline_now() - t4);
   if (st == TR_OK && tr_mesh_num_tets(res) == 0)
     st = tr_error(TR_ERR_INPUT, "the surface encloses no tetrahedron (is it inside out?)");
@@ -158,6 +162,12 @@ tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *optin, tr_mesh **o
   else
     tr_plc_destroy(p);
   return TR_OK;
+}
+
+tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *opt, tr_mesh **out,
+                         tr_stats *stats, tr_plc **used)
+{
+  return tr_mesh_plc_flags(plc, opt, out, stats, used, 0);
 }
 
 tr_status tr_mesh_plc(const tr_plc *plc, const tr_options *opt, tr_mesh **out, tr_stats *stats)

@@ -22,10 +22,23 @@
 tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *opt, tr_mesh **out,
                          tr_stats *stats, tr_plc **used);
 
+/* tr_mesh_plc_ex with flags (TR_PIPE_*). The output's Steiner points keep their exact
+ * positions (vq); their doubles (xyz, what the writers print) are the nearest doubles,
+ * moved where needed so that every tet is strictly positive in doubles
+ * (src/output/round.h; stats->rounding_repairs counts the moved points). When no such
+ * doubles are found the call fails with TR_ERR_INVALID_MESH, unless TR_PIPE_KEEP_EXACT:
+ * then the mesh is returned (its exact points are valid) and a warning is printed. */
+enum {
+  TR_PIPE_KEEP_EXACT = 1u << 0 /* the caller writes exact coordinates (--exact .node) */
+};
+tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *opt, tr_mesh **out,
+                            tr_stats *stats, tr_plc **used, unsigned flags);
+
 /* The unique undirected edges of the triangles and segments, a < b, sorted; *nopen =
- * number of edges with exactly one triangle (segments do not count). */
+ * number of edges with exactly one triangle, *nmulti = with three or more (segments do
+ * not count). */
 tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t *n,
-                            uint32_t *nopen);
+                            uint32_t *nopen, uint32_t *nmulti);
 
 /* Edge then facet recovery on m (vertex ids = plc point ids). Fills sub and the stats
  * rows; secs[0], secs[1] = time of each stage. */

@@ -24,12 +24,12 @@ static int cmp_pair(const void *pa, const void *pb)
 }
 
 tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t *n,
-                            uint32_t *nopen)
+                            uint32_t *nopen, uint32_t *nmulti)
 {
   size_t nt = 3 * (size_t)plc->ntris, ne = nt + plc->nsegs;
   uint32_t *e = malloc(sizeof *e * 3 * (ne ? ne : 1));
   *edges = NULL;
-  *n = *nopen = 0;
+  *n = *nopen = *nmulti = 0;
   if (!e)
     return tr_error(TR_ERR_NOMEM, "out of memory listing %zu input edges", ne);
   /* third slot: 1 for a triangle edge, 0 for a segment, to count open edges */
@@ -55,6 +55,8 @@ tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t
       ntri += e[3 * k++ + 2];
     if (ntri == 1)
       (*nopen)++;
+    else if (ntri > 2)
+      (*nmulti)++;
     e[2 * j] = e[3 * i];
     e[2 * j + 1] = e[3 * i + 1];
     j++;

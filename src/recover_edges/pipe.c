@@ -217,7 +217,7 @@ tr_status tr_pipe_add_steiner(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe
                        a, b, ty == TR_EDG ? "edge" : "face", key[0], key[1], key[2]);
           break;
         }
-        if ((s = tr_mesh_add_steiner(m, q, &id)) != TR_OK) {
+        if ((s = tr_mesh_add_constructed(m, q, &id)) != TR_OK) {
           tr_qpoint_clear(q);
           free(q);
           break;

@@ -52,6 +52,11 @@ typedef struct tr_edge_stats {
   uint32_t pipels[TR_PK_COUNT]; /* decomposed pipels per kind */
   uint32_t raw[16];             /* decomposed pipels per raw type (low 4 bits) */
   uint32_t ghosts_split;        /* ghost tets replaced because their hull face was split */
+  /* general flips (flip.h, tr_pipe_try_flips): kept flips by kind, and flips undone
+   * because they did not shrink the pipe */
+  uint32_t by_flips;            /* sub-segments recovered by general flips */
+  uint32_t flip23, flip32, flip44, flipn, flip_hull, flips_undone;
+  uint32_t midpoints;           /* sub-segments split at their midpoint (pass 2) */
 } tr_edge_stats;
 
 struct tr_edgeset;
@@ -62,6 +67,22 @@ struct tr_edgeset;
  * ab is now a mesh edge. */
 tr_status tr_pipe_try_swaps(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
                             const struct tr_edgeset *cons, tr_edge_stats *st, int *done);
+
+/* Recovers ab by general flips (flip.h) without Steiner points: Swap23 on the faces ab
+ * crosses, edge removal (with bounded flipnm recursion) of the edges it crosses, never
+ * deleting an edge in cons; an attempt is kept only if the number of real pipels strictly
+ * drops (else it is undone), until ab is a mesh edge or no attempt helps (flipseg.c). p
+ * must be Pipe(ab) with no vertex inside ab; on return it is the current Pipe(ab) unless
+ * *done. Terminates: every kept attempt lowers the pipel count. *done = 1 iff ab is now a
+ * mesh edge. */
+tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
+                            const struct tr_edgeset *cons, tr_edge_stats *st, int *done);
+
+/* Splits ab at its exact midpoint M (midsplit.c): the tets of Pipe(ab) whose closure
+ * holds M are replaced by the cone from M. *done = 1 and *mid = M's id on success; the
+ * mesh is unchanged otherwise. p must be the current Pipe(ab); it is stale afterwards. */
+tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
+                            uint32_t *mid, int *done);
 
 /* Decomposes every pipel of a pipe whose Steiner points were added (tr_pipe_add_steiner)
  * and splits the cut hull faces; counts the pipels in st->pipels / raw / ghosts_split. */

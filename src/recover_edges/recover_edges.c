@@ -1,10 +1,16 @@
 /* The all-edges driver of edge recovery (see recover_edges.h).
  *
  * Order (the paper's): pass 1 runs over every missing input edge and recovers what the
- * swaps alone can recover (Swap23, Swap44, with the edge split at existing vertices it
- * passes through); pass 2 recovers what is left with Steiner points, pipel by pipel
- * (a sub-segment whose pipe happens to admit a swap by then still takes the swap: it
- * costs no point).
+ * swaps alone can recover (Swap23, Swap44, then the general flips of flip.h: Swap23 on
+ * any crossed face, edge removal of any crossed edge, the 2-2 hull flip; with the edge
+ * split at existing vertices it passes through); pass 2 recovers what is left with Steiner
+ * points: a sub-segment whose pipe has more than two real tets is first split at its exact
+ * midpoint (TetGen's way, one point, tr_pipe_split_mid; at most TR_EDGE_MIDPOINT_SPLITS
+ * per input edge) and both halves go through the swaps and flips again; short pipes and
+ * what is left after the budget go pipel by pipel, the paper's decomposition (a
+ * sub-segment whose pipe admits a swap by then still takes the swap: it costs no point).
+ * tr_recover_edges_ex can switch the flips and the midpoint splits off (the paper's
+ * algorithm exactly).
  *
  * Constraint edges: the mesh edges that are pieces of input edges are kept in a hash map
  * (edgeset.h) so that a Swap44 never deletes one and a Steiner point is never put on
@@ -30,6 +36,11 @@
 #include "recover_edges/edgeset.h"
 #include "recover_edges/pipe.h"
 
+/* Midpoint splits allowed per input edge in pass 2 (0: the paper's pipels only). */
+#ifndef TR_EDGE_MIDPOINT_SPLITS
+#define TR_EDGE_MIDPOINT_SPLITS 64
+#endif
+
 _Static_assert(TR_EDGE_PIPEL_KINDS == TR_PK_COUNT, "pipel kinds of recover_edges.h and pipe.h");
 
 typedef struct ctx {
@@ -43,6 +54,7 @@ typedef struct ctx {
   tr_pipe pipe;
   tr_edge_stats est; /* detailed counters (pipe.h) */
   uint32_t nv0;      /* vertices before the stage: ids from nv0 on are its Steiner points */
+  tr_edge_recovery_opts opt;
 } ctx;
 
 /* Wraps the message of a failure inside the recovery of input edge i with the edge's
@@ -163,6 +175,8 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
   *complete = 1;
   *npoints = 0;
   c->stack.n = 0;
+  uint32_t nsplit = 0;
+  (void)nsplit;
   TR_CHECK(tr_u32buf_push(&c->stack, c->edges[2 * (size_t)i]));
   TR_CHECK(tr_u32buf_push(&c->stack, c->edges[2 * (size_t)i + 1]));
   while (c->stack.n > 0) {
@@ -196,6 +210,8 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
                       v0, v1);
     int done;
     TR_CHECK(tr_pipe_try_swaps(m, v0, v1, &c->pipe, &c->cons, &c->est, &done));
+    if (!done && !c->opt.no_flips)
+      TR_CHECK(tr_pipe_try_flips(m, v0, v1, &c->pipe, &c->cons, &c->est, &done));
     if (done) {
       TR_CHECK(tr_edgeset_put(&c->cons, v0, v1, i));
       continue;
@@ -205,6 +221,29 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
       continue;
     }
     TR_CHECK(check_cut_edges(c, i));
+#if TR_EDGE_MIDPOINT_SPLITS
+    /* TetGen's way: one point at the midpoint, then flips on each half, instead of one
+     * point per crossed edge / face (the paper's pipels, kept for short pipes and as the
+     * fallback once the split budget of this input edge is used up) */
+    uint32_t nreal = 0;
+    for (uint32_t k = 0; k < c->pipe.n; k++)
+      nreal += !c->pipe.pl[k].ghost;
+    if (nreal > 2 && nsplit < TR_EDGE_MIDPOINT_SPLITS && !c->opt.no_midpoints) {
+      uint32_t mid;
+      int ok;
+      TR_CHECK(tr_pipe_split_mid(m, v0, v1, &c->pipe, &mid, &ok));
+      if (ok) {
+        nsplit++;
+        *npoints += 1;
+        c->est.steiner_points++;
+        c->est.midpoints++;
+        uint32_t four[4] = {mid, v1, v0, mid};
+        for (int k = 0; k < 4; k++)
+          TR_CHECK(tr_u32buf_push(&c->stack, four[k]));
+        continue;
+      }
+    }
+#endif
     uint32_t nadd;
     TR_CHECK(tr_pipe_add_steiner(m, v0, v1, &c->pipe, &nadd));
     *npoints += nadd;
@@ -294,13 +333,13 @@ static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
   for (uint32_t k = 0; k < nmiss && s == TR_OK; k++) {
     int complete;
     uint32_t np;
-    uint32_t sw = c->est.by_swap23 + c->est.by_swap44;
+    uint32_t sw = c->est.by_swap23 + c->est.by_swap44 + c->est.by_flips;
     if ((s = recover_one(c, missing[k], 0, &complete, &np)) != TR_OK) {
       s = edge_fail(c, missing[k], s);
       break;
     }
     left[k] = !complete;
-    if (complete && c->est.by_swap23 + c->est.by_swap44 > sw)
+    if (complete && c->est.by_swap23 + c->est.by_swap44 + c->est.by_flips > sw)
       st->recovered_by_swap++;
     else if (complete)
       st->through_vertices++;
@@ -328,6 +367,13 @@ static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
     st->swap44 = c->est.by_swap44;
     st->split_at_vertex = c->est.split_at_vertex;
     st->ghosts_split = c->est.ghosts_split;
+    st->flip23 = c->est.flip23;
+    st->flip32 = c->est.flip32;
+    st->flip44 = c->est.flip44;
+    st->flipn = c->est.flipn;
+    st->flip_hull = c->est.flip_hull;
+    st->flips_undone = c->est.flips_undone;
+    st->midpoints = c->est.midpoints;
     for (int k = 0; k < TR_PK_COUNT; k++)
       st->pipels[k] = c->est.pipels[k];
     for (int k = 0; k < 16; k++)
@@ -342,6 +388,13 @@ done:
 tr_status tr_recover_edges(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
                            tr_edge_chains *chains, tr_edge_recovery_stats *st)
 {
+  return tr_recover_edges_ex(m, edges, n, NULL, chains, st);
+}
+
+tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
+                              const tr_edge_recovery_opts *opt, tr_edge_chains *chains,
+                              tr_edge_recovery_stats *st)
+{
   memset(chains, 0, sizeof *chains);
   memset(st, 0, sizeof *st);
   TR_CHECK(check_input(m, edges, n));
@@ -351,6 +404,8 @@ tr_status tr_recover_edges(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
   c.edges = edges;
   c.n = n;
   c.nv0 = m->nv;
+  if (opt)
+    c.opt = *opt;
   tr_status s = run(&c, chains, st);
   tr_edgeset_free(&c.cons);
   tr_u32buf_free(&c.stack);

@@ -1,6 +1,7 @@
 /* Stage 2 of the pipeline: recovery of every missing input edge (the paper's "RECOVERY OF
- * MISSING EDGES"): first the swaps (Swap23, Swap44) over all missing edges, then Steiner
- * points pipel by pipel for those the swaps could not recover.
+ * MISSING EDGES"): first the swaps (Swap23, Swap44) and the general flips of flip.h over
+ * all missing edges, then Steiner points (midpoint splits, then pipel by pipel) for those
+ * the flips could not recover (see recover_edges.c).
  *
  * Input edges are given as pairs of mesh vertex ids (the PLC's points are the first mesh
  * vertices, duplicates already merged). On success every input edge is a chain of
@@ -29,7 +30,7 @@ uint32_t tr_edge_chains_find(const tr_edge_chains *c, const uint32_t *edges, uin
 #define TR_EDGE_PIPEL_KINDS 7
 typedef struct tr_edge_recovery_stats {
   uint64_t missing_edges;          /* input edges not mesh edges after Delaunay */
-  uint64_t recovered_by_swap;      /* by Swap23 / Swap44 alone */
+  uint64_t recovered_by_swap;      /* by Swap23 / Swap44 / general flips alone */
   uint64_t points_added;           /* Steiner points on edges */
   /* Details (added by the edge recovery work; the three rows above are the paper's). A
    * missing edge is counted in exactly one of recovered_by_swap (no Steiner point, at
@@ -45,6 +46,12 @@ typedef struct tr_edge_recovery_stats {
   uint64_t pipels[TR_EDGE_PIPEL_KINDS];
   /* decomposed pipels by raw type (second << 2 | first, classify.h's TR_NOD..TR_FAC) */
   uint64_t pipels_raw[16];
+  /* general flips kept (flip.h): Swap23 on a crossed face, edge removal with a shell of
+   * 3, 4, >= 5 tets, 2-2 hull flips; flips tried and undone (the pipe did not shrink) */
+  uint64_t flip23, flip32, flip44, flipn, flip_hull, flips_undone;
+  /* pass 2: sub-segments split at their exact midpoint (one Steiner point each, counted
+   * in points_added) before the halves are tried by flips again */
+  uint64_t midpoints;
 } tr_edge_recovery_stats;
 
 /* edges: 2*n mesh vertex ids, the unique undirected input edges with
@@ -53,5 +60,15 @@ typedef struct tr_edge_recovery_stats {
  * chains keeps that order and direction. */
 tr_status tr_recover_edges(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
                            tr_edge_chains *chains, tr_edge_recovery_stats *st);
+
+/* Switches for tests and comparisons (zero = the default of tr_recover_edges):
+ * no_flips: only the paper's Swap23 / Swap44 before Steiner points (no flip.h flips);
+ * no_midpoints: pass 2 uses the paper's pipels right away (no midpoint splits). */
+typedef struct tr_edge_recovery_opts {
+  int no_flips, no_midpoints;
+} tr_edge_recovery_opts;
+tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
+                              const tr_edge_recovery_opts *opt, tr_edge_chains *chains,
+                              tr_edge_recovery_stats *st);
 
 #endif

@@ -1,4 +1,5 @@
-/* Recovery of one missing facet: Swap32, else clusterel decomposition (see facet.h). */
+/* Recovery of one missing facet: Swap32, general flips, else clusterel decomposition
+ * (see facet.h). */
 #include "recover_facets/facet.h"
 
 #include <stdlib.h>
@@ -10,6 +11,7 @@
 #include "recover_edges/edge_tables.h"
 #include "recover_facets/cluster.h"
 #include "recover_facets/dtype.h"
+#include "recover_facets/flipfacet.h"
 
 /* ---- crossed mesh edges and their Steiner points ---- */
 
@@ -247,7 +249,7 @@ static tr_status plan_clusterel(ctx *cx, const tr_clusterel *c)
       tr_qpoint_init(q);
       tr_status st = tr_cluster_make_h(cs, pts, q);
       if (st == TR_OK)
-        st = tr_mesh_add_steiner(m, q, &ids[TR_DV_H]);
+        st = tr_mesh_add_constructed(m, q, &ids[TR_DV_H]);
       if (st != TR_OK) {
         tr_qpoint_clear(q);
         free(q);
@@ -342,7 +344,7 @@ static tr_status make_cuts(ctx *cx, const tr_clusterel *cl, uint32_t ncl, uint32
       st = tr_error(TR_ERR_INTERNAL, "facet %u: edge %u-%u parallel to its plane", cx->idx,
                     cx->cuts[i].u, cx->cuts[i].v);
     if (st == TR_OK)
-      st = tr_mesh_add_steiner(m, q, &cx->cuts[i].p);
+      st = tr_mesh_add_constructed(m, q, &cx->cuts[i].p);
     if (st != TR_OK) {
       tr_qpoint_clear(q);
       free(q);
@@ -506,12 +508,27 @@ tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t
     free(cl);
     return st;
   }
-  int done = 0;
+  int done = 0, by_flips = 0;
   if (!(opt && opt->no_swap))
     st = try_swap32(m, e, f, g, cl, ncl, &done);
+  if (st == TR_OK && !done && !(opt && (opt->no_swap || opt->no_flips))) {
+    /* general flips before any Steiner point (flipfacet.h) */
+    int changed = 0, clear = 0;
+    st = tr_facet_try_flips(m, e, f, g, opt ? opt->guard : NULL, opt ? opt->guard_ud : NULL,
+                            d ? &d->flips : NULL, &changed, &clear);
+    if (st == TR_OK && changed) {
+      free(cl);
+      cl = NULL;
+      ncl = 0;
+      st = tr_cluster_collect(m, e, f, g, &cl, &ncl);
+      done = by_flips = clear;
+    }
+  }
   if (st == TR_OK && done) {
-    *outcome = TR_FACET_BY_SWAP32;
-    if (d)
+    *outcome = by_flips ? TR_FACET_BY_FLIPS : TR_FACET_BY_SWAP32;
+    if (d && by_flips)
+      d->by_flips++;
+    else if (d)
       d->swap32++;
   } else if (st == TR_OK) {
     ctx cx;
@@ -531,6 +548,8 @@ tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t
   TR_CHECK(tr_facet_faces(m, idx, e, f, g, &present, faces));
   if (!present)
     return tr_error(TR_ERR_INTERNAL, "facet %u (%u %u %u) still missing after %s", idx, e, f, g,
-                    *outcome == TR_FACET_BY_SWAP32 ? "Swap32" : "clusterel decomposition");
+                    *outcome == TR_FACET_BY_SWAP32  ? "Swap32"
+                    : *outcome == TR_FACET_BY_FLIPS ? "flips"
+                                                    : "clusterel decomposition");
   return TR_OK;
 }

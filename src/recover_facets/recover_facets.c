@@ -2,8 +2,81 @@
 #include "recover_facets/recover_facets.h"
 
 #include <stdlib.h>
+#include <string.h>
 
+#include "recover_edges/edgeset.h"
 #include "recover_facets/facet.h"
+
+/* The sub-faces listed so far (sorted triples, open addressing, fixed hash: no seed) and
+ * the constraint edges: what the flips of later facets must keep. */
+typedef struct keep {
+  tr_edgeset cons;
+  uint32_t *f; /* 3 per slot, f[3i] == TR_NONE: empty */
+  uint32_t n, cap;
+} keep;
+
+static void sort3(const uint32_t *v, uint32_t o[3])
+{
+  uint32_t a = v[0], b = v[1], c = v[2], t;
+  if (a > b) { t = a; a = b; b = t; }
+  if (b > c) { t = b; b = c; c = t; }
+  if (a > b) { t = a; a = b; b = t; }
+  o[0] = a;
+  o[1] = b;
+  o[2] = c;
+}
+
+static uint32_t face_slot(const keep *k, const uint32_t o[3])
+{
+  uint64_t h = o[0] * 0x9e3779b97f4a7c15ull ^ o[1] * 0xc2b2ae3d27d4eb4full ^
+               o[2] * 0x165667b19e3779f9ull;
+  uint32_t i = (uint32_t)(h >> 32) & (k->cap - 1);
+  while (k->f[3 * (size_t)i] != TR_NONE &&
+         (k->f[3 * (size_t)i] != o[0] || k->f[3 * (size_t)i + 1] != o[1] ||
+          k->f[3 * (size_t)i + 2] != o[2]))
+    i = (i + 1) & (k->cap - 1);
+  return i;
+}
+
+static tr_status keep_face(keep *k, const uint32_t *v)
+{
+  if (2 * (k->n + 1) > k->cap) {
+    uint32_t nc = k->cap ? 2 * k->cap : 1024, *old = k->f, oc = k->cap;
+    k->f = malloc(3 * (size_t)nc * sizeof *k->f);
+    if (!k->f) {
+      k->f = old;
+      return tr_error(TR_ERR_NOMEM, "out of memory for the sub-face set");
+    }
+    memset(k->f, 0xff, 3 * (size_t)nc * sizeof *k->f);
+    k->cap = nc;
+    for (uint32_t i = 0; i < oc; i++)
+      if (old[3 * (size_t)i] != TR_NONE) {
+        uint32_t j = face_slot(k, old + 3 * (size_t)i);
+        memcpy(k->f + 3 * (size_t)j, old + 3 * (size_t)i, 3 * sizeof *old);
+      }
+    free(old);
+  }
+  uint32_t o[3];
+  sort3(v, o);
+  uint32_t j = face_slot(k, o);
+  if (k->f[3 * (size_t)j] == TR_NONE) {
+    memcpy(k->f + 3 * (size_t)j, o, sizeof o);
+    k->n++;
+  }
+  return TR_OK;
+}
+
+static int keep_guard(void *ud, const uint32_t *v, int nv)
+{
+  const keep *k = ud;
+  if (nv == 2)
+    return tr_edgeset_get(&k->cons, v[0], v[1]) != TR_EDGESET_NONE;
+  if (k->cap == 0)
+    return 0;
+  uint32_t o[3];
+  sort3(v, o);
+  return k->f[3 * (size_t)face_slot(k, o)] != TR_NONE;
+}
 
 void tr_subfaces_free(tr_subfaces *s)
 {
@@ -16,15 +89,28 @@ void tr_subfaces_free(tr_subfaces *s)
   s->n = 0;
 }
 
-/* `chains` is not needed: the cluster of a facet is found from its corners, and its
- * boundary vertices (the chains' Steiner points) show up as on-plane clusterel nodes. */
+/* `chains` only feeds the set of constraint edges the flips must keep (the pieces of the
+ * input edges): the cluster of a facet is found from its corners, and its boundary
+ * vertices (the chains' Steiner points) show up as on-plane clusterel nodes. */
 tr_status tr_recover_facets(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                             const tr_edge_chains *chains, tr_subfaces *sub,
                             tr_facet_recovery_stats *st)
 {
-  (void)chains;
   tr_facet_detail d = {0};
-  tr_facet_recovery_stats s = {0, 0, 0};
+  tr_facet_opts opt = {0};
+  keep kp;
+  memset(&kp, 0, sizeof kp);
+  for (uint32_t c = 0; chains && c < chains->n; c++)
+    for (uint32_t k = chains->start[c]; k + 1 < chains->start[c + 1]; k++) {
+      tr_status e2 = tr_edgeset_put(&kp.cons, chains->v[k], chains->v[k + 1], c);
+      if (e2 != TR_OK) {
+        tr_edgeset_free(&kp.cons);
+        return e2;
+      }
+    }
+  opt.guard = keep_guard;
+  opt.guard_ud = &kp;
+  tr_facet_recovery_stats s = {0};
   if (sub) {
     sub->n = 0;
     sub->v = NULL;
@@ -38,18 +124,29 @@ tr_status tr_recover_facets(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
   for (uint32_t i = 0; i < n && r == TR_OK; i++) {
     int outcome;
     size_t before = v.n;
-    r = tr_recover_facet(m, i, tris[3 * i], tris[3 * i + 1], tris[3 * i + 2], NULL, &d,
-                         &outcome, sub ? &v : NULL);
+    r = tr_recover_facet(m, i, tris[3 * i], tris[3 * i + 1], tris[3 * i + 2], &opt, &d,
+                         &outcome, &v);
     if (r != TR_OK)
       break;
     if (outcome != TR_FACET_PRESENT)
       s.missing_facets++;
-    if (outcome == TR_FACET_BY_SWAP32)
+    if (outcome == TR_FACET_BY_SWAP32 || outcome == TR_FACET_BY_FLIPS)
       s.recovered_by_swap++;
-    for (size_t k = before; k < v.n && r == TR_OK; k += 3)
+    for (size_t k = before; k < v.n && r == TR_OK; k += 3) {
       r = tr_u32buf_push(&tri, i);
+      if (r == TR_OK)
+        r = keep_face(&kp, v.a + k);
+    }
   }
+  tr_edgeset_free(&kp.cons);
+  free(kp.f);
   s.points_added = d.steiner + d.h_points;
+  s.by_flips = d.by_flips;
+  s.flip23 = d.flips.flip23;
+  s.flip32 = d.flips.flip32;
+  s.flip44 = d.flips.flip44;
+  s.flipn = d.flips.flipn;
+  s.flips_undone = d.flips.undone;
   if (st)
     *st = s;
   if (r != TR_OK || !sub) {

@@ -1,6 +1,6 @@
 /* Stage 3 of the pipeline: recovery of every missing input triangle (the paper's
- * "RECOVERY OF MISSING FACETS"): Swap32 first, then clusterel decomposition with exact
- * Steiner points on the facet.
+ * "RECOVERY OF MISSING FACETS"): Swap32 first, then the general flips (flipfacet.h), then
+ * clusterel decomposition with exact Steiner points on the facet.
  *
  * Precondition: tr_recover_edges succeeded, so every edge of every input triangle is a
  * chain of mesh edges. On success every input triangle is exactly the union of the mesh
@@ -24,8 +24,11 @@ void tr_subfaces_free(tr_subfaces *s);
 
 typedef struct tr_facet_recovery_stats {
   uint64_t missing_facets;     /* input triangles not unions of mesh faces after edges */
-  uint64_t recovered_by_swap;  /* by Swap32 alone */
+  uint64_t recovered_by_swap;  /* by Swap32 or general flips alone */
   uint64_t points_added;       /* Steiner points on facets (and the extra points H) */
+  /* details: facets recovered by general flips (part of recovered_by_swap), the flips
+   * kept by kind (Swap23, edge removal with a shell of 3, 4, >= 5 tets), flips undone */
+  uint64_t by_flips, flip23, flip32, flip44, flipn, flips_undone;
 } tr_facet_recovery_stats;
 
 /* tris: 3*n mesh vertex ids (outward oriented), chains from edge recovery. */

@@ -288,6 +288,29 @@ static int sphere_and_centre(void)
   return r;
 }
 
+/* n points on each of two skew lines: the only tets are (a_i, a_i+1, b_j, b_j+1), so
+ * (n-1)^2 tets from 2n points, far past the store's per-point estimate: the tet arrays
+ * grow inside an insertion (regression: a stale pointer to the neighbour array after
+ * that reallocation corrupted the mesh; ASan saw it on CGAL's cheese.off). */
+static int skew_lines(uint32_t n)
+{
+  double *p = alloc_pts(2 * n);
+  for (uint32_t i = 0; i < n; i++) {
+    p[6 * i] = i, p[6 * i + 1] = 0, p[6 * i + 2] = 0;
+    p[6 * i + 3] = 0, p[6 * i + 4] = i, p[6 * i + 5] = 1;
+  }
+  struct tr_mesh *m = NULL;
+  int r = run("points on two skew lines", p, 2 * n, (double)(n - 1) * (n - 1), &m);
+  if (r == 0) {
+    EXPECT(tr_mesh_num_tets(m) == (uint64_t)(n - 1) * (n - 1),
+           "two skew lines of %u points: %llu tets, want %u", n,
+           (unsigned long long)tr_mesh_num_tets(m), (n - 1) * (n - 1));
+    tr_mesh_destroy(m);
+  }
+  free(p);
+  return r;
+}
+
 static int deterministic(void)
 {
   uint32_t n = 20000;
@@ -333,6 +356,8 @@ int main(int argc, char **argv)
     return degenerate_inputs();
   if (!strcmp(c, "sphere"))
     return sphere_and_centre();
+  if (!strcmp(c, "skew_lines"))
+    return skew_lines(150);
   if (!strcmp(c, "deterministic"))
     return deterministic();
   fprintf(stderr, "unknown case %s\n", c);

@@ -132,7 +132,7 @@ static int run(const char *name, tr_plc *plc, int allow_open, int smooth, double
     /* nothing was swapped: the mesh must conform to the caller's own PLC too (whose
      * orientation may not be repaired: take the volume from the meshed one) */
     if (vol6 == 0)
-      tr_input_volume6(used, v);
+      tr_input_domain_volume6(used, v);
     s = tr_check_conformity(m, plc, v, cf);
     EXPECT(s == TR_OK, "%s: conformity to the original PLC: %s", name, tr_last_error());
   }
@@ -255,8 +255,11 @@ static void t_two_boxes(void)
   box(&b, lo, hi, 1, -1);
   box(&b, lo2, hi2, 1, 0); /* the shared face x = 1 once */
   tr_plc *p = make(&b);
-  /* edges of the shared face have 3 triangles: allowed with allow_open */
-  int r = run("two_boxes_shared_face", p, 1, 1, 6.0 * 2, NULL, NULL);
+  /* edges of the shared face have 3 triangles: a valid PLC without allow_open; the
+   * conformity volume comes from the input's cell analysis (vol6 = 0) and must agree */
+  int r = run("two_boxes_shared_face", p, 0, 1, 6.0 * 2, NULL, NULL);
+  EXPECT(r == 2, "two_boxes_shared_face: expected 2 regions, got %d", r);
+  r = run("two_boxes_shared_face", p, 0, 1, 0, NULL, NULL);
   EXPECT(r == 2, "two_boxes_shared_face: expected 2 regions, got %d", r);
   tr_plc_destroy(p);
 }
@@ -272,7 +275,10 @@ static void t_fin(void)
   tri(&b, q0, q1, q2);
   tri(&b, q0, q2, q3);
   tr_plc *p = make(&b);
-  int r = run("box_with_internal_facet", p, 1, 1, 6.0 * 8, NULL, NULL);
+  /* a crack strictly inside the box: valid without allow_open */
+  int r = run("box_with_internal_facet", p, 0, 1, 6.0 * 8, NULL, NULL);
+  EXPECT(r == 1, "box_with_internal_facet: expected 1 region, got %d", r);
+  r = run("box_with_internal_facet", p, 0, 1, 0, NULL, NULL);
   EXPECT(r == 1, "box_with_internal_facet: expected 1 region, got %d", r);
   tr_plc_destroy(p);
 }

@@ -27,6 +27,8 @@
 #include "recover_edges/recover_edges.h"
 
 static const unsigned CHECKS = TR_CHK_TOPOLOGY;
+/* recovery switches: zero (the default pipeline) except in the coverage mode */
+static tr_edge_recovery_opts g_opt;
 
 static const char *const KIND[TR_EDGE_PIPEL_KINDS] = {
     "case1(T5)", "case2-I(T6)", "case2-II-S(T6)", "case2-II-Z(T6)",
@@ -215,7 +217,7 @@ static int run_stage(struct tr_mesh *m, const uint32_t *edges, uint32_t n, int b
   tr_edge_chains ch;
   int bad = 0;
   if (s == TR_OK)
-    s = tr_recover_edges(m, edges, n, &ch, st);
+    s = tr_recover_edges_ex(m, edges, n, &g_opt, &ch, st);
   if (s != TR_OK) {
     bad = fail(what, s);
   } else {
@@ -491,6 +493,8 @@ static int test_badinput(void)
  * swap of the random meshes: the spheres mode requires it.) */
 static int test_coverage(void)
 {
+  /* the paper's path: these counters are about its tables */
+  g_opt.no_flips = g_opt.no_midpoints = 1;
   tr_edge_recovery_stats tot;
   memset(&tot, 0, sizeof tot);
   static const uint64_t seeds[] = {1, 2, 3};

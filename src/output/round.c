@@ -1,0 +1,340 @@
+/* Rounding Steiner points to doubles and its repair: see round.h. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "predicates.h"
+#include "round.h"
+
+static int kept(const struct tr_mesh *m, uint32_t t)
+{
+  return tr_tet_is_real(m, t) && !(m->flags && (m->flags[t] & TR_TF_OUTER));
+}
+
+static int steiner(const struct tr_mesh *m, uint32_t v)
+{
+  return m->vq && m->vq[v];
+}
+
+static int positive(const struct tr_mesh *m, uint32_t t)
+{
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  const double *x = m->xyz;
+  return tr_orient3d(x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2],
+                     x + 3 * (size_t)v[3]) > 0;
+}
+
+uint64_t tr_round_count_nonpositive(const struct tr_mesh *m, uint32_t *first)
+{
+  uint64_t n = 0;
+  if (first)
+    *first = TR_NONE;
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (kept(m, t) && !positive(m, t)) {
+      if (first && n == 0)
+        *first = t;
+      n++;
+    }
+  return n;
+}
+
+/* Tets incident to each Steiner vertex, CSR: the tets of v are tet[start[v]..start[v+1]).
+ * Built from the tet list rather than by a Ball walk because the kept tets around a point
+ * need not be face-connected (two regions touching along an edge). */
+typedef struct {
+  uint32_t *start, *tet;
+} star_index;
+
+static tr_status stars_build(const struct tr_mesh *m, star_index *S)
+{
+  S->start = calloc((size_t)m->nv + 1, sizeof *S->start);
+  S->tet = NULL;
+  if (!S->start)
+    return tr_error(TR_ERR_NOMEM, "out of memory indexing Steiner points");
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (kept(m, t))
+      for (int k = 0; k < 4; k++)
+        if (steiner(m, m->tv[4 * (size_t)t + k]))
+          S->start[m->tv[4 * (size_t)t + k] + 1]++;
+  for (uint32_t v = 0; v < m->nv; v++)
+    S->start[v + 1] += S->start[v];
+  S->tet = malloc(sizeof *S->tet * (S->start[m->nv] ? S->start[m->nv] : 1));
+  uint32_t *fill = malloc(sizeof *fill * (m->nv ? m->nv : 1));
+  if (!S->tet || !fill) {
+    free(fill);
+    return tr_error(TR_ERR_NOMEM, "out of memory indexing Steiner points");
+  }
+  memcpy(fill, S->start, sizeof *fill * m->nv);
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (kept(m, t))
+      for (int k = 0; k < 4; k++) {
+        uint32_t v = m->tv[4 * (size_t)t + k];
+        if (steiner(m, v))
+          S->tet[fill[v]++] = t;
+      }
+  free(fill);
+  return TR_OK;
+}
+
+/* The first tet of v's star (from index *hint on, cyclically) that is not strictly
+ * positive and does not contain vertex `except` (TR_NONE: none excepted), TR_NONE if
+ * there is none. Starting at the last failure makes rejected candidates cheap: the tet
+ * that was too thin for the previous one is usually too thin again. */
+static uint32_t star_failure(const struct tr_mesh *m, const star_index *S, uint32_t v,
+                             uint32_t except, uint32_t *hint)
+{
+  uint32_t a = S->start[v], n = S->start[v + 1] - a;
+  for (uint32_t i = 0; i < n; i++) {
+    uint32_t j = (*hint + i) % n, t = S->tet[a + j];
+    if (except != TR_NONE && tr_ncode(m, t, except) >= 0)
+      continue;
+    if (!positive(m, t)) {
+      *hint = j;
+      return t;
+    }
+  }
+  return TR_NONE;
+}
+
+/* Offsets (i, j, k) of the search cube, ordered as round.h says, (0,0,0) excluded. */
+typedef struct {
+  int8_t d[3];
+} offset;
+
+static int offset_norm(const offset *o)
+{
+  return o->d[0] * o->d[0] + o->d[1] * o->d[1] + o->d[2] * o->d[2];
+}
+
+static int cmp_offset(const void *pa, const void *pb)
+{
+  const offset *a = pa, *b = pb;
+  int na = offset_norm(a), nb = offset_norm(b);
+  if (na != nb)
+    return na < nb ? -1 : 1;
+  for (int k = 0; k < 3; k++)
+    if (a->d[k] != b->d[k])
+      return a->d[k] < b->d[k] ? -1 : 1;
+  return 0;
+}
+
+static tr_status offsets_build(offset **out, size_t *n)
+{
+  const int R = TR_ROUND_RADIUS, w = 2 * R + 1;
+  offset *o = malloc(sizeof *o * (size_t)w * w * w);
+  if (!o)
+    return tr_error(TR_ERR_NOMEM, "out of memory for the rounding search");
+  size_t c = 0;
+  for (int i = -R; i <= R; i++)
+    for (int j = -R; j <= R; j++)
+      for (int k = -R; k <= R; k++)
+        if (i || j || k) {
+          o[c].d[0] = (int8_t)i;
+          o[c].d[1] = (int8_t)j;
+          o[c].d[2] = (int8_t)k;
+          c++;
+        }
+  qsort(o, c, sizeof *o, cmp_offset);
+  *out = o;
+  *n = c;
+  return TR_OK;
+}
+
+/* The candidate doubles of Steiner vertex v: ax[k][R + s] = its nearest double moved by
+ * s ulp steps on axis k. */
+typedef double cand_axes[3][2 * TR_ROUND_RADIUS + 1];
+static void candidates(const struct tr_mesh *m, uint32_t v, cand_axes ax)
+{
+  const int R = TR_ROUND_RADIUS;
+  const double *near = m->vq[v]->near;
+  for (int k = 0; k < 3; k++) {
+    ax[k][R] = near[k];
+    for (int s = 1; s <= R; s++) {
+      ax[k][R + s] = nextafter(ax[k][R + s - 1], INFINITY);
+      ax[k][R - s] = nextafter(ax[k][R - s + 1], -INFINITY);
+    }
+  }
+}
+
+/* Puts v at candidate c; 0 if a coordinate is not finite. */
+static int place(struct tr_mesh *m, uint32_t v, cand_axes ax, const offset *c)
+{
+  double *x = m->xyz + 3 * (size_t)v;
+  int ok = 1;
+  for (int k = 0; k < 3; k++) {
+    x[k] = ax[k][TR_ROUND_RADIUS + c->d[k]];
+    ok &= isfinite(x[k]) != 0;
+  }
+  return ok;
+}
+
+/* Searches the first of the noff candidates of Steiner vertex v that makes its whole star
+ * strictly positive; on success m->xyz of v holds it and 1 is returned, else v is back
+ * where it was and 0 is returned. */
+static int search(struct tr_mesh *m, const star_index *S, uint32_t v, const offset *off,
+                  size_t noff)
+{
+  cand_axes ax;
+  candidates(m, v, ax);
+  double *x = m->xyz + 3 * (size_t)v, was[3];
+  memcpy(was, x, sizeof was);
+  uint32_t hint = 0;
+  for (size_t c = 0; c < noff; c++)
+    if (place(m, v, ax, &off[c]) && star_failure(m, S, v, TR_NONE, &hint) == TR_NONE)
+      return 1;
+  memcpy(x, was, sizeof was);
+  return 0;
+}
+
+/* When v alone cannot be repaired, a Steiner neighbour w may be what leaves no room (a
+ * sliver between two Steiner points: v's tets need w farther from their plane). Tries w's
+ * candidates that keep w's tets without v positive, each with a search for v, both within
+ * the first npair offsets; neighbours in index order. 1 on success (both placed). */
+static int search_pair(struct tr_mesh *m, const star_index *S, uint32_t v, const offset *off,
+                       size_t npair)
+{
+  uint32_t a = S->start[v], n = S->start[v + 1] - a, last = TR_NONE;
+  for (;;) {
+    /* the smallest Steiner neighbour above `last` */
+    uint32_t w = TR_NONE;
+    for (uint32_t i = 0; i < n; i++)
+      for (int k = 0; k < 4; k++) {
+        uint32_t u = m->tv[4 * (size_t)S->tet[a + i] + k];
+        if (u != v && steiner(m, u) && (last == TR_NONE || u > last) && (w == TR_NONE || u < w))
+          w = u;
+      }
+    if (w == TR_NONE)
+      return 0;
+    last = w;
+    cand_axes ax;
+    candidates(m, w, ax);
+    double *x = m->xyz + 3 * (size_t)w, was[3];
+    memcpy(was, x, sizeof was);
+    uint32_t hint = 0;
+    for (size_t c = 0; c < npair; c++)
+      if (place(m, w, ax, &off[c]) && star_failure(m, S, w, v, &hint) == TR_NONE &&
+          search(m, S, v, off, npair))
+        return 1;
+    memcpy(x, was, sizeof was);
+  }
+}
+
+/* Number of tets of v's star that are not strictly positive, stopping at `cap`. */
+static uint32_t star_bad(const struct tr_mesh *m, const star_index *S, uint32_t v, uint32_t cap)
+{
+  uint32_t n = 0;
+  for (uint32_t i = S->start[v]; i < S->start[v + 1] && n < cap; i++)
+    n += !positive(m, S->tet[i]);
+  return n;
+}
+
+/* For a point stuck even with a neighbour: the first candidate with the fewest
+ * non-positive tets in its star, taken if that is fewer than now. This lowers the global
+ * count too (only v's tets change), and gives the neighbours of a cluster of nearly
+ * degenerate Steiner points room one after the other. 1 iff v moved. */
+static int descend(struct tr_mesh *m, const star_index *S, uint32_t v, const offset *off,
+                   size_t noff)
+{
+  cand_axes ax;
+  candidates(m, v, ax);
+  double *x = m->xyz + 3 * (size_t)v, was[3];
+  memcpy(was, x, sizeof was);
+  uint32_t best = star_bad(m, S, v, UINT32_MAX);
+  size_t best_c = noff;
+  for (size_t c = 0; c < noff && best > 0; c++)
+    if (place(m, v, ax, &off[c])) {
+      uint32_t n = star_bad(m, S, v, best);
+      if (n < best) {
+        best = n;
+        best_c = c;
+      }
+    }
+  if (best_c == noff) {
+    memcpy(x, was, sizeof was);
+    return 0;
+  }
+  place(m, v, ax, &off[best_c]);
+  return 1;
+}
+
+typedef struct {
+  struct tr_mesh *m;
+  const star_index *S;
+  const offset *off;
+  size_t noff, npair;
+} search_ctx;
+
+/* One pass over the Steiner points in index order, moving each whose star has a tet that
+ * is not strictly positive: alone (pairs 0), with a neighbour (1), or to fewer bad tets (2). Returns whether
+ * something moved; *fail_v, *fail_t = the first point left stuck and its bad tet. */
+static int one_round(const search_ctx *c, int pairs, uint32_t *fail_v, uint32_t *fail_t)
+{
+  int progress = 0;
+  *fail_v = *fail_t = TR_NONE;
+  for (uint32_t v = 0; v < c->m->nv; v++) {
+    uint32_t hint = 0, t;
+    if (!steiner(c->m, v) || (t = star_failure(c->m, c->S, v, TR_NONE, &hint)) == TR_NONE)
+      continue;
+    if (pairs == 2   ? descend(c->m, c->S, v, c->off, c->noff)
+        : pairs == 1 ? search_pair(c->m, c->S, v, c->off, c->npair)
+                     : search(c->m, c->S, v, c->off, c->noff))
+      progress = 1;
+    else if (*fail_v == TR_NONE) {
+      *fail_v = v;
+      *fail_t = t;
+    }
+  }
+  return progress;
+}
+
+tr_status tr_round_steiner(struct tr_mesh *m, uint64_t *repaired)
+{
+  *repaired = 0;
+  if (!m->vq)
+    return TR_OK;
+  /* Start from the nearest doubles whatever xyz held, so the result depends only on the
+   * exact mesh. */
+  for (uint32_t v = 0; v < m->nv; v++)
+    if (steiner(m, v))
+      memcpy(m->xyz + 3 * (size_t)v, m->vq[v]->near, 3 * sizeof(double));
+  if (tr_round_count_nonpositive(m, NULL) == 0)
+    return TR_OK;
+  star_index S = {NULL, NULL};
+  search_ctx c = {m, &S, NULL, 0, 0};
+  offset *off = NULL;
+  tr_status st = stars_build(m, &S);
+  if (st == TR_OK)
+    st = offsets_build(&off, &c.noff);
+  c.off = off;
+  while (c.npair < c.noff && offset_norm(&off[c.npair]) <= TR_ROUND_PAIR_RADIUS2)
+    c.npair++;
+  uint32_t fail_v = TR_NONE, fail_t = TR_NONE;
+  /* Single moves until a round moves nothing; then, if points are stuck, one round of
+   * pair moves, and single moves again after any pair helped. */
+  while (st == TR_OK) {
+    while (one_round(&c, 0, &fail_v, &fail_t))
+      ;
+    if (fail_v == TR_NONE)
+      break;
+    if (!one_round(&c, 1, &fail_v, &fail_t) && !one_round(&c, 2, &fail_v, &fail_t))
+      break;
+  }
+  for (uint32_t v = 0; v < m->nv; v++)
+    if (steiner(m, v))
+      *repaired += memcmp(m->xyz + 3 * (size_t)v, m->vq[v]->near, 3 * sizeof(double)) != 0;
+  if (st == TR_OK && fail_v != TR_NONE) {
+    const double *x = m->vq[fail_v]->near;
+    const uint32_t *tv = m->tv + 4 * (size_t)fail_t;
+    st = tr_error(TR_ERR_INVALID_MESH,
+                  "Steiner point %u near (%.17g, %.17g, %.17g): no double point within %d "
+                  "ulps per axis keeps its %u tets strictly positive (tet %u (%u %u %u %u) "
+                  "stays flat or inverted); the exact mesh is valid: write it with --exact to a "
+                  ".node file",
+                  fail_v, x[0], x[1], x[2], TR_ROUND_RADIUS,
+                  S.start[fail_v + 1] - S.start[fail_v], fail_t, tv[0], tv[1], tv[2], tv[3]);
+  }
+  free(off);
+  free(S.start);
+  free(S.tet);
+  return st;
+}

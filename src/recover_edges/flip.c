@@ -1,0 +1,472 @@
+/* Swap23 and edge removal with exact validity tests (see flip.h). Both build the new
+ * tets' vertex lists, test every real one strictly positive, and leave the relinking to
+ * tr_mesh_replace, which also refuses (mesh unchanged) a set that does not have the old
+ * region's boundary. */
+#include "recover_edges/flip.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int positive(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
+{
+  tr_point p[4] = {tr_mesh_point(m, a), tr_mesh_point(m, b), tr_mesh_point(m, c),
+                   tr_mesh_point(m, d)};
+  return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) > 0;
+}
+
+static int orient(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
+{
+  tr_point p[4] = {tr_mesh_point(m, a), tr_mesh_point(m, b), tr_mesh_point(m, c),
+                   tr_mesh_point(m, d)};
+  return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]);
+}
+
+/* A cheap shape measure in doubles (only ranks valid triangulations, never decides
+ * validity): 6 * volume / (sum of squared edge lengths)^(3/2), scale free. */
+static double quality(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
+{
+  const double *p[4] = {m->xyz + 3 * (size_t)a, m->xyz + 3 * (size_t)b, m->xyz + 3 * (size_t)c,
+                        m->xyz + 3 * (size_t)d};
+  double u[3], v[3], w[3], s = 0;
+  for (int i = 0; i < 3; i++) {
+    u[i] = p[1][i] - p[0][i];
+    v[i] = p[2][i] - p[0][i];
+    w[i] = p[3][i] - p[0][i];
+  }
+  double vol = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+               u[2] * (v[0] * w[1] - v[1] * w[0]);
+  for (int i = 0; i < 4; i++)
+    for (int j = i + 1; j < 4; j++)
+      for (int k = 0; k < 3; k++) {
+        double e = p[i][k] - p[j][k];
+        s += e * e;
+      }
+  return s > 0 ? fabs(vol) / (s * sqrt(s)) : 0;
+}
+
+static void record(tr_flip_rec *rec, const uint32_t *newv, const uint32_t *ids, uint32_t nold,
+                   uint32_t nnew)
+{
+  if (!rec)
+    return;
+  rec->nold = nold;
+  rec->nnew = nnew;
+  memcpy(rec->newid, ids, nnew * sizeof *ids);
+  memcpy(rec->newv, newv, 4 * (size_t)nnew * sizeof *newv);
+}
+
+tr_status tr_flip23(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, void *ud,
+                    tr_flip_rec *rec, int *done)
+{
+  *done = 0;
+  uint32_t c = m->tn[4 * (size_t)t + (size_t)k];
+  if (c == TR_NONE || !tr_tet_is_real(m, t) || !tr_tet_is_real(m, c >> 2))
+    return TR_OK;
+  uint32_t u = c >> 2;
+  const uint32_t *tv = m->tv + 4 * (size_t)t;
+  uint32_t a = tv[k], b = m->tv[4 * (size_t)u + (c & 3)];
+  uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
+  if (guard && guard(ud, f, 3))
+    return TR_OK;
+  int sg[3];
+  for (int i = 0; i < 3; i++)
+    sg[i] = orient(m, a, b, f[i], f[(i + 1) % 3]);
+  if (sg[0] == 0 || sg[0] != sg[1] || sg[0] != sg[2])
+    return TR_OK;
+  if (sg[0] < 0) {
+    uint32_t x = a;
+    a = b;
+    b = x;
+  }
+  uint32_t newv[12], old[2] = {t, u}, ids[3];
+  for (int i = 0; i < 3; i++) {
+    newv[4 * i] = a;
+    newv[4 * i + 1] = b;
+    newv[4 * i + 2] = f[i];
+    newv[4 * i + 3] = f[(i + 1) % 3];
+  }
+  uint32_t oldv[8];
+  memcpy(oldv, m->tv + 4 * (size_t)t, 4 * sizeof *oldv);
+  memcpy(oldv + 4, m->tv + 4 * (size_t)u, 4 * sizeof *oldv);
+  TR_CHECK(tr_mesh_replace(m, old, 2, newv, 3, ids));
+  if (rec) {
+    memcpy(rec->oldv, oldv, sizeof oldv);
+    rec->hull = 0;
+  }
+  record(rec, newv, ids, 2, 3);
+  *done = 1;
+  return TR_OK;
+}
+
+/* The vertex of tet t that is none of a, b and is shared with tet u. */
+static uint32_t shared_third(const struct tr_mesh *m, uint32_t t, uint32_t u, uint32_t a,
+                             uint32_t b)
+{
+  for (int i = 0; i < 4; i++) {
+    uint32_t v = m->tv[4 * (size_t)t + (size_t)i];
+    if (v != a && v != b && tr_ncode(m, u, v) >= 0)
+      return v;
+  }
+  return TR_NONE;
+}
+
+/* Parity of (p0..p3) as a permutation of tet t's slots: 1 even, 0 odd, -1 not its vertices. */
+static int even_in(const struct tr_mesh *m, uint32_t t, const uint32_t p[4])
+{
+  int pos[4], inv = 0;
+  for (int i = 0; i < 4; i++)
+    if ((pos[i] = tr_ncode(m, t, p[i])) < 0)
+      return -1;
+  for (int i = 0; i < 4; i++)
+    for (int j = i + 1; j < 4; j++)
+      inv += pos[i] > pos[j];
+  return (inv & 1) == 0;
+}
+
+typedef struct ering {
+  const struct tr_mesh *m;
+  uint32_t A, B;
+  uint32_t r[TR_FLIP_MAX_RING];
+  int n;        /* vertices of the polygon to triangulate (real ones) */
+  double val[TR_FLIP_MAX_RING][TR_FLIP_MAX_RING];
+  int8_t cut[TR_FLIP_MAX_RING][TR_FLIP_MAX_RING];
+} ering;
+
+/* Best triangulation of sub-polygon i..j (j - i >= 2): val = min quality, -1 impossible. */
+static void ring_dp(ering *R)
+{
+  int n = R->n;
+  for (int i = 0; i + 1 < n; i++)
+    R->val[i][i + 1] = INFINITY;
+  for (int len = 2; len < n; len++)
+    for (int i = 0; i + len < n; i++) {
+      int j = i + len;
+      double best = -1;
+      int bk = -1;
+      for (int k = i + 1; k < j; k++) {
+        double l = R->val[i][k], r = R->val[k][j];
+        if (l < 0 || r < 0)
+          continue;
+        double q = l < r ? l : r;
+        if (q <= best)
+          continue; /* cannot improve: skip the exact tests */
+        uint32_t x = R->r[i], y = R->r[k], z = R->r[j];
+        if (!positive(R->m, R->A, x, y, z) || !positive(R->m, R->B, z, y, x))
+          continue;
+        double qa = quality(R->m, R->A, x, y, z), qb = quality(R->m, R->B, z, y, x);
+        double qt = qa < qb ? qa : qb;
+        if (qt < q)
+          q = qt;
+        if (q > best) {
+          best = q;
+          bk = k;
+        }
+      }
+      R->val[i][j] = bk < 0 ? -1 : best;
+      R->cut[i][j] = (int8_t)bk;
+    }
+}
+
+/* Emits the tets of the chosen triangulation of i..j. */
+static void ring_emit(const ering *R, int i, int j, uint32_t *newv, uint32_t *nnew)
+{
+  if (j - i < 2)
+    return;
+  int k = R->cut[i][j];
+  uint32_t x = R->r[i], y = R->r[k], z = R->r[j];
+  uint32_t *p = newv + 4 * (size_t)*nnew;
+  p[0] = R->A; p[1] = x; p[2] = y; p[3] = z;
+  p[4] = R->B; p[5] = z; p[6] = y; p[7] = x;
+  *nnew += 2;
+  ring_emit(R, i, k, newv, nnew);
+  ring_emit(R, k, j, newv, nnew);
+}
+
+/* A tet with edge ab, TR_NONE if ab is not a mesh edge (flips made since the caller
+ * listed it may have removed it). */
+static tr_status edge_tet(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t *t)
+{
+  tr_u32buf ball = {0};
+  *t = TR_NONE;
+  tr_status s = tr_ball(m, a, 1, &ball);
+  for (size_t i = 0; s == TR_OK && i < ball.n && *t == TR_NONE; i++)
+    if (tr_ncode(m, ball.a[i], b) >= 0)
+      *t = ball.a[i];
+  tr_u32buf_free(&ball);
+  return s;
+}
+
+tr_status tr_flip_remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
+                              tr_flip_guard guard, void *ud, tr_flip_rec *rec, int *done)
+{
+  *done = 0;
+  uint32_t e2[2] = {a, b};
+  if (a == TR_GHOST || b == TR_GHOST || (guard && guard(ud, e2, 2)))
+    return TR_OK;
+  if (t0 == TR_NONE || tr_tet_is_free(m, t0) || tr_tet_ecode(m, t0, a, b) < 0) {
+    TR_CHECK(edge_tet(m, a, b, &t0));
+    if (t0 == TR_NONE)
+      return TR_OK;
+  }
+  tr_u32buf sh = {0};
+  int closed = 0;
+  tr_status s = tr_shell(m, a, b, t0, &sh, &closed);
+  if (s != TR_OK || !closed || sh.n < 3 || sh.n > TR_FLIP_MAX_RING) {
+    tr_u32buf_free(&sh);
+    return s;
+  }
+  int n = (int)sh.n, g = -1, sign = 0, ok = 1;
+  uint32_t ring[TR_FLIP_MAX_RING], old[TR_FLIP_MAX_RING];
+  memcpy(old, sh.a, sh.n * sizeof *old);
+  tr_u32buf_free(&sh);
+  for (int i = 0; i < n && ok; i++) {
+    ring[i] = shared_third(m, old[i], old[(i + 1) % n], a, b);
+    ok = ring[i] != TR_NONE;
+    if (ring[i] == TR_GHOST) {
+      ok = g < 0;
+      g = i;
+    }
+  }
+  /* tet i = {a, b, ring[i-1], ring[i]}: one parity for all real tets of the shell */
+  for (int i = 0; i < n && ok; i++) {
+    uint32_t p[4] = {a, b, ring[(i + n - 1) % n], ring[i]};
+    if (p[2] == TR_GHOST || p[3] == TR_GHOST)
+      continue;
+    int e = even_in(m, old[i], p);
+    if (e < 0 || (sign && (e ? 1 : -1) != sign))
+      ok = 0;
+    sign = e ? 1 : -1;
+  }
+  if (!ok || !sign)
+    return TR_OK;
+  for (int i = 0; i < n && guard; i++) {
+    uint32_t f[3] = {a, b, ring[i]};
+    if (ring[i] != TR_GHOST && guard(ud, f, 3))
+      return TR_OK;
+  }
+  ering R;
+  R.m = m;
+  R.A = sign > 0 ? a : b; /* now (A, B, ring[i-1], ring[i]) is positive */
+  R.B = sign > 0 ? b : a;
+  /* the ghost, if any, goes last: the real polygon is ring[0..n-2] closed by C-D */
+  R.n = g < 0 ? n : n - 1;
+  for (int i = 0; i < R.n; i++)
+    R.r[i] = ring[(g + 1 + i) % n];
+  if (R.n < 3)
+    return TR_OK;
+  if (g >= 0) {
+    uint32_t C = R.r[0], D = R.r[R.n - 1], X = R.r[1];
+    /* hull faces ABC, BAD coplanar, AB and CD crossing inside both: the new hull faces
+     * ACD, BDC cover the same quad (X is off the plane: tet A B C X is a real shell tet) */
+    if (orient(m, R.A, R.B, C, D) != 0)
+      return TR_OK;
+    int s1 = orient(m, R.A, R.B, C, X), s2 = orient(m, R.A, R.B, D, X);
+    int s3 = orient(m, C, D, R.A, X), s4 = orient(m, C, D, R.B, X);
+    if (!s1 || !s2 || !s3 || !s4 || s1 == s2 || s3 == s4)
+      return TR_OK;
+  }
+  ring_dp(&R);
+  if (R.val[0][R.n - 1] < 0)
+    return TR_OK;
+  uint32_t newv[4 * (2 * TR_FLIP_MAX_RING - 4)], nnew = 0, ids[2 * TR_FLIP_MAX_RING - 4];
+  ring_emit(&R, 0, R.n - 1, newv, &nnew);
+  if (g >= 0) {
+    /* ghosts of ACD and BDC, TR_GHOST in slot 3 (even permutations of (A,C,D,G) and
+     * (B,G,D,C), the orientation the ring order gives them) */
+    uint32_t C = R.r[0], D = R.r[R.n - 1], *p = newv + 4 * (size_t)nnew;
+    p[0] = R.A; p[1] = C; p[2] = D; p[3] = TR_GHOST;
+    p[4] = C; p[5] = R.B; p[6] = D; p[7] = TR_GHOST;
+    nnew += 2;
+  }
+  uint32_t oldv[4 * TR_FLIP_MAX_RING];
+  for (int i = 0; i < n; i++)
+    memcpy(oldv + 4 * i, m->tv + 4 * (size_t)old[i], 4 * sizeof *oldv);
+  TR_CHECK(tr_mesh_replace(m, old, (uint32_t)n, newv, nnew, ids));
+  if (rec) {
+    memcpy(rec->oldv, oldv, 4 * (size_t)n * sizeof *oldv);
+    rec->hull = g >= 0;
+  }
+  record(rec, newv, ids, (uint32_t)n, nnew);
+  *done = 1;
+  return TR_OK;
+}
+
+/* 1 iff live tet t has exactly the vertices v[0..3] (same slots). */
+static int holds(const struct tr_mesh *m, uint32_t t, const uint32_t v[4])
+{
+  return t < m->nt && !tr_tet_is_free(m, t) && memcmp(m->tv + 4 * (size_t)t, v, 4 * sizeof *v) == 0;
+}
+
+tr_status tr_flip_undo(struct tr_mesh *m, const tr_flip_rec *rec)
+{
+  uint32_t ids[2 * TR_FLIP_MAX_RING - 4];
+  tr_u32buf ball = {0};
+  tr_status s = TR_OK;
+  for (uint32_t i = 0; i < rec->nnew && s == TR_OK; i++) {
+    const uint32_t *v = rec->newv + 4 * (size_t)i;
+    ids[i] = rec->newid[i];
+    if (holds(m, ids[i], v))
+      continue;
+    ids[i] = TR_NONE;
+    if ((s = tr_ball(m, v[0], 1, &ball)) != TR_OK)
+      break;
+    for (size_t k = 0; k < ball.n && ids[i] == TR_NONE; k++)
+      if (holds(m, ball.a[k], v))
+        ids[i] = ball.a[k];
+    if (ids[i] == TR_NONE)
+      s = tr_error(TR_ERR_INTERNAL, "flip undo: tet (%u %u %u %u) is gone", v[0], v[1], v[2],
+                   v[3]);
+  }
+  tr_u32buf_free(&ball);
+  TR_CHECK(s);
+  return tr_mesh_replace(m, ids, rec->nnew, rec->oldv, rec->nold, NULL);
+}
+
+/* ---- journals and flipnm ---- */
+
+void tr_flip_journal_free(tr_flip_journal *j)
+{
+  free(j->r);
+  j->r = NULL;
+  j->n = j->cap = 0;
+}
+
+/* Room for one more record: r[n] is then the slot to fill. */
+static tr_status journal_room(tr_flip_journal *j)
+{
+  if (j->n < j->cap)
+    return TR_OK;
+  uint32_t nc = j->cap ? 2 * j->cap : 16;
+  tr_flip_rec *q = realloc(j->r, nc * sizeof *q);
+  if (!q)
+    return tr_error(TR_ERR_NOMEM, "out of memory for a flip journal");
+  j->r = q;
+  j->cap = nc;
+  return TR_OK;
+}
+
+static void journal_commit(struct tr_mesh *m, tr_flip_journal *j)
+{
+  const tr_flip_rec *r = &j->r[j->n++];
+  int kind = r->hull ? 4 : r->nold == 2 ? 0 : r->nold == 3 ? 1 : r->nold == 4 ? 2 : 3;
+  j->flips[kind]++;
+  if (!j->measure)
+    return;
+  for (uint32_t i = 0; i < r->nold; i++)
+    j->delta -= j->measure(j->mud, m, r->oldv + 4 * (size_t)i);
+  for (uint32_t i = 0; i < r->nnew; i++)
+    j->delta += j->measure(j->mud, m, r->newv + 4 * (size_t)i);
+}
+
+tr_status tr_flip_journal_undo(struct tr_mesh *m, tr_flip_journal *j, uint32_t to)
+{
+  while (j->n > to) {
+    const tr_flip_rec *r = &j->r[j->n - 1];
+    int kind = r->hull ? 4 : r->nold == 2 ? 0 : r->nold == 3 ? 1 : r->nold == 4 ? 2 : 3;
+    j->flips[kind]--;
+    if (j->measure) {
+      for (uint32_t i = 0; i < r->nnew; i++)
+        j->delta -= j->measure(j->mud, m, r->newv + 4 * (size_t)i);
+      for (uint32_t i = 0; i < r->nold; i++)
+        j->delta += j->measure(j->mud, m, r->oldv + 4 * (size_t)i);
+    }
+    TR_CHECK(tr_flip_undo(m, r));
+    j->n--;
+  }
+  return TR_OK;
+}
+
+tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, void *ud,
+                      tr_flip_journal *j, int *done)
+{
+  TR_CHECK(journal_room(j));
+  TR_CHECK(tr_flip23(m, t, k, guard, ud, &j->r[j->n], done));
+  if (*done)
+    journal_commit(m, j);
+  return TR_OK;
+}
+
+static tr_status remove_j(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
+                          tr_flip_guard guard, void *ud, tr_flip_journal *j, int *done)
+{
+  TR_CHECK(journal_room(j));
+  TR_CHECK(tr_flip_remove_edge(m, a, b, t0, guard, ud, &j->r[j->n], done));
+  if (*done)
+    journal_commit(m, j);
+  return TR_OK;
+}
+
+/* The shell tet holding face (a, b, r) and its code of that face, found from Shell(ab). */
+static int shell_face(struct tr_mesh *m, const tr_u32buf *sh, uint32_t a, uint32_t b, uint32_t r,
+                      uint32_t *t, int *k)
+{
+  for (size_t i = 0; i < sh->n; i++) {
+    int c = tr_fcode(m, sh->a[i], a, b, r);
+    if (c >= 0) {
+      *t = sh->a[i];
+      *k = c;
+      return 1;
+    }
+  }
+  return 0;
+}
+
+tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
+                                 int depth, tr_flip_guard guard, void *ud, tr_flip_journal *j,
+                                 int *done)
+{
+  TR_CHECK(remove_j(m, a, b, t0, guard, ud, j, done));
+  if (*done || depth <= 1)
+    return TR_OK;
+  uint32_t e2[2] = {a, b};
+  if (guard && guard(ud, e2, 2))
+    return TR_OK;
+  tr_u32buf sh = {0};
+  tr_status s = TR_OK;
+  /* every pass either shrinks the shell by one (Swap23 on a ring face) or stops; the
+   * sub-removals are bounded by depth, and the passes by the first shell size */
+  for (int pass = 0, limit = -1; s == TR_OK && !*done; pass++) {
+    int closed;
+    uint32_t t1;
+    if ((s = edge_tet(m, a, b, &t1)) != TR_OK)
+      break;
+    if (t1 == TR_NONE) {
+      *done = 1; /* a nested removal took ab away */
+      break;
+    }
+    if ((s = tr_shell(m, a, b, t1, &sh, &closed)) != TR_OK || !closed)
+      break;
+    if (limit < 0)
+      limit = (int)sh.n;
+    if (pass > limit || sh.n < 3)
+      break;
+    int progress = 0;
+    /* ring vertices in shell order (deterministic) */
+    /* any flip (even a partial nested one) makes the shell stale: re-take it */
+    uint32_t n0 = j->n;
+    for (size_t i = 0; i < sh.n && !progress && s == TR_OK; i++) {
+      uint32_t tv[4];
+      memcpy(tv, m->tv + 4 * (size_t)sh.a[i], sizeof tv); /* flips may move m->tv */
+      for (int q = 0; q < 4 && !progress && s == TR_OK; q++) {
+        uint32_t r = tv[q], t;
+        int k, ok = 0;
+        if (r == a || r == b || r == TR_GHOST || !shell_face(m, &sh, a, b, r, &t, &k))
+          continue;
+        s = tr_flip23_j(m, t, k, guard, ud, j, &ok);
+        if (s == TR_OK && !ok && depth > 2) {
+          /* the Swap23 is blocked by edge a-r or b-r: try removing one of them */
+          s = tr_flip_remove_edge_nm(m, a, r, TR_NONE, depth - 1, guard, ud, j, &ok);
+          if (s == TR_OK && !ok)
+            s = tr_flip_remove_edge_nm(m, b, r, TR_NONE, depth - 1, guard, ud, j, &ok);
+        }
+        progress = ok || j->n != n0;
+      }
+    }
+    if (s != TR_OK || !progress)
+      break;
+    s = remove_j(m, a, b, TR_NONE, guard, ud, j, done);
+  }
+  tr_u32buf_free(&sh);
+  return s;
+}

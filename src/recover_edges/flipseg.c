@@ -1,0 +1,200 @@
+/* Recovery of one missing sub-segment by general flips (tr_pipe_try_flips, pipe.h).
+ *
+ * Each round lists the simplices ab crosses in the current pipe (faces for Swap23, edges
+ * for edge removal with the bounded flipnm recursion of flip.h, in pipe order:
+ * deterministic) and keeps the first attempt that lowers the number of real pipels; an
+ * attempt that does not is undone exactly through its journal. The change is summed over
+ * the flipped regions only (tets outside them keep their status). The number of pipels is
+ * a natural number that drops every round, so the loop ends; it ends early when ab is a
+ * mesh edge. Candidates are remembered by vertex ids, so a slot moved by an undo cannot
+ * mislead the next attempt.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "classify.h"
+#include "recover_edges/edgeset.h"
+#include "recover_edges/flip.h"
+#include "recover_edges/pipe.h"
+
+typedef struct cand {
+  uint32_t t;     /* a tet holding the simplex when listed */
+  uint32_t v[3];  /* face: 3 ids; edge: v[0], v[1], v[2] = TR_NONE */
+  int k;          /* face code in t (faces) */
+} cand;
+
+static int cons_guard(void *ud, const uint32_t *v, int nv)
+{
+  return nv == 2 && tr_edgeset_get(ud, v[0], v[1]) != TR_EDGESET_NONE;
+}
+
+static int same_cand(const cand *x, const cand *y)
+{
+  if ((x->v[2] == TR_NONE) != (y->v[2] == TR_NONE))
+    return 0;
+  if (x->v[2] == TR_NONE)
+    return (x->v[0] == y->v[0] && x->v[1] == y->v[1]) ||
+           (x->v[0] == y->v[1] && x->v[1] == y->v[0]);
+  for (int i = 0; i < 3; i++)
+    if (x->v[i] != y->v[0] && x->v[i] != y->v[1] && x->v[i] != y->v[2])
+      return 0;
+  return 1;
+}
+
+/* The crossed faces and edges of the pipe, each once. */
+static tr_status list_cands(const struct tr_mesh *m, const tr_pipe *p, cand **out, uint32_t *n,
+                            uint32_t *cap)
+{
+  *n = 0;
+  for (uint32_t i = 0; i < p->n; i++) {
+    const tr_pipel *pl = &p->pl[i];
+    if (pl->ghost)
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)pl->iEle;
+    for (int e = 0; e < 2; e++) {
+      int ty = e ? (pl->type >> 2) & 3 : pl->type & 3, code = e ? pl->iCod2 : pl->iCod1;
+      cand c;
+      c.t = pl->iEle;
+      c.k = -1;
+      if (ty == TR_FAC) {
+        c.k = code;
+        for (int j = 0; j < 3; j++)
+          c.v[j] = tv[tr_face_vtx[code][j]];
+      } else if (ty == TR_EDG) {
+        c.v[0] = tv[tr_ecode_start(code)];
+        c.v[1] = tv[tr_ecode_end(code)];
+        c.v[2] = TR_NONE;
+      } else {
+        continue;
+      }
+      int dup = 0;
+      for (uint32_t j = 0; j < *n && !dup; j++)
+        dup = same_cand(&(*out)[j], &c);
+      if (dup)
+        continue;
+      if (*n == *cap) {
+        uint32_t nc = *cap ? 2 * *cap : 32;
+        cand *q = realloc(*out, nc * sizeof *q);
+        if (!q)
+          return tr_error(TR_ERR_NOMEM, "out of memory for flip candidates");
+        *out = q;
+        *cap = nc;
+      }
+      (*out)[(*n)++] = c;
+    }
+  }
+  return TR_OK;
+}
+
+/* Applies candidate c (if its tet still holds it) through the journal: Swap23 for a face,
+ * edge removal with recursion depth TR_FLIPSEG_DEPTH for an edge. */
+#define TR_FLIPSEG_DEPTH 3
+static tr_status apply(struct tr_mesh *m, const cand *c, const struct tr_edgeset *cons,
+                       tr_flip_journal *j, int *done)
+{
+  *done = 0;
+  if (c->v[2] != TR_NONE) {
+    if (tr_tet_is_free(m, c->t) || tr_fcode(m, c->t, c->v[0], c->v[1], c->v[2]) != c->k)
+      return TR_OK;
+    return tr_flip23_j(m, c->t, c->k, NULL, NULL, j, done);
+  }
+  uint32_t t0 = c->t;
+  if (tr_tet_is_free(m, t0) || tr_tet_ecode(m, t0, c->v[0], c->v[1]) < 0)
+    t0 = TR_NONE;
+  return tr_flip_remove_edge_nm(m, c->v[0], c->v[1], t0, TR_FLIPSEG_DEPTH,
+                                cons ? cons_guard : NULL, (void *)cons, j, done);
+}
+
+static void count(tr_flip_journal *j, tr_edge_stats *st)
+{
+  st->flip23 += j->flips[0];
+  st->flip32 += j->flips[1];
+  st->flip44 += j->flips[2];
+  st->flipn += j->flips[3];
+  st->flip_hull += j->flips[4];
+  memset(j->flips, 0, sizeof j->flips);
+  j->n = 0;
+  j->delta = 0;
+}
+
+/* 1 iff the real tet with vertices v meets the open segment ab at a point that is not
+ * one of its vertices (a pipel of pipe.h; ghosts count 0). */
+static int is_pipel(const struct tr_mesh *m, const tr_point *pa, const tr_point *pb,
+                    const uint32_t v[4])
+{
+  if (v[3] == TR_GHOST)
+    return 0;
+  tr_point p[4];
+  const tr_point *pp[4];
+  for (int k = 0; k < 4; k++) {
+    p[k] = tr_mesh_point(m, v[k]);
+    pp[k] = &p[k];
+  }
+  tr_isect x = tr_classify_segment_tet(pa, pb, pp);
+  for (int e = 0; e < x.n; e++)
+    if (x.end[e].type != TR_NOD)
+      return 1;
+  return 0;
+}
+
+typedef struct seg {
+  tr_point pa, pb;
+} seg;
+
+static int pipel_measure(void *ud, const struct tr_mesh *m, const uint32_t v[4])
+{
+  const seg *g = ud;
+  return is_pipel(m, &g->pa, &g->pb, v);
+}
+
+tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
+                            const struct tr_edgeset *cons, tr_edge_stats *st, int *done)
+{
+  *done = 0;
+  cand *cs = NULL;
+  uint32_t nc = 0, cap = 0, via;
+  tr_status s = TR_OK;
+  seg g = {tr_mesh_point(m, a), tr_mesh_point(m, b)};
+  tr_flip_journal j;
+  memset(&j, 0, sizeof j);
+  j.measure = pipel_measure;
+  j.mud = &g;
+  /* The measure is the number of real pipels; the journal adds up its change over the
+   * flips of one attempt (pipels among the new tets - among the old ones). */
+  for (int progress = 1; progress && s == TR_OK && !*done;) {
+    progress = 0;
+    if ((s = list_cands(m, p, &cs, &nc, &cap)) != TR_OK)
+      break;
+    for (uint32_t i = 0; i < nc && !progress && s == TR_OK; i++) {
+      int ok;
+      if ((s = apply(m, &cs[i], cons, &j, &ok)) != TR_OK)
+        break;
+      if (j.n == 0)
+        continue;
+      if (j.delta < 0) {
+        count(&j, st);
+        progress = 1;
+        int yes;
+        if ((s = tr_mesh_has_edge(m, a, b, &yes)) != TR_OK)
+          break;
+        if (yes)
+          *done = 1;
+        else
+          s = tr_pipe_collect(m, a, b, p, &via);
+        if (s == TR_OK && !*done && via != TR_NONE)
+          s = tr_error(TR_ERR_INTERNAL, "flips: segment %u-%u now passes through vertex %u",
+                       a, b, via);
+        break;
+      }
+      st->flips_undone += j.n;
+      s = tr_flip_journal_undo(m, &j, 0);
+    }
+  }
+  if (*done)
+    st->by_flips++;
+  else if (s == TR_OK && nc > 0)
+    s = tr_pipe_collect(m, a, b, p, &via); /* undos may have moved tets to other slots */
+  tr_flip_journal_free(&j);
+  free(cs);
+  return s;
+}

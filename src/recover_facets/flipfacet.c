@@ -1,0 +1,186 @@
+/* Facet recovery by flips (see flipfacet.h). Candidates are listed by vertex ids in
+ * Cluster order (sorted by tet index: deterministic) and checked again before use, since
+ * an undo may put tets in other slots. */
+#include "recover_facets/flipfacet.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "classify.h"
+#include "recover_facets/cluster.h"
+
+/* Recursion depth of edge removal (flip.h, tr_flip_remove_edge_nm). */
+#define TR_FLIPFACET_DEPTH 3
+
+typedef struct fcand {
+  uint32_t t;
+  uint32_t v[3]; /* edge: v[2] = TR_NONE */
+  int k;         /* face code in t */
+} fcand;
+
+static int same(const fcand *x, const fcand *y)
+{
+  if ((x->v[2] == TR_NONE) != (y->v[2] == TR_NONE))
+    return 0;
+  if (x->v[2] == TR_NONE)
+    return (x->v[0] == y->v[0] && x->v[1] == y->v[1]) ||
+           (x->v[0] == y->v[1] && x->v[1] == y->v[0]);
+  for (int i = 0; i < 3; i++)
+    if (x->v[i] != y->v[0] && x->v[i] != y->v[1] && x->v[i] != y->v[2])
+      return 0;
+  return 1;
+}
+
+static tr_status push(fcand **a, uint32_t *n, uint32_t *cap, const fcand *c)
+{
+  for (uint32_t j = 0; j < *n; j++)
+    if (same(&(*a)[j], c))
+      return TR_OK;
+  if (*n == *cap) {
+    uint32_t nc = *cap ? 2 * *cap : 32;
+    fcand *q = realloc(*a, nc * sizeof *q);
+    if (!q)
+      return tr_error(TR_ERR_NOMEM, "out of memory for facet flip candidates");
+    *a = q;
+    *cap = nc;
+  }
+  (*a)[(*n)++] = *c;
+  return TR_OK;
+}
+
+/* Edges first (edge removal takes a crossing edge away directly), then the faces with two
+ * crossed edges (Swap23 there replaces them by the edge between the apexes). */
+static tr_status list(const struct tr_mesh *m, const tr_clusterel *cl, uint32_t ncl,
+                      fcand **a, uint32_t *n, uint32_t *cap, uint32_t *ncross)
+{
+  *n = 0;
+  *ncross = 0;
+  for (int pass = 0; pass < 2; pass++)
+    for (uint32_t i = 0; i < ncl; i++) {
+      if (cl[i].type == TR_CO_PLAN)
+        continue;
+      *ncross += pass == 0;
+      const uint32_t *tv = m->tv + 4 * (size_t)cl[i].iele;
+      uint8_t infc[4] = {0, 0, 0, 0}; /* per face: crossed edges on it */
+      for (int j = 0; j < cl[i].nnodes; j++) {
+        if (cl[i].ntypes[j] != TR_NOD_MID)
+          continue;
+        int s0 = tr_ecode_start(cl[i].codes[j]), s1 = tr_ecode_end(cl[i].codes[j]);
+        for (int k = 0; k < 4; k++)
+          infc[k] += k != s0 && k != s1;
+        if (pass == 0) {
+          fcand c = {cl[i].iele, {tv[s0], tv[s1], TR_NONE}, -1};
+          TR_CHECK(push(a, n, cap, &c));
+        }
+      }
+      for (int k = 0; pass == 1 && k < 4; k++) {
+        if (infc[k] != 2)
+          continue;
+        fcand c = {cl[i].iele, {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]],
+                                tv[tr_face_vtx[k][2]]}, k};
+        TR_CHECK(push(a, n, cap, &c));
+      }
+    }
+  return TR_OK;
+}
+
+typedef struct tri {
+  tr_point e, f, g;
+} tri;
+
+static int o3(const tr_point *a, const tr_point *b, const tr_point *c, const tr_point *d)
+{
+  return tr_orient3d_p(a, b, c, d);
+}
+
+/* 1 iff the tet with vertices v has an edge crossing the open triangle at an interior
+ * point of the edge (a crossing clusterel, cluster.h): its ends strictly on both sides of
+ * the plane and the line through it strictly inside the three sides. */
+static int crossing_measure(void *ud, const struct tr_mesh *m, const uint32_t v[4])
+{
+  const tri *T = ud;
+  if (v[3] == TR_GHOST)
+    return 0;
+  tr_point p[4];
+  int side[4];
+  for (int k = 0; k < 4; k++) {
+    p[k] = tr_mesh_point(m, v[k]);
+    side[k] = o3(&T->e, &T->f, &T->g, &p[k]);
+  }
+  for (int i = 0; i < 6; i++) {
+    int x = tr_edge_vtx[i][0], y = tr_edge_vtx[i][1];
+    if (side[x] * side[y] >= 0)
+      continue;
+    int s1 = o3(&p[x], &p[y], &T->e, &T->f), s2 = o3(&p[x], &p[y], &T->f, &T->g),
+        s3 = o3(&p[x], &p[y], &T->g, &T->e);
+    if (s1 != 0 && s1 == s2 && s2 == s3)
+      return 1;
+  }
+  return 0;
+}
+
+tr_status tr_facet_try_flips(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,
+                             tr_flip_guard guard, void *ud, tr_facet_flip_stats *st,
+                             int *changed, int *clear)
+{
+  *changed = 0;
+  *clear = 0;
+  tri T = {tr_mesh_point(m, e), tr_mesh_point(m, f), tr_mesh_point(m, g)};
+  tr_clusterel *cl = NULL;
+  uint32_t ncl = 0, n = 0, cap = 0, ncross = 0;
+  fcand *cs = NULL;
+  tr_flip_journal j;
+  memset(&j, 0, sizeof j);
+  j.measure = crossing_measure;
+  j.mud = &T;
+  tr_status s = TR_OK;
+  for (int progress = 1; progress && s == TR_OK;) {
+    progress = 0;
+    free(cl);
+    cl = NULL;
+    if ((s = tr_cluster_collect(m, e, f, g, &cl, &ncl)) != TR_OK ||
+        (s = list(m, cl, ncl, &cs, &n, &cap, &ncross)) != TR_OK)
+      break;
+    if (ncross == 0) {
+      *clear = 1;
+      break;
+    }
+    for (uint32_t i = 0; i < n && !progress && s == TR_OK; i++) {
+      const fcand *c = &cs[i];
+      int ok = 0;
+      if (c->v[2] != TR_NONE) {
+        if (!tr_tet_is_free(m, c->t) && tr_fcode(m, c->t, c->v[0], c->v[1], c->v[2]) == c->k)
+          s = tr_flip23_j(m, c->t, c->k, guard, ud, &j, &ok);
+      } else {
+        uint32_t t0 = c->t;
+        if (tr_tet_is_free(m, t0) || tr_tet_ecode(m, t0, c->v[0], c->v[1]) < 0)
+          t0 = TR_NONE;
+        s = tr_flip_remove_edge_nm(m, c->v[0], c->v[1], t0, TR_FLIPFACET_DEPTH, guard, ud, &j,
+                                   &ok);
+      }
+      if (s != TR_OK || j.n == 0)
+        continue;
+      if (j.delta < 0) {
+        *changed = 1;
+        progress = 1;
+        if (st) {
+          st->flip23 += j.flips[0];
+          st->flip32 += j.flips[1];
+          st->flip44 += j.flips[2];
+          st->flipn += j.flips[3] + j.flips[4];
+        }
+        memset(j.flips, 0, sizeof j.flips);
+        j.n = 0;
+        j.delta = 0;
+        break;
+      }
+      if (st)
+        st->undone += j.n;
+      s = tr_flip_journal_undo(m, &j, 0);
+    }
+  }
+  tr_flip_journal_free(&j);
+  free(cl);
+  free(cs);
+  return s;
+}

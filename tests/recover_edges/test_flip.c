@@ -1,0 +1,373 @@
+/* General flips (src/recover_edges/flip.h) on exact hand-built configurations, every
+ * result through the validator (links, strict positivity, v2t, Euler, exact volume):
+ * edge removal for shells of 3..7 tets (and its undo), a ring no triangulation fits
+ * (refused, mesh unchanged), protected edges and faces, the 2-2 hull flip on every face of
+ * a cube (ghosts stay consistent), and a missing input edge recovered by the flips of the
+ * edge driver without a Steiner point.
+ * Usage: test_flip ring N | ring_invalid | protected | hull_cube | flip23 | recover N */
+#include <gmp.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "delaunay/delaunay.h"
+#include "mesh/check.h"
+#include "mesh/mesh.h"
+#include "recover_edges/flip.h"
+#include "recover_edges/recover_edges.h"
+
+#define PI 3.14159265358979323846
+
+#define FAIL(...)                         \
+  do {                                    \
+    fprintf(stderr, __VA_ARGS__);         \
+    fputc('\n', stderr);                  \
+    return 1;                             \
+  } while (0)
+#define CK(expr)                                                                       \
+  do {                                                                                 \
+    tr_status s_ = (expr);                                                             \
+    if (s_ != TR_OK)                                                                   \
+      FAIL("%s:%d: %s -> %s: %s", __FILE__, __LINE__, #expr, tr_status_name(s_),      \
+           tr_last_error());                                                           \
+  } while (0)
+
+static const unsigned CHECKS = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T | TR_CHK_EULER;
+
+/* Glues every pair of faces with the same three vertices (tiny meshes only). */
+static void glue_all(struct tr_mesh *m)
+{
+  for (uint32_t t = 0; t < m->nt; t++)
+    for (int k = 0; k < 4; k++) {
+      if (tr_tet_is_free(m, t) || m->tn[4 * t + k] != TR_NONE)
+        continue;
+      const uint32_t *v = m->tv + 4 * t;
+      for (uint32_t u = t + 1; u < m->nt; u++) {
+        if (tr_tet_is_free(m, u))
+          continue;
+        int fk = tr_fcode(m, u, v[(k + 1) & 3], v[(k + 2) & 3], v[(k + 3) & 3]);
+        if (fk >= 0 && m->tn[4 * u + fk] == TR_NONE) {
+          tr_glue(m, t, k, u, fk);
+          break;
+        }
+      }
+    }
+}
+
+static int has_edge(const struct tr_mesh *m, uint32_t a, uint32_t b)
+{
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (!tr_tet_is_free(m, t) && tr_ncode(m, t, a) >= 0 && tr_ncode(m, t, b) >= 0)
+      return 1;
+  return 0;
+}
+
+static int validate(struct tr_mesh *m, mpq_t vol0, const char *what)
+{
+  if (tr_check_mesh(m, CHECKS, vol0) != TR_OK)
+    FAIL("%s: validator: %s", what, tr_last_error());
+  return 0;
+}
+
+/* The shell of AB (vertices 0, 1) with ring vertices 2..n+1: tets {A,B,r_i,r_i+1} made
+ * positive, glued. z[i]: height of ring vertex i (radius 1, regular angles). */
+static tr_status build_shell(int n, const double *z, double ha, double hb, struct tr_mesh **out)
+{
+  struct tr_mesh *m;
+  TR_CHECK(tr_mesh_create(32, 32, &m));
+  double a[3] = {0, 0, ha}, b[3] = {0, 0, hb};
+  uint32_t id;
+  TR_CHECK(tr_mesh_add_vertex(m, a, &id));
+  TR_CHECK(tr_mesh_add_vertex(m, b, &id));
+  for (int i = 0; i < n; i++) {
+    double p[3] = {cos(2 * PI * i / n), sin(2 * PI * i / n), z ? z[i] : 0};
+    TR_CHECK(tr_mesh_add_vertex(m, p, &id));
+  }
+  for (int i = 0; i < n; i++) {
+    uint32_t x = 2 + (uint32_t)i, y = 2 + (uint32_t)((i + 1) % n), t;
+    tr_point p[4] = {tr_mesh_point(m, 0), tr_mesh_point(m, 1), tr_mesh_point(m, x),
+                     tr_mesh_point(m, y)};
+    if (tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) > 0)
+      TR_CHECK(tr_tet_new(m, 0, 1, x, y, &t));
+    else
+      TR_CHECK(tr_tet_new(m, 1, 0, x, y, &t));
+  }
+  glue_all(m);
+  *out = m;
+  return TR_OK;
+}
+
+static int test_ring(int n)
+{
+  /* a slightly wavy ring: non-planar, still removable */
+  double z[16];
+  for (int i = 0; i < n; i++)
+    z[i] = (i % 2 ? 0.125 : -0.0625);
+  struct tr_mesh *m;
+  CK(build_shell(n, z, 1, -1, &m));
+  mpq_t vol;
+  mpq_init(vol);
+  CK(tr_mesh_volume6(m, vol));
+  if (validate(m, vol, "shell"))
+    return 1;
+  tr_flip_rec rec;
+  int done;
+  CK(tr_flip_remove_edge(m, 0, 1, TR_NONE, NULL, NULL, &rec, &done));
+  if (!done)
+    FAIL("ring %d: edge removal refused", n);
+  if (has_edge(m, 0, 1) || tr_mesh_count_real(m) != (uint32_t)(2 * n - 4))
+    FAIL("ring %d: AB still there or %u tets (expected %d)", n, tr_mesh_count_real(m),
+         2 * n - 4);
+  if (validate(m, vol, "after removal"))
+    return 1;
+  CK(tr_flip_undo(m, &rec));
+  if (!has_edge(m, 0, 1) || tr_mesh_count_real(m) != (uint32_t)n)
+    FAIL("ring %d: undo did not restore the shell", n);
+  if (validate(m, vol, "after undo"))
+    return 1;
+  printf("ring %d: removed into %d tets, undone, valid\n", n, 2 * n - 4);
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+/* Ring vertices alternately far above A and far below B: every diagonal of the 4-ring
+ * leaves A or B on the wrong side of a triangle, so no triangulation fits. */
+static int test_ring_invalid(void)
+{
+  double z[4] = {3, -3, 3, -3};
+  struct tr_mesh *m;
+  CK(build_shell(4, z, 1, -1, &m));
+  mpq_t vol;
+  mpq_init(vol);
+  CK(tr_mesh_volume6(m, vol));
+  if (validate(m, vol, "invalid ring shell"))
+    return 1;
+  uint32_t before[16];
+  memcpy(before, m->tv, sizeof before);
+  int done;
+  CK(tr_flip_remove_edge(m, 0, 1, TR_NONE, NULL, NULL, NULL, &done));
+  if (done || memcmp(before, m->tv, sizeof before) != 0 || !has_edge(m, 0, 1))
+    FAIL("ring_invalid: removal accepted or mesh changed");
+  if (validate(m, vol, "after refusal"))
+    return 1;
+  printf("ring_invalid: refused, mesh unchanged\n");
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+static int guard_edge01(void *ud, const uint32_t *v, int nv)
+{
+  (void)ud;
+  return nv == 2 && ((v[0] == 0 && v[1] == 1) || (v[0] == 1 && v[1] == 0));
+}
+
+static int guard_any_face(void *ud, const uint32_t *v, int nv)
+{
+  (void)ud;
+  (void)v;
+  return nv == 3;
+}
+
+static int test_protected(void)
+{
+  struct tr_mesh *m;
+  CK(build_shell(5, NULL, 1, -1, &m));
+  int done;
+  CK(tr_flip_remove_edge(m, 0, 1, TR_NONE, guard_edge01, NULL, NULL, &done));
+  if (done || !has_edge(m, 0, 1))
+    FAIL("protected: a protected edge was removed");
+  CK(tr_flip_remove_edge(m, 0, 1, TR_NONE, guard_any_face, NULL, NULL, &done));
+  if (done)
+    FAIL("protected: removal deleted protected faces");
+  /* flip32 then try Swap23 back on the face with every face protected */
+  CK(tr_flip_remove_edge(m, 0, 1, TR_NONE, NULL, NULL, NULL, &done));
+  if (!done)
+    FAIL("protected: unprotected removal refused");
+  for (uint32_t t = 0; t < m->nt; t++)
+    for (int k = 0; k < 4 && !tr_tet_is_free(m, t); k++) {
+      CK(tr_flip23(m, t, k, guard_any_face, NULL, NULL, &done));
+      if (done)
+        FAIL("protected: Swap23 deleted a protected face");
+    }
+  if (tr_check_mesh(m, CHECKS, NULL) != TR_OK)
+    FAIL("protected: validator: %s", tr_last_error());
+  printf("protected: edge and faces kept\n");
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+/* Two tets glued on a face the segment between their apexes pierces: Swap23, valid;
+ * moved apex (segment misses the face): refused. */
+static int test_flip23(void)
+{
+  for (int bad = 0; bad < 2; bad++) {
+    struct tr_mesh *m;
+    CK(tr_mesh_create(8, 8, &m));
+    double p[5][3] = {{1, 1, -3}, {2, 1, 4}, {4, 0, 0}, {0, 4, 0}, {0, 0, 0}};
+    if (bad)
+      p[1][0] = 9;
+    uint32_t id, t1, t2;
+    for (int i = 0; i < 5; i++)
+      CK(tr_mesh_add_vertex(m, p[i], &id));
+    CK(tr_tet_new(m, 0, 2, 3, 4, &t1));
+    CK(tr_tet_new(m, 1, 3, 2, 4, &t2));
+    glue_all(m);
+    mpq_t vol;
+    mpq_init(vol);
+    CK(tr_mesh_volume6(m, vol));
+    int done;
+    tr_flip_rec rec;
+    CK(tr_flip23(m, t1, 0, NULL, NULL, &rec, &done));
+    if (done == bad || (!bad && (!has_edge(m, 0, 1) || tr_mesh_count_real(m) != 3)))
+      FAIL("flip23 (%s): done = %d", bad ? "non-convex" : "convex", done);
+    if (validate(m, vol, "flip23"))
+      return 1;
+    if (done) {
+      CK(tr_flip_undo(m, &rec));
+      if (has_edge(m, 0, 1) || validate(m, vol, "flip23 undo"))
+        FAIL("flip23: undo failed");
+    }
+    mpq_clear(vol);
+    tr_mesh_destroy(m);
+  }
+  printf("flip23: convex pair flipped and undone, non-convex pair refused\n");
+  return 0;
+}
+
+/* The Delaunay mesh of a cube: each face is two hull triangles; flipping its diagonal is
+ * a 2-2 hull flip. Every face once, validator (ghost links included) after each. */
+static int test_hull_cube(void)
+{
+  double x[24];
+  for (int i = 0; i < 8; i++) {
+    x[3 * i] = i & 1;
+    x[3 * i + 1] = (i >> 1) & 1;
+    x[3 * i + 2] = (i >> 2) & 1;
+  }
+  struct tr_mesh *m;
+  CK(tr_delaunay_build(x, 8, &m));
+  mpq_t vol;
+  mpq_init(vol);
+  CK(tr_mesh_volume6(m, vol));
+  int flipped = 0;
+  /* the 12 face diagonals: pairs differing in exactly two coordinates */
+  for (uint32_t a = 0; a < 8; a++)
+    for (uint32_t b = a + 1; b < 8; b++) {
+      uint32_t d = a ^ b;
+      if (__builtin_popcount(d) != 2 || !has_edge(m, a, b))
+        continue;
+      int done;
+      tr_flip_rec rec;
+      CK(tr_flip_remove_edge(m, a, b, TR_NONE, NULL, NULL, &rec, &done));
+      if (!done) {
+        /* legitimate: the cube is cospherical, some shells have only flat fillings */
+        if (validate(m, vol, "hull flip refused"))
+          return 1;
+        continue;
+      }
+      if (!rec.hull)
+        FAIL("hull_cube: %u-%u removal not reported as a hull flip", a, b);
+      uint32_t c = TR_NONE, e = TR_NONE; /* the other diagonal of that face */
+      for (uint32_t v = 0; v < 8; v++) {
+        uint32_t fixed = 7u & ~d;
+        if (v != a && v != b && (v & fixed) == (a & fixed))
+          c == TR_NONE ? (c = v) : (e = v);
+      }
+      if (has_edge(m, a, b) || !has_edge(m, c, e))
+        FAIL("hull_cube: after flipping %u-%u the diagonal %u-%u is missing", a, b, c, e);
+      if (validate(m, vol, "hull flip"))
+        return 1;
+      flipped++;
+    }
+  if (flipped < 1)
+    FAIL("hull_cube: no face diagonal flipped");
+  printf("hull_cube: %d hull 2-2 flips, mesh valid\n", flipped);
+  tr_mesh_destroy(m);
+  /* Square pyramids (one or two apexes): the base diagonal is a hull edge with coplanar
+   * hull faces; its removal must always succeed and give the other diagonal. */
+  for (int two = 0; two < 2; two++) {
+    double y[18] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1, 0.25, 0.75, 0.5};
+    CK(tr_delaunay_build(y, two ? 6 : 5, &m));
+    CK(tr_mesh_volume6(m, vol));
+    uint32_t a = has_edge(m, 0, 2) ? 0 : 1, b = a + 2;
+    int done;
+    tr_flip_rec rec;
+    CK(tr_flip_remove_edge(m, a, b, TR_NONE, NULL, NULL, &rec, &done));
+    if (!done || !rec.hull || has_edge(m, a, b) || !has_edge(m, (a + 1) % 4, (a + 3) % 4))
+      FAIL("pyramid %d: base diagonal %u-%u not flipped on the hull", two, a, b);
+    if (validate(m, vol, "pyramid hull flip"))
+      return 1;
+    CK(tr_flip_undo(m, &rec));
+    if (!has_edge(m, a, b) || validate(m, vol, "pyramid undo"))
+      FAIL("pyramid %d: undo failed", two);
+    tr_mesh_destroy(m);
+  }
+  printf("pyramids: base diagonal flipped on the hull and undone, valid\n");
+  mpq_clear(vol);
+  return 0;
+}
+
+/* Remove AB from an n-shell, then ask the edge driver for AB: it must come back by
+ * flips alone (no Steiner point). */
+static int test_recover(int n)
+{
+  double x[3 * 18];
+  x[0] = 0, x[1] = 0, x[2] = 1, x[3] = 0, x[4] = 0, x[5] = -1;
+  for (int i = 0; i < n; i++) {
+    x[6 + 3 * i] = cos(2 * PI * i / n);
+    x[7 + 3 * i] = sin(2 * PI * i / n);
+    x[8 + 3 * i] = i % 2 ? 0.125 : -0.0625;
+  }
+  struct tr_mesh *m;
+  CK(tr_delaunay_build(x, (uint32_t)(2 + n), &m));
+  mpq_t vol;
+  mpq_init(vol);
+  CK(tr_mesh_volume6(m, vol));
+  int done = 1;
+  if (has_edge(m, 0, 1))
+    CK(tr_flip_remove_edge(m, 0, 1, TR_NONE, NULL, NULL, NULL, &done));
+  if (!done || has_edge(m, 0, 1))
+    FAIL("recover %d: could not set up a mesh without AB", n);
+  uint32_t edges[2] = {0, 1};
+  tr_edge_chains ch;
+  tr_edge_recovery_stats st;
+  CK(tr_recover_edges(m, edges, 1, &ch, &st));
+  if (!has_edge(m, 0, 1) || st.points_added != 0 || st.recovered_by_swap != 1)
+    FAIL("recover %d: AB %s, %llu Steiner points", n, has_edge(m, 0, 1) ? "present" : "missing",
+         (unsigned long long)st.points_added);
+  if (validate(m, vol, "recover"))
+    return 1;
+  printf("recover %d: AB back by flips (swap23 %llu, flip23 %llu, 3/4/n-removals %llu/%llu/%llu)\n",
+         n, (unsigned long long)st.swap23, (unsigned long long)st.flip23,
+         (unsigned long long)st.flip32, (unsigned long long)st.flip44,
+         (unsigned long long)st.flipn);
+  tr_edge_chains_free(&ch);
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+int main(int argc, char **argv)
+{
+  if (argc < 2)
+    return 2;
+  const char *w = argv[1];
+  int n = argc > 2 ? atoi(argv[2]) : 0;
+  if (!strcmp(w, "ring") && n >= 3 && n <= 12)
+    return test_ring(n);
+  if (!strcmp(w, "ring_invalid"))
+    return test_ring_invalid();
+  if (!strcmp(w, "protected"))
+    return test_protected();
+  if (!strcmp(w, "flip23"))
+    return test_flip23();
+  if (!strcmp(w, "hull_cube"))
+    return test_hull_cube();
+  if (!strcmp(w, "recover") && n >= 3 && n <= 12)
+    return test_recover(n);
+  fprintf(stderr, "unknown test %s\n", w);
+  return 2;
+}
