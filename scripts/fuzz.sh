@@ -4,7 +4,8 @@
 # its seed corpus fuzz/corpus/<name without "fuzz_">/ (or fuzz/corpus/<name>/), so the
 # repository corpus is never modified. Prints executions and executions/s per target
 # and exits non-zero if any target found a crash, leak, timeout or sanitizer report;
-# the reproducing inputs are copied to BUILD/fuzz-findings/.
+# the reproducing inputs are copied to BUILD/fuzz-findings/ (slow units too, which are
+# reported but do not fail the run).
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET_SUBSTRING...]
 #   FUZZ_BUILD_DIR=build-x scripts/fuzz.sh 600 fuzz_pred_predicates
@@ -71,8 +72,16 @@ for exe in "${targets[@]}"; do
     -artifact_prefix="$work/$name/artifacts/" "$work/$name/corpus" >"$log" 2>&1 || rc=$?
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
-  ncrash=$(find "$work/$name/artifacts" -type f | wc -l)
+  # slow units (an input over libFuzzer's 10 s report threshold) are listed, not failures:
+  # a hang is a timeout artifact (-timeout=60) and fails
+  nslow=$(find "$work/$name/artifacts" -type f -name 'slow-unit-*' | wc -l)
+  ncrash=$(find "$work/$name/artifacts" -type f ! -name 'slow-unit-*' | wc -l)
   status=ok
+  if [ "$nslow" -ne 0 ]; then
+    mkdir -p "$findings/$name"
+    cp "$work/$name/artifacts/"slow-unit-* "$findings/$name/" 2>/dev/null || true
+    status="ok ($nslow slow unit(s) over 10 s, copied to $findings/$name/)"
+  fi
   if [ "$rc" -ne 0 ] || [ "$ncrash" -ne 0 ]; then
     status="FAILED (exit $rc, $ncrash finding(s))"
     failed=1

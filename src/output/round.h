@@ -36,6 +36,10 @@
 
 #define TR_ROUND_RADIUS 16
 #define TR_ROUND_PAIR_RADIUS2 16
+/* At most this many star checks (one candidate position against a point's tets) per
+ * mesh, a few seconds: past it the search stops and the stage fails as below, rather
+ * than searching for minutes on clusters of nearly degenerate Steiner points. */
+#define TR_ROUND_BUDGET 2000000
 
 /* Repairs m->xyz of the Steiner points of m's kept tets (real, not TR_TF_OUTER) as above.
  * *repaired = number of Steiner points whose double ends off its nearest rounding.

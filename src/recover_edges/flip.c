@@ -69,11 +69,14 @@ tr_status tr_flip23(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, v
   uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
   if (guard && guard(ud, f, 3))
     return TR_OK;
+  /* stop at the first failing side: a zero is often a rational point on a plane, which
+   * only the exact stage decides */
   int sg[3];
-  for (int i = 0; i < 3; i++)
+  for (int i = 0; i < 3; i++) {
     sg[i] = orient(m, a, b, f[i], f[(i + 1) % 3]);
-  if (sg[0] == 0 || sg[0] != sg[1] || sg[0] != sg[2])
-    return TR_OK;
+    if (sg[i] == 0 || sg[i] != sg[0])
+      return TR_OK;
+  }
   if (sg[0] < 0) {
     uint32_t x = a;
     a = b;

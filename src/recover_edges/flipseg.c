@@ -137,14 +137,70 @@ static int is_pipel(const struct tr_mesh *m, const tr_point *pa, const tr_point 
   return 0;
 }
 
+/* Memo of is_pipel by the tet's vertex list (slot order): every flip made and undone
+ * re-measures the same tets, and the points never move during flips. Open addressing,
+ * linear probing; an all-TR_NONE key (never a tet) marks an empty slot. On allocation
+ * failure the memo is skipped. */
 typedef struct seg {
   tr_point pa, pb;
+  uint32_t (*key)[4];
+  uint8_t *val;
+  uint32_t cap, n; /* cap: 0 or a power of two */
 } seg;
+
+static uint32_t seg_slot(const seg *g, const uint32_t v[4])
+{
+  uint64_t x = ((uint64_t)v[0] << 32 | v[1]) * 0x9E3779B97F4A7C15ull ^
+               ((uint64_t)v[2] << 32 | v[3]) * 0xC2B2AE3D27D4EB4Full;
+  uint32_t i = (uint32_t)(x >> 32) & (g->cap - 1);
+  while (g->key[i][0] != TR_NONE && memcmp(g->key[i], v, 4 * sizeof *v) != 0)
+    i = (i + 1) & (g->cap - 1);
+  return i;
+}
+
+static void seg_put(seg *g, const uint32_t v[4], int r)
+{
+  if (2 * (g->n + 1) > g->cap) {
+    uint32_t nc = g->cap ? 2 * g->cap : 256;
+    seg h = {g->pa, g->pb, malloc(nc * sizeof *h.key), malloc(nc * sizeof *h.val), nc, 0};
+    if (!h.key || !h.val) {
+      free(h.key);
+      free(h.val);
+      return;
+    }
+    memset(h.key, 0xff, nc * sizeof *h.key);
+    for (uint32_t i = 0; i < g->cap; i++)
+      if (g->key[i][0] != TR_NONE) {
+        uint32_t k = seg_slot(&h, g->key[i]);
+        memcpy(h.key[k], g->key[i], sizeof h.key[k]);
+        h.val[k] = g->val[i];
+        h.n++;
+      }
+    free(g->key);
+    free(g->val);
+    *g = h;
+  }
+  uint32_t i = seg_slot(g, v);
+  if (g->key[i][0] == TR_NONE) {
+    memcpy(g->key[i], v, sizeof g->key[i]);
+    g->n++;
+  }
+  g->val[i] = (uint8_t)r;
+}
 
 static int pipel_measure(void *ud, const struct tr_mesh *m, const uint32_t v[4])
 {
-  const seg *g = ud;
-  return is_pipel(m, &g->pa, &g->pb, v);
+  seg *g = ud;
+  if (v[3] == TR_GHOST)
+    return 0;
+  if (g->cap) {
+    uint32_t i = seg_slot(g, v);
+    if (g->key[i][0] != TR_NONE)
+      return g->val[i];
+  }
+  int r = is_pipel(m, &g->pa, &g->pb, v);
+  seg_put(g, v, r);
+  return r;
 }
 
 tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
@@ -154,7 +210,7 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
   cand *cs = NULL;
   uint32_t nc = 0, cap = 0, via;
   tr_status s = TR_OK;
-  seg g = {tr_mesh_point(m, a), tr_mesh_point(m, b)};
+  seg g = {tr_mesh_point(m, a), tr_mesh_point(m, b), NULL, NULL, 0, 0};
   tr_flip_journal j;
   memset(&j, 0, sizeof j);
   j.measure = pipel_measure;
@@ -195,6 +251,8 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
   else if (s == TR_OK && nc > 0)
     s = tr_pipe_collect(m, a, b, p, &via); /* undos may have moved tets to other slots */
   tr_flip_journal_free(&j);
+  free(g.key);
+  free(g.val);
   free(cs);
   return s;
 }

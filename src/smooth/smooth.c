@@ -87,9 +87,18 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
     return TR_OK;
   ekey *e = malloc(sizeof *e * ne);
   uint8_t *vused = calloc(nv ? nv : 1, 1);
-  if (!e || !vused) {
+  /* The geometric tests depend only on the quad's four points: an edge rejected by them
+   * stays rejected while neither triangle changes, so later passes skip the predicates.
+   * rej[s] = 1 + pass of the rejection of the pair whose first slot is s, with partner
+   * slot rejp[s]; changed[t] = 1 + last pass that rewrote triangle t. */
+  uint32_t *rej = calloc(ne, sizeof *rej), *rejp = malloc(sizeof *rejp * ne);
+  uint32_t *changed = calloc(nt, sizeof *changed);
+  if (!e || !vused || !rej || !rejp || !changed) {
     free(e);
     free(vused);
+    free(rej);
+    free(rejp);
+    free(changed);
     return tr_error(TR_ERR_NOMEM, "out of memory smoothing %u triangles", nt);
   }
   uint32_t *T = plc->tris;
@@ -125,14 +134,16 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
         continue;
       if (plc->tri_marker && plc->tri_marker[t1] != plc->tri_marker[t2])
         continue;
+      if (rej[s1] && rejp[s1] == s2 && changed[t1] < rej[s1] && changed[t2] < rej[s1])
+        continue;
       const double *pa = X + 3 * (size_t)A, *pb = X + 3 * (size_t)B, *pc = X + 3 * (size_t)C,
                    *pd = X + 3 * (size_t)D;
-      if (tr_orient3d(pa, pb, pc, pd) != 0)
+      if (tr_orient3d(pa, pb, pc, pd) != 0 || !convex_quad(pa, pb, pc, pd) ||
+          !tr_coplanar_incircle(pa, pc, pb, pd)) {
+        rej[s1] = (uint32_t)pass + 1;
+        rejp[s1] = s2;
         continue;
-      if (!convex_quad(pa, pb, pc, pd))
-        continue;
-      if (!tr_coplanar_incircle(pa, pc, pb, pd))
-        continue;
+      }
       if (has_edge(e, ne, B, D))
         continue;
       /* Quad A, D, C, B counter-clockwise about the normal: new (B, A, D), (D, C, B). */
@@ -143,6 +154,7 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
       T[3 * t2 + 1] = C;
       T[3 * t2 + 2] = B;
       vused[A] = vused[B] = vused[C] = vused[D] = 1;
+      changed[t1] = changed[t2] = (uint32_t)pass + 1;
       done++;
       i++;
     }
@@ -152,5 +164,8 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
   }
   free(e);
   free(vused);
+  free(rej);
+  free(rejp);
+  free(changed);
   return TR_OK;
 }
