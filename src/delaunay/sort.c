@@ -117,52 +117,30 @@ static void radix_sort(kv *a, kv *tmp, size_t n)
   }
   enum { PASSES = 7 };
   static_assert(ROUND_SHIFT + 4 <= 8 * PASSES, "the key fits the passes");
-  uint32_t (*cnt)[256] = calloc(PASSES, sizeof *cnt);
+  uint32_t cnt[PASSES][256]; /* 7 KB: on the stack, nothing to fail */
+  memset(cnt, 0, sizeof cnt);
   kv *src = a, *dst = tmp;
-  if (!cnt) { /* no room for the tables: count pass by pass on the stack */
-    for (int pass = 0; pass < PASSES; pass++) {
-      uint32_t c1[256] = {0};
-      const int sh = 8 * pass;
-      for (size_t i = 0; i < n; i++)
-        c1[(src[i].key >> sh) & 255]++;
-      if (c1[(src[0].key >> sh) & 255] == n)
-        continue;
-      uint32_t sum = 0;
-      for (int d = 0; d < 256; d++) {
-        uint32_t c = c1[d];
-        c1[d] = sum;
-        sum += c;
-      }
-      for (size_t i = 0; i < n; i++)
-        dst[c1[(src[i].key >> sh) & 255]++] = src[i];
-      kv *s = src;
-      src = dst;
-      dst = s;
+  for (size_t i = 0; i < n; i++) {
+    const uint64_t k = a[i].key;
+    for (int pass = 0; pass < PASSES; pass++)
+      cnt[pass][(k >> 8 * pass) & 255]++;
+  }
+  for (int pass = 0; pass < PASSES; pass++) {
+    uint32_t *c1 = cnt[pass];
+    const int sh = 8 * pass;
+    if (c1[(src[0].key >> sh) & 255] == n)
+      continue;
+    uint32_t sum = 0;
+    for (int d = 0; d < 256; d++) {
+      uint32_t c = c1[d];
+      c1[d] = sum;
+      sum += c;
     }
-  } else {
-    for (size_t i = 0; i < n; i++) {
-      const uint64_t k = a[i].key;
-      for (int pass = 0; pass < PASSES; pass++)
-        cnt[pass][(k >> 8 * pass) & 255]++;
-    }
-    for (int pass = 0; pass < PASSES; pass++) {
-      uint32_t *c1 = cnt[pass];
-      const int sh = 8 * pass;
-      if (c1[(src[0].key >> sh) & 255] == n)
-        continue;
-      uint32_t sum = 0;
-      for (int d = 0; d < 256; d++) {
-        uint32_t c = c1[d];
-        c1[d] = sum;
-        sum += c;
-      }
-      for (size_t i = 0; i < n; i++)
-        dst[c1[(src[i].key >> sh) & 255]++] = src[i];
-      kv *s = src;
-      src = dst;
-      dst = s;
-    }
-    free(cnt);
+    for (size_t i = 0; i < n; i++)
+      dst[c1[(src[i].key >> sh) & 255]++] = src[i];
+    kv *s = src;
+    src = dst;
+    dst = s;
   }
   if (src != a)
     memcpy(a, src, n * sizeof *a);

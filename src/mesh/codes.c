@@ -26,6 +26,18 @@ int tr_ncode(const struct tr_mesh *m, uint32_t t, uint32_t v)
   return -1;
 }
 
+int tr_tet_even_order(const struct tr_mesh *m, uint32_t t, const uint32_t p[4])
+{
+  int pos[4], inv = 0;
+  for (int i = 0; i < 4; i++)
+    if ((pos[i] = tr_ncode(m, t, p[i])) < 0)
+      return -1;
+  for (int i = 0; i < 4; i++)
+    for (int j = i + 1; j < 4; j++)
+      inv += pos[i] > pos[j];
+  return (inv & 1) == 0;
+}
+
 int tr_tet_ecode(const struct tr_mesh *m, uint32_t t, uint32_t a, uint32_t b)
 {
   int i = tr_ncode(m, t, a), j = tr_ncode(m, t, b);

@@ -162,6 +162,9 @@ int tr_ncode(const struct tr_mesh *m, uint32_t t, uint32_t v);
 int tr_tet_ecode(const struct tr_mesh *m, uint32_t t, uint32_t a, uint32_t b);
 /* FCode of face {a,b,c} in t: the slot of the fourth vertex, -1 if not a face of t. */
 int tr_fcode(const struct tr_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c);
+/* Parity of (p0..p3) as an ordering of t's vertices: 1 even (same orientation as t), 0
+ * odd, -1 if they are not t's vertices. */
+int tr_tet_even_order(const struct tr_mesh *m, uint32_t t, const uint32_t p[4]);
 
 /* ---- traversals (iter.c) ---- */
 /* Ball(P): every tet incident to vertex p, found by a breadth-first search through faces

@@ -114,19 +114,6 @@ static uint32_t shared_third(const struct tr_mesh *m, uint32_t t, uint32_t u, ui
   return TR_NONE;
 }
 
-/* Parity of (p0..p3) as a permutation of tet t's slots: 1 even, 0 odd, -1 not its vertices. */
-static int even_in(const struct tr_mesh *m, uint32_t t, const uint32_t p[4])
-{
-  int pos[4], inv = 0;
-  for (int i = 0; i < 4; i++)
-    if ((pos[i] = tr_ncode(m, t, p[i])) < 0)
-      return -1;
-  for (int i = 0; i < 4; i++)
-    for (int j = i + 1; j < 4; j++)
-      inv += pos[i] > pos[j];
-  return (inv & 1) == 0;
-}
-
 typedef struct ering {
   const struct tr_mesh *m;
   uint32_t A, B;
@@ -236,7 +223,7 @@ tr_status tr_flip_remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_
     uint32_t p[4] = {a, b, ring[(i + n - 1) % n], ring[i]};
     if (p[2] == TR_GHOST || p[3] == TR_GHOST)
       continue;
-    int e = even_in(m, old[i], p);
+    int e = tr_tet_even_order(m, old[i], p);
     if (e < 0 || (sign && (e ? 1 : -1) != sign))
       ok = 0;
     sign = e ? 1 : -1;

@@ -92,4 +92,18 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
 tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, void *ud,
                       tr_flip_journal *j, int *done);
 
+/* 1 iff a and b are the same edge (v[2] == TR_NONE) or the same triangle, whatever the
+ * order of their vertices: the flip drivers list each crossed edge and face once. */
+static inline int tr_same_simplex(const uint32_t a[3], const uint32_t b[3])
+{
+  if ((a[2] == TR_NONE) != (b[2] == TR_NONE))
+    return 0;
+  if (a[2] == TR_NONE)
+    return (a[0] == b[0] && a[1] == b[1]) || (a[0] == b[1] && a[1] == b[0]);
+  for (int i = 0; i < 3; i++)
+    if (a[i] != b[0] && a[i] != b[1] && a[i] != b[2])
+      return 0;
+  return 1;
+}
+
 #endif

@@ -28,19 +28,6 @@ static int cons_guard(void *ud, const uint32_t *v, int nv)
   return nv == 2 && tr_edgeset_get(ud, v[0], v[1]) != TR_EDGESET_NONE;
 }
 
-static int same_cand(const cand *x, const cand *y)
-{
-  if ((x->v[2] == TR_NONE) != (y->v[2] == TR_NONE))
-    return 0;
-  if (x->v[2] == TR_NONE)
-    return (x->v[0] == y->v[0] && x->v[1] == y->v[1]) ||
-           (x->v[0] == y->v[1] && x->v[1] == y->v[0]);
-  for (int i = 0; i < 3; i++)
-    if (x->v[i] != y->v[0] && x->v[i] != y->v[1] && x->v[i] != y->v[2])
-      return 0;
-  return 1;
-}
-
 /* The crossed faces and edges of the pipe, each once. */
 static tr_status list_cands(const struct tr_mesh *m, const tr_pipe *p, cand **out, uint32_t *n,
                             uint32_t *cap)
@@ -69,7 +56,7 @@ static tr_status list_cands(const struct tr_mesh *m, const tr_pipe *p, cand **ou
       }
       int dup = 0;
       for (uint32_t j = 0; j < *n && !dup; j++)
-        dup = same_cand(&(*out)[j], &c);
+        dup = tr_same_simplex((*out)[j].v, c.v);
       if (dup)
         continue;
       if (*n == *cap) {

@@ -48,19 +48,6 @@ tr_status tr_swap23(struct tr_mesh *m, uint32_t t1, int k1, uint32_t out[3], int
   return TR_OK;
 }
 
-/* 1 iff (p0,p1,p2,p3) lists tet t's vertices in an even order. */
-static int even_order(const struct tr_mesh *m, uint32_t t, const uint32_t p[4])
-{
-  int pos[4], inv = 0;
-  for (int i = 0; i < 4; i++)
-    if ((pos[i] = tr_ncode(m, t, p[i])) < 0)
-      return -1;
-  for (int i = 0; i < 4; i++)
-    for (int j = i + 1; j < 4; j++)
-      inv += pos[i] > pos[j];
-  return (inv & 1) == 0;
-}
-
 /* The vertex of t that is none of a, b, c. */
 static uint32_t fourth(const struct tr_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c)
 {
@@ -106,7 +93,7 @@ tr_status tr_swap44(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint3
   ids[TR_DV_D] = d;
   uint32_t w0 = fourth(m, with_a[0], a, c, d), w1 = fourth(m, with_a[1], a, c, d);
   uint32_t p[4] = {a, c, d, w0};
-  int e0 = even_order(m, with_a[0], p);
+  int e0 = tr_tet_even_order(m, with_a[0], p);
   if (e0 < 0)
     return TR_OK;
   if (e0) {

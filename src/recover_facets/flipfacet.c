@@ -18,23 +18,10 @@ typedef struct fcand {
   int k;         /* face code in t */
 } fcand;
 
-static int same(const fcand *x, const fcand *y)
-{
-  if ((x->v[2] == TR_NONE) != (y->v[2] == TR_NONE))
-    return 0;
-  if (x->v[2] == TR_NONE)
-    return (x->v[0] == y->v[0] && x->v[1] == y->v[1]) ||
-           (x->v[0] == y->v[1] && x->v[1] == y->v[0]);
-  for (int i = 0; i < 3; i++)
-    if (x->v[i] != y->v[0] && x->v[i] != y->v[1] && x->v[i] != y->v[2])
-      return 0;
-  return 1;
-}
-
 static tr_status push(fcand **a, uint32_t *n, uint32_t *cap, const fcand *c)
 {
   for (uint32_t j = 0; j < *n; j++)
-    if (same(&(*a)[j], c))
+    if (tr_same_simplex((*a)[j].v, c->v))
       return TR_OK;
   if (*n == *cap) {
     uint32_t nc = *cap ? 2 * *cap : 32;

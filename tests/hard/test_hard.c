@@ -18,16 +18,7 @@
 #include "mesh/conform.h"
 #include "pipeline/pipeline.h"
 
-static int failures;
-#define EXPECT(cond, ...)                                  \
-  do {                                                     \
-    if (!(cond)) {                                         \
-      fprintf(stderr, "FAIL %s:%d: ", __FILE__, __LINE__); \
-      fprintf(stderr, __VA_ARGS__);                        \
-      fprintf(stderr, "\n");                               \
-      failures++;                                          \
-    }                                                      \
-  } while (0)
+#include "../pipeline/texpect.h"
 
 static void run_case(const hard_case *c)
 {

@@ -13,18 +13,10 @@
 #include "pipeline/pipeline.h"
 #include "smooth/smooth.h"
 
-static int failures;
+#include "texpect.h"
+
 /* What tr_check_mesh checks; the Euler test assumes a ball (not true with a cavity). */
 static unsigned chk_what = TR_CHK_TOPOLOGY;
-#define EXPECT(cond, ...)                                               \
-  do {                                                                  \
-    if (!(cond)) {                                                      \
-      fprintf(stderr, "FAIL %s:%d: ", __FILE__, __LINE__);              \
-      fprintf(stderr, __VA_ARGS__);                                     \
-      fprintf(stderr, "\n");                                            \
-      failures++;                                                       \
-    }                                                                   \
-  } while (0)
 
 /* ---- PLC builders ---- */
 typedef struct {

@@ -17,16 +17,7 @@
 #include "output/round.h"
 #include "pipeline/pipeline.h"
 
-static int failures;
-#define EXPECT(cond, ...)                                               \
-  do {                                                                  \
-    if (!(cond)) {                                                      \
-      fprintf(stderr, "FAIL %s:%d: ", __FILE__, __LINE__);              \
-      fprintf(stderr, __VA_ARGS__);                                     \
-      fprintf(stderr, "\n");                                            \
-      failures++;                                                       \
-    }                                                                   \
-  } while (0)
+#include "texpect.h"
 
 static const char *outdir = ".";
 
