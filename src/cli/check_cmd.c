@@ -171,7 +171,7 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
   int rounded = nsteiner && !exact_file;
   int with_volume = !rounded && !allow_open;
   int smoothed = 0;
-  tr_status st = tr_input_volume6(surface, v6);
+  tr_status st = tr_input_domain_volume6(surface, v6); /* internal facets, cracks too */
   if (st == TR_OK)
     st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, with_volume ? v6 : NULL);
   if (st == TR_OK && !rounded)
