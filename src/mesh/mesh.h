@@ -154,6 +154,15 @@ static inline void tr_glue(struct tr_mesh *m, uint32_t t1, int k1, uint32_t t2, 
   m->tn[4 * (size_t)t2 + (size_t)k2] = 4 * t1 + (uint32_t)k1;
 }
 
+/* Sorts three vertex ids in place: the key of a face whatever its orientation. */
+static inline void tr_sort3(uint32_t f[3])
+{
+  uint32_t t;
+  if (f[0] > f[1]) { t = f[0]; f[0] = f[1]; f[1] = t; }
+  if (f[1] > f[2]) { t = f[1]; f[1] = f[2]; f[2] = t; }
+  if (f[0] > f[1]) { t = f[0]; f[0] = f[1]; f[1] = t; }
+}
+
 /* ---- the paper's codes ---- */
 /* NCode: slot 0..3 of vertex v in t, -1 if v is not a vertex of t. */
 int tr_ncode(const struct tr_mesh *m, uint32_t t, uint32_t v);

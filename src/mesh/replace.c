@@ -25,15 +25,12 @@ static int cmp_rec(const void *pa, const void *pb)
   return a->code < b->code ? -1 : a->code > b->code;
 }
 
+/* The vertices of face k of tet tv, sorted (the face's key from either side). */
 static void face_sorted(const uint32_t *tv, int k, uint32_t out[3])
 {
-  uint32_t a = tv[tr_face_vtx[k][0]], b = tv[tr_face_vtx[k][1]], c = tv[tr_face_vtx[k][2]], t;
-  if (a > b) { t = a; a = b; b = t; }
-  if (b > c) { t = b; b = c; c = t; }
-  if (a > b) { t = a; a = b; b = t; }
-  out[0] = a;
-  out[1] = b;
-  out[2] = c;
+  for (int i = 0; i < 3; i++)
+    out[i] = tv[tr_face_vtx[k][i]];
+  tr_sort3(out);
 }
 
 tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,

@@ -19,17 +19,6 @@ static int cmp_fkey(const void *pa, const void *pb)
   return a->id < b->id ? -1 : a->id > b->id;
 }
 
-static void sort3(uint32_t *s)
-{
-  for (int i = 0; i < 2; i++)
-    for (int j = 0; j < 2 - i; j++)
-      if (s[j] > s[j + 1]) {
-        uint32_t x = s[j];
-        s[j] = s[j + 1];
-        s[j + 1] = x;
-      }
-}
-
 static void sort4(uint32_t *s)
 {
   for (int i = 0; i < 3; i++)
@@ -101,7 +90,7 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
   }
   for (uint32_t j = 0; j < ns; j++) {
     memcpy(keys[j].k, sub->v + 3 * (size_t)j, 3 * sizeof(uint32_t));
-    sort3(keys[j].k);
+    tr_sort3(keys[j].k);
     keys[j].id = j;
   }
   qsort(keys, ns, sizeof *keys, cmp_fkey);
@@ -114,7 +103,7 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
       uint32_t s[3];
       for (int i = 0; i < 3; i++)
         s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
-      sort3(s);
+      tr_sort3(s);
       const fkey *f = find_face(keys, ns, s);
       if (!f)
         continue;
@@ -194,7 +183,7 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
       uint32_t s[3];
       for (int i = 0; i < 3; i++)
         s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
-      sort3(s);
+      tr_sort3(s);
       const fkey *f = find_face(keys, ns, s);
       const uint32_t *a = sub->v + 3 * (size_t)f->id;
       /* FLAGE from the NCodes: the sub-face is ordered like its (outward) triangle. */

@@ -74,14 +74,6 @@ typedef struct ctx {
   int forced;      /* force_first already used */
 } ctx;
 
-static void sort3(uint32_t f[3])
-{
-  uint32_t t;
-  if (f[0] > f[1]) { t = f[0]; f[0] = f[1]; f[1] = t; }
-  if (f[1] > f[2]) { t = f[1]; f[1] = f[2]; f[2] = t; }
-  if (f[0] > f[1]) { t = f[0]; f[0] = f[1]; f[1] = t; }
-}
-
 /* A face of the clusterel with two cut edges: X the apex, (X, U, V) the face in outward
  * order (dtype.h's definition of S and Z). Local codes. */
 typedef struct quad {
@@ -177,7 +169,7 @@ static tr_status plan_clusterel(ctx *cx, const tr_clusterel *c)
     if (!qd[k].on)
       continue;
     uint32_t f[3] = {tv[qd[k].x], tv[qd[k].u], tv[qd[k].v]};
-    sort3(f);
+    tr_sort3(f);
     const diag *dg = dmap_slot(&cx->dm, f);
     if (dg->f[0] != TR_NONE) {
       uint32_t sa = tv[qd[k].v], sb = sp[qd[k].x][qd[k].u];
@@ -278,7 +270,7 @@ static tr_status plan_clusterel(ctx *cx, const tr_clusterel *c)
       return tr_error(TR_ERR_INTERNAL, "facet %u: clusterel %u face %d split against the "
                       "neighbour's choice", cx->idx, c->iele, k);
     uint32_t f[3] = {tv[qd[k].x], tv[qd[k].u], tv[qd[k].v]};
-    sort3(f);
+    tr_sort3(f);
     diag *dg = dmap_slot(&cx->dm, f);
     if (dg->f[0] == TR_NONE) {
       uint32_t a = dt == TR_DTYPE_S ? tv[qd[k].v] : tv[qd[k].u];

@@ -15,17 +15,6 @@ typedef struct keep {
   uint32_t n, cap;
 } keep;
 
-static void sort3(const uint32_t *v, uint32_t o[3])
-{
-  uint32_t a = v[0], b = v[1], c = v[2], t;
-  if (a > b) { t = a; a = b; b = t; }
-  if (b > c) { t = b; b = c; c = t; }
-  if (a > b) { t = a; a = b; b = t; }
-  o[0] = a;
-  o[1] = b;
-  o[2] = c;
-}
-
 static uint32_t face_slot(const keep *k, const uint32_t o[3])
 {
   uint64_t h = o[0] * 0x9e3779b97f4a7c15ull ^ o[1] * 0xc2b2ae3d27d4eb4full ^
@@ -57,7 +46,8 @@ static tr_status keep_face(keep *k, const uint32_t *v)
     free(old);
   }
   uint32_t o[3];
-  sort3(v, o);
+  memcpy(o, v, 3 * sizeof *o);
+  tr_sort3(o);
   uint32_t j = face_slot(k, o);
   if (k->f[3 * (size_t)j] == TR_NONE) {
     memcpy(k->f + 3 * (size_t)j, o, sizeof o);
@@ -74,7 +64,8 @@ static int keep_guard(void *ud, const uint32_t *v, int nv)
   if (k->cap == 0)
     return 0;
   uint32_t o[3];
-  sort3(v, o);
+  memcpy(o, v, 3 * sizeof *o);
+  tr_sort3(o);
   return k->f[3 * (size_t)face_slot(k, o)] != TR_NONE;
 }
 
