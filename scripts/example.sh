@@ -8,4 +8,7 @@ ninja -C "$dir" src/cli/tetrec >/dev/null
 out=$(mktemp -d)
 "$dir/src/cli/tetrec" mesh examples/data/cube.off -o "$out/cube.mesh" --stats "$out/cube.json"
 "$dir/src/cli/tetrec" check examples/data/cube.off "$out/cube.mesh"
+# the same mesh with exact Steiner coordinates: check then verifies exact conformity and volume
+"$dir/src/cli/tetrec" mesh examples/data/cube.off -o "$out/cube.node" --exact -q
+"$dir/src/cli/tetrec" check examples/data/cube.off "$out/cube.node"
 echo "wrote $out/cube.mesh"
