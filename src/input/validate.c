@@ -437,6 +437,7 @@ done:
 tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt)
 {
   tr_error_clear();
+  plc->validated = 0;
   tr_options def;
   if (!opt) {
     tr_options_default(&def);
@@ -471,6 +472,7 @@ tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt)
     st = tr_input_self_intersections(plc, tnum);
   free(plc->report);
   plc->report = tr_report_finish(&rep);
+  plc->validated = st == TR_OK ? (uint8_t)(1 + (opt->allow_open != 0)) : 0;
   free(orig);
   free(tnum);
   return st;

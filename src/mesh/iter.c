@@ -2,6 +2,7 @@
 #include "mesh.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out)
 {
@@ -38,6 +39,64 @@ tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out
       out->a[j++] = t;
   }
   out->n = j;
+  return s;
+}
+
+static int tet_has(const uint32_t *tv, uint32_t x)
+{
+  return tv[0] == x || tv[1] == x || tv[2] == x || tv[3] == x;
+}
+
+tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, uint32_t *t)
+{
+  *t = TR_NONE;
+  if (p >= m->nv)
+    return tr_error(TR_ERR_INTERNAL, "Ball(%u): no such vertex (%u vertices)", p, m->nv);
+  uint32_t t0 = m->v2t[p];
+  if (t0 == TR_NONE || t0 >= m->nt || tr_ncode(m, t0, p) < 0)
+    return tr_error(TR_ERR_INVALID_MESH, "Ball(%u): v2t[%u] = %u does not contain the vertex",
+                    p, p, t0);
+  /* The queue lives on the stack until it outgrows it (a vertex of very high degree). */
+  uint32_t local[256], *q = local, nq = 0, cap = 256;
+  tr_status s = TR_OK;
+  q[nq++] = t0;
+  m->flags[t0] |= TR_TF_MARK;
+  for (uint32_t i = 0; i < nq && *t == TR_NONE; i++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)q[i];
+    if (tet_has(tv, b) && (c == TR_NONE || tet_has(tv, c))) {
+      *t = q[i];
+      if (tr_tet_is_real(m, q[i]))
+        break;
+      *t = TR_NONE; /* a hull edge or face is also in the real tet across the hull */
+    }
+    for (int k = 0; k < 4; k++) {
+      if (tv[k] == p)
+        continue;
+      uint32_t u = TR_NEIG(m, q[i], k);
+      if (u == TR_NONE || (m->flags[u] & TR_TF_MARK))
+        continue;
+      if (nq == cap) {
+        uint32_t nc = 2 * cap, *nqa = malloc(sizeof *nqa * nc);
+        if (!nqa) {
+          s = tr_error(TR_ERR_NOMEM, "out of memory for Ball(%u)", p);
+          break;
+        }
+        memcpy(nqa, q, sizeof *q * nq);
+        if (q != local)
+          free(q);
+        q = nqa;
+        cap = nc;
+      }
+      m->flags[u] |= TR_TF_MARK;
+      q[nq++] = u;
+    }
+    if (s != TR_OK)
+      break;
+  }
+  for (uint32_t i = 0; i < nq; i++)
+    m->flags[q[i]] &= (uint8_t)~TR_TF_MARK;
+  if (q != local)
+    free(q);
   return s;
 }
 

@@ -180,6 +180,11 @@ int tr_tet_even_order(const struct tr_mesh *m, uint32_t t, const uint32_t p[4]);
  * containing p from v2t[p]. Ghost tets are included iff with_ghosts. out is reset first.
  * TR_ERR_INVALID_MESH if v2t[p] does not contain p. */
 tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out);
+/* The same search, stopped at the first real tet that also has vertex b and, unless c is
+ * TR_NONE, vertex c: *t = that tet, TR_NONE if p, b (, c) span no edge (face) of the mesh
+ * (an edge or face on the hull is also in the real tet inside it). The presence tests of
+ * both recovery stages: no allocation for balls of up to 256 tets. */
+tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, uint32_t *t);
 /* Shell(E): the tets around edge {a,b} in rotational order, starting with t0 (a tet that
  * has edge ab; TR_NONE = find one through Ball(a)). Rotation is right-handed about a->b:
  * for consecutive tets the third vertices turn counter-clockwise seen from b towards a.

@@ -35,7 +35,8 @@ static tr_status copy_plc(const tr_plc *in, tr_plc **out)
   if (st != TR_OK) {
     tr_plc_destroy(p);
     *out = NULL;
-  }
+  } else
+    p->validated = in->validated;
   return st;
 }
 
@@ -73,9 +74,10 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   memset(&sub, 0, sizeof sub);
   double secs[2];
   tr_status st = copy_plc(plc, &p);
-  /* Validation works on a copy: the caller's PLC is const and may already have been
-   * validated (then nothing changes: the repairs are idempotent). */
-  if (st == TR_OK)
+  /* Validation works on a copy: the caller's PLC is const. One the caller validated
+   * (tetrec mesh does, to print its report) is not validated twice, unless it was
+   * validated as open and this call wants a closed surface. */
+  if (st == TR_OK && !(p->validated == 1 || (p->validated == 2 && opt.allow_open)))
     st = tr_plc_validate(p, &opt);
   if (st == TR_OK && p->ntris == 0 && p->nsegs == 0)
     st = tr_error(TR_ERR_INPUT, "the input has no triangles to recover");

@@ -31,12 +31,9 @@ static tr_status pipe_push(tr_pipe *p, const tr_pipel *x)
 
 tr_status tr_mesh_has_edge(struct tr_mesh *m, uint32_t a, uint32_t b, int *yes)
 {
-  tr_u32buf ball = {0};
-  *yes = 0;
-  tr_status s = tr_ball(m, a, 0, &ball);
-  for (size_t i = 0; s == TR_OK && i < ball.n && !*yes; i++)
-    *yes = tr_ncode(m, ball.a[i], b) >= 0;
-  tr_u32buf_free(&ball);
+  uint32_t t;
+  tr_status s = tr_ball_find(m, a, b, TR_NONE, &t);
+  *yes = s == TR_OK && t != TR_NONE;
   return s;
 }
 

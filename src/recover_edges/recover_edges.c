@@ -100,6 +100,14 @@ static tr_status walk_chain(ctx *c, uint32_t a, uint32_t b, tr_u32buf *out)
   for (uint32_t steps = 0; v != b; steps++) {
     if (steps > m->nv)
       return tr_error(TR_ERR_INTERNAL, "walk %u-%u does not end", a, b);
+    /* A mesh edge v-b has no vertex inside it: the chain ends there (most input edges
+     * are one mesh edge, and the early-exit search is far cheaper than a ball scan). */
+    uint32_t tb;
+    TR_CHECK(tr_ball_find(m, v, b, TR_NONE, &tb));
+    if (tb != TR_NONE) {
+      TR_CHECK(tr_u32buf_push(out, b));
+      break;
+    }
     TR_CHECK(tr_ball(m, v, 0, &c->ball));
     tr_point pv = tr_mesh_point(m, v);
     uint32_t next = TR_NONE;

@@ -494,6 +494,19 @@ tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t
   if (!tr_orient2d_proj_p(&pe, &pf, &pg, 0) && !tr_orient2d_proj_p(&pe, &pf, &pg, 1) &&
       !tr_orient2d_proj_p(&pe, &pf, &pg, 2))
     return tr_error(TR_ERR_UNSUPPORTED, "facet %u (%u %u %u) is degenerate", idx, e, f, g);
+  /* Most facets are faces of the Delaunay mesh already: then the facet is that one face,
+   * listed as the cluster path would list it (turning like efg, smallest id first). */
+  uint32_t t;
+  TR_CHECK(tr_ball_find(m, e, f, g, &t));
+  if (t != TR_NONE) {
+    uint32_t w[3] = {e, f, g};
+    int s0 = f < w[0] ? 1 : 0;
+    if (g < w[s0])
+      s0 = 2;
+    for (int q = 0; q < 3 && faces; q++)
+      TR_CHECK(tr_u32buf_push(faces, w[(s0 + q) % 3]));
+    return TR_OK;
+  }
   TR_CHECK(tr_cluster_collect(m, e, f, g, &cl, &ncl));
   tr_status st = tr_facet_faces_of_cluster(m, idx, e, f, g, cl, ncl, 0, &present, faces);
   if (st != TR_OK || present) {
