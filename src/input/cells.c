@@ -29,6 +29,7 @@
 
 #include "classify.h"
 #include "construct.h"
+#include "core/edgesort.h"
 #include "predicates.h"
 #include "validate.h"
 
@@ -320,7 +321,7 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
     e[i] = i;
   for (uint32_t i = 0; i < 2 * nt; i++)
     uf[i] = i;
-  if ((st = tr_sort_ids(e, ne, cmp_edge, plc->tris)) != TR_OK)
+  if ((st = tr_edge_slots_sorted(plc->tris, nt, plc->npoints, e)) != TR_OK)
     goto done;
   for (uint32_t i = 0; i < ne;) {
     uint32_t j = i + 1;

@@ -1,13 +1,20 @@
 /* Exact detection of improperly intersecting input triangles.
  *
- * Two triangles may meet only in a common vertex or a common edge. Broad phase: sort by
- * the low x of the bounding boxes and sweep (boxes are exact doubles, compared closed).
+ * Two triangles may meet only in a common vertex or a common edge. Broad phase: a uniform
+ * grid of cells about the size of a triangle's box; each triangle is listed in the cells
+ * its box covers, and a pair whose boxes meet (exact doubles, compared closed) is tested
+ * in the one cell that holds the low corner of the boxes' intersection. Cell indices come
+ * from rounded arithmetic, which is harmless: the same monotone function places boxes
+ * and corners, so that corner's cell is covered by both boxes. Surfaces whose boxes would
+ * fill too many cells (long slivers across the domain) take a sweep along the longest
+ * axis instead, which tests the same pairs.
  * Narrow phase: if the non-shared corners of one triangle lie strictly on one side of
  * the other's plane, the two can only meet in the shared vertices (exact orient3d).
  * Otherwise the intersection of two closed triangles, when not empty, contains a point
  * of an edge of one of them, so classifying the six edges against the other triangle
  * (classify.h, exact, coplanar overlaps included) finds it; a hit is allowed only at a
  * vertex the two triangles share. */
+#include <math.h>
 #include <stdlib.h>
 
 #include "classify.h"
@@ -16,8 +23,9 @@
 
 typedef struct {
   const struct tr_plc *plc;
-  double *lo; /* 3 per triangle */
-  int axis;   /* sweep axis: the longest extent of the input, fewest overlaps */
+  double *lo, *hi; /* 3 per triangle */
+  int axis;        /* sweep axis: the longest extent of the input, fewest overlaps */
+  uint32_t bx, by; /* the improper pair found first in (x, y) order, x < y; bx = n: none */
 } sweep;
 
 static int cmp_lox(const void *ctx, uint32_t a, uint32_t b)
@@ -25,6 +33,15 @@ static int cmp_lox(const void *ctx, uint32_t a, uint32_t b)
   const sweep *s = ctx;
   double x = s->lo[3 * (size_t)a + s->axis], y = s->lo[3 * (size_t)b + s->axis];
   return (x > y) - (x < y);
+}
+
+static int boxes_meet(const sweep *s, uint32_t i, uint32_t j)
+{
+  for (int d = 0; d < 3; d++)
+    if (s->lo[3 * (size_t)j + d] > s->hi[3 * (size_t)i + d] ||
+        s->lo[3 * (size_t)i + d] > s->hi[3 * (size_t)j + d])
+      return 0;
+  return 1;
 }
 
 static const double *P(const struct tr_plc *plc, uint32_t v) { return plc->xyz + 3 * (size_t)v; }
@@ -72,19 +89,198 @@ static int improper(const struct tr_plc *plc, uint32_t i, uint32_t j)
   return edges_hit(plc, t, u) || edges_hit(plc, u, t);
 }
 
-tr_status tr_input_self_intersections(const struct tr_plc *plc, const uint32_t *tri_orig)
+static int improper(const struct tr_plc *plc, uint32_t i, uint32_t j);
+
+/* Every pair is tested (no early exit) and the reported one is the least (x, y): the
+ * message does not depend on the broad phase. */
+static void consider(sweep *s, uint32_t i, uint32_t j)
 {
-  uint32_t n = plc->ntris;
-  sweep s = {plc, malloc(sizeof(double) * 6 * (size_t)(n ? n : 1)), 0};
+  uint32_t x = i < j ? i : j, y = i < j ? j : i;
+  if (x > s->bx || (x == s->bx && y >= s->by))
+    return;
+  if (improper(s->plc, x, y)) {
+    s->bx = x;
+    s->by = y;
+  }
+}
+
+static tr_status by_sweep(sweep *s, uint32_t n)
+{
   uint32_t *ord = malloc(sizeof *ord * (n ? n : 1));
+  double *box = malloc(sizeof *box * 2 * (size_t)(n ? n : 1));
   tr_status st = TR_OK;
-  if (!s.lo || !ord) {
+  if (!ord || !box) {
     st = tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
     goto done;
   }
-  double *hi = s.lo + 3 * (size_t)n;
-  for (uint32_t t = 0; t < n; t++) {
+  for (uint32_t t = 0; t < n; t++)
     ord[t] = t;
+  if ((st = tr_sort_ids(ord, n, cmp_lox, s)) != TR_OK)
+    goto done;
+  /* the sweep-axis interval of each box, in sweep order: the inner loop streams */
+  for (uint32_t a = 0; a < n; a++) {
+    box[2 * (size_t)a] = s->lo[3 * (size_t)ord[a] + s->axis];
+    box[2 * (size_t)a + 1] = s->hi[3 * (size_t)ord[a] + s->axis];
+  }
+  for (uint32_t a = 0; a < n; a++)
+    for (uint32_t b = a + 1; b < n && box[2 * (size_t)b] <= box[2 * (size_t)a + 1]; b++)
+      if (boxes_meet(s, ord[a], ord[b]))
+        consider(s, ord[a], ord[b]);
+done:
+  free(ord);
+  free(box);
+  return st;
+}
+
+typedef struct {
+  double org[3], inv[3]; /* cell of x on axis d: floor((x - org) * inv), clamped */
+  uint32_t dim[3];
+} grid;
+
+static uint32_t cell_of(const grid *g, int d, double x)
+{
+  double c = (x - g->org[d]) * g->inv[d];
+  if (!(c > 0)) /* also NaN-safe, though coordinates are finite */
+    return 0;
+  return c >= (double)(g->dim[d] - 1) ? g->dim[d] - 1 : (uint32_t)c;
+}
+
+/* Cells covered by t's box: [c0, c1] per axis; returns their number, capped. */
+static uint64_t cover(const grid *g, const sweep *s, uint32_t t, uint32_t c0[3], uint32_t c1[3])
+{
+  uint64_t k = 1;
+  for (int d = 0; d < 3; d++) {
+    c0[d] = cell_of(g, d, s->lo[3 * (size_t)t + d]);
+    c1[d] = cell_of(g, d, s->hi[3 * (size_t)t + d]);
+    k *= (uint64_t)(c1[d] - c0[d] + 1);
+  }
+  return k;
+}
+
+/* *fallback = 1: the grid would hold too many entries (unless force): use the sweep. */
+static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, int *fallback)
+{
+  *fallback = 1;
+  grid g;
+  double size = 0, lo0[3];
+  for (int d = 0; d < 3; d++) {
+    lo0[d] = s->lo[d];
+    for (uint32_t t = 1; t < n; t++)
+      lo0[d] = s->lo[3 * (size_t)t + d] < lo0[d] ? s->lo[3 * (size_t)t + d] : lo0[d];
+  }
+  for (uint32_t t = 0; t < n; t++) {
+    double m = 0;
+    for (int d = 0; d < 3; d++) {
+      double w = s->hi[3 * (size_t)t + d] - s->lo[3 * (size_t)t + d];
+      m = w > m ? w : m;
+    }
+    size += m;
+  }
+  size /= n; /* the mean box size: about one triangle per cell and axis */
+  if (!(size > 0) || !isfinite(size))
+    return TR_OK;
+  /* at most ~2n cells */
+  for (;;) {
+    double cells = 1;
+    for (int d = 0; d < 3; d++)
+      cells *= floor(ext[d] / size) + 1;
+    if (cells <= 2.0 * n + 8)
+      break;
+    size *= 1.25;
+  }
+  uint64_t ncell = 1;
+  for (int d = 0; d < 3; d++) {
+    g.org[d] = lo0[d];
+    g.dim[d] = (uint32_t)(floor(ext[d] / size) + 1);
+    g.inv[d] = 1.0 / size;
+    ncell *= g.dim[d];
+  }
+  uint32_t *start = calloc(ncell + 1, sizeof *start), *list = NULL;
+  tr_status st = TR_OK;
+  if (!start)
+    return tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
+  uint64_t total = 0, cap = 16 * (uint64_t)n + 4096;
+  uint32_t c0[3], c1[3];
+  for (uint32_t t = 0; t < n && (force || total <= cap); t++)
+    total += cover(&g, s, t, c0, c1);
+  if (total > cap && !force)
+    goto done; /* slivers across many cells */
+  if (total > cap) {
+    total = 0;
+    for (uint32_t t = 0; t < n; t++)
+      total += cover(&g, s, t, c0, c1);
+  }
+  *fallback = 0;
+  for (uint32_t t = 0; t < n; t++) {
+    cover(&g, s, t, c0, c1);
+    for (uint32_t z = c0[2]; z <= c1[2]; z++)
+      for (uint32_t y = c0[1]; y <= c1[1]; y++)
+        for (uint32_t x = c0[0]; x <= c1[0]; x++)
+          start[((uint64_t)z * g.dim[1] + y) * g.dim[0] + x + 1]++;
+  }
+  for (uint64_t c = 0; c < ncell; c++)
+    start[c + 1] += start[c];
+  if (!(list = malloc(sizeof *list * (total ? total : 1)))) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
+    goto done;
+  }
+  for (uint32_t t = 0; t < n; t++) { /* each cell's list in increasing t */
+    cover(&g, s, t, c0, c1);
+    for (uint32_t z = c0[2]; z <= c1[2]; z++)
+      for (uint32_t y = c0[1]; y <= c1[1]; y++)
+        for (uint32_t x = c0[0]; x <= c1[0]; x++)
+          list[start[((uint64_t)z * g.dim[1] + y) * g.dim[0] + x]++] = t;
+  }
+  for (uint64_t c = ncell; c > 0; c--) /* back to starts */
+    start[c] = start[c - 1];
+  start[0] = 0;
+  for (uint64_t c = 0; c < ncell; c++) {
+    uint32_t cx = (uint32_t)(c % g.dim[0]), cy = (uint32_t)(c / g.dim[0] % g.dim[1]),
+             cz = (uint32_t)(c / g.dim[0] / g.dim[1]);
+    for (uint32_t a = start[c]; a < start[c + 1]; a++)
+      for (uint32_t b = a + 1; b < start[c + 1]; b++) {
+        uint32_t i = list[a], j = list[b];
+        if (!boxes_meet(s, i, j))
+          continue;
+        /* the pair belongs to the cell of the low corner of the boxes' intersection */
+        const double *li = s->lo + 3 * (size_t)i, *lj = s->lo + 3 * (size_t)j;
+        if (cell_of(&g, 0, li[0] > lj[0] ? li[0] : lj[0]) != cx ||
+            cell_of(&g, 1, li[1] > lj[1] ? li[1] : lj[1]) != cy ||
+            cell_of(&g, 2, li[2] > lj[2] ? li[2] : lj[2]) != cz)
+          continue;
+        consider(s, i, j);
+      }
+  }
+done:
+  free(start);
+  free(list);
+  return st;
+}
+
+/* The oracle of the tests: every pair. */
+static void all_pairs(sweep *s, uint32_t n)
+{
+  for (uint32_t i = 0; i < n; i++)
+    for (uint32_t j = i + 1; j < n; j++)
+      if (boxes_meet(s, i, j))
+        consider(s, i, j);
+}
+
+tr_status tr_input_self_intersections(const struct tr_plc *plc, const uint32_t *tri_orig)
+{
+  return tr_input_self_intersections_by(plc, tri_orig, TR_SELFINT_AUTO);
+}
+
+tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_t *tri_orig,
+                                         int method)
+{
+  uint32_t n = plc->ntris;
+  sweep s = {plc, malloc(sizeof(double) * 6 * (size_t)(n ? n : 1)), NULL, 0, n, n};
+  tr_status st = TR_OK;
+  if (!s.lo)
+    return tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
+  s.hi = s.lo + 3 * (size_t)n;
+  for (uint32_t t = 0; t < n; t++)
     for (int d = 0; d < 3; d++) {
       double lo = P(plc, plc->tris[3 * (size_t)t])[d], h = lo;
       for (int k = 1; k < 3; k++) {
@@ -93,47 +289,36 @@ tr_status tr_input_self_intersections(const struct tr_plc *plc, const uint32_t *
         h = x > h ? x : h;
       }
       s.lo[3 * (size_t)t + d] = lo;
-      hi[3 * (size_t)t + d] = h;
+      s.hi[3 * (size_t)t + d] = h;
     }
-  }
   double ext[3] = {0, 0, 0};
   for (int d = 0; d < 3 && n; d++) {
-    double lo = s.lo[d], h = hi[d];
+    double lo = s.lo[d], h = s.hi[d];
     for (uint32_t t = 1; t < n; t++) {
       lo = s.lo[3 * (size_t)t + d] < lo ? s.lo[3 * (size_t)t + d] : lo;
-      h = hi[3 * (size_t)t + d] > h ? hi[3 * (size_t)t + d] : h;
+      h = s.hi[3 * (size_t)t + d] > h ? s.hi[3 * (size_t)t + d] : h;
     }
     ext[d] = h - lo; /* only a heuristic: rounding here cannot change any answer */
   }
   s.axis = ext[1] > ext[s.axis] ? 1 : s.axis;
   s.axis = ext[2] > ext[s.axis] ? 2 : s.axis;
-  int a1 = (s.axis + 1) % 3, a2 = (s.axis + 2) % 3;
-  if ((st = tr_sort_ids(ord, n, cmp_lox, &s)) != TR_OK)
-    goto done;
-  for (uint32_t a = 0; a < n; a++) {
-    uint32_t i = ord[a];
-    for (uint32_t b = a + 1;
-         b < n && s.lo[3 * (size_t)ord[b] + s.axis] <= hi[3 * (size_t)i + s.axis]; b++) {
-      uint32_t j = ord[b];
-      if (s.lo[3 * (size_t)j + a1] > hi[3 * (size_t)i + a1] ||
-          s.lo[3 * (size_t)i + a1] > hi[3 * (size_t)j + a1] ||
-          s.lo[3 * (size_t)j + a2] > hi[3 * (size_t)i + a2] ||
-          s.lo[3 * (size_t)i + a2] > hi[3 * (size_t)j + a2])
-        continue;
-      if (improper(plc, i, j)) {
-        uint32_t x = i < j ? i : j, y = i < j ? j : i;
-        st = tr_error(TR_ERR_SELF_INTERSECT,
-                      "%s%striangles %u and %u intersect (input faces %u and %u)",
-                      plc->source ? plc->source : "", plc->source ? ": " : "",
-                      tri_orig ? tri_orig[x] : x, tri_orig ? tri_orig[y] : y,
-                      plc->tri_source ? plc->tri_source[x] : x,
-                      plc->tri_source ? plc->tri_source[y] : y);
-        goto done;
-      }
-    }
+  int fallback = 1;
+  if (method == TR_SELFINT_ALL_PAIRS) {
+    all_pairs(&s, n);
+    fallback = 0;
+  } else if (method != TR_SELFINT_SWEEP && n > 1 && isfinite(ext[0] + ext[1] + ext[2]))
+    st = by_grid(&s, n, ext, method == TR_SELFINT_GRID, &fallback);
+  if (st == TR_OK && fallback)
+    st = by_sweep(&s, n);
+  if (st == TR_OK && s.bx < n) {
+    uint32_t x = s.bx, y = s.by;
+    st = tr_error(TR_ERR_SELF_INTERSECT,
+                  "%s%striangles %u and %u intersect (input faces %u and %u)",
+                  plc->source ? plc->source : "", plc->source ? ": " : "",
+                  tri_orig ? tri_orig[x] : x, tri_orig ? tri_orig[y] : y,
+                  plc->tri_source ? plc->tri_source[x] : x,
+                  plc->tri_source ? plc->tri_source[y] : y);
   }
-done:
   free(s.lo);
-  free(ord);
   return st;
 }

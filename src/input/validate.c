@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/edgesort.h"
 #include "predicates.h"
 #include "validate.h"
 
@@ -295,7 +296,7 @@ static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
     e[i] = i;
     adj[i] = UINT32_MAX;
   }
-  if ((st = tr_sort_ids(e, ne, cmp_edge, plc->tris)) != TR_OK)
+  if ((st = tr_edge_slots_sorted(plc->tris, nt, plc->npoints, e)) != TR_OK)
     goto done;
   /* Edges with 1 triangle (free) or 3+ (internal facets, shells touching along an
    * edge) are legal; they send the surface to the cell analysis of cells.c, which

@@ -27,10 +27,16 @@ void tr_report_add(tr_report *r, int kind, const char *fmt, ...) TR_PRINTF(3, 4)
 /* Adds the "... and N more" lines and returns the text (owned by the caller). */
 char *tr_report_finish(tr_report *r);
 
-/* Fails with TR_ERR_SELF_INTERSECT naming the first pair (lowest triangle numbers in
- * sweep order) of triangles that meet other than in a shared vertex or shared edge.
+/* Fails with TR_ERR_SELF_INTERSECT naming the least pair (x, y), x < y, of triangles
+ * that meet other than in a shared vertex or shared edge.
  * tri_orig (may be NULL) maps triangles to the numbers used in messages. */
 tr_status tr_input_self_intersections(const struct tr_plc *plc, const uint32_t *tri_orig);
+/* The same with a chosen broad phase, for the tests that compare them: AUTO is the grid,
+ * or the sweep when the grid would be too large; GRID forces the grid; ALL_PAIRS tests
+ * every pair whose boxes meet. All give the same answer. */
+enum { TR_SELFINT_AUTO, TR_SELFINT_GRID, TR_SELFINT_SWEEP, TR_SELFINT_ALL_PAIRS };
+tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_t *tri_orig,
+                                         int method);
 
 /* out = 6 * the signed volume enclosed by the triangles (sum of det[a; b; c]), exact. */
 tr_status tr_input_volume6(const struct tr_plc *plc, mpq_t out);

@@ -89,7 +89,7 @@ static tr_status parse(tr_lex *lx, tr_soup *s)
       for (uint64_t i = 0; i < n; i++) {
         int64_t ref;
         for (int j = 0; j < 4; j++) {
-          uint32_t v;
+          uint32_t v = 0;
           TR_CHECK(index_of(lx, nv, "tetrahedron vertex", &v));
           TR_CHECK(tr_u32vec_push(&s->tets, v));
         }

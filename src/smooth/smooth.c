@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/edgesort.h"
 #include "predicates.h"
 #include "smooth.h"
 
@@ -38,16 +39,6 @@ typedef struct {
   uint32_t a, b; /* a < b */
   uint32_t slot; /* 3 * triangle + position of the directed edge */
 } ekey;
-
-static int cmp_ekey(const void *pa, const void *pb)
-{
-  const ekey *x = pa, *y = pb;
-  if (x->a != y->a)
-    return x->a < y->a ? -1 : 1;
-  if (x->b != y->b)
-    return x->b < y->b ? -1 : 1;
-  return x->slot < y->slot ? -1 : x->slot > y->slot;
-}
 
 static int has_edge(const ekey *e, uint32_t n, uint32_t a, uint32_t b)
 {
@@ -86,6 +77,7 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
   if (nt < 2)
     return TR_OK;
   ekey *e = malloc(sizeof *e * ne);
+  uint32_t *slots = malloc(sizeof *slots * ne);
   uint8_t *vused = calloc(nv ? nv : 1, 1);
   /* The geometric tests depend only on the quad's four points: an edge rejected by them
    * stays rejected while neither triangle changes, so later passes skip the predicates.
@@ -93,7 +85,8 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
    * slot rejp[s]; changed[t] = 1 + last pass that rewrote triangle t. */
   uint32_t *rej = calloc(ne, sizeof *rej), *rejp = malloc(sizeof *rejp * ne);
   uint32_t *changed = calloc(nt, sizeof *changed);
-  if (!e || !vused || !rej || !rejp || !changed) {
+  if (!e || !slots || !vused || !rej || !rejp || !changed) {
+    free(slots);
     free(e);
     free(vused);
     free(rej);
@@ -104,13 +97,22 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
   uint32_t *T = plc->tris;
   const double *X = plc->xyz;
   for (int pass = 0; pass < TR_SMOOTH_MAX_PASSES; pass++) {
-    for (uint32_t s = 0; s < ne; s++) {
-      uint32_t a = T[s], b = T[3 * (s / 3) + (s % 3 + 1) % 3];
-      e[s].a = a < b ? a : b;
-      e[s].b = a < b ? b : a;
-      e[s].slot = s;
+    tr_status st = tr_edge_slots_sorted(T, nt, nv, slots);
+    if (st != TR_OK) {
+      free(slots);
+      free(e);
+      free(vused);
+      free(rej);
+      free(rejp);
+      free(changed);
+      return st;
     }
-    qsort(e, ne, sizeof *e, cmp_ekey);
+    for (uint32_t i = 0; i < ne; i++) {
+      uint32_t s = slots[i], a = T[s], b = T[3 * (s / 3) + (s % 3 + 1) % 3];
+      e[i].a = a < b ? a : b;
+      e[i].b = a < b ? b : a;
+      e[i].slot = s;
+    }
     memset(vused, 0, nv ? nv : 1);
     uint64_t done = 0;
     for (uint32_t i = 0; i + 1 < ne; i++) {
@@ -162,6 +164,7 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
     if (!done)
       break;
   }
+  free(slots);
   free(e);
   free(vused);
   free(rej);

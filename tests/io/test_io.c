@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/edgesort.h"
 #include "core/plc.h"
 #include "input/validate.h"
 #include "io/io.h"
@@ -576,6 +577,154 @@ static void t_selfint(void)
   EXPECT(strstr(tr_last_error(), "") != NULL, "message");
 }
 
+static uint64_t sb_rng = 0x243f6a8885a308d3ull;
+static double sb_unif(void)
+{
+  sb_rng ^= sb_rng << 13;
+  sb_rng ^= sb_rng >> 7;
+  sb_rng ^= sb_rng << 17;
+  return (double)(sb_rng >> 11) * 0x1p-53;
+}
+
+/* A closed octahedral sphere (level k: 8 * 4^k triangles), points scaled by a random
+ * radius jitter that keeps it a valid surface; then `extra` random triangles of size
+ * `size` (long slivers if size > 1) joined to it as a soup. */
+static struct tr_plc *sb_surface(int k, int extra, double size)
+{
+  int res = 1 << k, nv = 0, nt = 0;
+  /* vertices of the octahedron's faces on a (res+1)-grid, per face (duplicates merged by
+   * index arithmetic would be long; the soup below shares them by exact equality) */
+  double *X = malloc(sizeof *X * 3 * (size_t)(8 * (res + 1) * (res + 2) / 2 + 3 * extra));
+  uint32_t *T = malloc(sizeof *T * 3 * (size_t)(8 * res * res + extra));
+  for (int f = 0; f < 8; f++) {
+    double sx = f & 1 ? -1 : 1, sy = f & 2 ? -1 : 1, sz = f & 4 ? -1 : 1;
+    int base = nv;
+    for (int i = 0; i <= res; i++)
+      for (int j = 0; i + j <= res; j++) {
+        double a = (double)i / res, b = (double)j / res, c = 1 - a - b;
+        double x = sx * a, y = sy * b, z = sz * c, r = sqrt(x * x + y * y + z * z);
+        X[3 * nv] = x / r;
+        X[3 * nv + 1] = y / r;
+        X[3 * nv + 2] = z / r;
+        nv++;
+      }
+#define SB_ID(i, j) (base + (i) * (res + 1) - (i) * ((i) - 1) / 2 + (j))
+    int flip = (sx * sy * sz) < 0;
+    for (int i = 0; i < res; i++)
+      for (int j = 0; i + j < res; j++) {
+        uint32_t a = (uint32_t)SB_ID(i, j), b = (uint32_t)SB_ID(i + 1, j),
+                 c = (uint32_t)SB_ID(i, j + 1);
+        T[3 * nt] = a;
+        T[3 * nt + 1] = flip ? c : b;
+        T[3 * nt + 2] = flip ? b : c;
+        nt++;
+        if (i + j + 1 < res) {
+          uint32_t d = (uint32_t)SB_ID(i + 1, j + 1);
+          T[3 * nt] = b;
+          T[3 * nt + 1] = flip ? c : d;
+          T[3 * nt + 2] = flip ? d : c;
+          nt++;
+        }
+      }
+#undef SB_ID
+  }
+  /* octant faces repeat their shared vertices (equal doubles): one id each */
+  int *id = malloc(sizeof *id * (size_t)(nv ? nv : 1)), nu = 0;
+  for (int v = 0; v < nv; v++) {
+    id[v] = -1;
+    for (int u = 0; u < nu && id[v] < 0; u++)
+      if (X[3 * u] == X[3 * v] && X[3 * u + 1] == X[3 * v + 1] && X[3 * u + 2] == X[3 * v + 2])
+        id[v] = u;
+    if (id[v] < 0) {
+      memmove(X + 3 * nu, X + 3 * v, 3 * sizeof *X);
+      id[v] = nu++;
+    }
+  }
+  for (int i = 0; i < 3 * nt; i++)
+    T[i] = (uint32_t)id[T[i]];
+  free(id);
+  nv = nu;
+  for (int e = 0; e < extra; e++) {
+    double o[3] = {2.4 * sb_unif() - 1.2, 2.4 * sb_unif() - 1.2, 2.4 * sb_unif() - 1.2};
+    for (int q = 0; q < 3; q++) {
+      for (int d = 0; d < 3; d++)
+        X[3 * nv + d] = o[d] + size * (sb_unif() - 0.5);
+      T[3 * nt + q] = (uint32_t)nv++;
+    }
+    nt++;
+  }
+  struct tr_plc *p = NULL;
+  if (tr_plc_create(&p) != TR_OK || tr_plc_set(p, X, (uint32_t)nv, T, (uint32_t)nt, NULL) != TR_OK) {
+    tr_plc_destroy(p);
+    p = NULL;
+  }
+  free(X);
+  free(T);
+  return p;
+}
+
+/* The grid, the sweep and all pairs name the same pair (the least) or none. */
+static void t_selfint_broad(void)
+{
+  static const struct { int k, extra; double size; int want; } cs[] = {
+      {3, 0, 0, 0},   {4, 0, 0, 0},   {3, 1, 0.3, -1}, {3, 20, 0.2, 1},
+      {4, 60, 0.1, 1}, {2, 40, 3.0, 1}, {0, 200, 0.5, 1}, {3, 30, 2e-9, -1}};
+  for (size_t c = 0; c < sizeof cs / sizeof cs[0]; c++) {
+    struct tr_plc *p = sb_surface(cs[c].k, cs[c].extra, cs[c].size);
+    EXPECT(p != NULL, "case %zu: surface built", c);
+    if (!p)
+      continue;
+    char msg[3][512];
+    tr_status st[3];
+    static const int how[3] = {TR_SELFINT_GRID, TR_SELFINT_SWEEP, TR_SELFINT_ALL_PAIRS};
+    for (int h = 0; h < 3; h++) {
+      st[h] = tr_input_self_intersections_by(p, NULL, how[h]);
+      snprintf(msg[h], sizeof msg[h], "%s", st[h] == TR_OK ? "" : tr_last_error());
+    }
+    for (int h = 1; h < 3; h++)
+      EXPECT(st[h] == st[0] && !strcmp(msg[h], msg[0]),
+             "case %zu: broad phase %d says \"%s\", the grid \"%s\"", c, h, msg[h], msg[0]);
+    if (cs[c].want >= 0)
+      EXPECT((st[0] == TR_ERR_SELF_INTERSECT) == cs[c].want, "case %zu: %s", c,
+             cs[c].want ? "intersections found" : "a valid sphere passes");
+    tr_plc_destroy(p);
+  }
+}
+
+/* tr_edge_slots_sorted against a comparison sort of (min, max, slot). */
+static int sb_cmp(const void *a, const void *b)
+{
+  const uint32_t *x = a, *y = b;
+  for (int i = 0; i < 3; i++)
+    if (x[i] != y[i])
+      return x[i] < y[i] ? -1 : 1;
+  return 0;
+}
+
+static void t_edge_sort(void)
+{
+  for (uint32_t nv = 1; nv < 40; nv += 7) {
+    uint32_t nt = 3 * nv + 5, ne = 3 * nt, *T = malloc(sizeof *T * ne), *S = malloc(sizeof *S * ne),
+             *R = malloc(sizeof *R * 3 * ne);
+    for (uint32_t i = 0; i < ne; i++)
+      T[i] = (uint32_t)(sb_unif() * nv);
+    EXPECT(tr_edge_slots_sorted(T, nt, nv, S) == TR_OK, "sorted");
+    for (uint32_t i = 0; i < ne; i++) {
+      uint32_t a = T[i], b = T[3 * (i / 3) + (i % 3 + 1) % 3];
+      R[3 * i] = a < b ? a : b;
+      R[3 * i + 1] = a < b ? b : a;
+      R[3 * i + 2] = i;
+    }
+    qsort(R, ne, 3 * sizeof *R, sb_cmp);
+    for (uint32_t i = 0; i < ne; i++)
+      EXPECT(S[i] == R[3 * i + 2], "nv %u: position %u holds slot %u, the sort says %u", nv, i,
+             S[i], R[3 * i + 2]);
+    free(T);
+    free(S);
+    free(R);
+  }
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 4) {
@@ -593,6 +742,7 @@ int main(int argc, char **argv)
                {"tetgen", t_tetgen},             {"roundtrip", t_roundtrip},
                {"mesh_write", t_mesh_write},     {"malformed", t_malformed},
                {"repairs", t_repairs},           {"selfint", t_selfint},
+               {"selfint_broad", t_selfint_broad}, {"edge_sort", t_edge_sort},
                {"cavity", t_cavity},             {"polygon_random", t_polygon_random}};
   for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++)
     if (!strcmp(argv[1], tests[i].name)) {

@@ -286,6 +286,54 @@ static int hilbert_curve_is_continuous(void)
   return 0;
 }
 
+/* tr_ball_find against brute force on the Delaunay mesh of a 4x4x4 grid (cospherical
+ * everywhere): every vertex pair and every triple of a sample, found iff some real tet has
+ * them all, and the tet it names has them; marks are left clear. */
+static int ball_find_matches_brute_force(void)
+{
+  double pts[64 * 3];
+  int n = 0;
+  for (int i = 0; i < 4; i++)
+    for (int j = 0; j < 4; j++)
+      for (int k = 0; k < 4; k++) {
+        pts[3 * n] = i;
+        pts[3 * n + 1] = j;
+        pts[3 * n + 2] = k;
+        n++;
+      }
+  struct tr_mesh *m;
+  EXPECT_OK(tr_delaunay_build(pts, (uint32_t)n, &m), "delaunay");
+  EXPECT_OK(tr_check_mesh(m, TR_CHK_ALL_DELAUNAY, NULL), "delaunay mesh valid");
+  uint32_t found = 0, absent = 0;
+  for (uint32_t a = 0; a < (uint32_t)n; a++)
+    for (uint32_t b = 0; b < (uint32_t)n; b++)
+      for (uint32_t c = 0; c <= (uint32_t)n; c++) {
+        uint32_t cc = c == (uint32_t)n ? TR_NONE : c; /* TR_NONE: the edge question */
+        if (b == a || cc == a || cc == b || (cc != TR_NONE && (a * 7 + b * 3 + c) % 5))
+          continue;
+        int want = 0;
+        for (uint32_t t = 0; t < m->nt && !want; t++)
+          want = tr_tet_is_real(m, t) && tr_ncode(m, t, a) >= 0 && tr_ncode(m, t, b) >= 0 &&
+                 (cc == TR_NONE || tr_ncode(m, t, cc) >= 0);
+        uint32_t t;
+        EXPECT_OK(tr_ball_find(m, a, b, cc, &t), "ball_find");
+        EXPECT((t != TR_NONE) == want, "ball_find(%u, %u, %u): %s, brute force %s", a, b, c,
+               t != TR_NONE ? "found" : "absent", want ? "present" : "absent");
+        if (t != TR_NONE)
+          EXPECT(tr_tet_is_real(m, t) && tr_ncode(m, t, a) >= 0 && tr_ncode(m, t, b) >= 0 &&
+                     (cc == TR_NONE || tr_ncode(m, t, cc) >= 0),
+                 "ball_find(%u, %u, %u) names a real tet holding them", a, b, c);
+        found += want;
+        absent += !want;
+      }
+  for (uint32_t t = 0; t < m->nt; t++)
+    EXPECT(!(m->flags[t] & TR_TF_MARK), "tet %u left marked", t);
+  EXPECT(found > 1000 && absent > 1000, "both answers exercised (%u found, %u absent)", found,
+         absent);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2)
@@ -301,6 +349,8 @@ int main(int argc, char **argv)
     return validator_catches_corruption();
   if (!strcmp(c, "ball_shell"))
     return ball_and_shell_match_brute_force();
+  if (!strcmp(c, "ball_find"))
+    return ball_find_matches_brute_force();
   if (!strcmp(c, "hilbert"))
     return hilbert_curve_is_continuous();
   fprintf(stderr, "unknown case %s\n", c);
