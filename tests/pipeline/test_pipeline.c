@@ -407,6 +407,18 @@ static void t_errors(void)
   p = make(&b);
   EXPECT(run("open_tetrahedron_hull", p, 1, 1, 1.0, NULL, NULL) == 1,
          "open surface with allow_open: want the hull as 1 region");
+  /* validated as open (tetrec mesh validates before meshing): a closed-surface call must
+   * validate again and refuse it, not trust the earlier validation */
+  tr_options o;
+  tr_options_default(&o);
+  o.verbose = 0;
+  o.allow_open = 1;
+  EXPECT(tr_plc_validate(p, &o) == TR_OK, "open surface validates with allow_open");
+  o.allow_open = 0;
+  s = tr_mesh_plc(p, &o, &m, NULL);
+  EXPECT(s == TR_ERR_OPEN && m == NULL,
+         "validated with allow_open, meshed without: want TR_ERR_OPEN, got %s",
+         tr_status_name(s));
   tr_plc_destroy(p);
 }
 
