@@ -100,6 +100,53 @@ tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, ui
   return s;
 }
 
+static uint32_t tri_hash(const uint32_t k[3], uint32_t mask)
+{
+  uint64_t x = k[0] * 0x9e3779b97f4a7c15ull ^ k[1] * 0xc2b2ae3d27d4eb4full ^
+               k[2] * 0x165667b19e3779f9ull;
+  return (uint32_t)(x >> 32) & mask;
+}
+
+tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,
+                             uint32_t *tet)
+{
+  uint32_t cap = 16;
+  while (cap < 2 * (uint64_t)n)
+    cap *= 2;
+  /* slot -> triangle index; the key is re-read from tris (sorted on the fly) */
+  uint32_t *slot = malloc(sizeof *slot * cap), mask = cap - 1;
+  if (!slot)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u face keys", n);
+  memset(slot, 0xff, sizeof *slot * cap);
+  for (uint32_t i = 0; i < n; i++) {
+    uint32_t k[3] = {tris[3 * (size_t)i], tris[3 * (size_t)i + 1], tris[3 * (size_t)i + 2]};
+    tr_sort3(k);
+    uint32_t h = tri_hash(k, mask);
+    while (slot[h] != TR_NONE)
+      h = (h + 1) & mask;
+    slot[h] = i;
+    tet[i] = TR_NONE;
+  }
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)t;
+    for (int f = 0; f < 4; f++) {
+      uint32_t k[3] = {tv[tr_face_vtx[f][0]], tv[tr_face_vtx[f][1]], tv[tr_face_vtx[f][2]]};
+      tr_sort3(k);
+      for (uint32_t h = tri_hash(k, mask); slot[h] != TR_NONE; h = (h + 1) & mask) {
+        uint32_t i = slot[h], w[3] = {tris[3 * (size_t)i], tris[3 * (size_t)i + 1],
+                                      tris[3 * (size_t)i + 2]};
+        tr_sort3(w);
+        if (w[0] == k[0] && w[1] == k[1] && w[2] == k[2] && tet[i] == TR_NONE)
+          tet[i] = t; /* the first tet in slot order: deterministic */
+      }
+    }
+  }
+  free(slot);
+  return TR_OK;
+}
+
 /* For tet t containing a (slot i) and b (slot j): the slots c, d such that (a,b,c,d) is
  * an even permutation of the slots, i.e. a positively oriented listing of t. */
 static void shell_cd(int i, int j, int *c, int *d)

@@ -185,6 +185,11 @@ tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out
  * (an edge or face on the hull is also in the real tet inside it). The presence tests of
  * both recovery stages: no allocation for balls of up to 256 tets. */
 tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, uint32_t *t);
+/* All at once: tet[i] = a real tet with triangle i (tris[3i..3i+2]) as a face, TR_NONE if
+ * the triangle is not a face of the mesh. One pass over the tets against a hash of the
+ * triangles: for many triangles, much cheaper than a tr_ball_find each. */
+tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,
+                             uint32_t *tet);
 /* Shell(E): the tets around edge {a,b} in rotational order, starting with t0 (a tet that
  * has edge ab; TR_NONE = find one through Ball(a)). Rotation is right-handed about a->b:
  * for consecutive tets the third vertices turn counter-clockwise seen from b towards a.

@@ -304,7 +304,8 @@ static int ball_find_matches_brute_force(void)
   struct tr_mesh *m;
   EXPECT_OK(tr_delaunay_build(pts, (uint32_t)n, &m), "delaunay");
   EXPECT_OK(tr_check_mesh(m, TR_CHK_ALL_DELAUNAY, NULL), "delaunay mesh valid");
-  uint32_t found = 0, absent = 0;
+  uint32_t found = 0, absent = 0, *tri = malloc(sizeof *tri * 3 * 64 * 64 * 64), ntri = 0;
+  uint8_t *want3 = malloc(64 * 64 * 64);
   for (uint32_t a = 0; a < (uint32_t)n; a++)
     for (uint32_t b = 0; b < (uint32_t)n; b++)
       for (uint32_t c = 0; c <= (uint32_t)n; c++) {
@@ -325,7 +326,29 @@ static int ball_find_matches_brute_force(void)
                  "ball_find(%u, %u, %u) names a real tet holding them", a, b, c);
         found += want;
         absent += !want;
+        if (cc != TR_NONE) {
+          tri[3 * ntri] = a;
+          tri[3 * ntri + 1] = b;
+          tri[3 * ntri + 2] = cc;
+          want3[ntri++] = (uint8_t)want;
+        }
       }
+  /* the batch form answers the same for every sampled triple (repeats included) */
+  uint32_t *tet = malloc(sizeof *tet * (ntri ? ntri : 1));
+  EXPECT_OK(tr_mesh_find_faces(m, tri, ntri, tet), "find_faces");
+  for (uint32_t i = 0; i < ntri; i++) {
+    uint32_t t = tet[i];
+    EXPECT((t != TR_NONE) == want3[i], "find_faces(%u %u %u): %s, brute force %s", tri[3 * i],
+           tri[3 * i + 1], tri[3 * i + 2], t != TR_NONE ? "found" : "absent",
+           want3[i] ? "present" : "absent");
+    if (t != TR_NONE)
+      EXPECT(tr_tet_is_real(m, t) && tr_fcode(m, t, tri[3 * i], tri[3 * i + 1], tri[3 * i + 2]) >= 0,
+             "find_faces names a real tet with the face");
+  }
+  EXPECT(ntri > 1000, "triples sampled: %u", ntri);
+  free(tet);
+  free(tri);
+  free(want3);
   for (uint32_t t = 0; t < m->nt; t++)
     EXPECT(!(m->flags[t] & TR_TF_MARK), "tet %u left marked", t);
   EXPECT(found > 1000 && absent > 1000, "both answers exercised (%u found, %u absent)", found,
