@@ -4,15 +4,23 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The tet a search of Ball(p) starts from: v2t[p], checked. */
+static tr_status ball_start(const struct tr_mesh *m, uint32_t p, uint32_t *t0)
+{
+  if (p >= m->nv)
+    return tr_error(TR_ERR_INTERNAL, "Ball(%u): no such vertex (%u vertices)", p, m->nv);
+  *t0 = m->v2t[p];
+  if (*t0 == TR_NONE || *t0 >= m->nt || tr_ncode(m, *t0, p) < 0)
+    return tr_error(TR_ERR_INVALID_MESH, "Ball(%u): v2t[%u] = %u does not contain the vertex",
+                    p, p, *t0);
+  return TR_OK;
+}
+
 tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out)
 {
   out->n = 0;
-  if (p >= m->nv)
-    return tr_error(TR_ERR_INTERNAL, "Ball(%u): no such vertex (%u vertices)", p, m->nv);
-  uint32_t t0 = m->v2t[p];
-  if (t0 == TR_NONE || t0 >= m->nt || tr_ncode(m, t0, p) < 0)
-    return tr_error(TR_ERR_INVALID_MESH, "Ball(%u): v2t[%u] = %u does not contain the vertex",
-                    p, p, t0);
+  uint32_t t0;
+  TR_CHECK(ball_start(m, p, &t0));
   /* The buffer doubles as the BFS queue. Ghosts are always traversed: a hull vertex's
    * real tets are connected through faces containing p anyway, but v2t may name a ghost. */
   TR_CHECK(tr_u32buf_push(out, t0));
@@ -50,12 +58,8 @@ static int tet_has(const uint32_t *tv, uint32_t x)
 tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, uint32_t *t)
 {
   *t = TR_NONE;
-  if (p >= m->nv)
-    return tr_error(TR_ERR_INTERNAL, "Ball(%u): no such vertex (%u vertices)", p, m->nv);
-  uint32_t t0 = m->v2t[p];
-  if (t0 == TR_NONE || t0 >= m->nt || tr_ncode(m, t0, p) < 0)
-    return tr_error(TR_ERR_INVALID_MESH, "Ball(%u): v2t[%u] = %u does not contain the vertex",
-                    p, p, t0);
+  uint32_t t0;
+  TR_CHECK(ball_start(m, p, &t0));
   /* The queue lives on the stack until it outgrows it (a vertex of very high degree). */
   uint32_t local[256], *q = local, nq = 0, cap = 256;
   tr_status s = TR_OK;

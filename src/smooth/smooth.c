@@ -85,28 +85,16 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
    * slot rejp[s]; changed[t] = 1 + last pass that rewrote triangle t. */
   uint32_t *rej = calloc(ne, sizeof *rej), *rejp = malloc(sizeof *rejp * ne);
   uint32_t *changed = calloc(nt, sizeof *changed);
+  tr_status st = TR_OK;
   if (!e || !slots || !vused || !rej || !rejp || !changed) {
-    free(slots);
-    free(e);
-    free(vused);
-    free(rej);
-    free(rejp);
-    free(changed);
-    return tr_error(TR_ERR_NOMEM, "out of memory smoothing %u triangles", nt);
+    st = tr_error(TR_ERR_NOMEM, "out of memory smoothing %u triangles", nt);
+    goto done;
   }
   uint32_t *T = plc->tris;
   const double *X = plc->xyz;
   for (int pass = 0; pass < TR_SMOOTH_MAX_PASSES; pass++) {
-    tr_status st = tr_edge_slots_sorted(T, nt, nv, slots);
-    if (st != TR_OK) {
-      free(slots);
-      free(e);
-      free(vused);
-      free(rej);
-      free(rejp);
-      free(changed);
-      return st;
-    }
+    if ((st = tr_edge_slots_sorted(T, nt, nv, slots)) != TR_OK)
+      goto done;
     for (uint32_t i = 0; i < ne; i++) {
       uint32_t s = slots[i], a = T[s], b = T[3 * (s / 3) + (s % 3 + 1) % 3];
       e[i].a = a < b ? a : b;
@@ -164,11 +152,12 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
     if (!done)
       break;
   }
+done:
   free(slots);
   free(e);
   free(vused);
   free(rej);
   free(rejp);
   free(changed);
-  return TR_OK;
+  return st;
 }

@@ -190,8 +190,9 @@ static int validator_catches_corruption(void)
   return 0;
 }
 
-/* Ball and Shell on the Delaunay mesh of a 4x4x4 grid, against brute force. */
-static int ball_and_shell_match_brute_force(void)
+/* The Delaunay mesh of the 4x4x4 integer grid (cospherical everywhere), validated; NULL
+ * on failure. */
+static struct tr_mesh *grid4_delaunay(void)
 {
   double pts[64 * 3];
   int n = 0;
@@ -204,8 +205,21 @@ static int ball_and_shell_match_brute_force(void)
         n++;
       }
   struct tr_mesh *m;
-  EXPECT_OK(tr_delaunay_build(pts, (uint32_t)n, &m), "delaunay");
-  EXPECT_OK(tr_check_mesh(m, TR_CHK_ALL_DELAUNAY, NULL), "delaunay mesh valid");
+  if (tr_delaunay_build(pts, (uint32_t)n, &m) != TR_OK)
+    return NULL;
+  if (tr_check_mesh(m, TR_CHK_ALL_DELAUNAY, NULL) != TR_OK) {
+    tr_mesh_destroy(m);
+    return NULL;
+  }
+  return m;
+}
+
+/* Ball and Shell on the Delaunay mesh of a 4x4x4 grid, against brute force. */
+static int ball_and_shell_match_brute_force(void)
+{
+  int n = 64;
+  struct tr_mesh *m = grid4_delaunay();
+  EXPECT(m != NULL, "Delaunay mesh of the 4x4x4 grid, valid: %s", tr_last_error());
   tr_u32buf ball = {0}, shell = {0};
   for (uint32_t v = 0; v < (uint32_t)n; v++) {
     EXPECT_OK(tr_ball(m, v, 1, &ball), "ball");
@@ -291,19 +305,9 @@ static int hilbert_curve_is_continuous(void)
  * them all, and the tet it names has them; marks are left clear. */
 static int ball_find_matches_brute_force(void)
 {
-  double pts[64 * 3];
-  int n = 0;
-  for (int i = 0; i < 4; i++)
-    for (int j = 0; j < 4; j++)
-      for (int k = 0; k < 4; k++) {
-        pts[3 * n] = i;
-        pts[3 * n + 1] = j;
-        pts[3 * n + 2] = k;
-        n++;
-      }
-  struct tr_mesh *m;
-  EXPECT_OK(tr_delaunay_build(pts, (uint32_t)n, &m), "delaunay");
-  EXPECT_OK(tr_check_mesh(m, TR_CHK_ALL_DELAUNAY, NULL), "delaunay mesh valid");
+  int n = 64;
+  struct tr_mesh *m = grid4_delaunay();
+  EXPECT(m != NULL, "Delaunay mesh of the 4x4x4 grid, valid: %s", tr_last_error());
   uint32_t found = 0, absent = 0, *tri = malloc(sizeof *tri * 3 * 64 * 64 * 64), ntri = 0;
   uint8_t *want3 = malloc(64 * 64 * 64);
   for (uint32_t a = 0; a < (uint32_t)n; a++)
