@@ -9,6 +9,7 @@
 #define TR_IO_IO_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include <stdint.h>
 
 #include "../core/plc.h"
@@ -69,6 +70,11 @@ tr_status tr_write_tetgen(const struct tr_mesh_view *m, const char *base, int ex
 /* Chooses by extension: .mesh, .vtu, .node/.ele/.face (base taken from the name), or no
  * extension = TetGen files with that base. */
 tr_status tr_write_mesh_view(const struct tr_mesh_view *m, const char *path, int exact);
+
+/* One line of n integers in decimal, separated by single spaces, then '\n': what
+ * fprintf("%lld ...") writes, without its format parsing, which was most of the time of
+ * writing the element lists. */
+void tr_io_put_ints(FILE *f, const int64_t *x, int n);
 
 /* 1 iff path ends with ext (ASCII case-insensitive, ext includes the dot). */
 int tr_io_has_ext(const char *path, const char *ext);

@@ -21,16 +21,18 @@ tr_status tr_write_medit(const struct tr_mesh_view *m, const char *path)
     fprintf(f, "Tetrahedra\n%u\n", m->ntets);
     for (uint32_t t = 0; t < m->ntets; t++) {
       const uint32_t *v = m->tets + 4 * (size_t)t;
-      fprintf(f, "%u %u %u %u %d\n", v[0] + 1, v[1] + 1, v[2] + 1, v[3] + 1,
-              m->region ? (int)m->region[t] : 0);
+      int64_t row[5] = {(int64_t)v[0] + 1, (int64_t)v[1] + 1, (int64_t)v[2] + 1,
+                        (int64_t)v[3] + 1, m->region ? m->region[t] : 0};
+      tr_io_put_ints(f, row, 5);
     }
   }
   if (m->ntris) {
     fprintf(f, "Triangles\n%u\n", m->ntris);
     for (uint32_t t = 0; t < m->ntris; t++) {
       const uint32_t *v = m->tris + 3 * (size_t)t;
-      fprintf(f, "%u %u %u %d\n", v[0] + 1, v[1] + 1, v[2] + 1,
-              m->tri_marker ? (int)m->tri_marker[t] : 0);
+      int64_t row[4] = {(int64_t)v[0] + 1, (int64_t)v[1] + 1, (int64_t)v[2] + 1,
+                        m->tri_marker ? m->tri_marker[t] : 0};
+      tr_io_put_ints(f, row, 4);
     }
   }
   fprintf(f, "End\n");

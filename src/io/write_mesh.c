@@ -1,11 +1,33 @@
 /* Public writers: tr_mesh_write (from the mesh store) and tr_plc_write (a surface), both
  * through struct tr_mesh_view so that the format writers never see the store. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "io.h"
 #include "mesh/mesh.h"
 #include "output/round.h"
+
+void tr_io_put_ints(FILE *f, const int64_t *x, int n)
+{
+  char line[24 * 8], *p = line;
+  for (int i = 0; i < n && i < 8; i++) {
+    char dig[24];
+    int k = 0;
+    uint64_t u = x[i] < 0 ? 0 - (uint64_t)x[i] : (uint64_t)x[i];
+    do
+      dig[k++] = (char)('0' + u % 10);
+    while (u /= 10);
+    if (i)
+      *p++ = ' ';
+    if (x[i] < 0)
+      *p++ = '-';
+    while (k)
+      *p++ = dig[--k];
+  }
+  *p++ = '\n';
+  fwrite(line, 1, (size_t)(p - line), f);
+}
 
 /* Boundary faces of the kept tets: a face is written when the tet across it is missing,
  * a ghost, or outside the domain, or belongs to another region. Each face is listed as

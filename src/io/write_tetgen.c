@@ -65,10 +65,9 @@ tr_status tr_write_tetgen(const struct tr_mesh_view *m, const char *base, int ex
   fprintf(f, "%u 4 %d\n", m->ntets, m->region ? 1 : 0);
   for (uint32_t t = 0; t < m->ntets; t++) {
     const uint32_t *v = m->tets + 4 * (size_t)t;
-    fprintf(f, "%u %u %u %u %u", t + 1, v[0] + 1, v[1] + 1, v[2] + 1, v[3] + 1);
-    if (m->region)
-      fprintf(f, " %d", (int)m->region[t]);
-    fputc('\n', f);
+    int64_t row[6] = {(int64_t)t + 1, (int64_t)v[0] + 1, (int64_t)v[1] + 1,
+                      (int64_t)v[2] + 1, (int64_t)v[3] + 1, m->region ? m->region[t] : 0};
+    tr_io_put_ints(f, row, m->region ? 6 : 5);
   }
   TR_CHECK(done(f, base, ".ele"));
   if (!(f = open_ext(base, ".face", &st)))
@@ -76,8 +75,9 @@ tr_status tr_write_tetgen(const struct tr_mesh_view *m, const char *base, int ex
   fprintf(f, "%u 1\n", m->ntris);
   for (uint32_t t = 0; t < m->ntris; t++) {
     const uint32_t *v = m->tris + 3 * (size_t)t;
-    fprintf(f, "%u %u %u %u %d\n", t + 1, v[0] + 1, v[1] + 1, v[2] + 1,
-            m->tri_marker ? (int)m->tri_marker[t] : 0);
+    int64_t row[5] = {(int64_t)t + 1, (int64_t)v[0] + 1, (int64_t)v[1] + 1, (int64_t)v[2] + 1,
+                      m->tri_marker ? m->tri_marker[t] : 0};
+    tr_io_put_ints(f, row, 5);
   }
   return done(f, base, ".face");
 }

@@ -19,7 +19,7 @@ static tr_status ball_start(const struct tr_mesh *m, uint32_t p, uint32_t *t0)
 tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out)
 {
   out->n = 0;
-  uint32_t t0;
+  uint32_t t0 = TR_NONE;
   TR_CHECK(ball_start(m, p, &t0));
   /* The buffer doubles as the BFS queue. Ghosts are always traversed: a hull vertex's
    * real tets are connected through faces containing p anyway, but v2t may name a ghost. */
@@ -58,7 +58,7 @@ static int tet_has(const uint32_t *tv, uint32_t x)
 tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, uint32_t *t)
 {
   *t = TR_NONE;
-  uint32_t t0;
+  uint32_t t0 = TR_NONE;
   TR_CHECK(ball_start(m, p, &t0));
   /* The queue lives on the stack until it outgrows it (a vertex of very high degree). */
   uint32_t local[256], *q = local, nq = 0, cap = 256;
