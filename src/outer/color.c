@@ -30,31 +30,52 @@ static void sort4(uint32_t *s)
       }
 }
 
-/* The sub-faces by vertex triple: open addressing over the sorted keys (slot = index of
- * a triple's first key, duplicates follow it), a fixed hash, so no run depends on
- * addresses. Every tet face is looked up, twice for a constraint: a binary search over
- * the keys was a tenth of the time of a mesh without Steiner points. */
+/* The sub-faces by vertex triple: open addressing, each slot holding the sorted triple and
+ * the index of its first key in the sorted keys (duplicates follow it there), so a probe
+ * touches one cache line; a fixed hash, so no run depends on addresses. Every tet face is
+ * looked up: a binary search over the keys was a tenth of the time of a mesh without
+ * Steiner points. */
+typedef struct {
+  uint32_t k[3], first; /* first == TR_NONE: empty */
+} fslot;
+
 typedef struct {
   const fkey *keys;
-  uint32_t *slot, mask;
+  fslot *slot;
+  uint32_t mask;
+  uint64_t *bits; /* one bit per key's hash in a table of 16 bits per key: most faces of
+                     the mesh are not sub-faces, and the bit table, unlike the slots,
+                     stays in cache */
+  uint32_t bmask;
 } fhash;
+
+static uint64_t fhash_of(const uint32_t s[3])
+{
+  return s[0] * 0x9e3779b97f4a7c15ull ^ s[1] * 0xc2b2ae3d27d4eb4full ^
+         s[2] * 0x165667b19e3779f9ull;
+}
 
 static uint32_t fhash_start(const fhash *h, const uint32_t s[3])
 {
-  uint64_t x = s[0] * 0x9e3779b97f4a7c15ull ^ s[1] * 0xc2b2ae3d27d4eb4full ^
-               s[2] * 0x165667b19e3779f9ull;
-  return (uint32_t)(x >> 32) & h->mask;
+  return (uint32_t)(fhash_of(s) >> 32) & h->mask;
+}
+
+static uint32_t fhash_bit(const fhash *h, const uint32_t s[3])
+{
+  return (uint32_t)fhash_of(s) & h->bmask;
 }
 
 static const fkey *find_face(const fhash *h, const uint32_t s[3])
 {
+  uint32_t b = fhash_bit(h, s);
+  if (!(h->bits[b >> 6] & (1ull << (b & 63))))
+    return NULL;
   for (uint32_t i = fhash_start(h, s);; i = (i + 1) & h->mask) {
-    uint32_t j = h->slot[i];
-    if (j == TR_NONE)
+    const fslot *e = h->slot + i;
+    if (e->first == TR_NONE)
       return NULL;
-    const fkey *k = h->keys + j;
-    if (k->k[0] == s[0] && k->k[1] == s[1] && k->k[2] == s[2])
-      return k;
+    if (e->k[0] == s[0] && e->k[1] == s[1] && e->k[2] == s[2])
+      return h->keys + e->first;
   }
 }
 
@@ -65,16 +86,23 @@ static tr_status fhash_build(fhash *h, const fkey *keys, uint32_t n)
     cap *= 2;
   h->keys = keys;
   h->mask = cap - 1;
-  if (!(h->slot = malloc(sizeof *h->slot * cap)))
+  uint32_t nb = 64;
+  while (nb < 16 * (uint64_t)n)
+    nb *= 2;
+  h->bmask = nb - 1;
+  if (!(h->slot = malloc(sizeof *h->slot * cap)) || !(h->bits = calloc(nb / 64, 8)))
     return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-face keys", n);
   memset(h->slot, 0xff, sizeof *h->slot * cap);
   for (uint32_t j = 0; j < n; j++) {
     if (j && memcmp(keys[j].k, keys[j - 1].k, sizeof keys[j].k) == 0)
       continue;
     uint32_t i = fhash_start(h, keys[j].k);
-    while (h->slot[i] != TR_NONE)
+    while (h->slot[i].first != TR_NONE)
       i = (i + 1) & h->mask;
-    h->slot[i] = j;
+    memcpy(h->slot[i].k, keys[j].k, sizeof keys[j].k);
+    h->slot[i].first = j;
+    uint32_t b = fhash_bit(h, keys[j].k);
+    h->bits[b >> 6] |= 1ull << (b & 63);
   }
   return TR_OK;
 }
@@ -114,7 +142,7 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
   uint8_t *cflag = NULL;  /* per component: 1 ghost, 2 inner vote, 4 outer vote */
   ckey *ck = NULL;
   uint32_t *rid = NULL;
-  fhash fh = {NULL, NULL, 0};
+  fhash fh = {NULL, NULL, 0, NULL, 0};
   tr_status st = TR_OK;
   if (!keys || !cmask || !seen || !comp || !queue) {
     st = tr_error(TR_ERR_NOMEM, "out of memory coloring %u tets", nt);
@@ -134,6 +162,9 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
     if (!tr_tet_is_real(m, t))
       continue;
     for (int k = 0; k < 4; k++) {
+      uint32_t o = TR_NEIG(m, t, k);
+      if (o != TR_NONE && o < t && tr_tet_is_real(m, o))
+        continue; /* looked up from o's side, which marks both */
       uint32_t s[3];
       for (int i = 0; i < 3; i++)
         s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
@@ -146,7 +177,6 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
                               g->k[2] == s[2]; g++)
         seen[g->id] = 1;
       cmask[t] |= (uint8_t)(1u << k);
-      uint32_t o = TR_NEIG(m, t, k);
       if (o != TR_NONE)
         cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
     }
@@ -268,6 +298,7 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
   *nregions = ni;
 done:
   free(fh.slot);
+  free(fh.bits);
   free(keys);
   free(cmask);
   free(seen);
