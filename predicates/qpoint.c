@@ -120,14 +120,49 @@ void tr_qpoint_init(tr_qpoint *q)
 {
   for (int i = 0; i < 3; i++) {
     mpq_init(q->c[i]);
-    q->lo[i] = q->hi[i] = q->near[i] = 0.0;
+    mpz_init(q->hx[i]);
+    q->lo[i] = q->hi[i] = q->near[i] = q->err[i] = 0.0;
   }
+  mpz_init_set_ui(q->hw, 1);
 }
 
 void tr_qpoint_clear(tr_qpoint *q)
 {
-  for (int i = 0; i < 3; i++)
+  for (int i = 0; i < 3; i++) {
     mpq_clear(q->c[i]);
+    mpz_clear(q->hx[i]);
+  }
+  mpz_clear(q->hw);
+}
+
+/* hx, hw from c: hw = lcm of the denominators (usually one shared denominator for a
+ * Steiner point), hx[i] = num[i] * (hw / den[i]). */
+static void hom_cache(tr_qpoint *q)
+{
+  mpz_set(q->hw, mpq_denref(q->c[0]));
+  for (int i = 1; i < 3; i++)
+    if (mpz_cmp(q->hw, mpq_denref(q->c[i])) != 0)
+      mpz_lcm(q->hw, q->hw, mpq_denref(q->c[i]));
+  for (int i = 0; i < 3; i++) {
+    if (mpz_cmp(q->hw, mpq_denref(q->c[i])) == 0)
+      mpz_set(q->hx[i], mpq_numref(q->c[i]));
+    else {
+      mpz_divexact(q->hx[i], q->hw, mpq_denref(q->c[i]));
+      mpz_mul(q->hx[i], q->hx[i], mpq_numref(q->c[i]));
+    }
+  }
+}
+
+/* near - lo and hi - near are each 0 or the gap between neighbouring doubles (a power
+ * of two, so the subtraction is exact); inf - x = inf beyond the range. */
+static void err_cache(tr_qpoint *q)
+{
+  for (int i = 0; i < 3; i++) {
+    double a = q->near[i] - q->lo[i], b = q->hi[i] - q->near[i];
+    q->err[i] = a > b ? a : b;
+    if (q->err[i] != q->err[i]) /* inf - inf */
+      q->err[i] = INFINITY;
+  }
 }
 
 void tr_qpoint_set_d(tr_qpoint *q, const double d[3])
@@ -136,32 +171,41 @@ void tr_qpoint_set_d(tr_qpoint *q, const double d[3])
     mpq_set_d(q->c[i], d[i]);
     /* -0.0 becomes +0.0: the exact value is what counts */
     q->lo[i] = q->hi[i] = q->near[i] = d[i] + 0.0;
+    q->err[i] = 0.0;
   }
+  hom_cache(q);
 }
 
 void tr_qpoint_update(tr_qpoint *q)
 {
   for (int i = 0; i < 3; i++)
     round3(q->c[i], &q->lo[i], &q->near[i], &q->hi[i]);
+  err_cache(q);
+  hom_cache(q);
 }
 
 void tr_qpoint_set_point(tr_qpoint *q, const tr_point *p)
 {
   if (p->q) {
+    if (q == p->q)
+      return;
     for (int i = 0; i < 3; i++) {
       mpq_set(q->c[i], p->q->c[i]);
+      mpz_set(q->hx[i], p->q->hx[i]);
       q->lo[i] = p->q->lo[i];
       q->hi[i] = p->q->hi[i];
       q->near[i] = p->q->near[i];
+      q->err[i] = p->q->err[i];
     }
+    mpz_set(q->hw, p->q->hw);
   } else
     tr_qpoint_set_d(q, p->d);
 }
 
 /* Doubles: x = m 2^e with an integer m (|m| < 2^53); with E = the smallest e over the
  * nonzero coordinates, X_i = m_i 2^(e_i - E) and W = 2^-E (or W = 1 and everything
- * shifted up when E >= 0). No gcd and no rational is involved. Rationals: W = lcm of
- * the denominators (usually one shared denominator for a Steiner point). */
+ * shifted up when E >= 0). No gcd and no rational is involved. Rationals: the form
+ * cached by hom_cache. */
 void tr_point_get_hom(const tr_point *p, mpz_t X[3], mpz_t W)
 {
   if (!p->q) {
@@ -183,19 +227,9 @@ void tr_point_get_hom(const tr_point *p, mpz_t X[3], mpz_t W)
       mpz_mul_2exp(W, W, (mp_bitcnt_t)(-E));
     return;
   }
-  const mpq_t *c = (const mpq_t *)p->q->c;
-  mpz_set(W, mpq_denref(c[0]));
-  for (int i = 1; i < 3; i++)
-    if (mpz_cmp(W, mpq_denref(c[i])) != 0)
-      mpz_lcm(W, W, mpq_denref(c[i]));
-  for (int i = 0; i < 3; i++) {
-    if (mpz_cmp(W, mpq_denref(c[i])) == 0)
-      mpz_set(X[i], mpq_numref(c[i]));
-    else {
-      mpz_divexact(X[i], W, mpq_denref(c[i]));
-      mpz_mul(X[i], X[i], mpq_numref(c[i]));
-    }
-  }
+  for (int i = 0; i < 3; i++)
+    mpz_set(X[i], p->q->hx[i]);
+  mpz_set(W, p->q->hw);
 }
 
 void tr_point_get_q(const tr_point *p, int i, mpq_t out)

@@ -22,6 +22,15 @@ typedef struct tr_qpoint {
   double lo[3];    /* largest double <= c[i] */
   double hi[3];    /* smallest double >= c[i] */
   double near[3];  /* c[i] rounded to the nearest double (ties to even) */
+  /* Derived with lo/hi/near by tr_qpoint_update (and set_d / set_point), kept because
+   * the exact predicates need them on every call and rebuilding them (lcm, divexact)
+   * was a tenth of the run time on Steiner-heavy models:
+   *   hx[i] / hw = c[i] with hw > 0 the lcm of the denominators (homogeneous form);
+   *   err[i] = max(hi[i] - near[i], near[i] - lo[i]) >= |c[i] - near[i]|, exact (the
+   *   difference of neighbouring doubles is a power of two), 0 iff c[i] is a double,
+   *   inf when c[i] is beyond the double range. */
+  mpz_t hx[3], hw;
+  double err[3];
 } tr_qpoint;
 
 /* A reference to a point of either kind: q == NULL means the point is exactly d. When
@@ -61,7 +70,7 @@ void tr_qpoint_set_point(tr_qpoint *q, const struct tr_point *p);
 void tr_point_get_q(const tr_point *p, int i, mpq_t out);
 /* Homogeneous integer form of p: coordinate i = X[i] / W with W > 0 (all initialised
  * by the caller). Exact predicates and constructions work on these to avoid the gcds
- * of mpq arithmetic. */
+ * of mpq arithmetic. For a rational point this copies q->hx, q->hw. */
 void tr_point_get_hom(const tr_point *p, mpz_t X[3], mpz_t W);
 
 /* Exact predicates on points of either kind; return -1, 0 or +1 with the conventions

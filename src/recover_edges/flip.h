@@ -57,6 +57,10 @@ tr_status tr_flip23(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, v
 tr_status tr_flip_remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                               tr_flip_guard guard, void *ud, tr_flip_rec *rec, int *done);
 
+/* A tet with edge ab (possibly a ghost), TR_NONE if ab is not a mesh edge: the first
+ * such tet of tr_ball(m, a, 1, .), found without listing the whole ball. */
+tr_status tr_flip_edge_tet(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t *t);
+
 /* Puts the old tets of a successful flip back (slots may differ). The new tets are found
  * by their vertex lists: at newid[i] if that slot still holds them (the usual case), else
  * through Ball of their first vertex, since undoing later flips may have put tets in
@@ -91,6 +95,19 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
 /* Swap23 on face k of t, appended to j. */
 tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, void *ud,
                       tr_flip_journal *j, int *done);
+
+/* A set of edges / triangles by vertex ids (any order; an edge has v[2] = TR_NONE): the
+ * flip drivers list each crossed simplex once, and comparing every new candidate with
+ * all earlier ones was quadratic in the pipe / cluster size. Zero-initialise. */
+typedef struct tr_sxset {
+  uint32_t (*k)[3];
+  uint32_t cap, n;
+} tr_sxset;
+/* Empties the set (keeps its memory). */
+void tr_sxset_clear(tr_sxset *s);
+/* 1 if v was added, 0 if it was there already, -1 out of memory (TR_ERR_NOMEM reported). */
+int tr_sxset_add(tr_sxset *s, const uint32_t v[3]);
+void tr_sxset_free(tr_sxset *s);
 
 /* 1 iff a and b are the same edge (v[2] == TR_NONE) or the same triangle, whatever the
  * order of their vertices: the flip drivers list each crossed edge and face once. */

@@ -30,9 +30,10 @@ static int cons_guard(void *ud, const uint32_t *v, int nv)
 
 /* The crossed faces and edges of the pipe, each once. */
 static tr_status list_cands(const struct tr_mesh *m, const tr_pipe *p, cand **out, uint32_t *n,
-                            uint32_t *cap)
+                            uint32_t *cap, tr_sxset *seen)
 {
   *n = 0;
+  tr_sxset_clear(seen);
   for (uint32_t i = 0; i < p->n; i++) {
     const tr_pipel *pl = &p->pl[i];
     if (pl->ghost)
@@ -54,10 +55,10 @@ static tr_status list_cands(const struct tr_mesh *m, const tr_pipe *p, cand **ou
       } else {
         continue;
       }
-      int dup = 0;
-      for (uint32_t j = 0; j < *n && !dup; j++)
-        dup = tr_same_simplex((*out)[j].v, c.v);
-      if (dup)
+      int added = tr_sxset_add(seen, c.v);
+      if (added < 0)
+        return TR_ERR_NOMEM;
+      if (!added)
         continue;
       if (*n == *cap) {
         uint32_t nc = *cap ? 2 * *cap : 32;
@@ -104,109 +105,44 @@ static void count(tr_flip_journal *j, tr_edge_stats *st)
   j->delta = 0;
 }
 
-/* 1 iff the real tet with vertices v meets the open segment ab at a point that is not
- * one of its vertices (a pipel of pipe.h; ghosts count 0). */
-static int is_pipel(const struct tr_mesh *m, const tr_point *pa, const tr_point *pb,
-                    const uint32_t v[4])
+/* The measure of a flip attempt: 1 iff the real tet with vertices v meets the open
+ * segment ab at a point that is not one of its vertices (a pipel of pipe.h; ghosts count
+ * 0). Memoised: every flip made and undone re-measures the same tets, and the memo also
+ * serves the re-collection of the pipe after a kept attempt. */
+static int pipel_measure(void *ud, const struct tr_mesh *m, const uint32_t v[4])
 {
   if (v[3] == TR_GHOST)
     return 0;
-  tr_point p[4];
-  const tr_point *pp[4];
-  for (int k = 0; k < 4; k++) {
-    p[k] = tr_mesh_point(m, v[k]);
-    pp[k] = &p[k];
-  }
-  tr_isect x = tr_classify_segment_tet(pa, pb, pp);
+  tr_isect x = tr_segmemo_classify(ud, m, v);
   for (int e = 0; e < x.n; e++)
     if (x.end[e].type != TR_NOD)
       return 1;
   return 0;
 }
 
-/* Memo of is_pipel by the tet's vertex list (slot order): every flip made and undone
- * re-measures the same tets, and the points never move during flips. Open addressing,
- * linear probing; an all-TR_NONE key (never a tet) marks an empty slot. On allocation
- * failure the memo is skipped. */
-typedef struct seg {
-  tr_point pa, pb;
-  uint32_t (*key)[4];
-  uint8_t *val;
-  uint32_t cap, n; /* cap: 0 or a power of two */
-} seg;
-
-static uint32_t seg_slot(const seg *g, const uint32_t v[4])
-{
-  uint64_t x = ((uint64_t)v[0] << 32 | v[1]) * 0x9E3779B97F4A7C15ull ^
-               ((uint64_t)v[2] << 32 | v[3]) * 0xC2B2AE3D27D4EB4Full;
-  uint32_t i = (uint32_t)(x >> 32) & (g->cap - 1);
-  while (g->key[i][0] != TR_NONE && memcmp(g->key[i], v, 4 * sizeof *v) != 0)
-    i = (i + 1) & (g->cap - 1);
-  return i;
-}
-
-static void seg_put(seg *g, const uint32_t v[4], int r)
-{
-  if (2 * (g->n + 1) > g->cap) {
-    uint32_t nc = g->cap ? 2 * g->cap : 256;
-    seg h = {g->pa, g->pb, malloc(nc * sizeof *h.key), malloc(nc * sizeof *h.val), nc, 0};
-    if (!h.key || !h.val) {
-      free(h.key);
-      free(h.val);
-      return;
-    }
-    memset(h.key, 0xff, nc * sizeof *h.key);
-    for (uint32_t i = 0; i < g->cap; i++)
-      if (g->key[i][0] != TR_NONE) {
-        uint32_t k = seg_slot(&h, g->key[i]);
-        memcpy(h.key[k], g->key[i], sizeof h.key[k]);
-        h.val[k] = g->val[i];
-        h.n++;
-      }
-    free(g->key);
-    free(g->val);
-    *g = h;
-  }
-  uint32_t i = seg_slot(g, v);
-  if (g->key[i][0] == TR_NONE) {
-    memcpy(g->key[i], v, sizeof g->key[i]);
-    g->n++;
-  }
-  g->val[i] = (uint8_t)r;
-}
-
-static int pipel_measure(void *ud, const struct tr_mesh *m, const uint32_t v[4])
-{
-  seg *g = ud;
-  if (v[3] == TR_GHOST)
-    return 0;
-  if (g->cap) {
-    uint32_t i = seg_slot(g, v);
-    if (g->key[i][0] != TR_NONE)
-      return g->val[i];
-  }
-  int r = is_pipel(m, &g->pa, &g->pb, v);
-  seg_put(g, v, r);
-  return r;
-}
-
 tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
-                            const struct tr_edgeset *cons, tr_edge_stats *st, int *done)
+                            const struct tr_edgeset *cons, tr_segmemo *memo,
+                            tr_edge_stats *st, int *done)
 {
   *done = 0;
   cand *cs = NULL;
   uint32_t nc = 0, cap = 0, via;
   tr_status s = TR_OK;
-  seg g = {tr_mesh_point(m, a), tr_mesh_point(m, b), NULL, NULL, 0, 0};
+  tr_segmemo own, *g = memo;
+  if (!g) {
+    tr_segmemo_init(&own, m, a, b);
+    g = &own;
+  }
+  tr_sxset seen = {0};
   tr_flip_journal j;
   memset(&j, 0, sizeof j);
   j.measure = pipel_measure;
-  j.mud = &g;
+  j.mud = g;
   /* The measure is the number of real pipels; the journal adds up its change over the
    * flips of one attempt (pipels among the new tets - among the old ones). */
   for (int progress = 1; progress && s == TR_OK && !*done;) {
     progress = 0;
-    if ((s = list_cands(m, p, &cs, &nc, &cap)) != TR_OK)
+    if ((s = list_cands(m, p, &cs, &nc, &cap, &seen)) != TR_OK)
       break;
     for (uint32_t i = 0; i < nc && !progress && s == TR_OK; i++) {
       int ok;
@@ -223,7 +159,7 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
         if (yes)
           *done = 1;
         else
-          s = tr_pipe_collect(m, a, b, p, &via);
+          s = tr_pipe_collect_memo(m, a, b, p, &via, g);
         if (s == TR_OK && !*done && via != TR_NONE)
           s = tr_error(TR_ERR_INTERNAL, "flips: segment %u-%u now passes through vertex %u",
                        a, b, via);
@@ -236,10 +172,11 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
   if (*done)
     st->by_flips++;
   else if (s == TR_OK && nc > 0)
-    s = tr_pipe_collect(m, a, b, p, &via); /* undos may have moved tets to other slots */
+    s = tr_pipe_collect_memo(m, a, b, p, &via, g); /* undos may have moved tets to other slots */
   tr_flip_journal_free(&j);
-  free(g.key);
-  free(g.val);
+  if (g == &own)
+    tr_segmemo_free(&own);
+  tr_sxset_free(&seen);
   free(cs);
   return s;
 }

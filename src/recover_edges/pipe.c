@@ -40,16 +40,21 @@ tr_status tr_mesh_has_edge(struct tr_mesh *m, uint32_t a, uint32_t b, int *yes)
 /* Classifies ab against real tet t; fills pl (iNod of EDG/FAC ends left TR_NONE). Returns
  * 1 if t is a pipel; sets *via to a vertex of t strictly inside ab, if any. */
 static int classify(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t, tr_pipel *pl,
-                    uint32_t *via)
+                    uint32_t *via, tr_segmemo *memo)
 {
-  tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b), p[4];
-  const tr_point *pp[4];
   const uint32_t *v = m->tv + 4 * (size_t)t;
-  for (int k = 0; k < 4; k++) {
-    p[k] = tr_mesh_point(m, v[k]);
-    pp[k] = &p[k];
+  tr_isect x;
+  if (memo)
+    x = tr_segmemo_classify(memo, m, v);
+  else {
+    tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b), p[4];
+    const tr_point *pp[4];
+    for (int k = 0; k < 4; k++) {
+      p[k] = tr_mesh_point(m, v[k]);
+      pp[k] = &p[k];
+    }
+    x = tr_classify_segment_tet(&pa, &pb, pp);
   }
-  tr_isect x = tr_classify_segment_tet(&pa, &pb, pp);
   int cut = 0;
   uint8_t ty[2] = {TR_DEG, TR_DEG}, code[2] = {0, 0};
   uint32_t nod[2] = {TR_NONE, TR_NONE};
@@ -99,6 +104,12 @@ static int ghost_is_cut(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t g)
 tr_status tr_pipe_collect(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *pipe,
                           uint32_t *via)
 {
+  return tr_pipe_collect_memo(m, a, b, pipe, via, NULL);
+}
+
+tr_status tr_pipe_collect_memo(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *pipe,
+                               uint32_t *via, tr_segmemo *memo)
+{
   pipe->n = 0;
   *via = TR_NONE;
   tr_u32buf seen = {0}, ball = {0};
@@ -111,7 +122,7 @@ tr_status tr_pipe_collect(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *pi
   for (size_t i = 0; s == TR_OK && i < seen.n && *via == TR_NONE; i++) {
     uint32_t t = seen.a[i];
     tr_pipel pl;
-    if (!tr_tet_is_real(m, t) || !classify(m, a, b, t, &pl, via))
+    if (!tr_tet_is_real(m, t) || !classify(m, a, b, t, &pl, via, memo))
       continue;
     if ((s = pipe_push(pipe, &pl)) != TR_OK)
       break;

@@ -15,6 +15,7 @@
 #define TR_RECOVER_EDGES_PIPE_H
 
 #include "recover_edges/pipel.h"
+#include "recover_edges/segmemo.h"
 
 typedef struct tr_pipe {
   tr_pipel *pl;
@@ -28,6 +29,9 @@ void tr_pipe_free(tr_pipe *p);
  * an existing vertex strictly inside ab, or TR_NONE (then the pipe is complete). */
 tr_status tr_pipe_collect(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *pipe,
                           uint32_t *via);
+/* The same with the classifications taken from / added to memo (a memo of segment ab). */
+tr_status tr_pipe_collect_memo(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *pipe,
+                               uint32_t *via, tr_segmemo *memo);
 
 /* Creates the exact Steiner points of a collected pipe (one per cut edge or face, shared
  * by every pipel that has it) and fills the iNod of EDG / FAC ends. *nadded counts them. */
@@ -74,9 +78,10 @@ tr_status tr_pipe_try_swaps(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_
  * drops (else it is undone), until ab is a mesh edge or no attempt helps (flipseg.c). p
  * must be Pipe(ab) with no vertex inside ab; on return it is the current Pipe(ab) unless
  * *done. Terminates: every kept attempt lowers the pipel count. *done = 1 iff ab is now a
- * mesh edge. */
+ * mesh edge. memo: a memo of segment ab (e.g. the one p was collected with), or NULL. */
 tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
-                            const struct tr_edgeset *cons, tr_edge_stats *st, int *done);
+                            const struct tr_edgeset *cons, tr_segmemo *memo,
+                            tr_edge_stats *st, int *done);
 
 /* Splits ab at its exact midpoint M (midsplit.c): the tets of Pipe(ab) whose closure
  * holds M are replaced by the cone from M. *done = 1 and *mid = M's id on success; the

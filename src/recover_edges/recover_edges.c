@@ -52,6 +52,7 @@ typedef struct ctx {
   tr_u32buf walk;    /* scratch: one chain */
   tr_u32buf ball;    /* scratch: Ball(v) */
   tr_pipe pipe;
+  tr_segmemo memo;   /* classifications against the sub-segment being recovered */
   tr_edge_stats est; /* detailed counters (pipe.h) */
   uint32_t nv0;      /* vertices before the stage: ids from nv0 on are its Steiner points */
   tr_edge_recovery_opts opt;
@@ -197,7 +198,10 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
       continue;
     }
     uint32_t via;
-    TR_CHECK(tr_pipe_collect(m, v0, v1, &c->pipe, &via));
+    /* the memo serves the flips below; a new sub-segment starts an empty one */
+    tr_segmemo_free(&c->memo);
+    tr_segmemo_init(&c->memo, m, v0, v1);
+    TR_CHECK(tr_pipe_collect_memo(m, v0, v1, &c->pipe, &via, &c->memo));
     if (via != TR_NONE) {
       /* A Steiner point of this stage lies on another input edge: passing through it
        * means crossing that edge. (Input vertices on the edge are fine: the edge is
@@ -219,7 +223,7 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
     int done;
     TR_CHECK(tr_pipe_try_swaps(m, v0, v1, &c->pipe, &c->cons, &c->est, &done));
     if (!done && !c->opt.no_flips)
-      TR_CHECK(tr_pipe_try_flips(m, v0, v1, &c->pipe, &c->cons, &c->est, &done));
+      TR_CHECK(tr_pipe_try_flips(m, v0, v1, &c->pipe, &c->cons, &c->memo, &c->est, &done));
     if (done) {
       TR_CHECK(tr_edgeset_put(&c->cons, v0, v1, i));
       continue;
@@ -420,6 +424,7 @@ tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t
   tr_u32buf_free(&c.walk);
   tr_u32buf_free(&c.ball);
   tr_pipe_free(&c.pipe);
+  tr_segmemo_free(&c.memo);
   if (s != TR_OK)
     tr_edge_chains_free(chains);
   return s;

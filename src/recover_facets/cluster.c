@@ -34,13 +34,8 @@ static int in_closed_triangle(const tr_point *p, const tr_point *e, const tr_poi
  * whether it lies in the closed triangle. A vertex is shared by ~20 tets of the search
  * and the on-plane answers (the facet's own boundary vertices, often rational Steiner
  * points) always need the exact evaluation, so this removes most of the exact work. */
-typedef struct vcache {
-  uint32_t *key; /* TR_NONE: empty */
-  uint8_t *val;  /* (side + 1) | in_closed << 2 */
-  uint32_t mask, n;
-} vcache;
 
-static tr_status vcache_grow(vcache *c)
+static tr_status vcache_grow(tr_vcache *c)
 {
   uint32_t cap = c->key ? 2 * (c->mask + 1) : 256;
   uint32_t *nk = malloc(cap * sizeof *nk);
@@ -69,14 +64,83 @@ static tr_status vcache_grow(vcache *c)
   return TR_OK;
 }
 
-static void vcache_free(vcache *c)
+static void vcache_free(tr_vcache *c)
 {
   free(c->key);
   free(c->val);
 }
 
+/* Memo of crossing_in_triangle by edge {u < v} (the answer is symmetric in u, v: swapping
+ * them negates all three signs): the facet flip driver collects the cluster again after
+ * every kept flip, and most edges are unchanged. Key (u + 1) << 32 | v, 0 = empty. */
+static int ecache_get(const tr_cluster_memo *c, uint64_t k, int *w)
+{
+  if (!c->ekey)
+    return 0;
+  uint32_t h = (uint32_t)((k * 0x9E3779B97F4A7C15ull) >> 32) & c->emask;
+  while (c->ekey[h] && c->ekey[h] != k)
+    h = (h + 1) & c->emask;
+  if (!c->ekey[h])
+    return 0;
+  *w = c->eval[h];
+  return 1;
+}
+
+static void ecache_put(tr_cluster_memo *c, uint64_t k, int w)
+{
+  if (!c->ekey || 2 * (c->en + 1) > c->emask + 1) {
+    uint32_t cap = c->ekey ? 2 * (c->emask + 1) : 256;
+    uint64_t *nk = calloc(cap, sizeof *nk);
+    int8_t *nv = malloc(cap);
+    if (!nk || !nv) { /* the memo only saves work: stop growing it */
+      free(nk);
+      free(nv);
+      if (c->ekey && c->en + 1 <= c->emask)
+        goto insert;
+      return;
+    }
+    for (uint32_t i = 0; c->ekey && i <= c->emask; i++) {
+      if (!c->ekey[i])
+        continue;
+      uint32_t h = (uint32_t)((c->ekey[i] * 0x9E3779B97F4A7C15ull) >> 32) & (cap - 1);
+      while (nk[h])
+        h = (h + 1) & (cap - 1);
+      nk[h] = c->ekey[i];
+      nv[h] = c->eval[i];
+    }
+    free(c->ekey);
+    free(c->eval);
+    c->ekey = nk;
+    c->eval = nv;
+    c->emask = cap - 1;
+  }
+insert:;
+  uint32_t h = (uint32_t)((k * 0x9E3779B97F4A7C15ull) >> 32) & c->emask;
+  while (c->ekey[h] && c->ekey[h] != k)
+    h = (h + 1) & c->emask;
+  if (!c->ekey[h])
+    c->en++;
+  c->ekey[h] = k;
+  c->eval[h] = (int8_t)w;
+}
+
+static int crossing_memo(tr_cluster_memo *c, uint32_t u, uint32_t v, const tr_point *pu,
+                         const tr_point *pv, const tr_point *e, const tr_point *f,
+                         const tr_point *g)
+{
+  if (!c)
+    return crossing_in_triangle(pu, pv, e, f, g);
+  uint64_t k = u < v ? ((uint64_t)u + 1) << 32 | v : ((uint64_t)v + 1) << 32 | u;
+  int w;
+  if (ecache_get(c, k, &w))
+    return w;
+  w = crossing_in_triangle(pu, pv, e, f, g);
+  ecache_put(c, k, w);
+  return w;
+}
+
 /* Side of vertex v (point p) and, on the plane, membership in the closed triangle. */
-static tr_status vertex_side(vcache *c, uint32_t v, const tr_point *p, const tr_point *e,
+static tr_status vertex_side(tr_vcache *c, uint32_t v, const tr_point *p, const tr_point *e,
                              const tr_point *f, const tr_point *g, int *side, int *in)
 {
   uint32_t h = 0;
@@ -105,8 +169,9 @@ static tr_status vertex_side(vcache *c, uint32_t v, const tr_point *p, const tr_
 /* Classification plus the "touches the closed triangle" answer the search needs. */
 static tr_status classify(const struct tr_mesh *m, uint32_t t, const tr_point *e,
                           const tr_point *f, const tr_point *g, tr_clusterel *out,
-                          int *member, int *touch, vcache *vc)
+                          int *member, int *touch, tr_cluster_memo *mc)
 {
+  tr_vcache *vc = mc ? &mc->v : NULL;
   tr_point p[4];
   int s[4], n0 = 0, nin = 0;
   const uint32_t *tv = m->tv + 4 * (size_t)t;
@@ -146,7 +211,7 @@ static tr_status classify(const struct tr_mesh *m, uint32_t t, const tr_point *e
     for (int b = a + 1; b < 4; b++) {
       if (s[a] * s[b] >= 0)
         continue;
-      int w = crossing_in_triangle(&p[a], &p[b], e, f, g);
+      int w = crossing_memo(mc, tv[a], tv[b], &p[a], &p[b], e, f, g);
       if (w < 0)
         return tr_error(TR_ERR_INVALID_MESH,
                         "cluster: edge %u-%u of tet %u crosses the boundary of the missing "
@@ -205,17 +270,16 @@ static int cmp_clusterel(const void *a, const void *b)
 
 static tr_status collect(struct tr_mesh *m, const tr_point *pe, const tr_point *pf,
                          const tr_point *pg, tr_u32buf *queue, tr_clusterel **out,
-                         uint32_t *n)
+                         uint32_t *n, tr_cluster_memo *mc)
 {
   size_t cap = 0;
-  vcache vc = {0};
   tr_status st = TR_OK;
   /* queue->a[0..n) are the seeds, already marked; the queue grows behind them. */
   for (size_t head = 0; head < queue->n; head++) {
     uint32_t t = queue->a[head];
     tr_clusterel c;
     int member, touch;
-    st = classify(m, t, pe, pf, pg, &c, &member, &touch, &vc);
+    st = classify(m, t, pe, pf, pg, &c, &member, &touch, mc);
     if (st != TR_OK)
       break;
     if (member) {
@@ -247,12 +311,29 @@ static tr_status collect(struct tr_mesh *m, const tr_point *pe, const tr_point *
     if (st != TR_OK)
       break;
   }
-  vcache_free(&vc);
   return st;
+}
+
+void tr_cluster_memo_free(tr_cluster_memo *c)
+{
+  vcache_free(&c->v);
+  free(c->ekey);
+  free(c->eval);
+  memset(c, 0, sizeof *c);
 }
 
 tr_status tr_cluster_collect(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,
                              tr_clusterel **out, uint32_t *n)
+{
+  tr_cluster_memo mc;
+  memset(&mc, 0, sizeof mc);
+  tr_status st = tr_cluster_collect_memo(m, e, f, g, out, n, &mc);
+  tr_cluster_memo_free(&mc);
+  return st;
+}
+
+tr_status tr_cluster_collect_memo(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,
+                                  tr_clusterel **out, uint32_t *n, tr_cluster_memo *mc)
 {
   *out = NULL;
   *n = 0;
@@ -265,7 +346,7 @@ tr_status tr_cluster_collect(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t
   for (size_t i = 0; i < queue.n; i++)
     m->flags[queue.a[i]] |= TR_TF_MARK;
   tr_point pe = tr_mesh_point(m, e), pf = tr_mesh_point(m, f), pg = tr_mesh_point(m, g);
-  st = collect(m, &pe, &pf, &pg, &queue, out, n);
+  st = collect(m, &pe, &pf, &pg, &queue, out, n, mc);
   /* The mark bit is scratch: clear it on every visited tet, also after a failure. */
   for (size_t i = 0; i < queue.n; i++)
     m->flags[queue.a[i]] &= (uint8_t)~TR_TF_MARK;

@@ -59,4 +59,25 @@ tr_status tr_clusterel_classify(const struct tr_mesh *m, uint32_t t, const tr_po
 tr_status tr_cluster_collect(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,
                              tr_clusterel **out, uint32_t *n);
 
+/* Exact answers of the collection by vertex ids (each vertex's side of the plane EFG and
+ * membership in the closed triangle; each crossed edge's crossing point in or out), so
+ * that collecting the same facet's cluster again after flips only evaluates what is
+ * new. Valid for one facet while no point moves. Zero-initialise; free with
+ * tr_cluster_memo_free. */
+typedef struct tr_vcache {
+  uint32_t *key; /* TR_NONE: empty */
+  uint8_t *val;  /* (side + 1) | in_closed << 2 */
+  uint32_t mask, n;
+} tr_vcache;
+typedef struct tr_cluster_memo {
+  tr_vcache v;
+  uint64_t *ekey; /* edge {u < v} as (u + 1) << 32 | v; 0: empty */
+  int8_t *eval;
+  uint32_t emask, en;
+} tr_cluster_memo;
+void tr_cluster_memo_free(tr_cluster_memo *c);
+/* tr_cluster_collect with the answers taken from / added to mc (a memo of facet efg). */
+tr_status tr_cluster_collect_memo(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,
+                                  tr_clusterel **out, uint32_t *n, tr_cluster_memo *mc);
+
 #endif

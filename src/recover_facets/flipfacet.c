@@ -18,11 +18,13 @@ typedef struct fcand {
   int k;         /* face code in t */
 } fcand;
 
-static tr_status push(fcand **a, uint32_t *n, uint32_t *cap, const fcand *c)
+static tr_status push(fcand **a, uint32_t *n, uint32_t *cap, tr_sxset *seen, const fcand *c)
 {
-  for (uint32_t j = 0; j < *n; j++)
-    if (tr_same_simplex((*a)[j].v, c->v))
-      return TR_OK;
+  int added = tr_sxset_add(seen, c->v);
+  if (added < 0)
+    return TR_ERR_NOMEM;
+  if (!added)
+    return TR_OK;
   if (*n == *cap) {
     uint32_t nc = *cap ? 2 * *cap : 32;
     fcand *q = realloc(*a, nc * sizeof *q);
@@ -38,9 +40,10 @@ static tr_status push(fcand **a, uint32_t *n, uint32_t *cap, const fcand *c)
 /* Edges first (edge removal takes a crossing edge away directly), then the faces with two
  * crossed edges (Swap23 there replaces them by the edge between the apexes). */
 static tr_status list(const struct tr_mesh *m, const tr_clusterel *cl, uint32_t ncl,
-                      fcand **a, uint32_t *n, uint32_t *cap, uint32_t *ncross)
+                      fcand **a, uint32_t *n, uint32_t *cap, tr_sxset *seen, uint32_t *ncross)
 {
   *n = 0;
+  tr_sxset_clear(seen);
   *ncross = 0;
   for (int pass = 0; pass < 2; pass++)
     for (uint32_t i = 0; i < ncl; i++) {
@@ -57,7 +60,7 @@ static tr_status list(const struct tr_mesh *m, const tr_clusterel *cl, uint32_t 
           infc[k] += k != s0 && k != s1;
         if (pass == 0) {
           fcand c = {cl[i].iele, {tv[s0], tv[s1], TR_NONE}, -1};
-          TR_CHECK(push(a, n, cap, &c));
+          TR_CHECK(push(a, n, cap, seen, &c));
         }
       }
       for (int k = 0; pass == 1 && k < 4; k++) {
@@ -65,7 +68,7 @@ static tr_status list(const struct tr_mesh *m, const tr_clusterel *cl, uint32_t 
           continue;
         fcand c = {cl[i].iele, {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]],
                                 tv[tr_face_vtx[k][2]]}, k};
-        TR_CHECK(push(a, n, cap, &c));
+        TR_CHECK(push(a, n, cap, seen, &c));
       }
     }
   return TR_OK;
@@ -212,6 +215,9 @@ tr_status tr_facet_try_flips(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t
   tr_clusterel *cl = NULL;
   uint32_t ncl = 0, n = 0, cap = 0, ncross = 0;
   fcand *cs = NULL;
+  tr_sxset seen = {0};
+  tr_cluster_memo cm;
+  memset(&cm, 0, sizeof cm);
   tr_flip_journal j;
   memset(&j, 0, sizeof j);
   j.measure = crossing_measure;
@@ -221,8 +227,8 @@ tr_status tr_facet_try_flips(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t
     progress = 0;
     free(cl);
     cl = NULL;
-    if ((s = tr_cluster_collect(m, e, f, g, &cl, &ncl)) != TR_OK ||
-        (s = list(m, cl, ncl, &cs, &n, &cap, &ncross)) != TR_OK)
+    if ((s = tr_cluster_collect_memo(m, e, f, g, &cl, &ncl, &cm)) != TR_OK ||
+        (s = list(m, cl, ncl, &cs, &n, &cap, &seen, &ncross)) != TR_OK)
       break;
     if (ncross == 0) {
       *clear = 1;
@@ -263,6 +269,8 @@ tr_status tr_facet_try_flips(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t
     }
   }
   tr_flip_journal_free(&j);
+  tr_sxset_free(&seen);
+  tr_cluster_memo_free(&cm);
   memo_free(&T.side);
   free(cl);
   free(cs);

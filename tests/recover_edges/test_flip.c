@@ -300,6 +300,84 @@ static int test_recover(int n)
   return 0;
 }
 
+/* tr_flip_edge_tet (the early-exit search of the flip drivers) gives exactly the tet that
+ * scanning the whole of tr_ball(a, 1) gives: the first with vertex b, ghosts included,
+ * TR_NONE when ab is not an edge. Checked for every vertex pair of a random Delaunay mesh
+ * (hull edges included), so the flips start their shells where they did before. */
+static int test_edge_tet(void)
+{
+  enum { NP = 60 };
+  double x[3 * NP];
+  unsigned long long r = 88172645463325252ull;
+  for (int i = 0; i < 3 * NP; i++) {
+    r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+    x[i] = (double)(r % 2001) / 1000.0 - 1.0;
+  }
+  struct tr_mesh *m;
+  CK(tr_delaunay_build(x, NP, &m));
+  mpq_t vol;
+  mpq_init(vol);
+  CK(tr_mesh_volume6(m, vol));
+  tr_u32buf ball = {0};
+  int edges = 0;
+  for (uint32_t a = 0; a < NP; a++) {
+    CK(tr_ball(m, a, 1, &ball));
+    for (uint32_t b = 0; b < NP; b++) {
+      if (b == a)
+        continue;
+      uint32_t want = TR_NONE, got;
+      for (size_t i = 0; i < ball.n && want == TR_NONE; i++)
+        if (tr_ncode(m, ball.a[i], b) >= 0)
+          want = ball.a[i];
+      CK(tr_flip_edge_tet(m, a, b, &got));
+      if (got != want)
+        FAIL("edge_tet %u-%u: %u, the ball scan gives %u", a, b, got, want);
+      edges += want != TR_NONE;
+    }
+  }
+  tr_u32buf_free(&ball);
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (m->flags[t] & TR_TF_MARK)
+      FAIL("edge_tet: scratch mark left on tet %u", t);
+  if (edges < 2 * NP)
+    FAIL("edge_tet: only %d directed edges found", edges);
+  if (validate(m, vol, "edge_tet")) /* the searches leave the mesh as it was */
+    return 1;
+  printf("edge_tet: %d directed edges and every non-edge agree with the ball scan\n", edges);
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+/* tr_sxset: each edge / triangle is added once whatever the vertex order, edges and
+ * triangles on the same vertices are different, growth keeps every key, clear empties. */
+static int test_sxset(void)
+{
+  tr_sxset s = {0};
+  int added = 0;
+  for (int round = 0; round < 2; round++) {
+    for (uint32_t i = 0; i < 500; i++) {
+      uint32_t f[3] = {i, i + 7, 3 * i + 1}, g[3] = {3 * i + 1, i, i + 7};
+      uint32_t e[3] = {i + 7, i, TR_NONE};
+      int r1 = tr_sxset_add(&s, f), r2 = tr_sxset_add(&s, g), r3 = tr_sxset_add(&s, e);
+      if (r1 != 1 || r2 != 0 || r3 != 1)
+        FAIL("sxset round %d key %u: add gave %d %d %d, want 1 0 1", round, i, r1, r2, r3);
+      added += r1 + r3;
+    }
+    for (uint32_t i = 0; i < 500; i++) {
+      uint32_t f[3] = {i + 7, 3 * i + 1, i}, e[3] = {i, i + 7, TR_NONE};
+      if (tr_sxset_add(&s, f) != 0 || tr_sxset_add(&s, e) != 0)
+        FAIL("sxset round %d key %u: lost after growth", round, i);
+    }
+    if (s.n != 1000)
+      FAIL("sxset round %d: %u keys, want 1000", round, s.n);
+    tr_sxset_clear(&s);
+  }
+  tr_sxset_free(&s);
+  printf("sxset: %d distinct simplices added over two rounds\n", added);
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2)
@@ -318,6 +396,10 @@ int main(int argc, char **argv)
     return test_hull_cube();
   if (!strcmp(w, "recover") && n >= 3 && n <= 12)
     return test_recover(n);
+  if (!strcmp(w, "edge_tet"))
+    return test_edge_tet();
+  if (!strcmp(w, "sxset"))
+    return test_sxset();
   fprintf(stderr, "unknown test %s\n", w);
   return 2;
 }

@@ -1,0 +1,29 @@
+/* Memo of tr_classify_segment_tet for one segment ab during its recovery by flips.
+ *
+ * Flip attempts that are made and undone, and the re-collection of Pipe(ab) after a kept
+ * flip, classify the same tets again and again; the points never move while ab is
+ * flipped for, so a tet's classification is a function of its vertex list (in slot
+ * order: the codes are slot numbers). Open addressing with linear probing; an
+ * all-TR_NONE key (never a tet) marks an empty slot. On allocation failure the memo just
+ * stops growing (results are then recomputed), so it never changes an answer.
+ */
+#ifndef TR_RECOVER_EDGES_SEGMEMO_H
+#define TR_RECOVER_EDGES_SEGMEMO_H
+
+#include "classify.h"
+#include "mesh/mesh.h"
+
+typedef struct tr_segmemo {
+  tr_point pa, pb;
+  uint32_t (*key)[4];
+  uint16_t *val; /* packed tr_isect: n, end types and codes (on_seg is not kept) */
+  uint32_t cap, n; /* cap: 0 or a power of two */
+} tr_segmemo;
+
+/* Starts an empty memo for segment ab (no allocation yet). */
+void tr_segmemo_init(tr_segmemo *g, const struct tr_mesh *m, uint32_t a, uint32_t b);
+void tr_segmemo_free(tr_segmemo *g);
+/* tr_classify_segment_tet(a, b, tet v) with end[].on_seg = 0; v must be a real tet. */
+tr_isect tr_segmemo_classify(tr_segmemo *g, const struct tr_mesh *m, const uint32_t v[4]);
+
+#endif
