@@ -4,6 +4,7 @@
  * before anything is modified. */
 #include "mesh.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,16 +14,39 @@ typedef struct face_rec {
   uint32_t code;  /* new: face slot k; boundary: the outside neighbour code (or TR_NONE) */
 } face_rec;
 
-static int cmp_rec(const void *pa, const void *pb)
+/* Pairs the records with equal faces through a small open-addressing table: mate[i] =
+ * the other record of i's face. Returns the index of a record whose face is not shared
+ * by exactly two records, one of them new, or SIZE_MAX when every face pairs up. Gluing
+ * does not depend on the order in which pairs are found, so this needs no sort (flips
+ * list a few dozen records; sorting them was a tenth of the time of a flip search). */
+static size_t pair_recs(const face_rec *r, size_t n, uint32_t *slot, size_t cap,
+                        uint32_t *mate)
 {
-  const face_rec *a = pa, *b = pb;
-  for (int i = 0; i < 3; i++)
-    if (a->v[i] != b->v[i])
-      return a->v[i] < b->v[i] ? -1 : 1;
-  /* deterministic order inside a group: boundary record first, then by new tet */
-  if (a->who != b->who)
-    return a->who > b->who ? -1 : 1; /* TR_NONE (boundary) sorts first */
-  return a->code < b->code ? -1 : a->code > b->code;
+  for (size_t i = 0; i < cap; i++)
+    slot[i] = TR_NONE;
+  for (size_t i = 0; i < n; i++) {
+    mate[i] = TR_NONE;
+    uint64_t h = r[i].v[0] * 0x9e3779b97f4a7c15ull ^ r[i].v[1] * 0xc2b2ae3d27d4eb4full ^
+                 r[i].v[2] * 0x165667b19e3779f9ull;
+    size_t k = (size_t)(h >> 32) & (cap - 1);
+    while (slot[k] != TR_NONE && memcmp(r[slot[k]].v, r[i].v, sizeof r[i].v) != 0)
+      k = (k + 1) & (cap - 1);
+    if (slot[k] == TR_NONE) {
+      slot[k] = (uint32_t)i;
+      continue;
+    }
+    size_t j = slot[k];
+    if (mate[j] != TR_NONE)
+      return i; /* a third record of the same face */
+    if (r[i].who == TR_NONE && r[j].who == TR_NONE)
+      return i; /* two old-boundary faces: the new tets leave a hole */
+    mate[j] = (uint32_t)i;
+    mate[i] = (uint32_t)j;
+  }
+  for (size_t i = 0; i < n; i++)
+    if (mate[i] == TR_NONE)
+      return i;
+  return SIZE_MAX;
 }
 
 /* The vertices of face k of tet tv, sorted (the face's key from either side). */
@@ -46,10 +70,17 @@ tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
     else
       m->flags[old[i]] |= TR_TF_MARK;
 
-  size_t nrec = 0, caprec = 4 * ((size_t)nold + nnew);
-  face_rec *rec = malloc((caprec ? caprec : 1) * sizeof *rec);
+  size_t nrec = 0, caprec = 4 * ((size_t)nold + nnew), cap = 16;
+  while (cap < 2 * caprec)
+    cap *= 2;
+  /* records, their mates and the pairing table: on the stack for most flips */
+  face_rec local[128];
+  uint32_t lmate[128], lslot[256];
+  face_rec *rec = caprec <= 128 ? local : malloc(caprec * sizeof *rec);
+  uint32_t *mate = caprec <= 128 ? lmate : malloc(caprec * sizeof *mate);
+  uint32_t *slot = cap <= 256 ? lslot : malloc(cap * sizeof *slot);
   tr_status s = TR_OK;
-  if (!rec) {
+  if (!rec || !mate || !slot) {
     s = tr_error(TR_ERR_NOMEM, "replace: out of memory");
     goto done;
   }
@@ -72,25 +103,21 @@ tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
       r->who = i;
       r->code = (uint32_t)k;
     }
-  qsort(rec, nrec, sizeof *rec, cmp_rec);
-  /* Every group of equal faces must be a pair with at least one new tet in it. */
-  for (size_t i = 0; i < nrec; i += 2) {
-    if (i + 1 >= nrec || memcmp(rec[i].v, rec[i + 1].v, sizeof rec[i].v) != 0 ||
-        (i + 2 < nrec && memcmp(rec[i].v, rec[i + 2].v, sizeof rec[i].v) == 0) ||
-        rec[i + 1].who == TR_NONE) {
-      s = tr_error(TR_ERR_INTERNAL,
-                   "replace: face (%u,%u,%u) is not shared by exactly one old-boundary or new "
-                   "face: the %u new tets do not fill the region of the %u old ones",
-                   rec[i].v[0], rec[i].v[1], rec[i].v[2], nnew, nold);
-      goto done;
-    }
+  /* Every face must be listed exactly twice, by at least one new tet. */
+  size_t bad = pair_recs(rec, nrec, slot, cap, mate);
+  if (bad != SIZE_MAX) {
+    s = tr_error(TR_ERR_INTERNAL,
+                 "replace: face (%u,%u,%u) is not shared by exactly one old-boundary or new "
+                 "face: the %u new tets do not fill the region of the %u old ones",
+                 rec[bad].v[0], rec[bad].v[1], rec[bad].v[2], nnew, nold);
+    goto done;
   }
   if (nnew > nold && m->nfree < nnew - nold)
     if ((s = tr_mesh_reserve_tets(m, m->nt + (nnew - nold - m->nfree))) != TR_OK)
       goto done;
 
   /* Commit: nothing below can fail. */
-  uint32_t *ids = malloc((nnew ? nnew : 1) * sizeof *ids);
+  uint32_t ids_local[32], *ids = nnew <= 32 ? ids_local : malloc(nnew * sizeof *ids);
   if (!ids) {
     s = tr_error(TR_ERR_NOMEM, "replace: out of memory");
     goto done;
@@ -119,8 +146,15 @@ tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
       (void)tr_tet_new(m, v[0], v[1], v[2], v[3], &ids[i]); /* capacity reserved above */
     }
   }
-  for (size_t i = 0; i < nrec; i += 2) {
-    const face_rec *a = &rec[i], *b = &rec[i + 1];
+  for (size_t i = 0; i < nrec; i++) {
+    if (mate[i] < i)
+      continue; /* glued from its mate */
+    const face_rec *a = &rec[i], *b = &rec[mate[i]];
+    if (b->who == TR_NONE) {
+      const face_rec *x = a;
+      a = b;
+      b = x;
+    }
     if (a->who == TR_NONE) {
       uint32_t t = ids[b->who];
       m->tn[4 * (size_t)t + b->code] = a->code;
@@ -132,13 +166,24 @@ tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
   }
   if (new_ids)
     memcpy(new_ids, ids, nnew * sizeof *ids);
-  free(ids);
-  free(rec);
+  if (ids != ids_local)
+    free(ids);
+  if (rec != local)
+    free(rec);
+  if (mate != lmate)
+    free(mate);
+  if (slot != lslot)
+    free(slot);
   return TR_OK;
 
 done:
   for (uint32_t i = 0; i < nold; i++)
     m->flags[old[i]] &= (uint8_t)~TR_TF_MARK;
-  free(rec);
+  if (rec != local)
+    free(rec);
+  if (mate != lmate)
+    free(mate);
+  if (slot != lslot)
+    free(slot);
   return s;
 }
