@@ -1,11 +1,13 @@
 /* Delaunay benchmark driver for tetrec, and the point generator shared with the CGAL
  * and tetgen runs (bench/delaunay/run.sh).
  *   bench_tetrec gen random|grid N out.bin out.node   (grid: N points per axis)
- *   bench_tetrec run in.bin [check]
+ *   bench_tetrec run in.bin [check|hash]
  * .bin: uint32 n, then 3n doubles (native endianness). run prints one line
  * "tetrec n=.. tets=.. dt_seconds=.. dt_cpu=.." (triangulation only, reading excluded;
  * wall and CPU time) and with
- * `check` validates the mesh (links, orientation, Euler, Delaunay) and says so. */
+ * `check` validates the mesh (links, orientation, Euler, Delaunay) and says so; `hash`
+ * prints an FNV-1a hash of the store (nt, tv, tn, v2t), to compare two builds of the
+ * kernel byte for byte. */
 #define _POSIX_C_SOURCE 199309L
 #include <stdio.h>
 #include <stdlib.h>
@@ -77,7 +79,15 @@ static int gen(const char *kind, unsigned long n, const char *bin, const char *n
   return 0;
 }
 
-static int run(const char *bin, int check)
+static uint64_t fnv(uint64_t h, const void *p, size_t n)
+{
+  const unsigned char *c = p;
+  for (size_t i = 0; i < n; i++)
+    h = (h ^ c[i]) * 0x100000001b3ull;
+  return h;
+}
+
+static int run(const char *bin, int check, int hash)
 {
   FILE *f = fopen(bin, "rb");
   uint32_t n;
@@ -101,6 +111,13 @@ static int run(const char *bin, int check)
   }
   printf("tetrec n=%u tets=%u dt_seconds=%.3f dt_cpu=%.3f\n", n, tr_mesh_num_tets(m), t1 - t0,
          c1 - c0);
+  if (hash) {
+    uint64_t h = fnv(0xcbf29ce484222325ull, &m->nt, sizeof m->nt);
+    h = fnv(h, m->tv, 4 * (size_t)m->nt * sizeof *m->tv);
+    h = fnv(h, m->tn, 4 * (size_t)m->nt * sizeof *m->tn);
+    h = fnv(h, m->v2t, (size_t)m->nv * sizeof *m->v2t);
+    printf("tetrec store hash %016llx\n", (unsigned long long)h);
+  }
   if (check) {
     s = tr_check_mesh(m, TR_CHK_ALL_DELAUNAY, NULL);
     printf("tetrec validator: %s%s%s (%.2f s)\n", s == TR_OK ? "valid Delaunay mesh" : "INVALID",
@@ -118,8 +135,9 @@ int main(int argc, char **argv)
   if (argc >= 6 && !strcmp(argv[1], "gen"))
     return gen(argv[2], strtoul(argv[3], NULL, 10), argv[4], argv[5]);
   if (argc >= 3 && !strcmp(argv[1], "run"))
-    return run(argv[2], argc >= 4 && !strcmp(argv[3], "check"));
+    return run(argv[2], argc >= 4 && !strcmp(argv[3], "check"),
+               argc >= 4 && !strcmp(argv[3], "hash"));
   fprintf(stderr, "usage: bench_tetrec gen random|grid N out.bin out.node\n"
-                  "       bench_tetrec run in.bin [check]\n");
+                  "       bench_tetrec run in.bin [check|hash]\n");
   return 2;
 }

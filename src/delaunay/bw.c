@@ -8,42 +8,46 @@
  * are glued to each other through the faces that contain p: such a face is (p, u, v) in
  * one tet and (p, v, u) in the other. The boundary vertices get small local ids while
  * the cavity is searched (lid), and the directed edge (u, v) is then a cell of a
- * LDIM x LDIM map (map_glue: no hashing, no branches); a cavity with more boundary
+ * LDIM x LDIM map (star_small: no hashing, no branches); a cavity with more boundary
  * vertices (rare: a point at the centre of many cospherical ones) takes a hash table of
  * directed edges instead (star_glue_tet). All buffers live in the context and are
  * reused, so an insertion allocates nothing unless the mesh grows.
  *
  * During the build, vertices are numbered in insertion order over a copy of the points
- * in that order: consecutive insertions then touch neighbouring memory (coordinates),
- * which matters more than any arithmetic here. The perturbation still
- * uses the input indices (dvtx.orig), and the ids are mapped back at the end.
+ * in that order: consecutive insertions then touch neighbouring memory (coordinates).
+ * The perturbation still uses the input indices (dvtx.orig); ids are mapped back at the end.
  *
- * What the time goes to (10^6 random points, perf): the insphere filter's arithmetic
- * about a third, the cavity search's branches and cache misses on neighbour tets about
- * a third, gluing and writing the new tets a sixth, the walk, the sort and the final
- * renumbering the rest. 45 insphere tests, 6.6 walk steps, 21 cavity tets and 28 new
- * tets per point (TR_DT_STATS).
+ * What the time goes to (random points): about 16500 instructions per point (valgrind
+ * --tool=cachegrind on 10^5 points), run at a high rate: 10^5 points (whose mesh fits
+ * in the last-level cache) take as long per point as 10^6, so instruction count and
+ * mispredicted branches are what to cut, not memory traffic. The insphere determinant
+ * a quarter, the cavity search (marks, local ids, boundary faces) a third, writing and
+ * gluing the new tets a sixth, walk, sort and renumbering the rest. 48 insphere tests,
+ * 6.6 walk steps, 21 cavity tets and 28 new tets per point (TR_DT_STATS). Tried and
+ * measured slower: one 32-byte record per tet (vertices and neighbours in one line)
+ * converted to tv/tn at the end (the pass and the larger lines cost more than the
+ * misses saved); caching vertex - p differences per insertion.
  */
 #include <stdlib.h>
 #include <math.h>
 #include <string.h>
 
 #include "delaunay.h"
+#include "det2.h"
 #include "predicates.h"
 
-/* Scratch marks live in the top bit of vertex slots 0 (in the cavity) and 1 (tested, not
- * in conflict) of the tet itself: the conflict test reads those slots anyway, so marking
- * costs no extra cache line. Vertex ids stay below 2^31 (n is capped far lower) and
- * TR_GHOST only occurs in slot 3. Every mark is cleared before the insertion ends. */
+/* The cavity mark is the top bit of vertex slot 0 of the tet itself: the conflict test
+ * reads that slot anyway. Vertex ids stay below 2^31 (n is capped far lower); TR_GHOST
+ * is only in slot 3. A cavity tet's slot is rewritten or freed: no mark outlives the
+ * insertion. Tets not in conflict are not marked: the few reached twice (3 of 48 tests
+ * per point) cost less to test again than marks, a list and a clearing pass. */
 #define MARK 0x80000000u
 
 /* A hint only: the BFS knows which tets it reads and writes next before it gets there. */
 #if defined(__GNUC__) || defined(__clang__)
 #define PREFETCH(p) __builtin_prefetch(p)
-#define PREFETCH_W(p) __builtin_prefetch(p, 1)
 #else
 #define PREFETCH(p) ((void)(p))
-#define PREFETCH_W(p) ((void)(p))
 #endif
 
 typedef struct bface {
@@ -82,7 +86,9 @@ typedef struct dt {
   uint64_t rng;
   uint32_t last; /* a real tet created by the last insertion: start of the next walk */
   uint32_t *cav, ncav, capcav;
-  uint32_t *noconf, nnoconf, capnoconf;
+  uint32_t *slot, capslot; /* slot of each new tet (insert) */
+  struct side *sd;          /* side faces of the new tets (star_small) */
+  uint32_t capsd;
   bface *bf;
   uint32_t nbf, capbf;
   double is_bound; /* static insphere filter bound (conflict_real) */
@@ -97,13 +103,13 @@ static inline const double *X(const dt *D, uint32_t v) { return D->pv[v].x; }
  * sight, kept in v's tag with the insertion's stamp (branch-free: whether v was seen is
  * data the predictor cannot guess). Ids past 255 wrap, but then nloc > LDIM and the ids
  * are not used. */
-static inline uint32_t lid(dvtx *pv, uint32_t st, uint32_t *nloc, uint32_t v)
+static inline uint32_t lid(dvtx *pv, uint32_t stb, uint32_t *nloc, uint32_t v)
 {
   dvtx *q = &pv[v];
-  const uint32_t tg = q->tag;
-  const uint32_t hit = (tg >> 8) == st;
-  const uint32_t l = hit ? (tg & 255) : (*nloc & 255);
-  q->tag = st << 8 | l;
+  const uint32_t d = q->tag - stb; /* stb = stamp << 8: d < 256 iff seen in this insertion */
+  const uint32_t hit = d < 256;
+  const uint32_t l = hit ? d : (*nloc & 255);
+  q->tag = stb | l;
   *nloc += !hit;
   return l;
 }
@@ -133,6 +139,14 @@ static tr_status grow_buf(void **p, uint32_t *cap, uint32_t need, size_t size)
   return TR_OK;
 }
 
+/* Room for n entries in both cavity buffers (insert asks for the sum of their counts
+ * plus the four entries the faces of one cavity tet can add: one bound for both). */
+static tr_status grow_bufs(dt *D, uint32_t n)
+{
+  TR_CHECK(grow_buf((void **)&D->cav, &D->capcav, n, sizeof *D->cav));
+  return grow_buf((void **)&D->bf, &D->capbf, n, sizeof *D->bf);
+}
+
 /* -DTR_DT_STATS prints per-point averages (insphere tests, walk steps, cavity and
  * boundary sizes) after a build: the numbers to look at when tuning. */
 #ifdef TR_DT_STATS
@@ -145,8 +159,9 @@ static unsigned long long st_ins, st_walk, st_cav, st_bf, st_pts, st_big;
 
 /* Real tet t: does p lie strictly inside its (perturbed) circumsphere?
  *
- * A static filter first: the determinant of tr_insphere (predicates.h: same differences,
- * same evaluation order) and one comparison against D->is_bound, a bound on its rounding
+ * A static filter first: the determinant of tr_insphere, bit for bit (det2.h computes
+ * tr_insphere_det_'s very operations two at a time) and one comparison against
+ * D->is_bound, a bound on its rounding
  * error valid for every five points of the input's bounding box. insphere.c bounds that
  * error by 385 eps mx my mz (mx^2 + my^2 + mz^2), with mx the largest rounded |x
  * difference|; that bound grows with mx, my, mz, and a rounded difference of two
@@ -164,11 +179,10 @@ static inline int conflict_real(const dt *D, uint32_t t, const double *e, uint32
   STAT(st_ins++);
   const uint32_t *v = D->m->tv + 4 * (size_t)t;
   const double *a = X(D, v[0]), *b = X(D, v[1]), *c = X(D, v[2]), *d = X(D, v[3]);
-  const double det = tr_insphere_det_(a, b, c, d, e);
-  if (det > D->is_bound)
-    return 1;
-  if (-det > D->is_bound)
-    return 0;
+  const double det = tr_dt_insphere_det(a, b, c, d, e);
+  /* one branch, taken almost always; the sign itself goes out as data (see insert) */
+  if (fabs(det) > D->is_bound)
+    return det > 0;
   const dvtx *o = D->pv;
   return tr_insphere_sos(a, b, c, d, e, o[v[0]].orig, o[v[1]].orig, o[v[2]].orig, o[v[3]].orig,
                          o[pi].orig) > 0;
@@ -218,8 +232,6 @@ static int conflict(const dt *D, uint32_t t, const double *p, uint32_t pi)
   uint32_t r = m->tn[4 * (size_t)t + 3] >> 2;
   if (m->tv[4 * (size_t)r] & MARK)
     return 1;
-  if (m->tv[4 * (size_t)r + 1] & MARK)
-    return 0;
   return conflict_real(D, r, p, pi);
 }
 
@@ -261,7 +273,7 @@ static uint32_t locate(dt *D, uint32_t t, const double *p)
   }
 }
 
-/* Gluing the star of a large cavity (the map of map_glue has room for LDIM - 1 boundary
+/* Gluing the star of a large cavity (the map of star_small has room for LDIM - 1 boundary
  * vertices): every side face (p, a, b) of a new tet meets the face (p, b, a) of
  * another, i.e. a directed edge of the cavity boundary meets its reverse. A small open
  * addressing table keyed on the edge, with a hash symmetric in a and b, finds the partner
@@ -347,20 +359,50 @@ static inline void star_glue_tet(dt *D, uint32_t t, uint32_t k)
   D->nglued += ng;
 }
 
-/* Side face `code` = (p, a, b) of a new tet, a and b given by local ids: if its partner
- * (p, b, a) is waiting in cell (b, a), glue the two and empty that cell; else wait in
- * cell (a, b). Branch-free, with masks (half the sides find their partner, in no
- * pattern): without a partner, the second store repeats the first. Returns 1 iff glued. */
-static inline uint32_t map_glue(uint32_t *map, uint32_t *tn, uint32_t code, uint32_t la,
-                                uint32_t lb)
+/* A side face of a new tet waiting for its partner: its code and the map cell of its
+ * partner (star_small). */
+typedef struct side {
+  uint32_t code, cell;
+} side;
+
+/* Writes the new tets of a small cavity, bf[i] into slot[i], glues them to their outer
+ * neighbours, and glues their side faces to each other through the map: side (p, a, b)
+ * is written to cell (a, b) first, then every side takes the cell of its reverse edge
+ * (b, a) and empties it. Every cell is empty between insertions and a cell taken is
+ * emptied, so if no side finds its cell empty, the S sides took S distinct cells written
+ * in this insertion: no two sides share a directed edge, every edge has its reverse, the
+ * boundary is a closed surface, each side is glued to the one whose cell it took and
+ * back, and the map is empty again. Returns 0 if so, else 1. *last: a real new tet. */
+static int star_small(uint32_t *restrict tv, uint32_t *restrict tn, uint32_t *restrict map,
+                      const bface *restrict bf, const uint32_t *restrict slot,
+                      side *restrict sd, uint32_t nbf, uint32_t *last)
 {
-  const uint32_t other = map[lb * LDIM + la];
-  const uint32_t found = other != TR_NONE, f = 0u - found;
-  map[lb * LDIM + la] = TR_NONE;
-  map[la * LDIM + lb] = code | f;
-  tn[code] = other;
-  tn[(other & f) | (code & ~f)] = (code & f) | (other & ~f);
-  return found;
+  uint32_t l = TR_NONE;
+  for (uint32_t i = 0; i < nbf; i++) {
+    const uint32_t s = slot[i];
+    const bface *b = &bf[i];
+    const uint32_t k = b->k, out = b->out;
+    memcpy(tv + 4 * (size_t)s, b->v, sizeof b->v);
+    tn[4 * (size_t)s + k] = out;
+    tn[out] = 4 * s + k;
+    l = b->v[3] != TR_GHOST ? s : l;
+    /* table lookups, not a switch on k: k follows no pattern */
+    const uint8_t(*sk)[3] = SIDE[k];
+    for (int i3 = 0; i3 < 3; i3++) {
+      const uint32_t la = b->l[sk[i3][1]], lb = b->l[sk[i3][2]], code = 4 * s + sk[i3][0];
+      map[la * LDIM + lb] = code;
+      sd[3 * i + (uint32_t)i3] = (side){code, lb * LDIM + la};
+    }
+  }
+  uint32_t mx = 0; /* an empty cell shows as TR_NONE, above every side code */
+  for (uint32_t i = 0; i < 3 * nbf; i++) {
+    const uint32_t o = map[sd[i].cell];
+    map[sd[i].cell] = TR_NONE;
+    tn[sd[i].code] = o;
+    mx = o > mx ? o : mx;
+  }
+  *last = l;
+  return mx == TR_NONE;
 }
 
 static tr_status star_end(const dt *D, uint32_t nnew)
@@ -408,68 +450,86 @@ static tr_status insert(dt *D, uint32_t pi)
   }
   /* The located tet conflicts: p is strictly inside a real tet's closed ball unless it is
    * a vertex, and strictly beyond a ghost's hull face. */
-  D->ncav = 0;
-  D->nnoconf = 0;
-  D->nbf = 0;
-  D->cav[D->ncav++] = 4 * t0; /* cav: codes 4 * tet + the face it was entered by */
+  /* the counts and buffers in locals: stores into the tets could alias D's fields */
+  uint32_t ncav = 0, nbf = 0;
+  uint32_t *cav = D->cav;
+  bface *bf = D->bf;
+  /* both buffers have at least room entries */
+  uint32_t room = D->capcav < D->capbf ? D->capcav : D->capbf;
+  cav[ncav++] = 4 * t0; /* cav: codes 4 * tet + the face it was entered by */
   m->tv[4 * (size_t)t0] |= MARK;
   uint32_t nloc = 1;
-  const uint32_t st = D->stamp;
-  for (uint32_t i = 0; i < D->ncav; i++) {
+  const uint32_t stb = D->stamp << 8;
+  for (int k = 0; k < 4; k++)
+    PREFETCH(m->tv + 4 * (size_t)(m->tn[4 * (size_t)t0 + k] >> 2));
+  for (uint32_t i = 0; i < ncav; i++) {
     /* the face a tet was entered by leads back into the cavity: skip it (t0: none) */
-    const uint32_t t = D->cav[i] >> 2;
-    const uint8_t *faces = i ? OTHER[D->cav[i] & 3] : OTHER[4];
+    const uint32_t t = cav[i] >> 2;
+    const uint8_t *faces = i ? OTHER[cav[i] & 3] : OTHER[4];
     const int nf = i ? 3 : 4;
+    /* a tet's neighbours are read one after the other between conflict tests: start
+     * their misses one cavity tet ahead (its neighbour codes were prefetched when it
+     * joined the cavity), so that they overlap this tet's tests (t0's were started
+     * above; the second cavity tet, found while t0 is searched, gets none) */
+    if (i + 1 < ncav) {
+      const uint32_t *tnn = m->tn + 4 * (size_t)(cav[i + 1] >> 2);
+      for (int k = 0; k < 4; k++)
+        PREFETCH(m->tv + 4 * (size_t)(tnn[k] >> 2));
+    }
     /* every vertex of a cavity tet is on the cavity boundary: number them here, while
      * their points are still in cache from the conflict tests */
     const uint32_t *tvt = m->tv + 4 * (size_t)t;
-    {
-      /* the neighbours are read below, one after the other between conflict tests:
-       * start all four misses now */
-      const uint32_t *tnt = m->tn + 4 * (size_t)t;
-      for (int k = 0; k < 4; k++)
-        PREFETCH(m->tv + 4 * (size_t)(tnt[k] >> 2));
-    }
     const uint32_t t3 = tvt[3];
-    const uint8_t lt[4] = {(uint8_t)lid(D->pv, st, &nloc, tvt[0] & ~MARK),
-                           (uint8_t)lid(D->pv, st, &nloc, tvt[1]),
-                           (uint8_t)lid(D->pv, st, &nloc, tvt[2]),
-                           (uint8_t)(t3 == TR_GHOST ? 0 : lid(D->pv, st, &nloc, t3))};
+    /* room for what this tet's faces can add (at most 4 entries) */
+    if (ncav + nbf + 4 > room) {
+      D->ncav = ncav;
+      D->nbf = nbf;
+      TR_CHECK(grow_bufs(D, ncav + nbf + 4));
+      cav = D->cav;
+      bf = D->bf;
+      room = D->capcav < D->capbf ? D->capcav : D->capbf;
+    }
+    const uint32_t vt[4] = {tvt[0] & ~MARK, tvt[1], tvt[2], t3}; /* t unmarked */
+    uint8_t lt[4];
+    if (i == 0) {
+      for (int k = 0; k < 4; k++)
+        lt[k] = (uint8_t)(vt[k] == TR_GHOST ? 0 : lid(D->pv, stb, &nloc, vt[k]));
+    } else {
+      /* the entry face's vertices were numbered with the tet t was found from (searched
+       * before t): their tags hold their ids; only the vertex across it can be new */
+      const uint32_t e = cav[i] & 3;
+      for (int k = 0; k < 3; k++)
+        lt[k] = (uint8_t)D->pv[vt[k]].tag;
+      lt[3] = (uint8_t)(t3 == TR_GHOST ? 0 : D->pv[t3].tag);
+      if (vt[e] != TR_GHOST)
+        lt[e] = (uint8_t)lid(D->pv, stb, &nloc, vt[e]);
+    }
     for (int f = 0; f < nf; f++) {
       const int k = faces[f];
       uint32_t c = m->tn[4 * (size_t)t + (size_t)k], u = c >> 2;
       uint32_t *w = m->tv + 4 * (size_t)u;
       if (w[0] & MARK)
         continue;
-      if (!(w[1] & MARK)) {
-        if (conflict(D, u, p, pi)) {
-          if (D->ncav == D->capcav)
-            TR_CHECK(grow_buf((void **)&D->cav, &D->capcav, D->ncav + 1, sizeof *D->cav));
-          w[0] |= MARK;
-          PREFETCH(m->tn + 4 * (size_t)u);
-          D->cav[D->ncav++] = c;
-          continue;
-        }
-        if (D->nnoconf == D->capnoconf)
-          TR_CHECK(grow_buf((void **)&D->noconf, &D->capnoconf, D->nnoconf + 1,
-                            sizeof *D->noconf));
-        w[1] |= MARK;
-        D->noconf[D->nnoconf++] = u;
-      }
-      if (D->nbf == D->capbf)
-        TR_CHECK(grow_buf((void **)&D->bf, &D->capbf, D->nbf + 1, sizeof *D->bf));
-      PREFETCH_W(m->tn + c); /* written when the new tet is glued to u */
-      bface *b = &D->bf[D->nbf++];
-      memcpy(b->v, m->tv + 4 * (size_t)t, sizeof b->v);
-      b->v[0] &= ~MARK;
+      /* u's neighbours if it joins the cavity, else the face glued to a new tet */
+      PREFETCH(m->tn + 4 * (size_t)u);
+      /* Both outcomes are written and the count keeps one: whether u conflicts
+       * follows no pattern, and a mispredicted branch costs more than the stores. */
+      const uint32_t cf = (uint32_t)conflict(D, u, p, pi);
+      w[0] |= cf << 31;
+      cav[ncav] = c;
+      ncav += cf;
+      /* the boundary face (t, k), kept unless u joined the cavity */
+      bface *b = &bf[nbf];
+      nbf += cf ^ 1;
+      memcpy(b->v, vt, sizeof b->v);
       b->v[k] = pi;
       b->out = c;
       b->k = (uint32_t)k;
       memcpy(b->l, lt, sizeof lt);
     }
   }
-  for (uint32_t i = 0; i < D->nnoconf; i++)
-    m->tv[4 * (size_t)D->noconf[i] + 1] &= ~MARK;
+  D->ncav = ncav;
+  D->nbf = nbf;
   STAT((st_cav += D->ncav, st_bf += D->nbf, st_pts++));
 
   if (++D->stamp == 1u << 24) { /* wrapped: old tags could look current */
@@ -484,36 +544,35 @@ static tr_status insert(dt *D, uint32_t pi)
     STAT(st_big++);
     TR_CHECK(star_begin(D, D->nbf));
   }
-  /* Room for the new tets first: the loop below keeps m->tn in a local, which a
-   * reallocation inside alloc_slot would leave dangling. */
-  if (D->nbf > D->ncav) {
-    uint32_t need = D->nbf - D->ncav;
-    if (m->nfree + (m->cap_t - m->nt) < need)
-      TR_CHECK(tr_mesh_reserve_tets(m, m->nt + need + m->cap_t / 2 + 64));
+  /* The slot of each new tet: the cavity's, then free or new ones. All are taken before
+   * the tets are written: m->tv and m->tn may move when the store grows. */
+  if (D->nbf > D->capslot)
+    TR_CHECK(grow_buf((void **)&D->slot, &D->capslot, D->nbf, sizeof *D->slot));
+  if (3 * D->nbf > D->capsd)
+    TR_CHECK(grow_buf((void **)&D->sd, &D->capsd, 3 * D->nbf, sizeof *D->sd));
+  {
+    uint32_t *slot = D->slot, i = 0;
+    for (; i < D->nbf && i < D->ncav; i++)
+      slot[i] = D->cav[i] >> 2;
+    for (; i < D->nbf; i++)
+      TR_CHECK(alloc_slot(m, &slot[i]));
   }
   uint32_t last = TR_NONE;
-  uint32_t *map = D->map, *tn = m->tn, nglued = 0;
-  for (uint32_t i = 0; i < D->nbf; i++) {
-    uint32_t s;
-    if (i < D->ncav)
-      s = D->cav[i] >> 2;
-    else
-      TR_CHECK(alloc_slot(m, &s));
-    const bface *b = &D->bf[i];
-    uint32_t *v = m->tv + 4 * (size_t)s;
-    memcpy(v, b->v, sizeof b->v);
-    m->tn[4 * (size_t)s + b->k] = b->out;
-    m->tn[b->out] = 4 * s + b->k;
-    if (v[3] != TR_GHOST)
-      last = s;
-    if (!small) {
+  int bad = 0;
+  if (small) {
+    bad = star_small(m->tv, m->tn, D->map, D->bf, D->slot, D->sd, D->nbf, &last);
+  } else {
+    for (uint32_t i = 0; i < D->nbf; i++) {
+      const uint32_t s = D->slot[i];
+      const bface *b = &D->bf[i];
+      uint32_t *v = m->tv + 4 * (size_t)s;
+      memcpy(v, b->v, sizeof b->v);
+      m->tn[4 * (size_t)s + b->k] = b->out;
+      m->tn[b->out] = 4 * s + b->k;
+      if (v[3] != TR_GHOST)
+        last = s;
       star_glue_tet(D, s, b->k);
-      continue;
     }
-    /* table lookups, not a switch on k: k follows no pattern */
-    const uint8_t(*sk)[3] = SIDE[b->k];
-    for (int i3 = 0; i3 < 3; i3++)
-      nglued += map_glue(map, tn, 4 * s + sk[i3][0], b->l[sk[i3][1]], b->l[sk[i3][2]]);
   }
   for (uint32_t i = D->nbf; i < D->ncav; i++)
     tr_tet_free(m, D->cav[i] >> 2);
@@ -523,13 +582,9 @@ static tr_status insert(dt *D, uint32_t pi)
   D->last = last;
   if (!small)
     return star_end(D, D->nbf);
-  /* Every side either waited in a cell or took one. 3 nbf / 2 takes mean no waiting side
-   * was overwritten (that would leave fewer to take) and none is left: the sides pair up,
-   * the boundary is a closed surface, every edge is glued once, the map is empty again. */
-  if (2 * nglued != 3 * D->nbf)
+  if (bad)
     return tr_error(TR_ERR_INTERNAL, "Delaunay: the cavity boundary of point %u is not a "
-                    "closed surface (%u of %u star faces matched)", D->orig[pi], 2 * nglued,
-                    3 * D->nbf);
+                    "closed surface", D->orig[pi]);
   return TR_OK;
 }
 
@@ -709,7 +764,6 @@ tr_status tr_delaunay_build(const double *xyz, uint32_t n, struct tr_mesh **out)
   D.orig = order;
   D.n = nu;
   if ((s = grow_buf((void **)&D.cav, &D.capcav, 256, sizeof *D.cav)) != TR_OK ||
-      (s = grow_buf((void **)&D.noconf, &D.capnoconf, 256, sizeof *D.noconf)) != TR_OK ||
       (s = grow_buf((void **)&D.bf, &D.capbf, 256, sizeof *D.bf)) != TR_OK)
     goto done;
   if ((s = build(&D)) != TR_OK)
@@ -719,7 +773,8 @@ done:
   free(order);
   free(P);
   free(D.cav);
-  free(D.noconf);
+  free(D.slot);
+  free(D.sd);
   free(D.bf);
   free(D.ht);
   free(D.map);

@@ -81,17 +81,37 @@ static const uint16_t HILBERT[48][8] = {
     {234, 381, 371, 44, 289, 310, 144, 159},
 };
 
-uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits)
+/* The low 21 bits of v, spread to every third bit (bit i goes to bit 3i). */
+static inline uint64_t spread3(uint32_t v)
 {
+  uint64_t x = v & 0x1FFFFFu;
+  x = (x | x << 32) & 0x001F00000000FFFFull;
+  x = (x | x << 16) & 0x001F0000FF0000FFull;
+  x = (x | x << 8) & 0x100F00F00F00F00Full;
+  x = (x | x << 4) & 0x10C30C30C30C30C3ull;
+  x = (x | x << 2) & 0x1249249249249249ull;
+  return x;
+}
+
+/* tr_hilbert_key, inline: with bits a constant the levels unroll */
+static inline uint64_t hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits)
+{
+  /* the three bits of every level side by side first (bits <= 21), so that a level is
+   * a shift, a mask and the lookup */
+  const uint64_t m = spread3(x) << 2 | spread3(y) << 1 | spread3(z);
   uint64_t k = 0;
   uint32_t s = 0;
   for (int b = bits - 1; b >= 0; b--) {
-    const uint32_t o = ((x >> b) & 1) << 2 | ((y >> b) & 1) << 1 | ((z >> b) & 1);
-    const uint32_t e = HILBERT[s][o];
+    const uint32_t e = HILBERT[s][(m >> 3 * b) & 7];
     k = k << 3 | (e & 7);
     s = e >> 3;
   }
   return k;
+}
+
+uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits)
+{
+  return hilbert_key(x, y, z, bits);
 }
 
 typedef struct kv {
@@ -257,7 +277,7 @@ tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint3
     uint32_t r = 0;
     while (r < last && ((h >> 3 * r) & 7) == 0)
       r++;
-    a[p].key = (uint64_t)(last - r) << ROUND_SHIFT | tr_hilbert_key(q[0], q[1], q[2], KEY_BITS);
+    a[p].key = (uint64_t)(last - r) << ROUND_SHIFT | hilbert_key(q[0], q[1], q[2], KEY_BITS);
     a[p].idx = p;
   }
   radix_sort(a, tmp, n);

@@ -2,10 +2,12 @@
  * vertex->tet map, Euler characteristic of a ball, perturbed Delaunay property, convex
  * hull), and where the hull is known, its exact volume. Usage: test_delaunay <case>. */
 #include <gmp.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "delaunay/delaunay.h"
+#include "delaunay/det2.h"
 #include "mesh/check.h"
 #include "mesh/mesh.h"
 #include "../mesh/tcommon.h"
@@ -331,6 +333,45 @@ static int deterministic(void)
   return 0;
 }
 
+/* The kernel's two-lane insphere determinant (delaunay/det2.h) must round exactly like
+ * tr_insphere_det_, whose evaluation order the static filter bound is derived for: same
+ * bits on random points in boxes of many scales and offsets, on lattice points (many
+ * exact zeros and cospherical cases), and on nearly cospherical points. */
+static int det2_same_bits(void)
+{
+  double q[5][3];
+  uint32_t nzero = 0;
+  for (int it = 0; it < 300000; it++) {
+    const int kind = it % 3;
+    const double scale = ldexp(1.0, (int)(t_next() % 80) - 40);
+    const double off = scale * (double)(t_next() % 7);
+    for (int i = 0; i < 5; i++)
+      for (int c = 0; c < 3; c++) {
+        if (kind == 0)
+          q[i][c] = off + scale * t_unif();
+        else if (kind == 1)
+          q[i][c] = (double)(t_next() % 5);
+        else /* on the unit sphere up to rounding, around a random centre */
+          q[i][c] = 0;
+      }
+    if (kind == 2)
+      for (int i = 0; i < 5; i++) {
+        const double th = 6.283185307179586 * t_unif(), z = 2 * t_unif() - 1;
+        const double r = sqrt(1 - z * z);
+        q[i][0] = off + scale * r * cos(th);
+        q[i][1] = off + scale * r * sin(th);
+        q[i][2] = off + scale * z;
+      }
+    const double a = tr_dt_insphere_det(q[0], q[1], q[2], q[3], q[4]);
+    const double b = tr_insphere_det_(q[0], q[1], q[2], q[3], q[4]);
+    EXPECT(memcmp(&a, &b, sizeof a) == 0, "case %d: two-lane determinant %a, scalar %a", it, a,
+           b);
+    nzero += b == 0;
+  }
+  EXPECT(nzero > 1000, "the lattice cases include exact zeros (%u)", nzero);
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2)
@@ -360,6 +401,8 @@ int main(int argc, char **argv)
     return skew_lines(150);
   if (!strcmp(c, "deterministic"))
     return deterministic();
+  if (!strcmp(c, "det2"))
+    return det2_same_bits();
   fprintf(stderr, "unknown case %s\n", c);
   return 2;
 }
