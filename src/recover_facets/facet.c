@@ -496,8 +496,11 @@ tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t
     return tr_error(TR_ERR_UNSUPPORTED, "facet %u (%u %u %u) is degenerate", idx, e, f, g);
   /* Most facets are faces of the Delaunay mesh already: then the facet is that one face,
    * listed as the cluster path would list it (turning like efg, smallest id first). */
-  uint32_t t;
-  TR_CHECK(tr_ball_find(m, e, f, g, &t));
+  uint32_t t = opt && opt->hint ? opt->hint[idx] : TR_NONE;
+  if (t != TR_NONE && !(t < m->nt && tr_tet_is_real(m, t) && tr_fcode(m, t, e, f, g) >= 0))
+    t = TR_NONE; /* stale: flips for an earlier facet replaced that tet */
+  if (t == TR_NONE && !(opt && opt->hint && opt->hint[idx] == TR_NONE))
+    TR_CHECK(tr_ball_find(m, e, f, g, &t));
   if (t != TR_NONE) {
     uint32_t w[3] = {e, f, g};
     int s0 = f < w[0] ? 1 : 0;

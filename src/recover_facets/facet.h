@@ -44,6 +44,9 @@ typedef struct tr_facet_opts {
   tr_flip_guard guard; /* what the flips must not delete (NULL: nothing protected) */
   void *guard_ud;
   int no_flips;  /* skip the general flips only (Swap32 still runs) */
+  const uint32_t *hint; /* NULL, or per facet index a tet that had the facet as a face
+                           when the stage began (tr_mesh_find_faces; TR_NONE: it had
+                           none). Checked before use: a later flip may have replaced it. */
 } tr_facet_opts;
 
 /* Counters per decision, for tests and reports. */
