@@ -57,6 +57,12 @@ static int tet_has(const uint32_t *tv, uint32_t x)
 
 tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, uint32_t *t)
 {
+  return tr_ball_find_ex(m, p, b, c, 0, t);
+}
+
+tr_status tr_ball_find_ex(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
+                          int with_ghosts, uint32_t *t)
+{
   *t = TR_NONE;
   uint32_t t0 = TR_NONE;
   TR_CHECK(ball_start(m, p, &t0));
@@ -69,7 +75,7 @@ tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, ui
     const uint32_t *tv = m->tv + 4 * (size_t)q[i];
     if (tet_has(tv, b) && (c == TR_NONE || tet_has(tv, c))) {
       *t = q[i];
-      if (tr_tet_is_real(m, q[i]))
+      if (with_ghosts || tr_tet_is_real(m, q[i]))
         break;
       *t = TR_NONE; /* a hull edge or face is also in the real tet across the hull */
     }

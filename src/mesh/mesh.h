@@ -185,6 +185,9 @@ tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out
  * (an edge or face on the hull is also in the real tet inside it). The presence tests of
  * both recovery stages: no allocation for balls of up to 256 tets. */
 tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, uint32_t *t);
+/* with_ghosts: the first tet in tr_ball(p, 1)'s order that has b (and c), ghost or not. */
+tr_status tr_ball_find_ex(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
+                          int with_ghosts, uint32_t *t);
 /* All at once: tet[i] = a real tet with triangle i (tris[3i..3i+2]) as a face, TR_NONE if
  * the triangle is not a face of the mesh. One pass over the tets against a hash of the
  * triangles: for many triangles, much cheaper than a tr_ball_find each. */

@@ -178,50 +178,7 @@ static void ring_emit(const ering *R, int i, int j, uint32_t *newv, uint32_t *nn
  * the ball: these look-ups were a tenth of the flip drivers' time. */
 tr_status tr_flip_edge_tet(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t *t)
 {
-  *t = TR_NONE;
-  if (a >= m->nv)
-    return tr_error(TR_ERR_INTERNAL, "Ball(%u): no such vertex (%u vertices)", a, m->nv);
-  uint32_t t0 = m->v2t[a];
-  if (t0 == TR_NONE || t0 >= m->nt || tr_ncode(m, t0, a) < 0)
-    return tr_error(TR_ERR_INVALID_MESH, "Ball(%u): v2t[%u] = %u does not contain the vertex",
-                    a, a, t0);
-  uint32_t local[256], *q = local, nq = 0, cap = 256;
-  tr_status s = TR_OK;
-  q[nq++] = t0;
-  m->flags[t0] |= TR_TF_MARK;
-  if (tr_ncode(m, t0, b) >= 0)
-    *t = t0;
-  for (uint32_t i = 0; i < nq && *t == TR_NONE && s == TR_OK; i++) {
-    const uint32_t *tv = m->tv + 4 * (size_t)q[i];
-    for (int k = 0; k < 4 && *t == TR_NONE; k++) {
-      if (tv[k] == a)
-        continue;
-      uint32_t u = TR_NEIG(m, q[i], k);
-      if (u == TR_NONE || (m->flags[u] & TR_TF_MARK))
-        continue;
-      if (nq == cap) {
-        uint32_t nc = 2 * cap, *nqa = malloc(sizeof *nqa * nc);
-        if (!nqa) {
-          s = tr_error(TR_ERR_NOMEM, "out of memory for Ball(%u)", a);
-          break;
-        }
-        memcpy(nqa, q, sizeof *q * nq);
-        if (q != local)
-          free(q);
-        q = nqa;
-        cap = nc;
-      }
-      m->flags[u] |= TR_TF_MARK;
-      q[nq++] = u;
-      if (tr_ncode(m, u, b) >= 0)
-        *t = u; /* tr_ball lists tets in this push order */
-    }
-  }
-  for (uint32_t i = 0; i < nq; i++)
-    m->flags[q[i]] &= (uint8_t)~TR_TF_MARK;
-  if (q != local)
-    free(q);
-  return s;
+  return tr_ball_find_ex(m, a, b, TR_NONE, 1, t);
 }
 
 tr_status tr_flip_remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
