@@ -168,13 +168,7 @@ tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
     memcpy(new_ids, ids, nnew * sizeof *ids);
   if (ids != ids_local)
     free(ids);
-  if (rec != local)
-    free(rec);
-  if (mate != lmate)
-    free(mate);
-  if (slot != lslot)
-    free(slot);
-  return TR_OK;
+  nold = 0; /* committed: the old tets' marks are gone (their slots may hold new tets) */
 
 done:
   for (uint32_t i = 0; i < nold; i++)
