@@ -81,9 +81,39 @@ static int edges_hit(const struct tr_plc *plc, const uint32_t *t, const uint32_t
   return 0;
 }
 
+/* Triangles t and u sharing exactly the edge (a, b), with third corners p and q: they
+ * meet only in that edge unless they are coplanar with p and q on the same side of it
+ * (neither corner is on the line: zero-area triangles were rejected before). On CAD
+ * surfaces most neighbours are coplanar, where the general test classifies six
+ * segments; this decides them with one orient3d and two orient2d. */
+static int edge_pair_improper(const struct tr_plc *plc, uint32_t a, uint32_t b, uint32_t p,
+                              uint32_t q)
+{
+  if (tr_orient3d(P(plc, a), P(plc, b), P(plc, p), P(plc, q)) != 0)
+    return 0;
+  for (int ax = 0; ax < 3; ax++) {
+    int sp = tr_sign(tr_orient2d_proj(P(plc, a), P(plc, b), P(plc, p), ax));
+    if (sp != 0)
+      return sp == tr_sign(tr_orient2d_proj(P(plc, a), P(plc, b), P(plc, q), ax));
+  }
+  return 1; /* p on the line ab: not a triangle; cannot happen after validation */
+}
+
 static int improper(const struct tr_plc *plc, uint32_t i, uint32_t j)
 {
   const uint32_t *t = plc->tris + 3 * (size_t)i, *u = plc->tris + 3 * (size_t)j;
+  int shared = 0, tp = -1, uq = -1;
+  for (int k = 0; k < 3; k++) {
+    int in_u = t[k] == u[0] || t[k] == u[1] || t[k] == u[2];
+    int in_t = u[k] == t[0] || u[k] == t[1] || u[k] == t[2];
+    shared += in_u;
+    if (!in_u)
+      tp = k;
+    if (!in_t)
+      uq = k;
+  }
+  if (shared == 2)
+    return edge_pair_improper(plc, t[(tp + 1) % 3], t[(tp + 2) % 3], t[tp], u[uq]);
   if (one_side(plc, t, u) || one_side(plc, u, t))
     return 0;
   return edges_hit(plc, t, u) || edges_hit(plc, u, t);

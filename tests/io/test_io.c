@@ -575,6 +575,43 @@ static void t_selfint(void)
   uint32_t tg[] = {0, 1, 2, 3, 4, 5};
   EXPECT(check_pair(g, 6, tg) == TR_OK, "parallel triangles 1e-300 apart: %s", tr_last_error());
   EXPECT(strstr(tr_last_error(), "") != NULL, "message");
+  /* Coplanar pairs sharing an edge (the fast path of selfint.c) against a 2D answer
+   * computed here: small integer coordinates mapped exactly onto a tilted plane. */
+  uint64_t r = 0x9e3779b97f4a7c15ull;
+  int improper_seen = 0, proper_seen = 0;
+  for (int it = 0; it < 400; it++) {
+    long long q2[4][2];
+    for (int k = 0; k < 4; k++)
+      for (int d = 0; d < 2; d++) {
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        q2[k][d] = (long long)(r % 11) - 5;
+      }
+    long long ex = q2[1][0] - q2[0][0], ey = q2[1][1] - q2[0][1];
+    long long sp = ex * (q2[2][1] - q2[0][1]) - ey * (q2[2][0] - q2[0][0]);
+    long long sq = ex * (q2[3][1] - q2[0][1]) - ey * (q2[3][0] - q2[0][0]);
+    if (sp == 0 || sq == 0)
+      continue; /* a corner on the shared line: not two triangles */
+    if (q2[2][0] == q2[3][0] && q2[2][1] == q2[3][1])
+      continue; /* the same triangle twice: validation merges it, a repair */
+    /* onto the plane spanned by (3, 1, 2) and (-1, 2, 5) through (7, -4, 1) */
+    double x[12];
+    for (int k = 0; k < 4; k++) {
+      double u = (double)q2[k][0], v = (double)q2[k][1];
+      x[3 * k] = 7 + 3 * u - v;
+      x[3 * k + 1] = -4 + u + 2 * v;
+      x[3 * k + 2] = 1 + 2 * u + 5 * v;
+    }
+    uint32_t tt[6] = {0, 1, 2, 1, 0, 3};
+    int want = (sp > 0) == (sq > 0);
+    tr_status st = check_pair(x, 4, tt);
+    EXPECT((st == TR_ERR_SELF_INTERSECT) == want && (st == TR_OK || st == TR_ERR_SELF_INTERSECT),
+           "coplanar pair %d sharing an edge (p %lld %lld, q %lld %lld): %s, want %s (%s)", it, q2[2][0], q2[2][1], q2[3][0], q2[3][1], tr_status_name(st),
+           want ? "intersecting" : "valid", tr_last_error());
+    improper_seen += want;
+    proper_seen += !want;
+  }
+  EXPECT(improper_seen > 50 && proper_seen > 50, "both outcomes exercised (%d, %d)",
+         improper_seen, proper_seen);
 }
 
 static uint64_t sb_rng = 0x243f6a8885a308d3ull;
