@@ -112,9 +112,7 @@ tr_status tr_ball_find_ex(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
 
 static uint32_t tri_hash(const uint32_t k[3], uint32_t mask)
 {
-  uint64_t x = k[0] * 0x9e3779b97f4a7c15ull ^ k[1] * 0xc2b2ae3d27d4eb4full ^
-               k[2] * 0x165667b19e3779f9ull;
-  return (uint32_t)(x >> 32) & mask;
+  return (uint32_t)(tr_hash3(k) >> 32) & mask;
 }
 
 tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,

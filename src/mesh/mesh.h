@@ -163,6 +163,26 @@ static inline void tr_sort3(uint32_t f[3])
   if (f[0] > f[1]) { t = f[0]; f[0] = f[1]; f[1] = t; }
 }
 
+/* A fixed hash of a vertex triple (sort it first where orientation must not matter): the
+ * face tables take their slot from its high bits, so no run depends on addresses. */
+static inline uint64_t tr_hash3(const uint32_t k[3])
+{
+  return k[0] * 0x9e3779b97f4a7c15ull ^ k[1] * 0xc2b2ae3d27d4eb4full ^
+         k[2] * 0x165667b19e3779f9ull;
+}
+
+/* Rotates a face to begin with its smallest vertex id: the same turn, one listing. */
+static inline void tr_rotate_min3(uint32_t w[3])
+{
+  int s = w[1] < w[0] ? 1 : 0;
+  if (w[2] < w[s])
+    s = 2;
+  uint32_t r[3] = {w[s], w[(s + 1) % 3], w[(s + 2) % 3]};
+  w[0] = r[0];
+  w[1] = r[1];
+  w[2] = r[2];
+}
+
 /* ---- the paper's codes ---- */
 /* NCode: slot 0..3 of vertex v in t, -1 if v is not a vertex of t. */
 int tr_ncode(const struct tr_mesh *m, uint32_t t, uint32_t v);

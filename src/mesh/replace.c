@@ -26,9 +26,7 @@ static size_t pair_recs(const face_rec *r, size_t n, uint32_t *slot, size_t cap,
     slot[i] = TR_NONE;
   for (size_t i = 0; i < n; i++) {
     mate[i] = TR_NONE;
-    uint64_t h = r[i].v[0] * 0x9e3779b97f4a7c15ull ^ r[i].v[1] * 0xc2b2ae3d27d4eb4full ^
-                 r[i].v[2] * 0x165667b19e3779f9ull;
-    size_t k = (size_t)(h >> 32) & (cap - 1);
+    size_t k = (size_t)(tr_hash3(r[i].v) >> 32) & (cap - 1);
     while (slot[k] != TR_NONE && memcmp(r[slot[k]].v, r[i].v, sizeof r[i].v) != 0)
       k = (k + 1) & (cap - 1);
     if (slot[k] == TR_NONE) {

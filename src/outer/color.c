@@ -49,20 +49,14 @@ typedef struct {
   uint32_t bmask;
 } fhash;
 
-static uint64_t fhash_of(const uint32_t s[3])
-{
-  return s[0] * 0x9e3779b97f4a7c15ull ^ s[1] * 0xc2b2ae3d27d4eb4full ^
-         s[2] * 0x165667b19e3779f9ull;
-}
-
 static uint32_t fhash_start(const fhash *h, const uint32_t s[3])
 {
-  return (uint32_t)(fhash_of(s) >> 32) & h->mask;
+  return (uint32_t)(tr_hash3(s) >> 32) & h->mask;
 }
 
 static uint32_t fhash_bit(const fhash *h, const uint32_t s[3])
 {
-  return (uint32_t)fhash_of(s) & h->bmask;
+  return (uint32_t)tr_hash3(s) & h->bmask;
 }
 
 static const fkey *find_face(const fhash *h, const uint32_t s[3])

@@ -51,9 +51,7 @@ typedef struct dmap {
  * twice the number of faces the cluster can have. */
 static diag *dmap_slot(dmap *d, const uint32_t f[3])
 {
-  uint64_t h = f[0] * 0x9e3779b97f4a7c15ull ^ f[1] * 0xc2b2ae3d27d4eb4full ^
-               f[2] * 0x165667b19e3779f9ull;
-  uint32_t i = (uint32_t)(h >> 29) & d->mask;
+  uint32_t i = (uint32_t)(tr_hash3(f) >> 29) & d->mask;
   while (d->a[i].f[0] != TR_NONE &&
          (d->a[i].f[0] != f[0] || d->a[i].f[1] != f[1] || d->a[i].f[2] != f[2]))
     i = (i + 1) & d->mask;
@@ -503,11 +501,9 @@ tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t
     TR_CHECK(tr_ball_find(m, e, f, g, &t));
   if (t != TR_NONE) {
     uint32_t w[3] = {e, f, g};
-    int s0 = f < w[0] ? 1 : 0;
-    if (g < w[s0])
-      s0 = 2;
+    tr_rotate_min3(w);
     for (int q = 0; q < 3 && faces; q++)
-      TR_CHECK(tr_u32buf_push(faces, w[(s0 + q) % 3]));
+      TR_CHECK(tr_u32buf_push(faces, w[q]));
     return TR_OK;
   }
   TR_CHECK(tr_cluster_collect(m, e, f, g, &cl, &ncl));

@@ -149,18 +149,8 @@ tr_status tr_facet_faces_of_cluster(struct tr_mesh *m, uint32_t idx, uint32_t e,
   } else {
     *present = 1;
     if (faces) {
-      for (uint32_t i = 0; i < nu; i++) { /* rotate to the smallest id (keeps the turn) */
-        uint32_t *w = tri + 3 * i, r[3];
-        int s = 0;
-        if (w[1] < w[s])
-          s = 1;
-        if (w[2] < w[s])
-          s = 2;
-        for (int q = 0; q < 3; q++)
-          r[q] = w[(s + q) % 3];
-        for (int q = 0; q < 3; q++)
-          w[q] = r[q];
-      }
+      for (uint32_t i = 0; i < nu; i++)
+        tr_rotate_min3(tri + 3 * i);
       qsort(tri, nu, 3 * sizeof *tri, cmp_tri);
       for (uint32_t i = 0; i < 3 * nu && st == TR_OK; i++)
         st = tr_u32buf_push(faces, tri[i]);

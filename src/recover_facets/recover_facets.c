@@ -17,9 +17,7 @@ typedef struct keep {
 
 static uint32_t face_slot(const keep *k, const uint32_t o[3])
 {
-  uint64_t h = o[0] * 0x9e3779b97f4a7c15ull ^ o[1] * 0xc2b2ae3d27d4eb4full ^
-               o[2] * 0x165667b19e3779f9ull;
-  uint32_t i = (uint32_t)(h >> 32) & (k->cap - 1);
+  uint32_t i = (uint32_t)(tr_hash3(o) >> 32) & (k->cap - 1);
   while (k->f[3 * (size_t)i] != TR_NONE &&
          (k->f[3 * (size_t)i] != o[0] || k->f[3 * (size_t)i + 1] != o[1] ||
           k->f[3 * (size_t)i + 2] != o[2]))
