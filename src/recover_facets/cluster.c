@@ -70,72 +70,21 @@ static void vcache_free(tr_vcache *c)
   free(c->val);
 }
 
-/* Memo of crossing_in_triangle by edge {u < v} (the answer is symmetric in u, v: swapping
- * them negates all three signs): the facet flip driver collects the cluster again after
- * every kept flip, and most edges are unchanged. Key (u + 1) << 32 | v, 0 = empty. */
-static int ecache_get(const tr_cluster_memo *c, uint64_t k, int *w)
-{
-  if (!c->ekey)
-    return 0;
-  uint32_t h = (uint32_t)((k * 0x9E3779B97F4A7C15ull) >> 32) & c->emask;
-  while (c->ekey[h] && c->ekey[h] != k)
-    h = (h + 1) & c->emask;
-  if (!c->ekey[h])
-    return 0;
-  *w = c->eval[h];
-  return 1;
-}
-
-static void ecache_put(tr_cluster_memo *c, uint64_t k, int w)
-{
-  if (!c->ekey || 2 * (c->en + 1) > c->emask + 1) {
-    uint32_t cap = c->ekey ? 2 * (c->emask + 1) : 256;
-    uint64_t *nk = calloc(cap, sizeof *nk);
-    int8_t *nv = malloc(cap);
-    if (!nk || !nv) { /* the memo only saves work: stop growing it */
-      free(nk);
-      free(nv);
-      if (c->ekey && c->en + 1 <= c->emask)
-        goto insert;
-      return;
-    }
-    for (uint32_t i = 0; c->ekey && i <= c->emask; i++) {
-      if (!c->ekey[i])
-        continue;
-      uint32_t h = (uint32_t)((c->ekey[i] * 0x9E3779B97F4A7C15ull) >> 32) & (cap - 1);
-      while (nk[h])
-        h = (h + 1) & (cap - 1);
-      nk[h] = c->ekey[i];
-      nv[h] = c->eval[i];
-    }
-    free(c->ekey);
-    free(c->eval);
-    c->ekey = nk;
-    c->eval = nv;
-    c->emask = cap - 1;
-  }
-insert:;
-  uint32_t h = (uint32_t)((k * 0x9E3779B97F4A7C15ull) >> 32) & c->emask;
-  while (c->ekey[h] && c->ekey[h] != k)
-    h = (h + 1) & c->emask;
-  if (!c->ekey[h])
-    c->en++;
-  c->ekey[h] = k;
-  c->eval[h] = (int8_t)w;
-}
-
+/* Memo of crossing_in_triangle by edge {u, v} (the answer is symmetric in u, v: swapping
+ * them negates all three signs), stored as w + 1: the facet flip driver collects the
+ * cluster again after every kept flip, and most edges are unchanged. When the map cannot
+ * grow the answer is just not kept (the memo only saves work). */
 static int crossing_memo(tr_cluster_memo *c, uint32_t u, uint32_t v, const tr_point *pu,
                          const tr_point *pv, const tr_point *e, const tr_point *f,
                          const tr_point *g)
 {
   if (!c)
     return crossing_in_triangle(pu, pv, e, f, g);
-  uint64_t k = u < v ? ((uint64_t)u + 1) << 32 | v : ((uint64_t)v + 1) << 32 | u;
-  int w;
-  if (ecache_get(c, k, &w))
-    return w;
-  w = crossing_in_triangle(pu, pv, e, f, g);
-  ecache_put(c, k, w);
+  uint32_t k = tr_edgeset_get(&c->e, u, v);
+  if (k != TR_EDGESET_NONE)
+    return (int)k - 1;
+  int w = crossing_in_triangle(pu, pv, e, f, g);
+  (void)tr_edgeset_put(&c->e, u, v, (uint32_t)(w + 1));
   return w;
 }
 
@@ -317,8 +266,7 @@ static tr_status collect(struct tr_mesh *m, const tr_point *pe, const tr_point *
 void tr_cluster_memo_free(tr_cluster_memo *c)
 {
   vcache_free(&c->v);
-  free(c->ekey);
-  free(c->eval);
+  tr_edgeset_free(&c->e);
   memset(c, 0, sizeof *c);
 }
 

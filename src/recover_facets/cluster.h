@@ -31,6 +31,7 @@
 #define TR_RECOVER_FACETS_CLUSTER_H
 
 #include "mesh/mesh.h"
+#include "recover_edges/edgeset.h"
 
 enum { TR_CO_PLAN = 0, TR_ONE_EDG, TR_TWO_EDG, TR_THR_EDG, TR_FOU_EDG };
 enum { TR_NOD_NUL = 0, TR_NOD_EXT, TR_NOD_BEG, TR_NOD_END, TR_NOD_MID };
@@ -71,9 +72,7 @@ typedef struct tr_vcache {
 } tr_vcache;
 typedef struct tr_cluster_memo {
   tr_vcache v;
-  uint64_t *ekey; /* edge {u < v} as (u + 1) << 32 | v; 0: empty */
-  int8_t *eval;
-  uint32_t emask, en;
+  tr_edgeset e; /* edge {u, v} -> crossing_in_triangle + 1 */
 } tr_cluster_memo;
 void tr_cluster_memo_free(tr_cluster_memo *c);
 /* tr_cluster_collect with the answers taken from / added to mc (a memo of facet efg). */
