@@ -497,6 +497,15 @@ static uint32_t sx_slot(const tr_sxset *s, const uint32_t o[3])
   return i;
 }
 
+int tr_sxset_has(const tr_sxset *s, const uint32_t v[3])
+{
+  if (!s->n)
+    return 0;
+  uint32_t o[3] = {v[0], v[1], v[2]};
+  tr_sort3(o);
+  return s->k[sx_slot(s, o)][0] != TR_NONE;
+}
+
 int tr_sxset_add(tr_sxset *s, const uint32_t v[3])
 {
   if (2 * (s->n + 1) > s->cap) {

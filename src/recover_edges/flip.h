@@ -107,6 +107,8 @@ typedef struct tr_sxset {
 void tr_sxset_clear(tr_sxset *s);
 /* 1 if v was added, 0 if it was there already, -1 out of memory (TR_ERR_NOMEM reported). */
 int tr_sxset_add(tr_sxset *s, const uint32_t v[3]);
+/* 1 iff v is in the set. */
+int tr_sxset_has(const tr_sxset *s, const uint32_t v[3]);
 void tr_sxset_free(tr_sxset *s);
 
 /* 1 iff a and b are the same edge (v[2] == TR_NONE) or the same triangle, whatever the

@@ -7,7 +7,9 @@
  * the flipped regions only (tets outside them keep their status). The number of pipels is
  * a natural number that drops every round, so the loop ends; it ends early when ab is a
  * mesh edge. Candidates are remembered by vertex ids, so a slot moved by an undo cannot
- * mislead the next attempt.
+ * mislead the next attempt. A candidate whose attempt was undone is skipped until a round
+ * finds nothing among the others, then all are tried again on a freshly collected pipe:
+ * retrying the failed ones after every kept attempt made the search quadratic.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -133,24 +135,34 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
     tr_segmemo_init(&own, m, a, b);
     g = &own;
   }
-  tr_sxset seen = {0};
+  tr_sxset seen = {0}, failed = {0};
   tr_flip_journal j;
   memset(&j, 0, sizeof j);
   j.measure = pipel_measure;
   j.mud = g;
   /* The measure is the number of real pipels; the journal adds up its change over the
    * flips of one attempt (pipels among the new tets - among the old ones). */
-  for (int progress = 1; progress && s == TR_OK && !*done;) {
+  for (int progress = 1, skipped = 0; (progress || skipped) && s == TR_OK && !*done;) {
+    if (!progress) {
+      /* stuck on the fresh candidates: retry the failed ones, on a pipe collected again
+       * since undos may have moved tets to other slots */
+      tr_sxset_clear(&failed);
+      if ((s = tr_pipe_collect_memo(m, a, b, p, &via, g)) != TR_OK)
+        break;
+    }
     progress = 0;
+    skipped = 0;
     if ((s = list_cands(m, p, &cs, &nc, &cap, &seen)) != TR_OK)
       break;
     for (uint32_t i = 0; i < nc && !progress && s == TR_OK; i++) {
       int ok;
+      if (tr_sxset_has(&failed, cs[i].v)) {
+        skipped = 1;
+        continue;
+      }
       if ((s = apply(m, &cs[i], cons, &j, &ok)) != TR_OK)
         break;
-      if (j.n == 0)
-        continue;
-      if (j.delta < 0) {
+      if (j.n && j.delta < 0) {
         count(&j, st);
         progress = 1;
         int yes;
@@ -166,7 +178,8 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
         break;
       }
       st->flips_undone += j.n;
-      s = tr_flip_journal_undo(m, &j, 0);
+      if ((s = tr_flip_journal_undo(m, &j, 0)) == TR_OK && tr_sxset_add(&failed, cs[i].v) < 0)
+        s = TR_ERR_NOMEM;
     }
   }
   if (*done)
@@ -177,6 +190,7 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
   if (g == &own)
     tr_segmemo_free(&own);
   tr_sxset_free(&seen);
+  tr_sxset_free(&failed);
   free(cs);
   return s;
 }
