@@ -9,7 +9,8 @@
  * fill too many cells (long slivers across the domain) take a sweep along the longest
  * axis instead, which tests the same pairs.
  * Narrow phase: if the non-shared corners of one triangle lie strictly on one side of
- * the other's plane, the two can only meet in the shared vertices (exact orient3d).
+ * the other's plane, the two can only meet in the shared vertices (exact orient3d). If
+ * they all lie on it, the two are coplanar and a 2D test decides (coplanar_improper).
  * Otherwise the intersection of two closed triangles, when not empty, contains a point
  * of an edge of one of them, so classifying the six edges against the other triangle
  * (classify.h, exact, coplanar overlaps included) finds it; a hit is allowed only at a
@@ -99,6 +100,56 @@ static int edge_pair_improper(const struct tr_plc *plc, uint32_t a, uint32_t b, 
   return 1; /* p on the line ab: not a triangle; cannot happen after validation */
 }
 
+/* Sign of orient2d of (a, b, c) with axis `drop` left out. */
+static int o2(const struct tr_plc *plc, uint32_t a, uint32_t b, uint32_t c, int drop)
+{
+  return tr_sign(tr_orient2d_proj(P(plc, a), P(plc, b), P(plc, c), drop));
+}
+
+/* Vertex p in the closed triangle t (2D, t of orientation st != 0). */
+static int in_closed(const struct tr_plc *plc, const uint32_t *t, int st, uint32_t p, int drop)
+{
+  for (int k = 0; k < 3; k++)
+    if (st * o2(plc, t[k], t[(k + 1) % 3], p, drop) < 0)
+      return 0;
+  return 1;
+}
+
+/* Coplanar t and u sharing at most one vertex, in the projection that drops an axis along
+ * which t is not flat (the projection is then one-to-one on their plane). They meet only
+ * in shared vertices unless a non-shared corner of one lies in the other closed triangle
+ * or two edges cross at a point interior to both: if the closed triangles meet elsewhere,
+ * the boundary of one reaches into the other, and it either starts there (a corner
+ * inside; the shared vertex is on the other's boundary, not inside) or crosses the
+ * other's boundary, properly or through a corner. Plane-free orient2d tests replace the
+ * exact zero orient3d of the general path, which on the flat faces of CAD models was
+ * most of the validation's time. */
+static int coplanar_improper(const struct tr_plc *plc, const uint32_t *t, const uint32_t *u)
+{
+  int drop = 0, st = 0;
+  for (; drop < 3 && !st; drop++)
+    st = o2(plc, t[0], t[1], t[2], drop);
+  drop--;
+  int su = o2(plc, u[0], u[1], u[2], drop);
+  for (int k = 0; k < 3; k++) {
+    int ut = u[k] == t[0] || u[k] == t[1] || u[k] == t[2];
+    int tu = t[k] == u[0] || t[k] == u[1] || t[k] == u[2];
+    if ((!ut && in_closed(plc, t, st, u[k], drop)) || (!tu && in_closed(plc, u, su, t[k], drop)))
+      return 1;
+  }
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) {
+      uint32_t a = t[i], b = t[(i + 1) % 3], c = u[j], d = u[(j + 1) % 3];
+      int o1 = o2(plc, a, b, c, drop), o2_ = o2(plc, a, b, d, drop);
+      if (o1 * o2_ >= 0)
+        continue;
+      int o3 = o2(plc, c, d, a, drop), o4 = o2(plc, c, d, b, drop);
+      if (o3 * o4 < 0)
+        return 1;
+    }
+  return 0;
+}
+
 static int improper(const struct tr_plc *plc, uint32_t i, uint32_t j)
 {
   const uint32_t *t = plc->tris + 3 * (size_t)i, *u = plc->tris + 3 * (size_t)j;
@@ -114,8 +165,27 @@ static int improper(const struct tr_plc *plc, uint32_t i, uint32_t j)
   }
   if (shared == 2)
     return edge_pair_improper(plc, t[(tp + 1) % 3], t[(tp + 2) % 3], t[tp], u[uq]);
-  if (one_side(plc, t, u) || one_side(plc, u, t))
+  if (shared < 2) {
+    /* the non-shared corners of u against the plane of t: all on one side, the pair is
+     * fine; all on it, the coplanar test */
+    int pos = 0, neg = 0, zero = 0;
+    for (int k = 0; k < 3; k++) {
+      if (u[k] == t[0] || u[k] == t[1] || u[k] == t[2])
+        continue;
+      int sg = tr_sign(tr_orient3d(P(plc, t[0]), P(plc, t[1]), P(plc, t[2]), P(plc, u[k])));
+      pos += sg > 0;
+      neg += sg < 0;
+      zero += sg == 0;
+    }
+    if (!zero && (!pos || !neg))
+      return 0;
+    if (!pos && !neg)
+      return coplanar_improper(plc, t, u);
+    if (one_side(plc, u, t))
+      return 0;
+  } else if (one_side(plc, t, u) || one_side(plc, u, t)) {
     return 0;
+  }
   return edges_hit(plc, t, u) || edges_hit(plc, u, t);
 }
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "core/edgesort.h"
+#include "classify.h"
 #include "core/plc.h"
 #include "input/validate.h"
 #include "io/io.h"
@@ -614,6 +615,88 @@ static void t_selfint(void)
          improper_seen, proper_seen);
 }
 
+/* The rule written with the segment-triangle classifier (classify.h): some edge of one
+ * triangle meets the other at a point that is not a vertex both share. */
+static int classify_says_improper(const double *x, const uint32_t *t, const uint32_t *u)
+{
+  for (int side = 0; side < 2; side++) {
+    if (side) {
+      const uint32_t *w = t;
+      t = u;
+      u = w;
+    }
+    tr_point U[3];
+    for (int k = 0; k < 3; k++)
+      U[k] = tr_pt_d(x + 3 * u[k]);
+    for (int k = 0; k < 3; k++) {
+      uint32_t a = t[k], b = t[(k + 1) % 3];
+      tr_point A = tr_pt_d(x + 3 * a), B = tr_pt_d(x + 3 * b);
+      tr_isect r = tr_classify_segment_triangle(&A, &B, &U[0], &U[1], &U[2]);
+      for (int i = 0; i < r.n; i++)
+        if (!(r.end[i].type == TR_NOD && r.end[i].code < 3 &&
+              (u[r.end[i].code] == a || u[r.end[i].code] == b)))
+          return 1;
+    }
+  }
+  return 0;
+}
+
+/* Coplanar pairs sharing one vertex or none (selfint.c decides them in 2D) against the
+ * classifier's answer, on a 5x5 grid mapped exactly onto a tilted plane: touching
+ * corners, corners on edges, collinear edges and overlaps all come up. */
+static void t_selfint_coplanar(void)
+{
+  uint64_t r = 0x2545f4914f6cdd1dull;
+  int seen[2][2] = {{0, 0}, {0, 0}}; /* [shared][improper] */
+  for (int it = 0; it < 3000; it++) {
+    long long q[6][2];
+    for (int k = 0; k < 6; k++)
+      for (int d = 0; d < 2; d++) {
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        q[k][d] = (long long)(r % 5) - 2;
+      }
+    int shared = it & 1;
+    if (shared) { /* u = (0, 4, 5): corner 0 shared */
+      q[3][0] = q[0][0];
+      q[3][1] = q[0][1];
+    }
+    int bad = 0;
+    for (int a = 0; a < 6 && !bad; a++)
+      for (int b = a + 1; b < 6; b++)
+        bad |= q[a][0] == q[b][0] && q[a][1] == q[b][1] && !(shared && a == 0 && b == 3);
+    long long at = (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - q[0][0]);
+    long long au = (q[4][0] - q[3][0]) * (q[5][1] - q[3][1]) - (q[4][1] - q[3][1]) * (q[5][0] - q[3][0]);
+    if (bad || at == 0 || au == 0)
+      continue;
+    double x[18];
+    for (int k = 0; k < 6; k++) {
+      double uu = (double)q[k][0], vv = (double)q[k][1];
+      x[3 * k] = 7 + 3 * uu - vv;
+      x[3 * k + 1] = -4 + uu + 2 * vv;
+      x[3 * k + 2] = 1 + 2 * uu + 5 * vv;
+    }
+    uint32_t tt[6] = {0, 1, 2, 3, 4, 5};
+    double y[15];
+    uint32_t n = 6;
+    if (shared) { /* drop the duplicate corner 3: u = (0, 4, 5) renumbered */
+      memcpy(y, x, 9 * sizeof *y);
+      memcpy(y + 9, x + 12, 6 * sizeof *y);
+      uint32_t ts[6] = {0, 1, 2, 0, 3, 4};
+      memcpy(tt, ts, sizeof ts);
+      n = 5;
+    }
+    const double *pts = shared ? y : x;
+    int want = classify_says_improper(pts, tt, tt + 3);
+    tr_status st = check_pair(pts, n, tt);
+    EXPECT((st == TR_ERR_SELF_INTERSECT) == want && (st == TR_OK || st == TR_ERR_SELF_INTERSECT),
+           "coplanar pair %d (%d shared): %s, classifier says %s (%s)", it, shared,
+           tr_status_name(st), want ? "intersecting" : "valid", tr_last_error());
+    seen[shared][want]++;
+  }
+  EXPECT(seen[0][0] > 50 && seen[0][1] > 50 && seen[1][0] > 50 && seen[1][1] > 50,
+         "all four kinds exercised (%d %d %d %d)", seen[0][0], seen[0][1], seen[1][0], seen[1][1]);
+}
+
 static uint64_t sb_rng = 0x243f6a8885a308d3ull;
 static double sb_unif(void)
 {
@@ -780,6 +863,7 @@ int main(int argc, char **argv)
                {"mesh_write", t_mesh_write},     {"malformed", t_malformed},
                {"repairs", t_repairs},           {"selfint", t_selfint},
                {"selfint_broad", t_selfint_broad}, {"edge_sort", t_edge_sort},
+               {"selfint_coplanar", t_selfint_coplanar},
                {"cavity", t_cavity},             {"polygon_random", t_polygon_random}};
   for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++)
     if (!strcmp(argv[1], tests[i].name)) {
