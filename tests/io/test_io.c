@@ -548,6 +548,15 @@ static tr_status check_pair(const double *xyz, uint32_t n, const uint32_t *tris)
   return s;
 }
 
+/* Grid point (u, v) onto the plane spanned by (3, 1, 2) and (-1, 2, 5) through
+ * (7, -4, 1): exact in doubles for small integers, and tilted against every axis. */
+static void onto_tilted_plane(long long u, long long v, double *x)
+{
+  x[0] = 7 + 3 * (double)u - (double)v;
+  x[1] = -4 + (double)u + 2 * (double)v;
+  x[2] = 1 + 2 * (double)u + 5 * (double)v;
+}
+
 /* Exact improper-intersection rules for two triangles. */
 static void t_selfint(void)
 {
@@ -594,14 +603,9 @@ static void t_selfint(void)
       continue; /* a corner on the shared line: not two triangles */
     if (q2[2][0] == q2[3][0] && q2[2][1] == q2[3][1])
       continue; /* the same triangle twice: validation merges it, a repair */
-    /* onto the plane spanned by (3, 1, 2) and (-1, 2, 5) through (7, -4, 1) */
     double x[12];
-    for (int k = 0; k < 4; k++) {
-      double u = (double)q2[k][0], v = (double)q2[k][1];
-      x[3 * k] = 7 + 3 * u - v;
-      x[3 * k + 1] = -4 + u + 2 * v;
-      x[3 * k + 2] = 1 + 2 * u + 5 * v;
-    }
+    for (int k = 0; k < 4; k++)
+      onto_tilted_plane(q2[k][0], q2[k][1], x + 3 * k);
     uint32_t tt[6] = {0, 1, 2, 1, 0, 3};
     int want = (sp > 0) == (sq > 0);
     tr_status st = check_pair(x, 4, tt);
@@ -669,12 +673,8 @@ static void t_selfint_coplanar(void)
     if (bad || at == 0 || au == 0)
       continue;
     double x[18];
-    for (int k = 0; k < 6; k++) {
-      double uu = (double)q[k][0], vv = (double)q[k][1];
-      x[3 * k] = 7 + 3 * uu - vv;
-      x[3 * k + 1] = -4 + uu + 2 * vv;
-      x[3 * k + 2] = 1 + 2 * uu + 5 * vv;
-    }
+    for (int k = 0; k < 6; k++)
+      onto_tilted_plane(q[k][0], q[k][1], x + 3 * k);
     uint32_t tt[6] = {0, 1, 2, 3, 4, 5};
     double y[15];
     uint32_t n = 6;
