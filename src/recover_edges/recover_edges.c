@@ -6,11 +6,15 @@
  * split at existing vertices it passes through); pass 2 recovers what is left with Steiner
  * points: a sub-segment whose pipe has more than two real tets is first split at its exact
  * midpoint (TetGen's way, one point, tr_pipe_split_mid; at most TR_EDGE_MIDPOINT_SPLITS
- * per input edge) and both halves go through the swaps and flips again; short pipes and
- * what is left after the budget go pipel by pipel, the paper's decomposition (a
- * sub-segment whose pipe admits a swap by then still takes the swap: it costs no point).
- * tr_recover_edges_ex can switch the flips and the midpoint splits off (the paper's
- * algorithm exactly).
+ * per input edge), Lawson flips restore the local Delaunay property around the midpoint
+ * (lawson.h: without them the mesh around the segment stays as bad as the split left it
+ * and the splits pile up; with them the halves tend to become Delaunay edges and appear
+ * by themselves, as in Shewchuk's segment recovery), and both halves go through the swaps
+ * and flips again; short pipes and what is left after the budget go pipel by pipel, the
+ * paper's decomposition (a sub-segment whose pipe admits a swap by then still takes the
+ * swap: it costs no point).
+ * tr_recover_edges_ex can switch the flips, the midpoint splits and the Lawson flips off
+ * (the first two off: the paper's algorithm exactly).
  *
  * Constraint edges: the mesh edges that are pieces of input edges are kept in a hash map
  * (edgeset.h) so that a Swap44 never deletes one and a Steiner point is never put on
@@ -34,6 +38,7 @@
 
 #include "classify.h"
 #include "recover_edges/edgeset.h"
+#include "recover_edges/lawson.h"
 #include "recover_edges/pipe.h"
 
 /* Midpoint splits allowed per input edge in pass 2 (0: the paper's pipels only). */
@@ -56,7 +61,26 @@ typedef struct ctx {
   tr_edge_stats est; /* detailed counters (pipe.h) */
   uint32_t nv0;      /* vertices before the stage: ids from nv0 on are its Steiner points */
   tr_edge_recovery_opts opt;
+  tr_lawson law;        /* scratch of the Lawson flips */
+  tr_lawson_stats lst;
 } ctx;
+
+/* The Lawson flips may delete neither a constraint edge nor a pending sub-segment of the
+ * input edge being recovered (an edge of the stack: it may already be a mesh edge). */
+static int lawson_guard(void *ud, const uint32_t *v, int nv)
+{
+  const ctx *c = ud;
+  if (nv != 2)
+    return 0;
+  if (tr_edgeset_get(&c->cons, v[0], v[1]) != TR_EDGESET_NONE)
+    return 1;
+  for (size_t i = 0; i + 1 < c->stack.n; i += 2) {
+    uint32_t x = c->stack.a[i], y = c->stack.a[i + 1];
+    if ((x == v[0] && y == v[1]) || (x == v[1] && y == v[0]))
+      return 1;
+  }
+  return 0;
+}
 
 /* Wraps the message of a failure inside the recovery of input edge i with the edge's
  * vertex ids and coordinates, so that a user can locate it in the input. */
@@ -252,6 +276,8 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
         uint32_t four[4] = {mid, v1, v0, mid};
         for (int k = 0; k < 4; k++)
           TR_CHECK(tr_u32buf_push(&c->stack, four[k]));
+        if (!c->opt.no_lawson)
+          TR_CHECK(tr_lawson_vertex(m, mid, lawson_guard, c, &c->law, &c->lst));
         continue;
       }
     }
@@ -386,6 +412,9 @@ static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
     st->flip_hull = c->est.flip_hull;
     st->flips_undone = c->est.flips_undone;
     st->midpoints = c->est.midpoints;
+    st->lawson_flip23 = c->lst.flip23;
+    st->lawson_flip32 = c->lst.flip32;
+    st->lawson_flip44 = c->lst.flip44;
     for (int k = 0; k < TR_PK_COUNT; k++)
       st->pipels[k] = c->est.pipels[k];
     for (int k = 0; k < 16; k++)
@@ -425,6 +454,7 @@ tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t
   tr_u32buf_free(&c.ball);
   tr_pipe_free(&c.pipe);
   tr_segmemo_free(&c.memo);
+  tr_lawson_free(&c.law);
   if (s != TR_OK)
     tr_edge_chains_free(chains);
   return s;

@@ -52,6 +52,8 @@ typedef struct tr_edge_recovery_stats {
   /* pass 2: sub-segments split at their exact midpoint (one Steiner point each, counted
    * in points_added) before the halves are tried by flips again */
   uint64_t midpoints;
+  /* Lawson flips (lawson.h) around the midpoints: 2-3, 3-2, 4-4 */
+  uint64_t lawson_flip23, lawson_flip32, lawson_flip44;
 } tr_edge_recovery_stats;
 
 /* edges: 2*n mesh vertex ids, the unique undirected input edges with
@@ -63,9 +65,10 @@ tr_status tr_recover_edges(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
 
 /* Switches for tests and comparisons (zero = the default of tr_recover_edges):
  * no_flips: only the paper's Swap23 / Swap44 before Steiner points (no flip.h flips);
- * no_midpoints: pass 2 uses the paper's pipels right away (no midpoint splits). */
+ * no_midpoints: pass 2 uses the paper's pipels right away (no midpoint splits);
+ * no_lawson: no Lawson flips around the midpoints (the mesh is left as the split made it). */
 typedef struct tr_edge_recovery_opts {
-  int no_flips, no_midpoints;
+  int no_flips, no_midpoints, no_lawson;
 } tr_edge_recovery_opts;
 tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
                               const tr_edge_recovery_opts *opt, tr_edge_chains *chains,

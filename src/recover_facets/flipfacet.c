@@ -277,6 +277,8 @@ tr_status tr_facet_try_flips(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t
       }
       if (st)
         st->undone += j.n;
+      /* an undo may put the old tets in other slots: the caller's cluster is stale */
+      *changed |= j.n > 0;
       if ((s = tr_flip_journal_undo(m, &j, 0)) == TR_OK && tr_sxset_add(&failed, c->v) < 0)
         s = TR_ERR_NOMEM;
     }

@@ -21,9 +21,10 @@ typedef struct tr_facet_flip_stats {
   uint64_t undone;                        /* tried and undone */
 } tr_facet_flip_stats;
 
-/* Runs the flips on facet efg. *changed = 1 if the mesh changed (the caller's cluster
- * is then stale); *clear = 1 if no clusterel crosses efg any more (the facet is present
- * by the closure argument of facet.h). st may be NULL. */
+/* Runs the flips on facet efg. *changed = 1 if the mesh changed or a flip was made and
+ * undone (an undo may put tets in other slots): the caller's cluster is then stale.
+ * *clear = 1 if no clusterel crosses efg any more (the facet is present by the closure
+ * argument of facet.h). st may be NULL. */
 tr_status tr_facet_try_flips(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,
                              tr_flip_guard guard, void *ud, tr_facet_flip_stats *st,
                              int *changed, int *clear);

@@ -194,6 +194,9 @@ static void print_stats(const char *what, uint64_t nedges, const tr_edge_recover
          (unsigned long long)s->points_added, (double)s->points_added / miss,
          (unsigned long long)s->swap23, (unsigned long long)s->swap44,
          (unsigned long long)s->split_at_vertex, (unsigned long long)s->ghosts_split);
+  printf("%s: midpoint splits %llu, Lawson flips around them 2-3 %llu, 3-2 %llu, 4-4 %llu\n",
+         what, (unsigned long long)s->midpoints, (unsigned long long)s->lawson_flip23,
+         (unsigned long long)s->lawson_flip32, (unsigned long long)s->lawson_flip44);
   printf("%s: pipels decomposed per case:", what);
   for (int k = 0; k < TR_EDGE_PIPEL_KINDS; k++)
     printf(" %s %llu", KIND[k], (unsigned long long)s->pipels[k]);
@@ -520,6 +523,11 @@ static int test_coverage(void)
 
 int main(int argc, char **argv)
 {
+  /* a trailing "nolawson": the same run with the Lawson flips off (tr_recover_edges_ex) */
+  if (argc >= 3 && !strcmp(argv[argc - 1], "nolawson")) {
+    g_opt.no_lawson = 1;
+    argc--;
+  }
   if (argc == 6 && !strcmp(argv[1], "grid"))
     return test_grid(atoi(argv[2]), (uint32_t)atoi(argv[3]), (uint64_t)atoll(argv[4]),
                      atoi(argv[5]), NULL);
@@ -532,6 +540,6 @@ int main(int argc, char **argv)
   if (argc == 4 && !strcmp(argv[1], "spheres"))
     return test_spheres((uint64_t)atoll(argv[2]), atoi(argv[3]));
   fprintf(stderr, "usage: test_recover_edges spheres <seed> <meshes> | grid <n> <nseg> "
-                  "<seed> <incremental> | crossing | badinput\n");
+                  "<seed> <incremental> | crossing | badinput [nolawson]\n");
   return 2;
 }
