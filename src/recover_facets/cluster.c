@@ -105,8 +105,15 @@ static tr_status vertex_side(tr_vcache *c, uint32_t v, const tr_point *p, const 
       return TR_OK;
     }
   }
-  *side = tr_orient3d_p(e, f, g, p);
-  *in = *side == 0 && in_closed_triangle(p, e, f, g);
+  if ((p->d == e->d && p->q == e->q) || (p->d == f->d && p->q == f->q) ||
+      (p->d == g->d && p->q == g->q)) {
+    /* a corner of the facet (the same stored point): an exact zero costs the most */
+    *side = 0;
+    *in = 1;
+  } else {
+    *side = tr_orient3d_p(e, f, g, p);
+    *in = *side == 0 && in_closed_triangle(p, e, f, g);
+  }
   if (c) {
     c->key[h] = v;
     c->val[h] = (uint8_t)((*side + 1) | (*in << 2));
