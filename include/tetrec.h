@@ -76,6 +76,7 @@ typedef struct tr_options {
   int smooth;      /* surface diagonal swaps before recovery (default 1) */
   int allow_open;  /* mesh the convex hull, keep facets as constraints (default 0) */
   int verbose;     /* 0 quiet, 1 normal, 2 chatty; messages go to stderr */
+  uint64_t round_budget; /* star checks the rounding repair may spend (0: 2,000,000) */
 } tr_options;
 void tr_options_default(tr_options *opt);
 

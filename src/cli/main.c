@@ -40,6 +40,8 @@ static const char usage[] =
     "  --allow-open      accept open or non-manifold surfaces\n"
     "  --check-only      only read and validate the input (mesh)\n"
     "  --no-smooth       no surface diagonal swaps before recovery\n"
+    "  --round-budget N  star checks the rounding repair may spend before it gives up\n"
+    "                    (exit 9; default 2000000)\n"
     "  --help, --version\n"
     "\n"
     "exit status (= tr_status):\n"
@@ -51,6 +53,7 @@ static const char usage[] =
 typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
   int quiet, verbose, exact, allow_open, check_only, no_smooth;
+  uint64_t round_budget; /* 0: the default */
 } args;
 
 static int fail(tr_status s)
@@ -119,6 +122,17 @@ static int parse_args(int argc, char **argv, args *a)
       a->check_only = 1;
     else if (!strcmp(s, "--no-smooth"))
       a->no_smooth = 1;
+    else if (!strcmp(s, "--round-budget")) {
+      /* digits only, 1 .. 10^15: strtoull alone would take "-1", "+5" and " 7" */
+      const char *v = i + 1 < argc ? argv[++i] : "";
+      size_t len = strlen(v);
+      int ok = len > 0 && len <= 16 && strspn(v, "0123456789") == len;
+      unsigned long long n = ok ? strtoull(v, NULL, 10) : 0;
+      if (!ok || n == 0 || n > 1000000000000000ull)
+        return tr_error(TR_ERR_USAGE, "--round-budget needs a whole number from 1 to 10^15, "
+                        "not '%s'", v);
+      a->round_budget = n;
+    }
     else if (s[0] == '-' && s[1])
       return tr_error(TR_ERR_USAGE, "unknown option '%s' (see tetrec --help)", s);
     else if (npos < 3)
@@ -170,6 +184,7 @@ static int cmd_mesh(const args *a)
   opt.allow_open = a->allow_open;
   opt.smooth = !a->no_smooth;
   opt.verbose = a->quiet ? 0 : a->verbose ? 2 : 1;
+  opt.round_budget = a->round_budget;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();

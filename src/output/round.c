@@ -43,7 +43,8 @@ uint64_t tr_round_count_nonpositive(const struct tr_mesh *m, uint32_t *first)
  * need not be face-connected (two regions touching along an edge). */
 typedef struct {
   uint32_t *start, *tet;
-  uint64_t *work; /* star checks so far; past TR_ROUND_BUDGET every check fails */
+  uint64_t *work;  /* star checks so far; past budget every check fails */
+  uint64_t budget; /* TR_ROUND_BUDGET unless the caller asked otherwise */
 } star_index;
 
 static tr_status stars_build(const struct tr_mesh *m, star_index *S)
@@ -85,7 +86,7 @@ static uint32_t star_failure(const struct tr_mesh *m, const star_index *S, uint3
                              uint32_t except, uint32_t *hint)
 {
   uint32_t a = S->start[v], n = S->start[v + 1] - a;
-  if (++*S->work > TR_ROUND_BUDGET && n > 0)
+  if (++*S->work > S->budget && n > 0)
     return S->tet[a]; /* out of budget: no more moves (tr_round_steiner reports it) */
   for (uint32_t i = 0; i < n; i++) {
     uint32_t j = (*hint + i) % n, t = S->tet[a + j];
@@ -226,7 +227,7 @@ static int search_pair(struct tr_mesh *m, const star_index *S, uint32_t v, const
 static uint32_t star_bad(const struct tr_mesh *m, const star_index *S, uint32_t v, uint32_t cap)
 {
   uint32_t n = 0;
-  if (++*S->work > TR_ROUND_BUDGET)
+  if (++*S->work > S->budget)
     return cap;
   for (uint32_t i = S->start[v]; i < S->start[v + 1] && n < cap; i++)
     n += !positive(m, S->tet[i]);
@@ -292,7 +293,7 @@ static int one_round(const search_ctx *c, int pairs, uint32_t *fail_v, uint32_t 
   return progress;
 }
 
-tr_status tr_round_steiner(struct tr_mesh *m, uint64_t *repaired)
+tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaired)
 {
   *repaired = 0;
   if (!m->vq)
@@ -305,7 +306,7 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t *repaired)
   if (tr_round_count_nonpositive(m, NULL) == 0)
     return TR_OK;
   uint64_t work = 0;
-  star_index S = {NULL, NULL, &work};
+  star_index S = {NULL, NULL, &work, budget ? budget : TR_ROUND_BUDGET};
   search_ctx c = {m, &S, NULL, 0, 0};
   offset *off = NULL;
   tr_status st = stars_build(m, &S);
@@ -328,16 +329,17 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t *repaired)
   for (uint32_t v = 0; v < m->nv; v++)
     if (steiner(m, v))
       *repaired += memcmp(m->xyz + 3 * (size_t)v, m->vq[v]->near, 3 * sizeof(double)) != 0;
-  if (st == TR_OK && work > TR_ROUND_BUDGET) {
+  if (st == TR_OK && work > S.budget) {
     uint32_t bad = TR_NONE;
     uint64_t nbad = tr_round_count_nonpositive(m, &bad);
     if (nbad > 0) {
       const uint32_t *tv = m->tv + 4 * (size_t)bad;
       st = tr_error(TR_ERR_INVALID_MESH,
                     "rounding Steiner points to doubles: %llu tets stay flat or inverted (the "
-                    "first: tet %u (%u %u %u %u)) after %d star checks, the repair's budget; "
+                    "first: tet %u (%u %u %u %u)) after %llu star checks, the repair's budget; "
                     "the exact mesh is valid: write it with --exact to a .node file",
-                    (unsigned long long)nbad, bad, tv[0], tv[1], tv[2], tv[3], TR_ROUND_BUDGET);
+                    (unsigned long long)nbad, bad, tv[0], tv[1], tv[2], tv[3],
+                    (unsigned long long)S.budget);
     }
   } else if (st == TR_OK && fail_v != TR_NONE) {
     const double *x = m->vq[fail_v]->near;

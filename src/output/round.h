@@ -37,16 +37,17 @@
 #define TR_ROUND_RADIUS 16
 #define TR_ROUND_PAIR_RADIUS2 16
 /* At most this many star checks (one candidate position against a point's tets) per
- * mesh, a few seconds: past it the search stops and the stage fails as below, rather
- * than searching for minutes on clusters of nearly degenerate Steiner points. */
+ * mesh by default, a few seconds: past it the search stops and the stage fails as below,
+ * rather than searching for minutes on clusters of nearly degenerate Steiner points. */
 #define TR_ROUND_BUDGET 2000000
 
-/* Repairs m->xyz of the Steiner points of m's kept tets (real, not TR_TF_OUTER) as above.
+/* Repairs m->xyz of the Steiner points of m's kept tets (real, not TR_TF_OUTER) as above,
+ * with at most `budget` star checks (0: TR_ROUND_BUDGET).
  * *repaired = number of Steiner points whose double ends off its nearest rounding.
  * When some tet stays flat or inverted, returns TR_ERR_INVALID_MESH naming the first such
  * Steiner point (index, coordinates) and tet; the moves made so far are kept, the exact
  * points are never changed. */
-tr_status tr_round_steiner(struct tr_mesh *m, uint64_t *repaired);
+tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaired);
 
 /* Number of kept tets of m that are not strictly positive on the doubles m->xyz (exact
  * orient3d on doubles); *first (may be NULL) = the first one, TR_NONE if none. */

@@ -124,7 +124,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK)
     st = tr_pipeline_compact(m, &res);
   if (st == TR_OK) {
-    st = tr_round_steiner(res, &stats->rounding_repairs);
+    st = tr_round_steiner(res, opt.round_budget, &stats->rounding_repairs);
     if (st == TR_ERR_INVALID_MESH && (flags & TR_PIPE_KEEP_EXACT)) {
       /* the caller writes the exact points: the mesh it gets is valid */
       if (opt.verbose >= 1)

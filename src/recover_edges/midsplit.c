@@ -1,4 +1,4 @@
-/* Splitting a missing sub-segment at its exact midpoint (tr_pipe_split_mid, pipe.h).
+/* Splitting a missing sub-segment at one exact point (tr_pipe_split_mid, pipe.h).
  *
  * The midpoint M of ab lies in the closure of some pipels of Pipe(ab) (inside one tet, on
  * a face, or on an edge; on a hull face also in the ghost tet of that face): every tet
@@ -7,10 +7,22 @@
  * with vertex k replaced by M, for each face k not through M): strictly positive by
  * construction, and tr_mesh_replace checks that they fill the same region. Ghost tets
  * keep TR_GHOST in slot 3 (their hull face always holds M, so slot 3 is never replaced).
+ *
+ * The split point M is the midpoint of ab unless that lies in an end piece of the pipe
+ * (the part of ab inside the pipels at a, or at b): then it is the point of the middle
+ * part (between where ab leaves the pipels at a and enters those at b) that repeated
+ * midpoint splits would reach first, a + t (b - a) with the dyadic t of smallest
+ * denominator there. A split in an end piece removes none of the pipels in between;
+ * when the middle part is tiny (ab grazing a sliver of nearly coplanar vertices, common
+ * on ulp-perturbed grids) the midpoint splits converged on it from both sides, dozens of
+ * Steiner points within 1e-14 of each other that no rounding to doubles can separate.
+ * Splitting in the middle part at once also saves most of the points on the way (corpus
+ * 7,737 -> 4,848 Steiner points).
  */
 #include <stdlib.h>
 
 #include "classify.h"
+#include "construct.h"
 #include "recover_edges/pipe.h"
 
 /* Bit k set iff face k of real tet tv holds p; -1 if p is outside the tet. */
@@ -28,6 +40,98 @@ static int faces_through(const struct tr_mesh *m, const uint32_t *tv, const tr_p
       mask |= 1 << k;
   }
   return mask;
+}
+
+/* The point where ab crosses the far end of a real pipel with a NOD end at a (at_a) or
+ * the near end of one with a NOD end at b: every such pipel has the same one, the first
+ * (last) point where ab leaves a vertex's star. 0 on success, -1 if there is none. */
+static int end_crossing(const struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
+                        int at_a, tr_qpoint *out)
+{
+  for (uint32_t i = 0; i < p->n; i++) {
+    const tr_pipel *pl = &p->pl[i];
+    if (pl->ghost)
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)pl->iEle;
+    int t1 = pl->type & 3, t2 = (pl->type >> 2) & 3;
+    int ty = at_a ? t2 : t1, code = at_a ? pl->iCod2 : pl->iCod1;
+    if ((at_a ? t1 : t2) != TR_NOD || tv[at_a ? pl->iCod1 : pl->iCod2] != (at_a ? a : b))
+      continue;
+    if (ty != TR_EDG && ty != TR_FAC)
+      continue;
+    tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b);
+    if (ty == TR_EDG) {
+      tr_point u = tr_mesh_point(m, tv[tr_ecode_start(code)]),
+               w = tr_mesh_point(m, tv[tr_ecode_end(code)]);
+      return tr_construct_line_line(&pa, &pb, &u, &w, out);
+    }
+    const uint8_t *f = tr_face_vtx[code];
+    tr_point u = tr_mesh_point(m, tv[f[0]]), v = tr_mesh_point(m, tv[f[1]]),
+             w = tr_mesh_point(m, tv[f[2]]);
+    return tr_construct_line_plane(&pa, &pb, &u, &v, &w, out);
+  }
+  return -1;
+}
+
+/* Moves q (the midpoint of ab) into the middle part of Pipe(ab) when it lies strictly
+ * inside an end piece (see the header). A dyadic t keeps the coordinates as short as
+ * those of nested midpoints (the midpoint of the two crossing points, built on Steiner
+ * points, passed the Steiner size guard within a few levels on a star). If the middle
+ * part is a single point (ab crosses one edge), q becomes that crossing; if it is
+ * shorter than 2^-TR_MIDDLE_BITS of ab, q stays the midpoint. */
+#define TR_MIDDLE_BITS 96
+static void middle_point(const struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
+                         tr_qpoint *q)
+{
+  tr_qpoint xa, xb;
+  tr_qpoint_init(&xa);
+  tr_qpoint_init(&xb);
+  if (end_crossing(m, a, b, p, 1, &xa) != 0 || end_crossing(m, a, b, p, 0, &xb) != 0)
+    goto done;
+  tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b);
+  int axis = tr_pipe_long_axis(&pa, &pb);
+  mpq_t ca, cb, len, ta, tb, t, step;
+  mpq_inits(ca, cb, len, ta, tb, t, step, NULL);
+  /* parameters along ab, exact: the coordinate on the dominant axis is monotone */
+  tr_point_get_q(&pa, axis, ca);
+  tr_point_get_q(&pb, axis, cb);
+  mpq_sub(len, cb, ca);
+  if (mpq_sgn(len) != 0) {
+    mpq_sub(ta, xa.c[axis], ca);
+    mpq_div(ta, ta, len);
+    mpq_sub(tb, xb.c[axis], ca);
+    mpq_div(tb, tb, len);
+    mpq_set_ui(t, 1, 2);
+    mpq_set_ui(step, 1, 4);
+    int found = 0;
+    for (int bits = 0; bits < TR_MIDDLE_BITS && !found; bits++) {
+      if (mpq_cmp(t, ta) < 0)
+        mpq_add(t, t, step);
+      else if (mpq_cmp(t, tb) > 0)
+        mpq_sub(t, t, step);
+      else
+        found = 1;
+      mpq_div_2exp(step, step, 1);
+    }
+    if (found && mpq_cmp_ui(t, 1, 2) != 0) {
+      for (int i = 0; i < 3; i++) {
+        tr_point_get_q(&pa, i, ca);
+        tr_point_get_q(&pb, i, cb);
+        mpq_sub(cb, cb, ca);
+        mpq_mul(cb, cb, t);
+        mpq_add(q->c[i], ca, cb);
+      }
+      tr_qpoint_update(q);
+    } else if (!found) {
+      tr_point px = tr_pt_q(&xa), py = tr_pt_q(&xb);
+      if (tr_equal_p(&px, &py))
+        tr_qpoint_set_point(q, &px);
+    }
+  }
+  mpq_clears(ca, cb, len, ta, tb, t, step, NULL);
+done:
+  tr_qpoint_clear(&xa);
+  tr_qpoint_clear(&xb);
 }
 
 tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
@@ -52,6 +156,7 @@ tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_
   mpq_clear(x);
   mpq_clear(y);
   tr_qpoint_update(q);
+  middle_point(m, a, b, p, q);
   tr_point pm = tr_pt_q(q);
   uint32_t id = m->nv; /* the id M gets if the split goes ahead */
   tr_u32buf old = {0}, newv = {0};

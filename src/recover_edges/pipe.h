@@ -83,9 +83,11 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
                             const struct tr_edgeset *cons, tr_segmemo *memo,
                             tr_edge_stats *st, int *done);
 
-/* Splits ab at its exact midpoint M (midsplit.c): the tets of Pipe(ab) whose closure
- * holds M are replaced by the cone from M. *done = 1 and *mid = M's id on success; the
- * mesh is unchanged otherwise. p must be the current Pipe(ab); it is stale afterwards. */
+/* Splits ab at one exact point M (midsplit.c): its midpoint, or, when that lies in the
+ * pipels at a or at b, the first point nested midpoints would reach between them; the
+ * tets of Pipe(ab) whose closure holds M are replaced by the cone from M. *done = 1 and
+ * *mid = M's id on success; the mesh is unchanged otherwise. p must be the current
+ * Pipe(ab); it is stale afterwards. */
 tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
                             uint32_t *mid, int *done);
 
@@ -100,5 +102,23 @@ tr_status tr_recover_edge(struct tr_mesh *m, uint32_t a, uint32_t b, tr_edge_sta
 
 /* 1 iff {a,b} is an edge of the mesh (searches Ball(a)). */
 tr_status tr_mesh_has_edge(struct tr_mesh *m, uint32_t a, uint32_t b, int *yes);
+
+/* The axis along which the nearest doubles of a and b differ most: exact coordinate
+ * comparisons on it order the points of segment ab (any axis where a and b differ
+ * would; the longest one is the best conditioned). */
+static inline int tr_pipe_long_axis(const tr_point *a, const tr_point *b)
+{
+  int axis = 0;
+  double best = -1;
+  for (int k = 0; k < 3; k++) {
+    double d = b->d[k] - a->d[k];
+    d = d < 0 ? -d : d;
+    if (d > best) {
+      best = d;
+      axis = k;
+    }
+  }
+  return axis;
+}
 
 #endif

@@ -6,13 +6,14 @@
  * split at existing vertices it passes through); pass 2 recovers what is left with Steiner
  * points: a sub-segment whose pipe has more than two real tets is first split at its exact
  * midpoint (TetGen's way, one point, tr_pipe_split_mid; at most TR_EDGE_MIDPOINT_SPLITS
- * per input edge), Lawson flips restore the local Delaunay property around the midpoint
- * (lawson.h: without them the mesh around the segment stays as bad as the split left it
- * and the splits pile up; with them the halves tend to become Delaunay edges and appear
- * by themselves, as in Shewchuk's segment recovery), and both halves go through the swaps
- * and flips again; short pipes and what is left after the budget go pipel by pipel, the
- * paper's decomposition (a sub-segment whose pipe admits a swap by then still takes the
- * swap: it costs no point).
+ * per input edge; when the midpoint lies in the end tets of the pipe, at a point between
+ * them instead, see midsplit.c), Lawson flips restore the local Delaunay property around
+ * the new point (lawson.h: without them the mesh around the segment stays as bad as the
+ * split left it and the splits pile up; with them the halves tend to become Delaunay
+ * edges and appear by themselves, as in Shewchuk's segment recovery), and both halves go
+ * through the swaps and flips again; short pipes and what is left after the budget go
+ * pipel by pipel, the paper's decomposition (a sub-segment whose pipe admits a swap by
+ * then still takes the swap: it costs no point).
  * tr_recover_edges_ex can switch the flips, the midpoint splits and the Lawson flips off
  * (the first two off: the paper's algorithm exactly).
  *
@@ -108,16 +109,7 @@ static tr_status walk_chain(ctx *c, uint32_t a, uint32_t b, tr_u32buf *out)
   tr_point pb = tr_mesh_point(m, b);
   /* the dominant axis of ab orders points along it exactly */
   tr_point pa = tr_mesh_point(m, a);
-  int axis = 0;
-  double best = -1;
-  for (int k = 0; k < 3; k++) {
-    double d = pb.d[k] - pa.d[k];
-    d = d < 0 ? -d : d;
-    if (d > best) {
-      best = d;
-      axis = k;
-    }
-  }
+  int axis = tr_pipe_long_axis(&pa, &pb);
   int dir = tr_cmp_coord_p(&pa, &pb, axis);
   if (dir == 0)
     return tr_error(TR_ERR_INTERNAL, "walk %u-%u: no separating axis", a, b);

@@ -1,22 +1,23 @@
 #!/bin/sh
-# Regression (fuzz_pipeline timeout): a star whose Steiner points no nearby doubles can
-# all make positive. The rounding repair must stop at its budget with a clear error and
-# exit status 9 for a double output, while the exact output is written and passes the
-# exact check. The star is one of fuzz_pipeline's kind (n = 2) that still hits the budget
-# after the recovery changes it went through. usage: round_budget.sh TETREC SURFACE WORKDIR
+# The rounding repair stops at its budget (once a fuzz_pipeline timeout: the search ran
+# for minutes on a cluster of Steiner points) with a clear error and exit status 9 for a
+# double output, while the exact output is written and passes the exact check. The star
+# (fuzz_pipeline's kind, n = 2) needs one repaired Steiner point: with --round-budget 1
+# the repair runs out; with the default budget the same input is written as doubles.
+# usage: round_budget.sh TETREC SURFACE WORKDIR
 set -u
 tetrec=$1
 in=$2
 work=$3
 mkdir -p "$work"
-rm -f "$work/double.mesh" "$work/exact.node" "$work/exact.ele" "$work/exact.face" # no stale outputs
+rm -f "$work/double.mesh" "$work/exact.node" "$work/exact.ele" "$work/exact.face" "$work/stats.json"
 fail=0
 say() { echo "FAIL: $*" >&2; fail=1; }
 
-"$tetrec" mesh "$in" -o "$work/double.mesh" 2>"$work/mesh.log"
+"$tetrec" mesh "$in" -o "$work/double.mesh" --round-budget 1 2>"$work/mesh.log"
 rc=$?
 [ $rc -eq 9 ] || say "double output: exit $rc, want 9: $(tail -2 "$work/mesh.log")"
-grep -q "the exact mesh is valid: write it with --exact" "$work/mesh.log" ||
+grep -q "the repair's budget; the exact mesh is valid: write it with --exact" "$work/mesh.log" ||
   say "the error does not say how to get a valid mesh: $(tail -2 "$work/mesh.log")"
 [ -s "$work/double.mesh" ] && say "an invalid double mesh was written"
 "$tetrec" mesh "$in" -o "$work/exact.node" --exact 2>"$work/exact.log" ||
@@ -24,4 +25,16 @@ grep -q "the exact mesh is valid: write it with --exact" "$work/mesh.log" ||
 "$tetrec" check "$in" "$work/exact.node" 2>"$work/check.log" ||
   say "check of the exact mesh exited $?: $(cat "$work/check.log")"
 grep -q 'conforms exactly' "$work/check.log" || say "check does not say it conforms exactly"
+"$tetrec" mesh "$in" -o "$work/double.mesh" --stats "$work/stats.json" 2>"$work/default.log" ||
+  say "default budget: exit $?: $(tail -2 "$work/default.log")"
+grep -q '"rounding_repairs": 1,' "$work/stats.json" ||
+  say "the star no longer needs exactly one repair: pick another (fuzz_pipeline stars)"
+"$tetrec" check "$in" "$work/double.mesh" 2>"$work/check2.log" ||
+  say "check of the repaired double mesh exited $?: $(cat "$work/check2.log")"
+for bad in 0 -1 1e6 12x ""; do
+  "$tetrec" mesh "$in" -o "$work/bad.mesh" --round-budget "$bad" 2>"$work/bad.log"
+  rc=$?
+  [ $rc -eq 1 ] && grep -q "round-budget needs a whole number" "$work/bad.log" ||
+    say "--round-budget '$bad': exit $rc, want 1 with a message: $(cat "$work/bad.log")"
+done
 exit $fail

@@ -183,7 +183,7 @@ static void t_inverting(void)
   uint32_t first;
   EXPECT(tr_round_count_nonpositive(m, &first) == 1, "inverting: expected 1 bad tet");
   uint64_t rep = 0;
-  tr_status s = tr_round_steiner(m, &rep);
+  tr_status s = tr_round_steiner(m, 0, &rep);
   EXPECT(s == TR_OK, "inverting: %s", tr_last_error());
   EXPECT(rep == 1, "inverting: %llu repairs, expected 1", (unsigned long long)rep);
   EXPECT(tr_round_count_nonpositive(m, NULL) == 0, "inverting: tets still non-positive");
@@ -211,7 +211,7 @@ static void t_no_repair(void)
   double before[3];
   memcpy(before, m->xyz + 3 * (size_t)p, sizeof before);
   uint64_t rep = 7;
-  tr_status s = tr_round_steiner(m, &rep);
+  tr_status s = tr_round_steiner(m, 0, &rep);
   EXPECT(s == TR_OK, "no_repair: %s", tr_last_error());
   EXPECT(rep == 0, "no_repair: %llu repairs", (unsigned long long)rep);
   EXPECT(!memcmp(before, m->xyz + 3 * (size_t)p, sizeof before) &&
@@ -250,7 +250,7 @@ static void t_interacting(void)
     split(m, t, q);
     validate("interacting (nearest)", m, surf, 0);
     uint64_t rep = 0;
-    tr_status s = tr_round_steiner(m, &rep);
+    tr_status s = tr_round_steiner(m, 0, &rep);
     EXPECT(s == TR_OK, "interacting: %s", tr_last_error());
     EXPECT(rep >= 1 && rep <= 2, "interacting: %llu repairs", (unsigned long long)rep);
     EXPECT(tr_round_count_nonpositive(m, NULL) == 0, "interacting: tets still non-positive");
@@ -278,7 +278,7 @@ static void t_unrepairable(void)
   tr_mesh_add_steiner(m, centroid(four), &p);
   split(m, 0, p);
   uint64_t rep = 0;
-  tr_status s = tr_round_steiner(m, &rep);
+  tr_status s = tr_round_steiner(m, 0, &rep);
   EXPECT(s == TR_ERR_INVALID_MESH, "unrepairable: status %s", tr_status_name(s));
   char want[64];
   snprintf(want, sizeof want, "Steiner point %u near (", p);

@@ -45,16 +45,7 @@ static int check_chain(struct tr_mesh *m, uint32_t a, uint32_t b)
   }
   on[n++] = b;
   /* insertion sort along the dominant axis of ab (exact coordinate comparisons) */
-  int axis = 0;
-  double best = -1;
-  for (int i = 0; i < 3; i++) {
-    double d = pb.d[i] - pa.d[i];
-    d = d < 0 ? -d : d;
-    if (d > best) {
-      best = d;
-      axis = i;
-    }
-  }
+  int axis = tr_pipe_long_axis(&pa, &pb);
   int dir = tr_cmp_coord_p(&pa, &pb, axis);
   for (uint32_t i = 2; i + 1 < n; i++)
     for (uint32_t j = i; j > 1; j--) {
