@@ -171,15 +171,6 @@ static tr_isect clip(const clipper *c)
 
 /* ---------------- helpers ---------------- */
 
-/* 1 iff p and q are the same stored point (the same coordinates, hence any orientation
- * with both is exactly 0). The callers classify mesh segments against mesh tets, where an
- * end of the segment is often a vertex of the tet: the exact zero would otherwise cost a
- * filter failure and an exact stage (GMP for Steiner points) every time. */
-static int same_pt(const tr_point *p, const tr_point *q)
-{
-  return p->d == q->d && p->q == q->q;
-}
-
 static int collinear(const tr_point *p, const tr_point *a, const tr_point *b)
 {
   for (int k = 0; k < 3; k++)
@@ -350,8 +341,13 @@ tr_isect tr_classify_segment_triangle(const tr_point *a, const tr_point *b,
   int s, k = tri_axis(t0, t1, t2, &s);
   if (k < 0)
     return r; /* degenerate triangle: documented as no intersection */
-  int oa = same_pt(a, t0) || same_pt(a, t1) || same_pt(a, t2) ? 0 : tr_orient3d_p(t0, t1, t2, a);
-  int ob = same_pt(b, t0) || same_pt(b, t1) || same_pt(b, t2) ? 0 : tr_orient3d_p(t0, t1, t2, b);
+  /* an end that is a corner of t is on its plane: no predicate (tr_pt_same) */
+  int oa = tr_pt_same(a, t0) || tr_pt_same(a, t1) || tr_pt_same(a, t2)
+               ? 0
+               : tr_orient3d_p(t0, t1, t2, a);
+  int ob = tr_pt_same(b, t0) || tr_pt_same(b, t1) || tr_pt_same(b, t2)
+               ? 0
+               : tr_orient3d_p(t0, t1, t2, b);
   if (oa * ob > 0)
     return r;
   if (oa != 0 && ob != 0) {
@@ -419,7 +415,8 @@ static int nsign_tet(const clipper *c, int i, int j)
     if (v != i && v != j)
       kl[n++] = v;
   const tr_point *tk = c->t[kl[0]], *tl = c->t[kl[1]];
-  if (same_pt(tk, c->a) || same_pt(tk, c->b) || same_pt(tl, c->a) || same_pt(tl, c->b))
+  if (tr_pt_same(tk, c->a) || tr_pt_same(tk, c->b) || tr_pt_same(tl, c->a) ||
+      tr_pt_same(tl, c->b))
     return 0;
   return parity4(i, j, kl[0], kl[1]) * tr_orient3d_p(tk, tl, c->b, c->a);
 }
@@ -429,7 +426,7 @@ static int g_tet(const tr_point *const t[4], int i, const tr_point *x)
 {
   const tr_point *p[4] = {t[0], t[1], t[2], t[3]};
   for (int j = 0; j < 4; j++)
-    if (j != i && same_pt(t[j], x))
+    if (j != i && tr_pt_same(t[j], x))
       return 0;
   p[i] = x;
   return tr_orient3d_p(p[0], p[1], p[2], p[3]);

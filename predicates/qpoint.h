@@ -51,6 +51,15 @@ static inline tr_point tr_pt_q(const tr_qpoint *q)
   return p;
 }
 
+/* 1 iff p and q are the same stored point (same double array or same rational), hence
+ * equal: a sufficient test without arithmetic. Predicates on a repeated point are exactly
+ * 0, but reaching that zero costs a failed filter and an exact stage, so callers that
+ * often pass a vertex twice test this first. */
+static inline int tr_pt_same(const tr_point *p, const tr_point *q)
+{
+  return p->d == q->d && p->q == q->q;
+}
+
 void tr_qpoint_init(tr_qpoint *q);
 void tr_qpoint_clear(tr_qpoint *q);
 void tr_qpoint_set_d(tr_qpoint *q, const double d[3]);

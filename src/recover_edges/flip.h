@@ -111,18 +111,4 @@ int tr_sxset_add(tr_sxset *s, const uint32_t v[3]);
 int tr_sxset_has(const tr_sxset *s, const uint32_t v[3]);
 void tr_sxset_free(tr_sxset *s);
 
-/* 1 iff a and b are the same edge (v[2] == TR_NONE) or the same triangle, whatever the
- * order of their vertices: the flip drivers list each crossed edge and face once. */
-static inline int tr_same_simplex(const uint32_t a[3], const uint32_t b[3])
-{
-  if ((a[2] == TR_NONE) != (b[2] == TR_NONE))
-    return 0;
-  if (a[2] == TR_NONE)
-    return (a[0] == b[0] && a[1] == b[1]) || (a[0] == b[1] && a[1] == b[0]);
-  for (int i = 0; i < 3; i++)
-    if (a[i] != b[0] && a[i] != b[1] && a[i] != b[2])
-      return 0;
-  return 1;
-}
-
 #endif
