@@ -105,9 +105,8 @@ static tr_status vertex_side(tr_vcache *c, uint32_t v, const tr_point *p, const 
       return TR_OK;
     }
   }
-  if ((p->d == e->d && p->q == e->q) || (p->d == f->d && p->q == f->q) ||
-      (p->d == g->d && p->q == g->q)) {
-    /* a corner of the facet (the same stored point): an exact zero costs the most */
+  if (tr_pt_same(p, e) || tr_pt_same(p, f) || tr_pt_same(p, g)) {
+    /* a corner of the facet: an exact zero costs the most */
     *side = 0;
     *in = 1;
   } else {
@@ -275,6 +274,23 @@ void tr_cluster_memo_free(tr_cluster_memo *c)
   vcache_free(&c->v);
   tr_edgeset_free(&c->e);
   memset(c, 0, sizeof *c);
+}
+
+int tr_cluster_side(const struct tr_mesh *m, uint32_t v, const tr_point *e, const tr_point *f,
+                    const tr_point *g, tr_cluster_memo *mc)
+{
+  tr_point p = tr_mesh_point(m, v);
+  int side, in;
+  if (vertex_side(&mc->v, v, &p, e, f, g, &side, &in) != TR_OK)
+    vertex_side(NULL, v, &p, e, f, g, &side, &in); /* no room to keep it: just compute */
+  return side;
+}
+
+int tr_cluster_crossing(const struct tr_mesh *m, uint32_t u, uint32_t v, const tr_point *e,
+                        const tr_point *f, const tr_point *g, tr_cluster_memo *mc)
+{
+  tr_point pu = tr_mesh_point(m, u), pv = tr_mesh_point(m, v);
+  return crossing_memo(mc, u, v, &pu, &pv, e, f, g);
 }
 
 tr_status tr_cluster_collect(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,

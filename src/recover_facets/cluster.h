@@ -75,6 +75,15 @@ typedef struct tr_cluster_memo {
   tr_edgeset e; /* edge {u, v} -> crossing_in_triangle + 1 */
 } tr_cluster_memo;
 void tr_cluster_memo_free(tr_cluster_memo *c);
+/* The memo's answers one by one (e, f, g: the facet's points): the side of vertex v of
+ * the plane efg (orient3d sign), and for an edge uv whose ends lie strictly on both sides
+ * whether it crosses the triangle: 1 strictly inside, 0 outside, -1 on its boundary.
+ * The facet flip driver measures its attempts with them, so they are evaluated once for
+ * the measure and the collection together. */
+int tr_cluster_side(const struct tr_mesh *m, uint32_t v, const tr_point *e, const tr_point *f,
+                    const tr_point *g, tr_cluster_memo *mc);
+int tr_cluster_crossing(const struct tr_mesh *m, uint32_t u, uint32_t v, const tr_point *e,
+                        const tr_point *f, const tr_point *g, tr_cluster_memo *mc);
 /* tr_cluster_collect with the answers taken from / added to mc (a memo of facet efg). */
 tr_status tr_cluster_collect_memo(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g,
                                   tr_clusterel **out, uint32_t *n, tr_cluster_memo *mc);

@@ -79,115 +79,13 @@ static tr_status list(const struct tr_mesh *m, const tr_clusterel *cl, uint32_t 
   return TR_OK;
 }
 
-/* Memo of exact results for one facet: the measure is evaluated on the same vertices and
- * edges over and over (every flip made and undone re-measures the old and new tets), and
- * the points never move during flips, so each answer is computed once. Keys: a vertex v
- * as v + 1 (high word 0), an edge {x < y} as (x + 1) << 32 | y (high word nonzero). Open
- * addressing, linear probing, key 0 = empty. On allocation failure the memo is skipped. */
-typedef struct memo {
-  uint64_t *key;
-  int8_t *val;
-  uint32_t cap, n; /* cap: 0 or a power of two */
-} memo;
-
-static uint32_t memo_slot(const memo *h, uint64_t k)
-{
-  uint64_t x = k * 0x9E3779B97F4A7C15ull;
-  uint32_t i = (uint32_t)(x >> 32) & (h->cap - 1);
-  while (h->key[i] && h->key[i] != k)
-    i = (i + 1) & (h->cap - 1);
-  return i;
-}
-
-static int memo_get(const memo *h, uint64_t k, int *v)
-{
-  if (!h->cap)
-    return 0;
-  uint32_t i = memo_slot(h, k);
-  if (!h->key[i])
-    return 0;
-  *v = h->val[i];
-  return 1;
-}
-
-static void memo_put(memo *h, uint64_t k, int v)
-{
-  if (2 * (h->n + 1) > h->cap) {
-    uint32_t nc = h->cap ? 2 * h->cap : 256;
-    memo g = {calloc(nc, sizeof *g.key), malloc(nc * sizeof *g.val), nc, 0};
-    if (!g.key || !g.val) {
-      free(g.key);
-      free(g.val);
-      return;
-    }
-    for (uint32_t i = 0; i < h->cap; i++)
-      if (h->key[i]) {
-        uint32_t j = memo_slot(&g, h->key[i]);
-        g.key[j] = h->key[i];
-        g.val[j] = h->val[i];
-        g.n++;
-      }
-    free(h->key);
-    free(h->val);
-    *h = g;
-  }
-  uint32_t i = memo_slot(h, k);
-  if (!h->key[i]) {
-    h->key[i] = k;
-    h->n++;
-  }
-  h->val[i] = (int8_t)v;
-}
-
-static void memo_free(memo *h)
-{
-  free(h->key);
-  free(h->val);
-  memset(h, 0, sizeof *h);
-}
-
+/* The facet's points and its cluster memo, which the measure shares with the cluster
+ * collection: every flip made and undone re-measures the old and new tets, and the
+ * points never move during flips, so each exact answer is computed once. */
 typedef struct tri {
   tr_point e, f, g;
-  memo side; /* vertex: side of plane efg; edge: 1 iff it crosses the open triangle */
+  tr_cluster_memo cm;
 } tri;
-
-static int o3(const tr_point *a, const tr_point *b, const tr_point *c, const tr_point *d)
-{
-  return tr_orient3d_p(a, b, c, d);
-}
-
-static int vertex_side(tri *T, const struct tr_mesh *m, uint32_t v)
-{
-  int s;
-  uint64_t k = (uint64_t)v + 1;
-  if (memo_get(&T->side, k, &s))
-    return s;
-  tr_point p = tr_mesh_point(m, v);
-  s = o3(&T->e, &T->f, &T->g, &p);
-  memo_put(&T->side, k, s);
-  return s;
-}
-
-/* Edge xy with ends strictly on both sides: does its line pass strictly inside the three
- * sides? Symmetric in x, y (swapping them flips all three signs). */
-static int edge_crosses(tri *T, const struct tr_mesh *m, uint32_t x, uint32_t y)
-{
-  if (x > y) {
-    uint32_t t = x;
-    x = y;
-    y = t;
-  }
-  int r;
-  uint64_t k = ((uint64_t)x + 1) << 32 | y;
-  if (memo_get(&T->side, k, &r))
-    return r;
-  tr_point px = tr_mesh_point(m, x), py = tr_mesh_point(m, y);
-  int s1 = o3(&px, &py, &T->e, &T->f), s2 = o3(&px, &py, &T->f, &T->g),
-      s3 = o3(&px, &py, &T->g, &T->e);
-  r = s1 != 0 && s1 == s2 && s2 == s3;
-  memo_put(&T->side, k, r);
-  return r;
-}
 
 /* 1 iff the tet with vertices v has an edge crossing the open triangle at an interior
  * point of the edge (a crossing clusterel, cluster.h): its ends strictly on both sides of
@@ -199,12 +97,12 @@ static int crossing_measure(void *ud, const struct tr_mesh *m, const uint32_t v[
     return 0;
   int side[4];
   for (int k = 0; k < 4; k++)
-    side[k] = vertex_side(T, m, v[k]);
+    side[k] = tr_cluster_side(m, v[k], &T->e, &T->f, &T->g, &T->cm);
   for (int i = 0; i < 6; i++) {
     int x = tr_edge_vtx[i][0], y = tr_edge_vtx[i][1];
     if (side[x] * side[y] >= 0)
       continue;
-    if (edge_crosses(T, m, v[x], v[y]))
+    if (tr_cluster_crossing(m, v[x], v[y], &T->e, &T->f, &T->g, &T->cm) == 1)
       return 1;
   }
   return 0;
@@ -216,13 +114,15 @@ tr_status tr_facet_try_flips(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t
 {
   *changed = 0;
   *clear = 0;
-  tri T = {tr_mesh_point(m, e), tr_mesh_point(m, f), tr_mesh_point(m, g), {0}};
+  tri T;
+  memset(&T, 0, sizeof T);
+  T.e = tr_mesh_point(m, e);
+  T.f = tr_mesh_point(m, f);
+  T.g = tr_mesh_point(m, g);
   tr_clusterel *cl = NULL;
   uint32_t ncl = 0, n = 0, cap = 0, ncross = 0;
   fcand *cs = NULL;
   tr_sxset seen = {0}, failed = {0};
-  tr_cluster_memo cm;
-  memset(&cm, 0, sizeof cm);
   tr_flip_journal j;
   memset(&j, 0, sizeof j);
   j.measure = crossing_measure;
@@ -235,7 +135,7 @@ tr_status tr_facet_try_flips(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t
     skipped = 0;
     free(cl);
     cl = NULL;
-    if ((s = tr_cluster_collect_memo(m, e, f, g, &cl, &ncl, &cm)) != TR_OK ||
+    if ((s = tr_cluster_collect_memo(m, e, f, g, &cl, &ncl, &T.cm)) != TR_OK ||
         (s = list(m, cl, ncl, &cs, &n, &cap, &seen, &ncross)) != TR_OK)
       break;
     if (ncross == 0) {
@@ -286,8 +186,7 @@ tr_status tr_facet_try_flips(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t
   tr_flip_journal_free(&j);
   tr_sxset_free(&seen);
   tr_sxset_free(&failed);
-  tr_cluster_memo_free(&cm);
-  memo_free(&T.side);
+  tr_cluster_memo_free(&T.cm);
   free(cl);
   free(cs);
   return s;
