@@ -108,8 +108,12 @@ tr_status tr_mesh_add_steiner(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx);
  * (an intersection's coordinates have the sizes of its inputs added up), and past
  * TR_STEINER_MAX_BITS (numerators and denominators of the three coordinates together)
  * every predicate on them takes seconds. Past it: TR_ERR_UNSUPPORTED with a message, q
- * not taken (the caller frees it), instead of a run that does not end. */
-#define TR_STEINER_MAX_BITS 8192
+ * not taken (the caller frees it), instead of a run that does not end. Subnormal input
+ * coordinates have 1,074-bit denominators, so their Steiner points start large: on
+ * Chazelle's polyhedron moved by ulps (zeros moved to subnormals) a facet Steiner point
+ * built on edge Steiner points needs 24,724 bits and the whole recovery 1.3 s; the limit
+ * leaves that a margin of 2.6. */
+#define TR_STEINER_MAX_BITS 65536
 tr_status tr_mesh_add_constructed(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx);
 /* The exact point of vertex v (v must not be TR_GHOST). */
 static inline tr_point tr_mesh_point(const struct tr_mesh *m, uint32_t v)

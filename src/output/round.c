@@ -1,5 +1,6 @@
 /* Rounding Steiner points to doubles and its repair: see round.h. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -293,6 +294,33 @@ static int one_round(const search_ctx *c, int pairs, uint32_t *fail_v, uint32_t 
   return progress;
 }
 
+uint64_t tr_round_nearest(struct tr_mesh *m)
+{
+  for (uint32_t v = 0; m->vq && v < m->nv; v++)
+    if (steiner(m, v))
+      memcpy(m->xyz + 3 * (size_t)v, m->vq[v]->near, 3 * sizeof(double));
+  return tr_round_count_nonpositive(m, NULL);
+}
+
+/* Why tet tv may have no double position, when a plain reason exists: two of its
+ * vertices are distinct exact points with the same nearest double (no rounding to the
+ * nearest can separate them, and moving one by ulps leaves the tet thinner than an ulp). */
+static void explain(const struct tr_mesh *m, const uint32_t *tv, char *buf, size_t n)
+{
+  buf[0] = '\0';
+  for (int i = 0; i < 4; i++)
+    for (int j = i + 1; j < 4; j++) {
+      const tr_qpoint *a = m->vq ? m->vq[tv[i]] : NULL, *b = m->vq ? m->vq[tv[j]] : NULL;
+      const double *na = a ? a->near : m->xyz + 3 * (size_t)tv[i],
+                   *nb = b ? b->near : m->xyz + 3 * (size_t)tv[j];
+      if ((a || b) && memcmp(na, nb, 3 * sizeof(double)) == 0) {
+        snprintf(buf, n, "; vertices %u and %u are distinct exact points with the same "
+                 "nearest double", tv[i], tv[j]);
+        return;
+      }
+    }
+}
+
 tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaired)
 {
   *repaired = 0;
@@ -300,10 +328,7 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
     return TR_OK;
   /* Start from the nearest doubles whatever xyz held, so the result depends only on the
    * exact mesh. */
-  for (uint32_t v = 0; v < m->nv; v++)
-    if (steiner(m, v))
-      memcpy(m->xyz + 3 * (size_t)v, m->vq[v]->near, 3 * sizeof(double));
-  if (tr_round_count_nonpositive(m, NULL) == 0)
+  if (tr_round_nearest(m) == 0)
     return TR_OK;
   uint64_t work = 0;
   star_index S = {NULL, NULL, &work, budget ? budget : TR_ROUND_BUDGET};
@@ -334,12 +359,16 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
     uint64_t nbad = tr_round_count_nonpositive(m, &bad);
     if (nbad > 0) {
       const uint32_t *tv = m->tv + 4 * (size_t)bad;
+      char why[160];
+      explain(m, tv, why, sizeof why);
       st = tr_error(TR_ERR_INVALID_MESH,
                     "rounding Steiner points to doubles: %llu tets stay flat or inverted (the "
-                    "first: tet %u (%u %u %u %u)) after %llu star checks, the repair's budget; "
-                    "the exact mesh is valid: write it with --exact to a .node file",
+                    "first: tet %u (%u %u %u %u) near (%.17g, %.17g, %.17g)%s) after %llu star "
+                    "checks, the repair's budget; the exact mesh is valid: write it with "
+                    "--exact to a .node file",
                     (unsigned long long)nbad, bad, tv[0], tv[1], tv[2], tv[3],
-                    (unsigned long long)S.budget);
+                    m->xyz[3 * (size_t)tv[0]], m->xyz[3 * (size_t)tv[0] + 1],
+                    m->xyz[3 * (size_t)tv[0] + 2], why, (unsigned long long)S.budget);
     }
   } else if (st == TR_OK && fail_v != TR_NONE) {
     const double *x = m->vq[fail_v]->near;

@@ -49,6 +49,10 @@
  * points are never changed. */
 tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaired);
 
+/* Puts every Steiner point of m at its nearest double, without repair; returns
+ * tr_round_count_nonpositive(m, NULL). */
+uint64_t tr_round_nearest(struct tr_mesh *m);
+
 /* Number of kept tets of m that are not strictly positive on the doubles m->xyz (exact
  * orient3d on doubles); *first (may be NULL) = the first one, TR_NONE if none. */
 uint64_t tr_round_count_nonpositive(const struct tr_mesh *m, uint32_t *first);

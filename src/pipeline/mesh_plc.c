@@ -123,15 +123,19 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   sides = NULL;
   if (st == TR_OK)
     st = tr_pipeline_compact(m, &res);
-  if (st == TR_OK) {
+  if (st == TR_OK && (flags & TR_PIPE_KEEP_EXACT)) {
+    /* The caller writes the exact points: the repair would only move doubles nobody
+     * prints, and where no doubles exist it searches for its whole budget (35 s of the
+     * 37 s of Chazelle's polyhedron moved by ulps, against 1.3 s of recovery). */
+    uint64_t flat = tr_round_nearest(res);
+    if (flat && opt.verbose >= 1)
+      fprintf(stderr,
+              "tetrec: warning: %llu tets are flat or inverted with the Steiner points at "
+              "their nearest doubles: only the exact output is valid\n",
+              (unsigned long long)flat);
+  } else if (st == TR_OK) {
     st = tr_round_steiner(res, opt.round_budget, &stats->rounding_repairs);
-    if (st == TR_ERR_INVALID_MESH && (flags & TR_PIPE_KEEP_EXACT)) {
-      /* the caller writes the exact points: the mesh it gets is valid */
-      if (opt.verbose >= 1)
-        fprintf(stderr, "tetrec: warning: %s; only the exact output is valid\n",
-                tr_last_error());
-      st = TR_OK;
-    } else if (st == TR_OK && stats->rounding_repairs && opt.verbose >= 1)
+    if (st == TR_OK && stats->rounding_repairs && opt.verbose >= 1)
       fprintf(stderr,
               "tetrec: %llu Steiner points moved off their nearest double so that every "
               "tet is positive in doubles (exact positions: --exact)\n",

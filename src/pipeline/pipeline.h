@@ -26,8 +26,9 @@ tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *opt, tr_mesh **out
  * positions (vq); their doubles (xyz, what the writers print) are the nearest doubles,
  * moved where needed so that every tet is strictly positive in doubles
  * (src/output/round.h; stats->rounding_repairs counts the moved points). When no such
- * doubles are found the call fails with TR_ERR_INVALID_MESH, unless TR_PIPE_KEEP_EXACT:
- * then the mesh is returned (its exact points are valid) and a warning is printed. */
+ * doubles are found the call fails with TR_ERR_INVALID_MESH. With TR_PIPE_KEEP_EXACT
+ * there is no repair: the doubles are the nearest ones, and when that leaves a tet flat
+ * or inverted a warning is printed (the exact points are valid). */
 enum {
   TR_PIPE_KEEP_EXACT = 1u << 0 /* the caller writes exact coordinates (--exact .node) */
 };

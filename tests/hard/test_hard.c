@@ -3,7 +3,9 @@
  * passes the mesh validator (topology, exact orientation; Euler when the domain is a
  * ball), the exact conformity validator with the exact expected volume, and has the
  * expected number of regions; an invalid one must fail with the expected status and a
- * message that names the culprits. `test_hard --files DIR` writes every case with the
+ * message that names the culprits. With --exact the mesh keeps its exact Steiner points
+ * and the doubles are not repaired (tetrec mesh --exact to a .node file); the validators
+ * are exact either way. `test_hard --files DIR` writes every case with the
  * generator's writer, reads it back and checks the doubles survive bit for bit. */
 #include <gmp.h>
 #include <stdio.h>
@@ -20,6 +22,12 @@
 
 #include "../pipeline/texpect.h"
 
+/* How run_case meshes: flags (TR_PIPE_KEEP_EXACT for --exact: the exact mesh is checked
+ * and doubles that cannot be repaired are no failure) and the rounding budget (0: the
+ * default). */
+static unsigned run_flags;
+static uint64_t run_budget;
+
 static void run_case(const hard_case *c)
 {
   tr_plc *plc = NULL;
@@ -35,10 +43,11 @@ static void run_case(const hard_case *c)
   tr_options_default(&opt);
   opt.verbose = 0;
   opt.allow_open = c->allow_open;
+  opt.round_budget = run_budget;
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
   tr_stats st;
-  s = tr_mesh_plc_ex(plc, &opt, &m, &st, &used);
+  s = tr_mesh_plc_flags(plc, &opt, &m, &st, &used, run_flags);
   if (c->status != TR_OK) {
     const char *msg = tr_last_error();
     EXPECT(s == c->status, "%s: expected %s, got %s: %s", c->name, tr_status_name(c->status),
@@ -142,10 +151,18 @@ int main(int argc, char **argv)
 {
   if (argc == 3 && !strcmp(argv[1], "--files")) {
     files(argv[2]);
-  } else if (argc == 2) {
-    int found = 0;
-    for (int i = 0; i < hard_case_count(); i++) {
-      if (strcmp(argv[1], "all") && strcmp(argv[1], hard_case_name(i)))
+  } else if (argc >= 2) {
+    int found = 0, a = 1;
+    for (; a + 1 < argc; a++) {
+      if (!strcmp(argv[a], "--exact"))
+        run_flags |= TR_PIPE_KEEP_EXACT;
+      else if (!strcmp(argv[a], "--round-budget") && a + 2 < argc)
+        run_budget = strtoull(argv[++a], NULL, 10);
+      else
+        break;
+    }
+    for (int i = 0; i < hard_case_count() && a + 1 == argc; i++) {
+      if (strcmp(argv[a], "all") && strcmp(argv[a], hard_case_name(i)))
         continue;
       found = 1;
       hard_case c;
@@ -156,9 +173,10 @@ int main(int argc, char **argv)
       run_case(&c);
       hard_case_free(&c);
     }
-    EXPECT(found, "no case named %s", argv[1]);
+    EXPECT(found, "no case named %s", argv[argc - 1]);
   } else {
-    fprintf(stderr, "usage: test_hard CASE|all | test_hard --files DIR\n");
+    fprintf(stderr, "usage: test_hard [--exact] [--round-budget N] CASE|all | "
+                    "test_hard --files DIR\n");
     return 1;
   }
   if (failures)

@@ -361,6 +361,42 @@ static int ball_find_matches_brute_force(void)
   return 0;
 }
 
+/* A constructed Steiner point past TR_STEINER_MAX_BITS is refused with
+ * TR_ERR_UNSUPPORTED and left to the caller; one just under it is stored. The sizes are
+ * those of the coordinates' numerators and denominators summed over the three axes. */
+static int steiner_size_guard_refuses_past_the_limit(void)
+{
+  struct tr_mesh *m;
+  EXPECT_OK(tr_mesh_create(0, 0, &m), "create");
+  uint32_t id = TR_NONE, nv0;
+  static const double origin[3] = {0, 0, 0};
+  EXPECT_OK(tr_mesh_add_vertex(m, origin, &id), "input vertex");
+  nv0 = m->nv;
+  for (int over = 0; over < 2; over++) {
+    tr_qpoint *q = malloc(sizeof *q);
+    EXPECT(q != NULL, "malloc");
+    tr_qpoint_init(q);
+    /* x = 1/2^k with 1 + (k + 1) + 2 * 2 bits in all: at the limit, or one past it */
+    mp_bitcnt_t k = (mp_bitcnt_t)TR_STEINER_MAX_BITS - 6 + (mp_bitcnt_t)over;
+    mpq_set_ui(q->c[0], 1, 1);
+    mpq_div_2exp(q->c[0], q->c[0], k);
+    tr_qpoint_update(q);
+    tr_status s = tr_mesh_add_constructed(m, q, &id);
+    if (over) {
+      EXPECT(s == TR_ERR_UNSUPPORTED && strstr(tr_last_error(), "bits (limit"),
+             "one bit past the limit: %s: %s", tr_status_name(s), tr_last_error());
+      EXPECT(m->nv == nv0 + 1, "the refused point is not stored (%u vertices)", m->nv);
+      tr_qpoint_clear(q);
+      free(q);
+    } else {
+      EXPECT(s == TR_OK && id == nv0 && m->vq[id] == q, "at the limit: %s: %s",
+             tr_status_name(s), tr_last_error());
+    }
+  }
+  tr_mesh_destroy(m);
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2)
@@ -378,6 +414,8 @@ int main(int argc, char **argv)
     return ball_and_shell_match_brute_force();
   if (!strcmp(c, "ball_find"))
     return ball_find_matches_brute_force();
+  if (!strcmp(c, "steiner_guard"))
+    return steiner_size_guard_refuses_past_the_limit();
   if (!strcmp(c, "hilbert"))
     return hilbert_curve_is_continuous();
   fprintf(stderr, "unknown case %s\n", c);
