@@ -90,6 +90,8 @@ static void middle_point(const struct tr_mesh *m, uint32_t a, uint32_t b, const 
     goto done;
   tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b);
   int axis = tr_pipe_long_axis(&pa, &pb);
+  if (axis < 0)
+    goto done;
   mpq_t ca, cb, len, ta, tb, t, step;
   mpq_inits(ca, cb, len, ta, tb, t, step, NULL);
   /* parameters along ab, exact: the coordinate on the dominant axis is monotone */

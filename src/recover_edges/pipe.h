@@ -103,9 +103,14 @@ tr_status tr_recover_edge(struct tr_mesh *m, uint32_t a, uint32_t b, tr_edge_sta
 /* 1 iff {a,b} is an edge of the mesh (searches Ball(a)). */
 tr_status tr_mesh_has_edge(struct tr_mesh *m, uint32_t a, uint32_t b, int *yes);
 
-/* The axis along which the nearest doubles of a and b differ most: exact coordinate
- * comparisons on it order the points of segment ab (any axis where a and b differ
- * would; the longest one is the best conditioned). */
+/* An axis along which a and b differ exactly, a != b: exact coordinate comparisons on it
+ * order the points of segment ab. The axis where their nearest doubles differ most (the
+ * best conditioned; doubles that differ come from exact coordinates that differ, rounding
+ * is monotone), or, when the nearest doubles are the same point (Steiner points closer
+ * than an ulp on every axis: nested midpoints next to a sliver), the first axis where the
+ * exact coordinates differ. Segments parallel to a coordinate plane have an axis where a
+ * and b are exactly equal, so a fixed choice among equal doubles is not enough. -1 iff
+ * a == b. */
 static inline int tr_pipe_long_axis(const tr_point *a, const tr_point *b)
 {
   int axis = 0;
@@ -118,7 +123,12 @@ static inline int tr_pipe_long_axis(const tr_point *a, const tr_point *b)
       axis = k;
     }
   }
-  return axis;
+  if (best > 0)
+    return axis;
+  for (int k = 0; k < 3; k++)
+    if (tr_cmp_coord_p(a, b, k) != 0)
+      return k;
+  return -1;
 }
 
 #endif

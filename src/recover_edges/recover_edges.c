@@ -107,12 +107,12 @@ static tr_status walk_chain(ctx *c, uint32_t a, uint32_t b, tr_u32buf *out)
   out->n = 0;
   TR_CHECK(tr_u32buf_push(out, a));
   tr_point pb = tr_mesh_point(m, b);
-  /* the dominant axis of ab orders points along it exactly */
+  /* an axis where a and b differ orders the points of ab exactly */
   tr_point pa = tr_mesh_point(m, a);
   int axis = tr_pipe_long_axis(&pa, &pb);
+  if (axis < 0)
+    return tr_error(TR_ERR_INTERNAL, "walk %u-%u: the two ends are the same point", a, b);
   int dir = tr_cmp_coord_p(&pa, &pb, axis);
-  if (dir == 0)
-    return tr_error(TR_ERR_INTERNAL, "walk %u-%u: no separating axis", a, b);
   uint32_t v = a;
   for (uint32_t steps = 0; v != b; steps++) {
     if (steps > m->nv)

@@ -46,6 +46,11 @@ static int check_chain(struct tr_mesh *m, uint32_t a, uint32_t b)
   on[n++] = b;
   /* insertion sort along the dominant axis of ab (exact coordinate comparisons) */
   int axis = tr_pipe_long_axis(&pa, &pb);
+  if (axis < 0) {
+    fprintf(stderr, "chain %u-%u: the two ends are the same point\n", a, b);
+    free(on);
+    return 1;
+  }
   int dir = tr_cmp_coord_p(&pa, &pb, axis);
   for (uint32_t i = 2; i + 1 < n; i++)
     for (uint32_t j = i; j > 1; j--) {

@@ -13,6 +13,7 @@
  *   after each new segment and the validator runs after every run.
  * crossing: two crossing input edges must give TR_ERR_SELF_INTERSECT naming an edge.
  * badinput: unsorted / degenerate / out of range edges give TR_ERR_INPUT.
+ * equal_doubles: an edge between two Steiner points with the same nearest doubles.
  */
 #include <gmp.h>
 #include <math.h>
@@ -76,21 +77,6 @@ static uint32_t sort_edges(uint32_t *e, uint32_t n)
   return k;
 }
 
-static int dominant_axis(const tr_point *a, const tr_point *b)
-{
-  int axis = 0;
-  double best = -1;
-  for (int i = 0; i < 3; i++) {
-    double d = b->d[i] - a->d[i];
-    d = d < 0 ? -d : d;
-    if (d > best) {
-      best = d;
-      axis = i;
-    }
-  }
-  return axis;
-}
-
 /* Every chain: from a to b, consecutive vertices are mesh edges, interior vertices lie
  * exactly in the open segment (TR_EDG) strictly ordered along it. Every Steiner point
  * added is inside exactly one chain (count). brute: also no mesh vertex on a segment is
@@ -123,7 +109,7 @@ static int check_chains(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
       return 1;
     }
     tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b);
-    int axis = dominant_axis(&pa, &pb), dir = tr_cmp_coord_p(&pa, &pb, axis);
+    int axis = tr_pipe_long_axis(&pa, &pb), dir = axis < 0 ? 0 : tr_cmp_coord_p(&pa, &pb, axis);
     for (uint32_t k = 0; k + 1 < len; k++) {
       int yes;
       if (tr_mesh_has_edge(m, v[k], v[k + 1], &yes) != TR_OK || !yes) {
@@ -521,6 +507,102 @@ static int test_coverage(void)
   return bad;
 }
 
+/* Inserts the exact point q (taken) strictly inside the hull of the tiny mesh m: every
+ * real tet whose closure holds it is replaced by the cone from it over its faces that do
+ * not (brute force over the slots). */
+static int insert_point(struct tr_mesh *m, tr_qpoint *q, uint32_t *id)
+{
+  tr_point pq = tr_pt_q(q);
+  uint32_t old[64], newv[4 * 4 * 64], nold = 0, nnew = 0;
+  for (uint32_t t = 0; t < m->nt && nold < 64; t++) {
+    if (tr_tet_is_free(m, t) || tr_tet_is_ghost(m, t))
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)t;
+    int on[4], out = 0;
+    for (int k = 0; k < 4 && !out; k++) {
+      const uint8_t *f = tr_face_vtx[k];
+      tr_point a = tr_mesh_point(m, tv[f[0]]), b = tr_mesh_point(m, tv[f[1]]),
+               c = tr_mesh_point(m, tv[f[2]]);
+      int o = tr_orient3d_p(&a, &b, &c, &pq);
+      out = o < 0;
+      on[k] = o == 0;
+    }
+    if (out)
+      continue;
+    old[nold++] = t;
+    for (int k = 0; k < 4; k++) {
+      if (on[k])
+        continue;
+      for (int j = 0; j < 4; j++)
+        newv[4 * nnew + (uint32_t)j] = j == k ? m->nv : tv[j];
+      nnew++;
+    }
+  }
+  tr_status s = tr_mesh_add_steiner(m, q, id);
+  if (s == TR_OK)
+    s = tr_mesh_replace(m, old, nold, newv, nnew, NULL);
+  return s != TR_OK ? fail("insert a Steiner point", s) : 0;
+}
+
+/* Two Steiner points whose nearest doubles are the same point and whose x is exactly
+ * equal (the walk's old axis): p and q on the line x = y = 1/2 at z = 1 -+ 2^-70, on
+ * either side of the square's Delaunay diagonal, which segment pq crosses. Recovering pq
+ * and walking its chain need an axis where p and q differ exactly; each recovery path
+ * (defaults, flips off with midpoint splits, the paper's pipels) through the validator
+ * and the exhaustive chain checks. */
+static int test_equal_doubles(void)
+{
+  static const double xyz[] = {0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1, 0.4, 0.45, 0, 0.6, 0.55, 2};
+  static const tr_edge_recovery_opts opts[3] = {{0, 0, 0}, {1, 0, 1}, {1, 1, 0}};
+  static const char *const names[3] = {"equal doubles, defaults",
+                                       "equal doubles, no flips and no Lawson flips",
+                                       "equal doubles, no flips and no midpoint splits"};
+  int bad = 0;
+  for (int r = 0; r < 3 && !bad; r++) {
+    struct tr_mesh *m;
+    tr_status s = tr_delaunay_build(xyz, 6, &m);
+    if (s != TR_OK)
+      return fail("delaunay", s);
+    uint32_t e[2];
+    for (int i = 0; i < 2 && !bad; i++) {
+      tr_qpoint *q = malloc(sizeof *q);
+      tr_qpoint_init(q);
+      mpq_set_ui(q->c[0], 1, 2);
+      mpq_set_ui(q->c[1], 1, 2);
+      mpq_set_ui(q->c[2], 1, 1);
+      mpq_t eps;
+      mpq_init(eps);
+      mpq_set_ui(eps, 1, 1);
+      mpq_div_2exp(eps, eps, 70);
+      if (i)
+        mpq_add(q->c[2], q->c[2], eps);
+      else
+        mpq_sub(q->c[2], q->c[2], eps);
+      mpq_clear(eps);
+      tr_qpoint_update(q);
+      bad = insert_point(m, q, &e[i]);
+    }
+    tr_point p0 = tr_mesh_point(m, e[0]), p1 = tr_mesh_point(m, e[1]);
+    if (!bad && (p0.d[0] != p1.d[0] || p0.d[1] != p1.d[1] || p0.d[2] != p1.d[2] ||
+                 tr_cmp_coord_p(&p0, &p1, 0) != 0 || tr_cmp_coord_p(&p0, &p1, 2) >= 0)) {
+      fprintf(stderr, "FAIL %s: the two points do not have the same doubles\n", names[r]);
+      bad = 1;
+    }
+    int yes = 1;
+    if (!bad && (tr_mesh_has_edge(m, e[0], e[1], &yes) != TR_OK || yes)) {
+      fprintf(stderr, "FAIL %s: pq is already a mesh edge\n", names[r]);
+      bad = 1;
+    }
+    g_opt = opts[r];
+    tr_edge_recovery_stats st;
+    if (!bad && !(bad = run_stage(m, e, 1, 1, 1, names[r], &st)))
+      printf("%s: recovered, %llu Steiner points\n", names[r],
+             (unsigned long long)st.points_added);
+    tr_mesh_destroy(m);
+  }
+  return bad;
+}
+
 int main(int argc, char **argv)
 {
   /* a trailing "nolawson": the same run with the Lawson flips off (tr_recover_edges_ex) */
@@ -537,9 +619,11 @@ int main(int argc, char **argv)
     return test_crossing();
   if (argc == 2 && !strcmp(argv[1], "badinput"))
     return test_badinput();
+  if (argc == 2 && !strcmp(argv[1], "equal_doubles"))
+    return test_equal_doubles();
   if (argc == 4 && !strcmp(argv[1], "spheres"))
     return test_spheres((uint64_t)atoll(argv[2]), atoi(argv[3]));
   fprintf(stderr, "usage: test_recover_edges spheres <seed> <meshes> | grid <n> <nseg> "
-                  "<seed> <incremental> | crossing | badinput [nolawson]\n");
+                  "<seed> <incremental> | crossing | badinput | equal_doubles [nolawson]\n");
   return 2;
 }
