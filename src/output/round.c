@@ -196,7 +196,7 @@ static int search(struct tr_mesh *m, const star_index *S, uint32_t v, const offs
  * candidates that keep w's tets without v positive, each with a search for v, both within
  * the first npair offsets; neighbours in index order. 1 on success (both placed). */
 static int search_pair(struct tr_mesh *m, const star_index *S, uint32_t v, const offset *off,
-                       size_t npair)
+                       size_t npair, uint32_t *moved_w)
 {
   uint32_t a = S->start[v], n = S->start[v + 1] - a, last = TR_NONE;
   for (;;) {
@@ -218,8 +218,10 @@ static int search_pair(struct tr_mesh *m, const star_index *S, uint32_t v, const
     uint32_t hint = 0;
     for (size_t c = 0; c < npair; c++)
       if (place(m, w, ax, &off[c]) && star_failure(m, S, w, v, &hint) == TR_NONE &&
-          search(m, S, v, off, npair))
+          search(m, S, v, off, npair)) {
+        *moved_w = w;
         return 1;
+      }
     memcpy(x, was, sizeof was);
   }
 }
@@ -264,12 +266,30 @@ static int descend(struct tr_mesh *m, const star_index *S, uint32_t v, const off
   return 1;
 }
 
+/* A failed single search or descent of v is a function of the doubles of the vertices
+ * of v's star only, so it fails again until one of them moves: stale[v] has bit
+ * STALE_SEARCH / STALE_DESCEND set after such a failure, and every move clears both bits
+ * on the vertices of the moved point's star. Skipping the repeats changes no outcome
+ * (each would fail and move nothing), only the work: without it, every round of single
+ * moves searched each stuck point's 35,936 candidates again (Chazelle's polyhedron moved
+ * by ulps spent its 2,000,000 checks, 30 s, mostly on such repeats). Pair moves depend
+ * on the neighbours' stars too and are not skipped. */
+enum { STALE_SEARCH = 1, STALE_DESCEND = 2 };
+
 typedef struct {
   struct tr_mesh *m;
   const star_index *S;
   const offset *off;
   size_t noff, npair;
+  uint8_t *stale;
 } search_ctx;
+
+static void moved(const search_ctx *c, uint32_t v)
+{
+  for (uint32_t i = c->S->start[v]; i < c->S->start[v + 1]; i++)
+    for (int k = 0; k < 4; k++)
+      c->stale[c->m->tv[4 * (size_t)c->S->tet[i] + k]] = 0;
+}
 
 /* One pass over the Steiner points in index order, moving each whose star has a tet that
  * is not strictly positive: alone (pairs 0), with a neighbour (1), or to fewer bad tets (2). Returns whether
@@ -282,11 +302,20 @@ static int one_round(const search_ctx *c, int pairs, uint32_t *fail_v, uint32_t 
     uint32_t hint = 0, t;
     if (!steiner(c->m, v) || (t = star_failure(c->m, c->S, v, TR_NONE, &hint)) == TR_NONE)
       continue;
-    if (pairs == 2   ? descend(c->m, c->S, v, c->off, c->noff)
-        : pairs == 1 ? search_pair(c->m, c->S, v, c->off, c->npair)
-                     : search(c->m, c->S, v, c->off, c->noff))
+    uint8_t bit = pairs == 2 ? STALE_DESCEND : pairs == 0 ? STALE_SEARCH : 0;
+    uint32_t w = TR_NONE;
+    if (!(c->stale[v] & bit) &&
+        (pairs == 2   ? descend(c->m, c->S, v, c->off, c->noff)
+         : pairs == 1 ? search_pair(c->m, c->S, v, c->off, c->npair, &w)
+                      : search(c->m, c->S, v, c->off, c->noff))) {
       progress = 1;
-    else if (*fail_v == TR_NONE) {
+      moved(c, v);
+      if (w != TR_NONE)
+        moved(c, w);
+      continue;
+    }
+    c->stale[v] |= bit;
+    if (*fail_v == TR_NONE) {
       *fail_v = v;
       *fail_t = t;
     }
@@ -332,9 +361,10 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
     return TR_OK;
   uint64_t work = 0;
   star_index S = {NULL, NULL, &work, budget ? budget : TR_ROUND_BUDGET};
-  search_ctx c = {m, &S, NULL, 0, 0};
+  search_ctx c = {m, &S, NULL, 0, 0, calloc(m->nv ? m->nv : 1, 1)};
   offset *off = NULL;
-  tr_status st = stars_build(m, &S);
+  tr_status st = c.stale ? stars_build(m, &S)
+                         : tr_error(TR_ERR_NOMEM, "out of memory for the rounding search");
   if (st == TR_OK)
     st = offsets_build(&off, &c.noff);
   c.off = off;
@@ -381,6 +411,7 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
                   fail_v, x[0], x[1], x[2], TR_ROUND_RADIUS,
                   S.start[fail_v + 1] - S.start[fail_v], fail_t, tv[0], tv[1], tv[2], tv[3]);
   }
+  free(c.stale);
   free(off);
   free(S.start);
   free(S.tet);
