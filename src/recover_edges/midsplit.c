@@ -94,41 +94,40 @@ static void middle_point(const struct tr_mesh *m, uint32_t a, uint32_t b, const 
     goto done;
   mpq_t ca, cb, len, ta, tb, t, step;
   mpq_inits(ca, cb, len, ta, tb, t, step, NULL);
-  /* parameters along ab, exact: the coordinate on the dominant axis is monotone */
+  /* parameters along ab, exact: the coordinate on the axis is monotone along ab, and it
+   * differs at a and b (tr_pipe_long_axis), so len != 0 */
   tr_point_get_q(&pa, axis, ca);
   tr_point_get_q(&pb, axis, cb);
   mpq_sub(len, cb, ca);
-  if (mpq_sgn(len) != 0) {
-    mpq_sub(ta, xa.c[axis], ca);
-    mpq_div(ta, ta, len);
-    mpq_sub(tb, xb.c[axis], ca);
-    mpq_div(tb, tb, len);
-    mpq_set_ui(t, 1, 2);
-    mpq_set_ui(step, 1, 4);
-    int found = 0;
-    for (int bits = 0; bits < TR_MIDDLE_BITS && !found; bits++) {
-      if (mpq_cmp(t, ta) < 0)
-        mpq_add(t, t, step);
-      else if (mpq_cmp(t, tb) > 0)
-        mpq_sub(t, t, step);
-      else
-        found = 1;
-      mpq_div_2exp(step, step, 1);
+  mpq_sub(ta, xa.c[axis], ca);
+  mpq_div(ta, ta, len);
+  mpq_sub(tb, xb.c[axis], ca);
+  mpq_div(tb, tb, len);
+  mpq_set_ui(t, 1, 2);
+  mpq_set_ui(step, 1, 4);
+  int found = 0;
+  for (int bits = 0; bits < TR_MIDDLE_BITS && !found; bits++) {
+    if (mpq_cmp(t, ta) < 0)
+      mpq_add(t, t, step);
+    else if (mpq_cmp(t, tb) > 0)
+      mpq_sub(t, t, step);
+    else
+      found = 1;
+    mpq_div_2exp(step, step, 1);
+  }
+  if (found && mpq_cmp_ui(t, 1, 2) != 0) {
+    for (int i = 0; i < 3; i++) {
+      tr_point_get_q(&pa, i, ca);
+      tr_point_get_q(&pb, i, cb);
+      mpq_sub(cb, cb, ca);
+      mpq_mul(cb, cb, t);
+      mpq_add(q->c[i], ca, cb);
     }
-    if (found && mpq_cmp_ui(t, 1, 2) != 0) {
-      for (int i = 0; i < 3; i++) {
-        tr_point_get_q(&pa, i, ca);
-        tr_point_get_q(&pb, i, cb);
-        mpq_sub(cb, cb, ca);
-        mpq_mul(cb, cb, t);
-        mpq_add(q->c[i], ca, cb);
-      }
-      tr_qpoint_update(q);
-    } else if (!found) {
-      tr_point px = tr_pt_q(&xa), py = tr_pt_q(&xb);
-      if (tr_equal_p(&px, &py))
-        tr_qpoint_set_point(q, &px);
-    }
+    tr_qpoint_update(q);
+  } else if (!found) {
+    tr_point px = tr_pt_q(&xa), py = tr_pt_q(&xb);
+    if (tr_equal_p(&px, &py))
+      tr_qpoint_set_point(q, &px);
   }
   mpq_clears(ca, cb, len, ta, tb, t, step, NULL);
 done:
