@@ -87,6 +87,7 @@ typedef struct tr_stats {
   uint64_t missing_edges, edges_recovered_by_swap, points_added_for_edges;
   uint64_t missing_facets, facets_recovered_by_swap, points_added_for_facets;
   uint64_t surface_swaps, rounding_repairs;
+  uint64_t rounding_flips; /* flips that took away tets flat in doubles (output/flatflip.h) */
   double total_seconds, recovery_seconds;
   uint64_t peak_memory_bytes;
 } tr_stats;

@@ -1,5 +1,8 @@
 /* Rounding Steiner points to doubles, and its repair (issue 7).
  *
+ * Before it, tr_round_flip_flat (flatflip.h) flips away the tets whose shape, not their
+ * rounding, makes them flat in doubles.
+ *
  * Steiner points are exact rationals (vq) that lie exactly on their edge or facet; the
  * writers print m->xyz, which for a Steiner point starts as its nearest double. Nearest
  * rounding can make a thin incident tet flat or inverted in doubles. This stage re-checks

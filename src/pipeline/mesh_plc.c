@@ -1,6 +1,6 @@
 /* tr_mesh_plc: validate -> smooth -> Delaunay -> edge recovery -> facet recovery ->
- * outer removal and regions -> compact output -> rounding of Steiner points to doubles
- * (src/output/round.h), with the seed paper's Table 14 statistics.
+ * outer removal and regions -> flips of tets flat in doubles (src/output/flatflip.h) ->
+ * compact output -> rounding of Steiner points to doubles (src/output/round.h), with the seed paper's Table 14 statistics.
  *
  * Rounding runs on the compact store, after outer removal: its tets are exactly the ones
  * written, so the tets that are discarded do not constrain where a Steiner point's double
@@ -14,6 +14,7 @@
 #include "delaunay/delaunay.h"
 #include "input/validate.h"
 #include "outer/color.h"
+#include "output/flatflip.h"
 #include "output/round.h"
 #include "pipeline.h"
 #include "smooth/smooth.h"
@@ -121,6 +122,12 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = tr_outer_color(m, &sub, keep_hull, sides, &nreg);
   free(sides);
   sides = NULL;
+  /* Before compaction: the flips need the sub-faces, which are in m's numbering. */
+  if (st == TR_OK)
+    st = tr_round_flip_flat(m, &sub, p, &stats->rounding_flips);
+  if (st == TR_OK && stats->rounding_flips && opt.verbose >= 2)
+    fprintf(stderr, "tetrec: %llu flips took away tets flat in doubles\n",
+            (unsigned long long)stats->rounding_flips);
   if (st == TR_OK)
     st = tr_pipeline_compact(m, &res);
   if (st == TR_OK && (flags & TR_PIPE_KEEP_EXACT)) {

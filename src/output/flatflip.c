@@ -1,0 +1,231 @@
+/* Flips that take away tets flat in doubles: see flatflip.h. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "classify.h"
+#include "output/flatflip.h"
+#include "predicates.h"
+
+typedef struct {
+  struct tr_mesh *m;
+  const tr_plc *plc;
+  uint32_t *sub; /* the sub-faces as sorted triples, in lexicographic order */
+  uint32_t nsub;
+  tr_u32buf shell;
+} ctx;
+
+static int kept(const struct tr_mesh *m, uint32_t t)
+{
+  return t != TR_NONE && tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER);
+}
+
+/* Not strictly positive on the doubles the writers print. */
+static int flat(const struct tr_mesh *m, const uint32_t *v)
+{
+  const double *x = m->xyz;
+  return tr_orient3d(x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2],
+                     x + 3 * (size_t)v[3]) <= 0;
+}
+
+static int exact_positive(const struct tr_mesh *m, const uint32_t *v)
+{
+  tr_point p[4];
+  for (int i = 0; i < 4; i++)
+    p[i] = tr_mesh_point(m, v[i]);
+  return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) > 0;
+}
+
+static int exact_sign(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
+{
+  tr_point p = tr_mesh_point(m, a), q = tr_mesh_point(m, b), r = tr_mesh_point(m, c),
+           s = tr_mesh_point(m, d);
+  return tr_orient3d_p(&p, &q, &r, &s);
+}
+
+static int cmp3(const void *x, const void *y)
+{
+  const uint32_t *a = x, *b = y;
+  for (int i = 0; i < 3; i++)
+    if (a[i] != b[i])
+      return a[i] < b[i] ? -1 : 1;
+  return 0;
+}
+
+static int is_subface(const ctx *c, uint32_t a, uint32_t b, uint32_t d)
+{
+  uint32_t key[3] = {a, b, d};
+  tr_sort3(key);
+  return bsearch(key, c->sub, c->nsub, 3 * sizeof *c->sub, cmp3) != NULL;
+}
+
+/* Edge ab lies on an input segment (a segment not on any triangle: the sub-face test
+ * does not see it). */
+static int on_segment(const ctx *c, uint32_t a, uint32_t b)
+{
+  tr_point pa = tr_mesh_point(c->m, a), pb = tr_mesh_point(c->m, b);
+  for (uint32_t i = 0; i < c->plc->nsegs; i++) {
+    tr_point s0 = tr_mesh_point(c->m, c->plc->segs[2 * i]),
+             s1 = tr_mesh_point(c->m, c->plc->segs[2 * i + 1]);
+    if (tr_classify_point_segment(&pa, &s0, &s1).type != TR_DEG &&
+        tr_classify_point_segment(&pb, &s0, &s1).type != TR_DEG)
+      return 1;
+  }
+  return 0;
+}
+
+static tr_status commit(ctx *c, const uint32_t *old, uint32_t nold, const uint32_t *newv,
+                        uint32_t nnew)
+{
+  uint32_t region = c->m->region[old[0]], ids[2 * TR_FLATFLIP_MAX_SHELL];
+  TR_CHECK(tr_mesh_replace(c->m, old, nold, newv, nnew, ids));
+  for (uint32_t i = 0; i < nnew; i++)
+    c->m->region[ids[i]] = region;
+  return TR_OK;
+}
+
+/* Swap23 across face k of t. */
+static tr_status try_23(ctx *c, uint32_t t, int k, int *done)
+{
+  struct tr_mesh *m = c->m;
+  uint32_t code = m->tn[4 * (size_t)t + (size_t)k], u = code == TR_NONE ? TR_NONE : code >> 2;
+  *done = 0;
+  if (!kept(m, u) || m->region[u] != m->region[t])
+    return TR_OK;
+  const uint32_t *tv = m->tv + 4 * (size_t)t;
+  const uint8_t *f = tr_face_vtx[k];
+  if (is_subface(c, tv[f[0]], tv[f[1]], tv[f[2]]))
+    return TR_OK;
+  uint32_t e = m->tv[4 * (size_t)u + (code & 3)];
+  uint32_t newv[12];
+  int before = flat(m, tv) + flat(m, m->tv + 4 * (size_t)u), after = 0;
+  /* the new tets are t with one vertex of face k replaced by e: all positive iff the
+   * segment from t's fourth vertex to e crosses the face's interior */
+  for (int i = 0; i < 3; i++) {
+    memcpy(newv + 4 * i, tv, 4 * sizeof *tv);
+    newv[4 * i + f[i]] = e;
+    if (!exact_positive(m, newv + 4 * i))
+      return TR_OK;
+    after += flat(m, newv + 4 * i);
+  }
+  if (after >= before)
+    return TR_OK;
+  uint32_t old[2] = {t, u};
+  TR_CHECK(commit(c, old, 2, newv, 3));
+  *done = 1;
+  return TR_OK;
+}
+
+/* Edge removal of edge e of t: the shell's ring r_0..r_{n-1} (r_i shared by shell tets i
+ * and i+1) triangulated as a fan from r_f; each triangle (p,q,s) in ring order gives the
+ * tets (p,q,s,a) and (p,q,s,b). With sg = the sign of (a, b, r_0, r_1) (the same for
+ * every (a, b, r_{i-1}, r_i) of a closed ring), (p,q,s,a) has sign -sg and (p,q,s,b) sign
+ * sg when ab crosses the triangle: each is listed so that it is positive and must then
+ * be so exactly. */
+static tr_status try_edge(ctx *c, uint32_t t, int e, int *done)
+{
+  struct tr_mesh *m = c->m;
+  *done = 0;
+  uint32_t a = m->tv[4 * (size_t)t + tr_edge_vtx[e][0]], b = m->tv[4 * (size_t)t + tr_edge_vtx[e][1]];
+  int closed;
+  TR_CHECK(tr_shell(m, a, b, t, &c->shell, &closed));
+  uint32_t n = (uint32_t)c->shell.n;
+  if (!closed || n < 3 || n > TR_FLATFLIP_MAX_SHELL)
+    return TR_OK;
+  uint32_t sh[TR_FLATFLIP_MAX_SHELL], ring[TR_FLATFLIP_MAX_SHELL];
+  memcpy(sh, c->shell.a, n * sizeof *sh);
+  int before = 0;
+  for (uint32_t i = 0; i < n; i++) {
+    if (!kept(m, sh[i]) || m->region[sh[i]] != m->region[t])
+      return TR_OK;
+    before += flat(m, m->tv + 4 * (size_t)sh[i]);
+  }
+  for (uint32_t i = 0; i < n; i++) {
+    const uint32_t *x = m->tv + 4 * (size_t)sh[i], *y = m->tv + 4 * (size_t)sh[(i + 1) % n];
+    ring[i] = TR_NONE;
+    for (int j = 0; j < 4; j++)
+      if (x[j] != a && x[j] != b)
+        for (int l = 0; l < 4; l++)
+          if (y[l] == x[j])
+            ring[i] = x[j];
+    if (ring[i] == TR_NONE)
+      return tr_error(TR_ERR_INTERNAL, "flat flips: shell of edge (%u,%u) is not a ring", a, b);
+  }
+  for (uint32_t i = 0; i < n; i++)
+    if (is_subface(c, a, b, ring[i]))
+      return TR_OK;
+  if (c->plc->nsegs && on_segment(c, a, b))
+    return TR_OK;
+  int sg = exact_sign(m, a, b, ring[0], ring[1]);
+  uint32_t best[8 * (TR_FLATFLIP_MAX_SHELL - 2)], cand[8 * (TR_FLATFLIP_MAX_SHELL - 2)];
+  int best_after = before;
+  uint32_t nnew = 2 * (n - 2), nfan = n == 3 ? 1 : n;
+  for (uint32_t f = 0; f < nfan; f++) {
+    int after = 0, ok = 1;
+    for (uint32_t j = 1; j + 1 < n && ok; j++) {
+      uint32_t p = ring[f], q = ring[(f + j) % n], s = ring[(f + j + 1) % n];
+      uint32_t *ta = cand + 8 * (j - 1), *tb = ta + 4;
+      /* (p,q,s,a) should have sign -sg: listed (p,s,q,a) when sg > 0 */
+      ta[0] = p, ta[1] = sg > 0 ? s : q, ta[2] = sg > 0 ? q : s, ta[3] = a;
+      tb[0] = p, tb[1] = sg > 0 ? q : s, tb[2] = sg > 0 ? s : q, tb[3] = b;
+      ok = exact_positive(m, ta) && exact_positive(m, tb);
+      after += flat(m, ta) + flat(m, tb);
+    }
+    if (ok && after < best_after) {
+      best_after = after;
+      memcpy(best, cand, 4 * nnew * sizeof *best);
+    }
+  }
+  if (best_after >= before)
+    return TR_OK;
+  TR_CHECK(commit(c, sh, n, best, nnew));
+  *done = 1;
+  return TR_OK;
+}
+
+static tr_status run(ctx *c, uint64_t *nflips)
+{
+  struct tr_mesh *m = c->m;
+  for (int changed = 1; changed;) {
+    changed = 0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+      if (!kept(m, t) || !flat(m, m->tv + 4 * (size_t)t))
+        continue;
+      int done = 0;
+      for (int k = 0; k < 4 && !done; k++)
+        TR_CHECK(try_23(c, t, k, &done));
+      for (int e = 0; e < 6 && !done; e++)
+        TR_CHECK(try_edge(c, t, e, &done));
+      if (done) {
+        (*nflips)++;
+        changed = 1;
+      }
+    }
+  }
+  return TR_OK;
+}
+
+tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr_plc *plc,
+                             uint64_t *nflips)
+{
+  *nflips = 0;
+  if (!m->vq || !m->region)
+    return TR_OK; /* no Steiner point: the doubles are the exact points */
+  uint32_t nflat = 0;
+  for (uint32_t t = 0; t < m->nt; t++)
+    nflat += kept(m, t) && flat(m, m->tv + 4 * (size_t)t);
+  if (nflat == 0)
+    return TR_OK;
+  ctx c = {.m = m, .plc = plc, .nsub = sub->n};
+  c.sub = malloc(3 * sizeof *c.sub * (sub->n ? sub->n : 1));
+  if (!c.sub)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-faces", sub->n);
+  for (uint32_t i = 0; i < sub->n; i++) {
+    memcpy(c.sub + 3 * (size_t)i, sub->v + 3 * (size_t)i, 3 * sizeof *c.sub);
+    tr_sort3(c.sub + 3 * (size_t)i);
+  }
+  qsort(c.sub, sub->n, 3 * sizeof *c.sub, cmp3);
+  tr_status st = run(&c, nflips);
+  free(c.sub);
+  tr_u32buf_free(&c.shell);
+  return st;
+}
