@@ -167,6 +167,16 @@ static inline void tr_sort3(uint32_t f[3])
   if (f[0] > f[1]) { t = f[0]; f[0] = f[1]; f[1] = t; }
 }
 
+/* qsort / bsearch order of face keys (three sorted vertex ids): lexicographic. */
+static inline int tr_cmp_face_key(const void *pa, const void *pb)
+{
+  const uint32_t *a = (const uint32_t *)pa, *b = (const uint32_t *)pb; /* C++ tests too */
+  for (int i = 0; i < 3; i++)
+    if (a[i] != b[i])
+      return a[i] < b[i] ? -1 : 1;
+  return 0;
+}
+
 /* A fixed hash of a vertex triple (sort it first where orientation must not matter): the
  * face tables take their slot from its high bits, so no run depends on addresses. */
 static inline uint64_t tr_hash3(const uint32_t k[3])

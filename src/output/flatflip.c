@@ -4,7 +4,7 @@
 
 #include "classify.h"
 #include "output/flatflip.h"
-#include "predicates.h"
+#include "output/round.h"
 
 typedef struct {
   struct tr_mesh *m;
@@ -19,43 +19,20 @@ static int kept(const struct tr_mesh *m, uint32_t t)
   return t != TR_NONE && tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER);
 }
 
-/* Not strictly positive on the doubles the writers print. */
-static int flat(const struct tr_mesh *m, const uint32_t *v)
-{
-  const double *x = m->xyz;
-  return tr_orient3d(x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2],
-                     x + 3 * (size_t)v[3]) <= 0;
-}
-
-static int exact_positive(const struct tr_mesh *m, const uint32_t *v)
+/* The exact orientation of tet v[0..3]. */
+static int exact_sign(const struct tr_mesh *m, const uint32_t *v)
 {
   tr_point p[4];
   for (int i = 0; i < 4; i++)
     p[i] = tr_mesh_point(m, v[i]);
-  return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) > 0;
-}
-
-static int exact_sign(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
-{
-  tr_point p = tr_mesh_point(m, a), q = tr_mesh_point(m, b), r = tr_mesh_point(m, c),
-           s = tr_mesh_point(m, d);
-  return tr_orient3d_p(&p, &q, &r, &s);
-}
-
-static int cmp3(const void *x, const void *y)
-{
-  const uint32_t *a = x, *b = y;
-  for (int i = 0; i < 3; i++)
-    if (a[i] != b[i])
-      return a[i] < b[i] ? -1 : 1;
-  return 0;
+  return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]);
 }
 
 static int is_subface(const ctx *c, uint32_t a, uint32_t b, uint32_t d)
 {
   uint32_t key[3] = {a, b, d};
   tr_sort3(key);
-  return bsearch(key, c->sub, c->nsub, 3 * sizeof *c->sub, cmp3) != NULL;
+  return bsearch(key, c->sub, c->nsub, 3 * sizeof *c->sub, tr_cmp_face_key) != NULL;
 }
 
 /* Edge ab lies on an input segment (a segment not on any triangle: the sub-face test
@@ -97,15 +74,15 @@ static tr_status try_23(ctx *c, uint32_t t, int k, int *done)
     return TR_OK;
   uint32_t e = m->tv[4 * (size_t)u + (code & 3)];
   uint32_t newv[12];
-  int before = flat(m, tv) + flat(m, m->tv + 4 * (size_t)u), after = 0;
+  int before = tr_round_flat(m, tv) + tr_round_flat(m, m->tv + 4 * (size_t)u), after = 0;
   /* the new tets are t with one vertex of face k replaced by e: all positive iff the
    * segment from t's fourth vertex to e crosses the face's interior */
   for (int i = 0; i < 3; i++) {
     memcpy(newv + 4 * i, tv, 4 * sizeof *tv);
     newv[4 * i + f[i]] = e;
-    if (!exact_positive(m, newv + 4 * i))
+    if (exact_sign(m, newv + 4 * i) <= 0)
       return TR_OK;
-    after += flat(m, newv + 4 * i);
+    after += tr_round_flat(m, newv + 4 * i);
   }
   if (after >= before)
     return TR_OK;
@@ -137,7 +114,7 @@ static tr_status try_edge(ctx *c, uint32_t t, int e, int *done)
   for (uint32_t i = 0; i < n; i++) {
     if (!kept(m, sh[i]) || m->region[sh[i]] != m->region[t])
       return TR_OK;
-    before += flat(m, m->tv + 4 * (size_t)sh[i]);
+    before += tr_round_flat(m, m->tv + 4 * (size_t)sh[i]);
   }
   for (uint32_t i = 0; i < n; i++) {
     const uint32_t *x = m->tv + 4 * (size_t)sh[i], *y = m->tv + 4 * (size_t)sh[(i + 1) % n];
@@ -155,7 +132,8 @@ static tr_status try_edge(ctx *c, uint32_t t, int e, int *done)
       return TR_OK;
   if (c->plc->nsegs && on_segment(c, a, b))
     return TR_OK;
-  int sg = exact_sign(m, a, b, ring[0], ring[1]);
+  uint32_t abr[4] = {a, b, ring[0], ring[1]};
+  int sg = exact_sign(m, abr);
   uint32_t best[8 * (TR_FLATFLIP_MAX_SHELL - 2)], cand[8 * (TR_FLATFLIP_MAX_SHELL - 2)];
   int best_after = before;
   uint32_t nnew = 2 * (n - 2), nfan = n == 3 ? 1 : n;
@@ -167,8 +145,8 @@ static tr_status try_edge(ctx *c, uint32_t t, int e, int *done)
       /* (p,q,s,a) should have sign -sg: listed (p,s,q,a) when sg > 0 */
       ta[0] = p, ta[1] = sg > 0 ? s : q, ta[2] = sg > 0 ? q : s, ta[3] = a;
       tb[0] = p, tb[1] = sg > 0 ? q : s, tb[2] = sg > 0 ? s : q, tb[3] = b;
-      ok = exact_positive(m, ta) && exact_positive(m, tb);
-      after += flat(m, ta) + flat(m, tb);
+      ok = 0 < exact_sign(m, ta) && 0 < exact_sign(m, tb);
+      after += tr_round_flat(m, ta) + tr_round_flat(m, tb);
     }
     if (ok && after < best_after) {
       best_after = after;
@@ -188,7 +166,7 @@ static tr_status run(ctx *c, uint64_t *nflips)
   for (int changed = 1; changed;) {
     changed = 0;
     for (uint32_t t = 0; t < m->nt; t++) {
-      if (!kept(m, t) || !flat(m, m->tv + 4 * (size_t)t))
+      if (!kept(m, t) || !tr_round_flat(m, m->tv + 4 * (size_t)t))
         continue;
       int done = 0;
       for (int k = 0; k < 4 && !done; k++)
@@ -210,10 +188,7 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
   *nflips = 0;
   if (!m->vq || !m->region)
     return TR_OK; /* no Steiner point: the doubles are the exact points */
-  uint32_t nflat = 0;
-  for (uint32_t t = 0; t < m->nt; t++)
-    nflat += kept(m, t) && flat(m, m->tv + 4 * (size_t)t);
-  if (nflat == 0)
+  if (tr_round_count_nonpositive(m, NULL) == 0)
     return TR_OK;
   ctx c = {.m = m, .plc = plc, .nsub = sub->n};
   c.sub = malloc(3 * sizeof *c.sub * (sub->n ? sub->n : 1));
@@ -223,7 +198,7 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
     memcpy(c.sub + 3 * (size_t)i, sub->v + 3 * (size_t)i, 3 * sizeof *c.sub);
     tr_sort3(c.sub + 3 * (size_t)i);
   }
-  qsort(c.sub, sub->n, 3 * sizeof *c.sub, cmp3);
+  qsort(c.sub, sub->n, 3 * sizeof *c.sub, tr_cmp_face_key);
   tr_status st = run(&c, nflips);
   free(c.sub);
   tr_u32buf_free(&c.shell);

@@ -19,10 +19,7 @@ static int steiner(const struct tr_mesh *m, uint32_t v)
 
 static int positive(const struct tr_mesh *m, uint32_t t)
 {
-  const uint32_t *v = m->tv + 4 * (size_t)t;
-  const double *x = m->xyz;
-  return tr_orient3d(x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2],
-                     x + 3 * (size_t)v[3]) > 0;
+  return !tr_round_flat(m, m->tv + 4 * (size_t)t);
 }
 
 uint64_t tr_round_count_nonpositive(const struct tr_mesh *m, uint32_t *first)

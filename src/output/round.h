@@ -36,6 +36,7 @@
 #include <stdint.h>
 
 #include "mesh/mesh.h"
+#include "predicates.h"
 
 #define TR_ROUND_RADIUS 16
 #define TR_ROUND_PAIR_RADIUS2 16
@@ -59,6 +60,14 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
 /* Puts every Steiner point of m at its nearest double, without repair; returns
  * tr_round_count_nonpositive(m, NULL). */
 uint64_t tr_round_nearest(struct tr_mesh *m);
+
+/* Tet v[0..3] is not strictly positive on the doubles m->xyz (exact orient3d on doubles). */
+static inline int tr_round_flat(const struct tr_mesh *m, const uint32_t *v)
+{
+  const double *x = m->xyz;
+  return tr_orient3d(x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2],
+                     x + 3 * (size_t)v[3]) <= 0;
+}
 
 /* Number of kept tets of m that are not strictly positive on the doubles m->xyz (exact
  * orient3d on doubles); *first (may be NULL) = the first one, TR_NONE if none. */

@@ -1,6 +1,7 @@
 /* tr_mesh_plc: validate -> smooth -> Delaunay -> edge recovery -> facet recovery ->
  * outer removal and regions -> flips of tets flat in doubles (src/output/flatflip.h) ->
- * compact output -> rounding of Steiner points to doubles (src/output/round.h), with the seed paper's Table 14 statistics.
+ * compact output -> rounding of Steiner points to doubles (src/output/round.h), with the
+ * seed paper's Table 14 statistics.
  *
  * Rounding runs on the compact store, after outer removal: its tets are exactly the ones
  * written, so the tets that are discarded do not constrain where a Steiner point's double

@@ -78,14 +78,6 @@ void tr_pipeline_subfaces_free(tr_subfaces *sub)
 typedef struct {
   uint32_t k[3];
 } key3;
-static int cmp_key3(const void *pa, const void *pb)
-{
-  const key3 *a = pa, *b = pb;
-  for (int i = 0; i < 3; i++)
-    if (a->k[i] != b->k[i])
-      return a->k[i] < b->k[i] ? -1 : 1;
-  return 0;
-}
 static void sort_small(uint32_t *s, int n)
 {
   for (int i = 0; i < n - 1; i++)
@@ -128,7 +120,7 @@ static tr_status recover_none(struct tr_mesh *m, const struct tr_plc *plc,
       el[2 * nel++ + 1] = p[1];
     }
   }
-  qsort(f, n, sizeof *f, cmp_key3);
+  qsort(f, n, sizeof *f, tr_cmp_face_key);
   qsort(el, nel, 2 * sizeof *el, cmp_pair);
   uint64_t missing_e = 0, missing_f = 0;
   uint32_t first_e = TR_NONE, first_f = TR_NONE;
@@ -141,7 +133,7 @@ static tr_status recover_none(struct tr_mesh *m, const struct tr_plc *plc,
     key3 q;
     memcpy(q.k, plc->tris + 3 * (size_t)t, sizeof q.k);
     sort_small(q.k, 3);
-    if (!bsearch(&q, f, n, sizeof *f, cmp_key3) && !missing_f++)
+    if (!bsearch(&q, f, n, sizeof *f, tr_cmp_face_key) && !missing_f++)
       first_f = t;
   }
   stats->missing_edges = missing_e;

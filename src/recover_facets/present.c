@@ -31,15 +31,6 @@ static void proj_area(mpq_t out, const tr_point *a, const tr_point *b, const tr_
   mpq_sub(out, out, *w);
 }
 
-static int cmp_tri(const void *pa, const void *pb)
-{
-  const uint32_t *a = pa, *b = pb;
-  for (int i = 0; i < 3; i++)
-    if (a[i] != b[i])
-      return a[i] < b[i] ? -1 : 1;
-  return 0;
-}
-
 /* The projection axis for F, or -1 when F is degenerate. */
 static int facet_axis(const struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t g, int *sign)
 {
@@ -96,10 +87,10 @@ tr_status tr_facet_faces_of_cluster(struct tr_mesh *m, uint32_t idx, uint32_t e,
       tri[3 * nt + q] = w[q];
     nt++;
   }
-  qsort(tri, nt, 3 * sizeof *tri, cmp_tri);
+  qsort(tri, nt, 3 * sizeof *tri, tr_cmp_face_key);
   uint32_t nu = 0;
   for (uint32_t i = 0; i < nt; i++)
-    if (nu == 0 || cmp_tri(tri + 3 * i, tri + 3 * (nu - 1)) != 0) {
+    if (nu == 0 || tr_cmp_face_key(tri + 3 * i, tri + 3 * (nu - 1)) != 0) {
       for (int q = 0; q < 3; q++)
         tri[3 * nu + q] = tri[3 * i + q];
       nu++;
@@ -151,7 +142,7 @@ tr_status tr_facet_faces_of_cluster(struct tr_mesh *m, uint32_t idx, uint32_t e,
     if (faces) {
       for (uint32_t i = 0; i < nu; i++)
         tr_rotate_min3(tri + 3 * i);
-      qsort(tri, nu, 3 * sizeof *tri, cmp_tri);
+      qsort(tri, nu, 3 * sizeof *tri, tr_cmp_face_key);
       for (uint32_t i = 0; i < 3 * nu && st == TR_OK; i++)
         st = tr_u32buf_push(faces, tri[i]);
     }

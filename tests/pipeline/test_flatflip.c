@@ -58,10 +58,6 @@ static struct tr_mesh *bipyramid(const double e[3], tr_qpoint *d, uint32_t r1, u
 
 /* The boundary faces as oriented triples (each rotated to begin with its smallest id),
  * sorted: equal lists <=> same oriented boundary. */
-static int cmp3(const void *x, const void *y)
-{
-  return memcmp(x, y, 3 * sizeof(uint32_t));
-}
 static size_t boundary(const struct tr_mesh *m, uint32_t out[][3], size_t cap)
 {
   size_t n = 0;
@@ -73,7 +69,7 @@ static size_t boundary(const struct tr_mesh *m, uint32_t out[][3], size_t cap)
         tr_rotate_min3(out[n]);
         n++;
       }
-  qsort(out, n, sizeof out[0], cmp3);
+  qsort(out, n, sizeof out[0], tr_cmp_face_key);
   return n;
 }
 
@@ -114,12 +110,17 @@ static uint64_t run(struct tr_mesh *m, const tr_subfaces *sub)
 }
 
 /* d = (1/4, 1/4, 2^-1100): above abc, but its nearest double (z = 0, below the smallest
- * subnormal) is on it, so abcd is flat in doubles. Swap23 across abc gives three tets
- * around de, fat in doubles. */
-static void t_swap23(void)
+ * subnormal) is on it, so abcd is flat in doubles; e = (1/4, 1/4, -1). Regions 1 and r2. */
+static struct tr_mesh *sliver_on_abc(uint32_t r2)
 {
   const double e[3] = {0.25, 0.25, -1}, d0[3] = {0.25, 0.25, 0};
-  struct tr_mesh *m = bipyramid(e, lifted(d0, 2, 1100), 1, 1);
+  return bipyramid(e, lifted(d0, 2, 1100), 1, r2);
+}
+
+/* Swap23 across abc gives three tets around de, fat in doubles. */
+static void t_swap23(void)
+{
+  struct tr_mesh *m = sliver_on_abc(1);
   snapshot s;
   take(&s, m);
   EXPECT(m->xyz[3 * 4 + 2] == 0, "swap23: the nearest double of d is not on abc");
@@ -135,8 +136,7 @@ static void t_swap23(void)
 /* The same with abc a sub-face: it is a constraint, nothing may flip it away. */
 static void t_subface_kept(void)
 {
-  const double e[3] = {0.25, 0.25, -1}, d0[3] = {0.25, 0.25, 0};
-  struct tr_mesh *m = bipyramid(e, lifted(d0, 2, 1100), 1, 1);
+  struct tr_mesh *m = sliver_on_abc(1);
   snapshot s;
   take(&s, m);
   uint32_t abc[3] = {0, 1, 2}, tri = 0;
@@ -151,8 +151,7 @@ static void t_subface_kept(void)
 /* The same with the two tets in different regions: abc separates them. */
 static void t_regions_kept(void)
 {
-  const double e[3] = {0.25, 0.25, -1}, d0[3] = {0.25, 0.25, 0};
-  struct tr_mesh *m = bipyramid(e, lifted(d0, 2, 1100), 1, 2);
+  struct tr_mesh *m = sliver_on_abc(2);
   snapshot s;
   take(&s, m);
   uint64_t n = run(m, &(tr_subfaces){0});
@@ -162,7 +161,7 @@ static void t_regions_kept(void)
 }
 
 /* d = (1/4, -1/4 + 2^-80, 1), e = (1/4, 1/4, -1): de crosses abc at (1/4, 2^-81, 0), just
- * inside edge ab. Around edge de the three tets dea b, debc, deca; deab is positive by
+ * inside edge ab. Around edge de the three tets deab, debc, deca; deab is positive by
  * 2^-80-ish but flat in doubles (the nearest d lies on plane abe). Swap32 on de gives
  * abcd and acbe back, both fat. */
 static void t_swap32(void)
