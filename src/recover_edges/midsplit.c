@@ -18,6 +18,17 @@
  * Steiner points within 1e-14 of each other that no rounding to doubles can separate.
  * Splitting in the middle part at once also saves most of the points on the way (corpus
  * 7,737 -> 4,848 Steiner points).
+ *
+ * The middle part can be too thin for any short dyadic t when ab winds around a hub: an
+ * edge every pipel has, that ab passes by without crossing it (skew by a subnormal
+ * distance on Chazelle's polyhedron moved by ulps: a diagonal of the bumpy front face and
+ * an edge lying in that face and in a groove's plane). Each split next to the hub leaves
+ * it in place and the next sub-segment winds around it again, so splits converged on it
+ * until the budget was gone and the pipels left points that no double rounding could
+ * tell apart. There M is the point where ab crosses the hub's face as it leaves a's star
+ * instead; M then lies in the hub's ring, and removing the hub (edge removal, flip.h)
+ * can take the fan from M, which makes a-M and M-b mesh edges: M takes the hub's place as
+ * if the hub had been split at its near-crossing with ab.
  */
 #include <stdlib.h>
 
@@ -46,7 +57,7 @@ static int faces_through(const struct tr_mesh *m, const uint32_t *tv, const tr_p
  * the near end of one with a NOD end at b: every such pipel has the same one, the first
  * (last) point where ab leaves a vertex's star. 0 on success, -1 if there is none. */
 static int end_crossing(const struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
-                        int at_a, tr_qpoint *out)
+                        int at_a, tr_qpoint *out, uint32_t fv[3])
 {
   for (uint32_t i = 0; i < p->n; i++) {
     const tr_pipel *pl = &p->pl[i];
@@ -61,32 +72,60 @@ static int end_crossing(const struct tr_mesh *m, uint32_t a, uint32_t b, const t
       continue;
     tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b);
     if (ty == TR_EDG) {
-      tr_point u = tr_mesh_point(m, tv[tr_ecode_start(code)]),
-               w = tr_mesh_point(m, tv[tr_ecode_end(code)]);
+      fv[0] = tv[tr_ecode_start(code)];
+      fv[1] = tv[tr_ecode_end(code)];
+      fv[2] = TR_NONE;
+      tr_point u = tr_mesh_point(m, fv[0]), w = tr_mesh_point(m, fv[1]);
       return tr_construct_line_line(&pa, &pb, &u, &w, out);
     }
-    const uint8_t *f = tr_face_vtx[code];
-    tr_point u = tr_mesh_point(m, tv[f[0]]), v = tr_mesh_point(m, tv[f[1]]),
-             w = tr_mesh_point(m, tv[f[2]]);
+    for (int j = 0; j < 3; j++)
+      fv[j] = tv[tr_face_vtx[code][j]];
+    tr_point u = tr_mesh_point(m, fv[0]), v = tr_mesh_point(m, fv[1]),
+             w = tr_mesh_point(m, fv[2]);
     return tr_construct_line_plane(&pa, &pb, &u, &v, &w, out);
   }
   return -1;
+}
+
+/* The hub of a pipe: an edge that every real pipel has (0 if there is none or the pipe
+ * has fewer than three real pipels). */
+static int pipe_hub(const struct tr_mesh *m, const tr_pipe *p, uint32_t hub[2])
+{
+  const uint32_t *t0 = NULL;
+  uint32_t nreal = 0;
+  for (uint32_t i = 0; i < p->n; i++)
+    if (!p->pl[i].ghost && nreal++ == 0)
+      t0 = m->tv + 4 * (size_t)p->pl[i].iEle;
+  for (int e = 0; e < 6 && nreal >= 3; e++) {
+    hub[0] = t0[tr_edge_vtx[e][0]];
+    hub[1] = t0[tr_edge_vtx[e][1]];
+    int all = 1;
+    for (uint32_t i = 0; i < p->n && all; i++)
+      all = p->pl[i].ghost || tr_tet_ecode(m, p->pl[i].iEle, hub[0], hub[1]) >= 0;
+    if (all)
+      return 1;
+  }
+  return 0;
 }
 
 /* Moves q (the midpoint of ab) into the middle part of Pipe(ab) when it lies strictly
  * inside an end piece (see the header). A dyadic t keeps the coordinates as short as
  * those of nested midpoints (the midpoint of the two crossing points, built on Steiner
  * points, passed the Steiner size guard within a few levels on a star). If the middle
- * part is a single point (ab crosses one edge), q becomes that crossing; if it is
- * shorter than 2^-TR_MIDDLE_BITS of ab, q stays the midpoint. */
+ * part is a single point (ab crosses one edge), q becomes that crossing. If it is
+ * shorter than 2^-TR_MIDDLE_BITS of ab and the pipe has a hub whose face ab crosses
+ * where it leaves a's star, q becomes that crossing and 1 is returned (see
+ * tr_pipe_split_mid); else q stays the midpoint. */
 #define TR_MIDDLE_BITS 96
-static void middle_point(const struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
-                         tr_qpoint *q)
+static int middle_point(const struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
+                        tr_qpoint *q, uint32_t hub[2])
 {
+  int at_hub = 0;
   tr_qpoint xa, xb;
   tr_qpoint_init(&xa);
   tr_qpoint_init(&xb);
-  if (end_crossing(m, a, b, p, 1, &xa) != 0 || end_crossing(m, a, b, p, 0, &xb) != 0)
+  uint32_t fa[3], fb[3];
+  if (end_crossing(m, a, b, p, 1, &xa, fa) != 0 || end_crossing(m, a, b, p, 0, &xb, fb) != 0)
     goto done;
   tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b);
   int axis = tr_pipe_long_axis(&pa, &pb);
@@ -126,17 +165,27 @@ static void middle_point(const struct tr_mesh *m, uint32_t a, uint32_t b, const 
     tr_qpoint_update(q);
   } else if (!found) {
     tr_point px = tr_pt_q(&xa), py = tr_pt_q(&xb);
-    if (tr_equal_p(&px, &py))
+    if (tr_equal_p(&px, &py)) {
       tr_qpoint_set_point(q, &px);
+    } else if (fa[2] != TR_NONE && pipe_hub(m, p, hub)) {
+      int has = 0;
+      for (int j = 0; j < 3; j++)
+        has += fa[j] == hub[0] || fa[j] == hub[1];
+      if (has == 2) {
+        tr_qpoint_set_point(q, &px);
+        at_hub = 1;
+      }
+    }
   }
   mpq_clears(ca, cb, len, ta, tb, t, step, NULL);
 done:
   tr_qpoint_clear(&xa);
   tr_qpoint_clear(&xb);
+  return at_hub;
 }
 
 tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
-                            uint32_t *mid, int *done)
+                            tr_flip_guard guard, void *ud, uint32_t *mid, int *done)
 {
   *done = 0;
   *mid = TR_NONE;
@@ -157,7 +206,8 @@ tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_
   mpq_clear(x);
   mpq_clear(y);
   tr_qpoint_update(q);
-  middle_point(m, a, b, p, q);
+  uint32_t hub[2] = {TR_NONE, TR_NONE};
+  int at_hub = middle_point(m, a, b, p, q, hub);
   tr_point pm = tr_pt_q(q);
   uint32_t id = m->nv; /* the id M gets if the split goes ahead */
   tr_u32buf old = {0}, newv = {0};
@@ -200,6 +250,11 @@ tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_
       if (s == TR_OK) {
         *done = 1;
         *mid = id;
+        int gone = 0;
+        if (at_hub)
+          s = tr_flip_remove_edge(m, hub[0], hub[1], TR_NONE, guard, ud, NULL, &gone);
+        if (gone)
+          *done = 2;
       } else {
         /* unused: take the vertex back so the store has no orphan */
         tr_qpoint_clear(m->vq[id]);

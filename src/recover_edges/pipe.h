@@ -14,6 +14,7 @@
 #ifndef TR_RECOVER_EDGES_PIPE_H
 #define TR_RECOVER_EDGES_PIPE_H
 
+#include "recover_edges/flip.h"
 #include "recover_edges/pipel.h"
 #include "recover_edges/segmemo.h"
 
@@ -85,11 +86,14 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
 
 /* Splits ab at one exact point M (midsplit.c): its midpoint, or, when that lies in the
  * pipels at a or at b, the first point nested midpoints would reach between them; the
- * tets of Pipe(ab) whose closure holds M are replaced by the cone from M. *done = 1 and
- * *mid = M's id on success; the mesh is unchanged otherwise. p must be the current
- * Pipe(ab); it is stale afterwards. */
+ * tets of Pipe(ab) whose closure holds M are replaced by the cone from M. When no short
+ * point lies between them because ab winds around a hub edge that every pipel has, M is
+ * where ab crosses the hub's face at a's end, and the hub is then removed by edge
+ * removal unless guard (flip.h) protects it or no triangulation of its ring fits.
+ * On success *mid = M's id and *done = 2 if the hub went, else 1; the mesh is unchanged
+ * on failure (*done = 0). p must be the current Pipe(ab); it is stale afterwards. */
 tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
-                            uint32_t *mid, int *done);
+                            tr_flip_guard guard, void *ud, uint32_t *mid, int *done);
 
 /* Decomposes every pipel of a pipe whose Steiner points were added (tr_pipe_add_steiner)
  * and splits the cut hull faces; counts the pipels in st->pipels / raw / ghosts_split. */

@@ -7,10 +7,12 @@
  * points: a sub-segment whose pipe has more than two real tets is first split at its exact
  * midpoint (TetGen's way, one point, tr_pipe_split_mid; at most TR_EDGE_MIDPOINT_SPLITS
  * per input edge; when the midpoint lies in the end tets of the pipe, at a point between
- * them instead, see midsplit.c), Lawson flips restore the local Delaunay property around
- * the new point (lawson.h: without them the mesh around the segment stays as bad as the
- * split left it and the splits pile up; with them the halves tend to become Delaunay
- * edges and appear by themselves, as in Shewchuk's segment recovery), and both halves go
+ * them instead, or next to a hub edge that is then removed, see midsplit.c), Lawson flips
+ * restore the local Delaunay property around the new point (lawson.h: without them the
+ * mesh around the segment stays as bad as the split left it and the splits pile up; with
+ * them the halves tend to become Delaunay edges and appear by themselves, as in
+ * Shewchuk's segment recovery; not after a hub removal, which they could undo), and both
+ * halves go
  * through the swaps and flips again; short pipes and what is left after the budget go
  * pipel by pipel, the paper's decomposition (a sub-segment whose pipe admits a swap by
  * then still takes the swap: it costs no point).
@@ -259,7 +261,7 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
     if (nreal > 2 && nsplit < TR_EDGE_MIDPOINT_SPLITS && !c->opt.no_midpoints) {
       uint32_t mid;
       int ok;
-      TR_CHECK(tr_pipe_split_mid(m, v0, v1, &c->pipe, &mid, &ok));
+      TR_CHECK(tr_pipe_split_mid(m, v0, v1, &c->pipe, lawson_guard, c, &mid, &ok));
       if (ok) {
         nsplit++;
         *npoints += 1;
@@ -268,7 +270,8 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
         uint32_t four[4] = {mid, v1, v0, mid};
         for (int k = 0; k < 4; k++)
           TR_CHECK(tr_u32buf_push(&c->stack, four[k]));
-        if (!c->opt.no_lawson)
+        /* after a hub removal M took the hub's place: Lawson flips could bring it back */
+        if (!c->opt.no_lawson && ok == 1)
           TR_CHECK(tr_lawson_vertex(m, mid, lawson_guard, c, &c->law, &c->lst));
         continue;
       }

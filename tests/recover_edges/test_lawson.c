@@ -134,7 +134,7 @@ static int run(uint64_t seed, int guarded)
     CK(tr_pipe_collect(m, a, b, &pipe, &via));
     if (via != TR_NONE)
       continue;
-    CK(tr_pipe_split_mid(m, a, b, &pipe, &mid, &ok));
+    CK(tr_pipe_split_mid(m, a, b, &pipe, NULL, NULL, &mid, &ok));
     if (!ok)
       FAIL("split of %u-%u refused", a, b);
     splits++;
