@@ -111,8 +111,8 @@ tr_status tr_mesh_add_steiner(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx);
  * not taken (the caller frees it), instead of a run that does not end. Subnormal input
  * coordinates have 1,074-bit denominators, so their Steiner points start large: on
  * Chazelle's polyhedron moved by ulps (zeros moved to subnormals) a facet Steiner point
- * built on edge Steiner points needs 24,724 bits and the whole recovery 1.3 s; the limit
- * leaves that a margin of 2.6. */
+ * built on edge Steiner points needs 20,615 bits and the whole recovery 0.9 s; the limit
+ * leaves that a margin of 3.2. */
 #define TR_STEINER_MAX_BITS 65536
 tr_status tr_mesh_add_constructed(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx);
 /* The exact point of vertex v (v must not be TR_GHOST). */

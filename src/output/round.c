@@ -288,10 +288,146 @@ static void moved(const search_ctx *c, uint32_t v)
       c->stale[c->m->tv[4 * (size_t)c->S->tet[i] + k]] = 0;
 }
 
+/* For a point stuck after the single moves: min-conflicts along one axis over the
+ * Steiner points around it. The tets still stuck then are typically slivers of four
+ * points of an input facet that is bumpy below double resolution (a face of a box moved
+ * by ulps, or by subnormals at 0), its Steiner points packed in layers; the facet is
+ * nearly perpendicular to one axis, and along it such a cluster is positive only for a
+ * joint placement of its points: moving one alone always flattens a neighbouring sliver
+ * (Chazelle's polyhedron moved by ulps ended with one such tet). Each step takes the
+ * first tet that is not strictly positive in the stars of the points involved so far and
+ * moves one Steiner vertex of it, along the axis on which the first stuck tet is
+ * thinnest, to the offset that leaves the fewest non-positive tets in its star, even if
+ * not fewer than now (plateau moves make room), never back to an offset left in the last
+ * TR_ROUND_TABU steps; ties go to the smallest step, then the lowest vertex and offset,
+ * so it is deterministic. After TR_ROUND_CONFLICT_STEPS steps, or when those stars have
+ * no non-positive tet left, the moves are kept if the number of non-positive tets
+ * dropped, else all undone: like every other move it lowers the count or changes
+ * nothing. 1 iff kept. */
+#define TR_ROUND_CONFLICT_STEPS 256
+#define TR_ROUND_TABU 16
+typedef struct {
+  uint32_t v;
+  double was[3]; /* its doubles before the first move, to undo */
+} conflict_pt;
+
+static int axis_offset(const double *row, double x)
+{
+  for (int s = -TR_ROUND_RADIUS; s <= TR_ROUND_RADIUS; s++)
+    if (row[TR_ROUND_RADIUS + s] == x)
+      return s;
+  return TR_ROUND_RADIUS + 1; /* off the grid along this axis: every offset is a move */
+}
+
+static uint32_t first_bad(const struct tr_mesh *m, const star_index *S, const conflict_pt *pt,
+                          uint32_t npt)
+{
+  for (uint32_t i = 0; i < npt; i++)
+    for (uint32_t j = S->start[pt[i].v]; j < S->start[pt[i].v + 1]; j++)
+      if (!positive(m, S->tet[j]))
+        return S->tet[j];
+  return TR_NONE;
+}
+
+static int conflicts(const search_ctx *c, uint32_t t0)
+{
+  struct tr_mesh *m = c->m;
+  const star_index *S = c->S;
+  conflict_pt pt[4 + TR_ROUND_CONFLICT_STEPS];
+  uint32_t npt = 0, tabu_v[TR_ROUND_TABU];
+  int tabu_o[TR_ROUND_TABU], ntabu = 0, wtabu = 0;
+  const uint32_t *tv = m->tv + 4 * (size_t)t0;
+  int axis = 0;
+  double spread[3];
+  for (int k = 0; k < 3; k++) {
+    double lo = m->xyz[3 * (size_t)tv[0] + k], hi = lo;
+    for (int i = 1; i < 4; i++) {
+      double x = m->xyz[3 * (size_t)tv[i] + k];
+      lo = x < lo ? x : lo;
+      hi = x > hi ? x : hi;
+    }
+    spread[k] = hi - lo;
+    if (spread[k] < spread[axis])
+      axis = k;
+  }
+  for (int i = 0; i < 4; i++)
+    if (steiner(m, tv[i])) {
+      pt[npt].v = tv[i];
+      memcpy(pt[npt++].was, m->xyz + 3 * (size_t)tv[i], sizeof pt[0].was);
+    }
+  long change = 0;
+  uint32_t t = t0;
+  for (int step = 0; step < TR_ROUND_CONFLICT_STEPS && t != TR_NONE; step++) {
+    if (*S->work > S->budget)
+      break;
+    const uint32_t *bv = m->tv + 4 * (size_t)t;
+    long best_d = 0;
+    int best_o = 0, best_s = -1, best_i = -1;
+    for (int i = 0; i < 4; i++) {
+      uint32_t u = bv[i];
+      if (!steiner(m, u))
+        continue;
+      cand_axes ax;
+      candidates(m, u, ax);
+      double *x = m->xyz + 3 * (size_t)u, cur = x[axis];
+      int at = axis_offset(ax[axis], cur);
+      long before = star_bad(m, S, u, UINT32_MAX);
+      for (int o = -TR_ROUND_RADIUS; o <= TR_ROUND_RADIUS; o++) {
+        int is_tabu = o == at;
+        for (int k = 0; k < ntabu && !is_tabu; k++)
+          is_tabu = tabu_v[k] == u && tabu_o[k] == o;
+        if (is_tabu || !isfinite(ax[axis][TR_ROUND_RADIUS + o]))
+          continue;
+        x[axis] = ax[axis][TR_ROUND_RADIUS + o];
+        long d = (long)star_bad(m, S, u, UINT32_MAX) - before;
+        int dist = abs(o - at);
+        if (best_i < 0 || d < best_d || (d == best_d && dist < best_s) ||
+            (d == best_d && dist == best_s && u < bv[best_i])) {
+          best_d = d;
+          best_o = o;
+          best_s = dist;
+          best_i = i;
+        }
+      }
+      x[axis] = cur;
+    }
+    if (best_i < 0)
+      break;
+    uint32_t u = bv[best_i];
+    cand_axes ax;
+    candidates(m, u, ax);
+    double *x = m->xyz + 3 * (size_t)u;
+    tabu_v[wtabu % TR_ROUND_TABU] = u;
+    tabu_o[wtabu++ % TR_ROUND_TABU] = axis_offset(ax[axis], x[axis]);
+    ntabu = wtabu < TR_ROUND_TABU ? wtabu : TR_ROUND_TABU;
+    uint32_t k = 0;
+    while (k < npt && pt[k].v != u)
+      k++;
+    if (k == npt) {
+      pt[npt].v = u;
+      memcpy(pt[npt++].was, x, sizeof pt[0].was);
+    }
+    x[axis] = ax[axis][TR_ROUND_RADIUS + best_o];
+    change += best_d;
+    t = first_bad(m, S, pt, npt);
+  }
+  if (change < 0 && *S->work <= S->budget) {
+    for (uint32_t i = 0; i < npt; i++)
+      moved(c, pt[i].v);
+    return 1;
+  }
+  for (uint32_t i = 0; i < npt; i++)
+    memcpy(m->xyz + 3 * (size_t)pt[i].v, pt[i].was, sizeof pt[0].was);
+  return 0;
+}
+
+/* The kinds of move of a round, in the order they are tried (see round.h). */
+enum { MOVE_SINGLE, MOVE_CONFLICTS, MOVE_PAIR, MOVE_DESCEND };
+
 /* One pass over the Steiner points in index order, moving each whose star has a tet that
- * is not strictly positive: alone (pairs 0), with a neighbour (1), or to fewer bad tets (2). Returns whether
- * something moved; *fail_v, *fail_t = the first point left stuck and its bad tet. */
-static int one_round(const search_ctx *c, int pairs, uint32_t *fail_v, uint32_t *fail_t)
+ * is not strictly positive by one kind of move. Returns whether something moved;
+ * *fail_v, *fail_t = the first point left stuck and its bad tet. */
+static int one_round(const search_ctx *c, int kind, uint32_t *fail_v, uint32_t *fail_t)
 {
   int progress = 0;
   *fail_v = *fail_t = TR_NONE;
@@ -299,14 +435,15 @@ static int one_round(const search_ctx *c, int pairs, uint32_t *fail_v, uint32_t 
     uint32_t hint = 0, t;
     if (!steiner(c->m, v) || (t = star_failure(c->m, c->S, v, TR_NONE, &hint)) == TR_NONE)
       continue;
-    uint8_t bit = pairs == 2 ? STALE_DESCEND : pairs == 0 ? STALE_SEARCH : 0;
+    uint8_t bit = kind == MOVE_DESCEND ? STALE_DESCEND : kind == MOVE_SINGLE ? STALE_SEARCH : 0;
     uint32_t w = TR_NONE;
     if (!(c->stale[v] & bit) &&
-        (pairs == 2   ? descend(c->m, c->S, v, c->off, c->noff)
-         : pairs == 1 ? search_pair(c->m, c->S, v, c->off, c->npair, &w)
-                      : search(c->m, c->S, v, c->off, c->noff))) {
+        (kind == MOVE_CONFLICTS ? conflicts(c, t)
+         : kind == MOVE_DESCEND ? descend(c->m, c->S, v, c->off, c->noff)
+         : kind == MOVE_PAIR    ? search_pair(c->m, c->S, v, c->off, c->npair, &w)
+                                : search(c->m, c->S, v, c->off, c->noff))) {
       progress = 1;
-      moved(c, v);
+      moved(c, v); /* conflicts() also clears the other points it moved */
       if (w != TR_NONE)
         moved(c, w);
       continue;
@@ -369,13 +506,17 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
     c.npair++;
   uint32_t fail_v = TR_NONE, fail_t = TR_NONE;
   /* Single moves until a round moves nothing; then, if points are stuck, one round of
-   * pair moves, and single moves again after any pair helped. */
+   * the first other kind of move that helps (min-conflicts, pairs, descent: cheapest
+   * first, Chazelle moved by ulps spent 400,000 checks on pairs and 100,000 on the
+   * descent before one min-conflicts round of 543 freed it), then single moves again. */
   while (st == TR_OK) {
-    while (one_round(&c, 0, &fail_v, &fail_t))
+    while (one_round(&c, MOVE_SINGLE, &fail_v, &fail_t))
       ;
     if (fail_v == TR_NONE)
       break;
-    if (!one_round(&c, 1, &fail_v, &fail_t) && !one_round(&c, 2, &fail_v, &fail_t))
+    if (!one_round(&c, MOVE_CONFLICTS, &fail_v, &fail_t) &&
+        !one_round(&c, MOVE_PAIR, &fail_v, &fail_t) &&
+        !one_round(&c, MOVE_DESCEND, &fail_v, &fail_t))
       break;
   }
   for (uint32_t v = 0; v < m->nv; v++)

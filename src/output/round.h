@@ -21,15 +21,19 @@
  * makes every incident tet strictly positive wins. Steiner points are visited in index
  * order; a point whose search fails (a neighbouring Steiner point may be the culprit) is
  * retried in the next round after the others moved, until a round moves nothing. Then a
- * point still stuck is tried together with each Steiner neighbour w in index order (a
+ * point still stuck gets min-conflicts moves along one axis over the Steiner points
+ * around it (round.c, conflicts(): the layered slivers of a facet bumpy below double
+ * resolution need a joint placement along its normal), kept only if they lower the number
+ * of non-positive tets. If that fails, it is tried together with each Steiner neighbour
+ * w in index order (a
  * sliver between two Steiner points needs w farther away to leave room): w's candidates
  * that keep w's other tets positive, each with a search for the stuck point, both among
  * the offsets of norm i*i + j*j + k*k <= TR_ROUND_PAIR_RADIUS2. If no pair helps, a stuck
  * point moves to the first candidate with the fewest non-positive tets in its star when
  * that is fewer than now (clusters of nearly degenerate Steiner points then free each
- * other one by one). After any such move, single moves again. Every move changes only the
- * tets of the moved points and strictly lowers how many of them are not positive, so the
- * rounds terminate, and the result depends only on the mesh. */
+ * other one by one). After any such move, single moves again. Every kept move changes
+ * only the tets of the moved points and strictly lowers how many of them are not
+ * positive, so the rounds terminate, and the result depends only on the mesh. */
 #ifndef TR_OUTPUT_ROUND_H
 #define TR_OUTPUT_ROUND_H
 
@@ -46,7 +50,7 @@
  * The most any repaired mesh tried so far needed is 204,419 (a star polyhedron with
  * vertices moved by one ulp). Subnormal coordinates send orient3d to GMP (expansions
  * would underflow), so there a check costs ~10 us and the budget ~22 s (Chazelle's
- * polyhedron moved by ulps, which cannot be repaired). */
+ * polyhedron moved by ulps, subnormal at 0, is repaired with ~216,000). */
 #define TR_ROUND_BUDGET 2000000
 
 /* Repairs m->xyz of the Steiner points of m's kept tets (real, not TR_TF_OUTER) as above,

@@ -3,7 +3,7 @@
 # check must verify conformity and the volume of the domain (not the plain triangle sum,
 # which counts internal facets and cracks wrongly: regression, it reported "total volume
 # differs" on tetrec's own valid meshes), and on the ulp-moved Chazelle polyhedron, whose
-# exact Steiner points have up to 24,724 bits. usage: check_cli.sh TETREC GEN_HARD WORKDIR
+# exact Steiner points have up to 20,615 bits. usage: check_cli.sh TETREC GEN_HARD WORKDIR
 set -u
 tetrec=$1
 gen=$2
