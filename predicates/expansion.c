@@ -196,9 +196,75 @@ double tr_exp_value(int elen, const double *e)
  * not change the sign of an orientation or lifted determinant (the lifted column is
  * scaled by the square of the factor, the column of ones not at all). The determinant
  * is then evaluated with fraction-free Gaussian elimination (Bareiss), whose divisions
- * are exact. */
+ * are exact. Orientations (no lifted column) take a cheaper path, gmp_orient_sign. */
+/* x * 2^-kmin as an integer (kmin at most the exponent of x's last mantissa bit). */
+static void scaled(mpz_t out, double x, int kmin)
+{
+  if (x == 0) {
+    mpz_set_ui(out, 0);
+    return;
+  }
+  int k;
+  double f = frexp(x, &k);
+  mpz_set_d(out, ldexp(f, 53)); /* an integer below 2^53: exact */
+  mpz_mul_2exp(out, out, (mp_bitcnt_t)(k - 53 - kmin));
+}
+
+/* The orientation case (no lifted column): det[[p_i 1]] = (-1)^dim det[p_i - p_0], and
+ * that is linear in each coordinate column, so every column gets its own power of two.
+ * With one scale for all, a column of subnormals (a face of a model at 0 moved by
+ * ulps) next to one of ordinary coordinates made 1,100-bit integers of every entry,
+ * and Bareiss on the 4x4 matrix with its column of ones multiplied those up to 4,000
+ * bits; the rounding repair of such a model spent 65% of its time there. */
+static int gmp_orient_sign(int dim, const double *const *pts)
+{
+  mpz_t d[3][3], a, t, u;
+  mpz_inits(a, t, u, NULL);
+  for (int j = 0; j < dim; j++) {
+    int kmin = 0, have = 0;
+    for (int i = 0; i <= dim; i++)
+      if (pts[i][j] != 0) {
+        int k;
+        (void)frexp(pts[i][j], &k);
+        if (!have || k - 53 < kmin)
+          kmin = k - 53;
+        have = 1;
+      }
+    scaled(a, pts[0][j], kmin);
+    for (int i = 1; i <= dim; i++) {
+      mpz_init(d[i - 1][j]);
+      scaled(d[i - 1][j], pts[i][j], kmin);
+      mpz_sub(d[i - 1][j], d[i - 1][j], a);
+    }
+  }
+  int sign;
+  if (dim == 2) {
+    mpz_mul(t, d[0][0], d[1][1]);
+    mpz_submul(t, d[0][1], d[1][0]);
+    sign = mpz_sgn(t);
+  } else {
+    mpz_set_ui(a, 0);
+    for (int j = 0; j < 3; j++) {
+      /* cofactor of d[0][j]: the 2x2 minor of rows 1, 2 without column j, signed */
+      int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      mpz_mul(t, d[1][j1], d[2][j2]);
+      mpz_submul(t, d[1][j2], d[2][j1]);
+      mpz_mul(u, d[0][j], t);
+      mpz_add(a, a, u);
+    }
+    sign = -mpz_sgn(a);
+  }
+  for (int i = 0; i < dim; i++)
+    for (int j = 0; j < dim; j++)
+      mpz_clear(d[i][j]);
+  mpz_clears(a, t, u, NULL);
+  return sign;
+}
+
 int tr_gmp_lifted_det_sign(int dim, int lifted, const double *const *pts)
 {
+  if (!lifted && (dim == 2 || dim == 3))
+    return gmp_orient_sign(dim, pts);
   enum { NMAX = 5 };
   const int n = dim + lifted + 1;
   mpz_t m[NMAX][NMAX];
@@ -218,15 +284,8 @@ int tr_gmp_lifted_det_sign(int dim, int lifted, const double *const *pts)
     for (int j = 0; j < n; j++)
       mpz_init(m[i][j]);
   for (int i = 0; i < n; i++) {
-    for (int j = 0; j < dim; j++) {
-      double x = pts[i][j];
-      if (x != 0) {
-        int k;
-        double f = frexp(x, &k);
-        mpz_set_d(m[i][j], ldexp(f, 53)); /* an integer below 2^53: exact */
-        mpz_mul_2exp(m[i][j], m[i][j], (mp_bitcnt_t)(k - 53 - kmin));
-      }
-    }
+    for (int j = 0; j < dim; j++)
+      scaled(m[i][j], pts[i][j], kmin);
     if (lifted) {
       for (int j = 0; j < dim; j++)
         mpz_addmul(m[i][dim], m[i][j], m[i][j]);

@@ -49,8 +49,8 @@
  * rather than searching for minutes on clusters of nearly degenerate Steiner points.
  * The most any repaired mesh tried so far needed is 204,419 (a star polyhedron with
  * vertices moved by one ulp). Subnormal coordinates send orient3d to GMP (expansions
- * would underflow), so there a check costs ~10 us and the budget ~22 s (Chazelle's
- * polyhedron moved by ulps, subnormal at 0, is repaired with ~216,000). */
+ * would underflow), so there a check costs 1-6 us and the budget up to ~10 s
+ * (Chazelle's polyhedron moved by ulps, subnormal at 0, is repaired with ~216,000). */
 #define TR_ROUND_BUDGET 2000000
 
 /* Repairs m->xyz of the Steiner points of m's kept tets (real, not TR_TF_OUTER) as above,

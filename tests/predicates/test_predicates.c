@@ -123,11 +123,21 @@ static void gen_near(const pred_t *P, rng_t *r, pts_t p)
 }
 
 /* Coordinates of very different magnitudes: each point (or each coordinate) is a
- * random value times 2^k, k in [-520, 520], sometimes subnormal or zero. */
+ * random value times 2^k, k in [-520, 520], sometimes subnormal or zero; or one axis
+ * subnormal and the others ordinary (points near a face at 0 moved by subnormals: the
+ * GMP fallback scales each column of an orientation on its own). */
 static void gen_magnitudes(const pred_t *P, rng_t *r, pts_t p)
 {
   memset(p, 0, sizeof(pts_t));
-  int mode = rng_int(r, 0, 4), kp = rng_int(r, -520, 520);
+  int mode = rng_int(r, 0, 5), kp = rng_int(r, -520, 520);
+  if (mode == 5) {
+    int axis = rng_int(r, 0, P->dim - 1);
+    for (int i = 0; i < P->np; i++)
+      for (int j = 0; j < P->dim; j++)
+        p[i][j] = j == axis ? rng_int(r, -4, 4) * 0x1p-1074 * (double)(1 << rng_int(r, 0, 3))
+                            : (double)rng_int(r, 0, 64) / 4 + (rng_unit(r) < 0.5 ? 0x1p-40 : 0);
+    return;
+  }
   for (int i = 0; i < P->np; i++) {
     int k = mode == 0 ? kp : rng_int(r, -520, 520);
     for (int j = 0; j < P->dim; j++) {
