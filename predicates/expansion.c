@@ -197,6 +197,23 @@ double tr_exp_value(int elen, const double *e)
  * scaled by the square of the factor, the column of ones not at all). The determinant
  * is then evaluated with fraction-free Gaussian elimination (Bareiss), whose divisions
  * are exact. Orientations (no lifted column) take a cheaper path, gmp_orient_sign. */
+/* The exponent of the last mantissa bit of the smallest nonzero pts[i][j], i < rows,
+ * j0 <= j < j1 (0 if all are 0): scaling by 2^-that makes every such value an integer. */
+static int min_exp(const double *const *pts, int rows, int j0, int j1)
+{
+  int kmin = 0, have = 0;
+  for (int i = 0; i < rows; i++)
+    for (int j = j0; j < j1; j++)
+      if (pts[i][j] != 0) {
+        int k;
+        (void)frexp(pts[i][j], &k);
+        if (!have || k - 53 < kmin)
+          kmin = k - 53;
+        have = 1;
+      }
+  return kmin;
+}
+
 /* x * 2^-kmin as an integer (kmin at most the exponent of x's last mantissa bit). */
 static void scaled(mpz_t out, double x, int kmin)
 {
@@ -221,15 +238,7 @@ static int gmp_orient_sign(int dim, const double *const *pts)
   mpz_t d[3][3], a, t, u;
   mpz_inits(a, t, u, NULL);
   for (int j = 0; j < dim; j++) {
-    int kmin = 0, have = 0;
-    for (int i = 0; i <= dim; i++)
-      if (pts[i][j] != 0) {
-        int k;
-        (void)frexp(pts[i][j], &k);
-        if (!have || k - 53 < kmin)
-          kmin = k - 53;
-        have = 1;
-      }
+    int kmin = min_exp(pts, dim + 1, j, j + 1);
     scaled(a, pts[0][j], kmin);
     for (int i = 1; i <= dim; i++) {
       mpz_init(d[i - 1][j]);
@@ -268,18 +277,7 @@ int tr_gmp_lifted_det_sign(int dim, int lifted, const double *const *pts)
   enum { NMAX = 5 };
   const int n = dim + lifted + 1;
   mpz_t m[NMAX][NMAX];
-  int kmin = 0, have = 0;
-  for (int i = 0; i < n; i++)
-    for (int j = 0; j < dim; j++) {
-      double x = pts[i][j];
-      if (x != 0) {
-        int k;
-        (void)frexp(x, &k);
-        if (!have || k - 53 < kmin)
-          kmin = k - 53;
-        have = 1;
-      }
-    }
+  int kmin = min_exp(pts, n, 0, dim);
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++)
       mpz_init(m[i][j]);

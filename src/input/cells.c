@@ -271,23 +271,28 @@ static int cast_dir(caster *c, uint32_t t, int s, int d, uint32_t *uf, uint32_t 
   return 1;
 }
 
+void tr_input_tri_centroid(const struct tr_plc *plc, uint32_t t, tr_qpoint *q)
+{
+  const uint32_t *v = plc->tris + 3 * (size_t)t;
+  mpq_t x;
+  mpq_init(x);
+  for (int i = 0; i < 3; i++) {
+    mpq_set_d(q->c[i], P(plc, v[0])[i]);
+    for (int k = 1; k < 3; k++) {
+      mpq_set_d(x, P(plc, v[k])[i]);
+      mpq_add(q->c[i], q->c[i], x);
+    }
+    mpq_set_ui(x, 3, 1);
+    mpq_div(q->c[i], q->c[i], x);
+  }
+  mpq_clear(x);
+  tr_qpoint_update(q);
+}
+
 /* A ray from side s of triangle t: 1 done, 0 every direction grazes, -1 out of memory. */
 static int cast(caster *c, uint32_t t, int s, uint32_t *uf, uint32_t inf)
 {
-  const uint32_t *v = c->plc->tris + 3 * (size_t)t;
-  mpq_t x;
-  mpq_init(x);
-  for (int i = 0; i < 3; i++) { /* the centroid, exactly */
-    mpq_set_d(c->q.c[i], P(c->plc, v[0])[i]);
-    for (int k = 1; k < 3; k++) {
-      mpq_set_d(x, P(c->plc, v[k])[i]);
-      mpq_add(c->q.c[i], c->q.c[i], x);
-    }
-    mpq_set_ui(x, 3, 1);
-    mpq_div(c->q.c[i], c->q.c[i], x);
-  }
-  mpq_clear(x);
-  tr_qpoint_update(&c->q);
+  tr_input_tri_centroid(c->plc, t, &c->q);
   for (int d = 0; d < NDIR; d++) {
     int r = cast_dir(c, t, s, d, uf, inf);
     if (r != 0)

@@ -63,24 +63,6 @@ static int depth_of(const struct tr_plc *plc, const tr_point *P, uint32_t c,
   return depth;
 }
 
-/* The centroid of triangle t, exactly. */
-static void centroid(const struct tr_plc *plc, uint32_t t, tr_qpoint *q)
-{
-  mpq_t x;
-  mpq_init(x);
-  for (int k = 0; k < 3; k++) {
-    mpq_set_ui(q->c[k], 0, 1);
-    for (int j = 0; j < 3; j++) {
-      mpq_set_d(x, plc->xyz[3 * (size_t)plc->tris[3 * (size_t)t + j] + k]);
-      mpq_add(q->c[k], q->c[k], x);
-    }
-    mpq_set_ui(x, 1, 3);
-    mpq_mul(q->c[k], q->c[k], x);
-  }
-  mpq_clear(x);
-  tr_qpoint_update(q);
-}
-
 tr_status tr_input_shell_cavities(const struct tr_plc *plc, const uint32_t *order,
                                   const uint32_t *start, const char *closed, uint32_t ncomp,
                                   char *cavity)
@@ -118,7 +100,7 @@ tr_status tr_input_shell_cavities(const struct tr_plc *plc, const uint32_t *orde
       } else {
         tr_qpoint q;
         tr_qpoint_init(&q);
-        centroid(plc, t, &q);
+        tr_input_tri_centroid(plc, t, &q);
         tr_point P = tr_pt_q(&q);
         depth = depth_of(plc, &P, c, order, start, closed, ncomp, zfar, ext);
         tr_qpoint_clear(&q);

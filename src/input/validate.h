@@ -59,6 +59,11 @@ tr_status tr_input_domain_volume6(const struct tr_plc *plc, mpq_t out);
  * by internal facets. */
 tr_status tr_input_side_domains(const struct tr_plc *plc, uint8_t *sides);
 
+/* q = the centroid of triangle t of plc, exactly (q initialised). Ray casts start there:
+ * unlike a vertex, it cannot lie on another triangle that does not cross t. */
+struct tr_qpoint;
+void tr_input_tri_centroid(const struct tr_plc *plc, uint32_t t, struct tr_qpoint *q);
+
 /* cavity[c] = 1 iff closed shell c lies inside an odd number of other closed shells.
  * Shell c's triangles are order[start[c] .. start[c+1]). */
 tr_status tr_input_shell_cavities(const struct tr_plc *plc, const uint32_t *order,
