@@ -74,6 +74,11 @@ const char *tr_last_error(void);
 void tr_version(int *major, int *minor, int *patch);
 /* Frees memory the library returned to the caller (tr_mesh_point_exact). Thread-safe. */
 void tr_free(void *p);
+/* Frees the calling thread's cached exact-arithmetic temporaries (kept per thread so
+ * that the predicates do not allocate in their loops). A thread that used tetrec calls
+ * it before it exits, or its few kilobytes are lost (leak checkers report them). It may
+ * use tetrec again afterwards. Thread-safe. */
+void tr_thread_cleanup(void);
 
 /* ---- input: a piecewise linear complex (points + triangles + segments) ---- */
 typedef struct tr_plc tr_plc;

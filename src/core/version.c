@@ -1,6 +1,7 @@
 /* Library identity and the small public helpers that belong to no stage. */
 #include <stdlib.h>
 
+#include "qpoint.h"
 #include "tetrec.h"
 
 /* TR_VERSION_* come from meson.build's project version (src/core/meson.build), so the
@@ -17,6 +18,8 @@ void tr_version(int *major, int *minor, int *patch)
 }
 
 void tr_free(void *p) { free(p); }
+
+void tr_thread_cleanup(void) { tr_exact_scratch_free(); }
 
 const char *tr_stage_name(int stage)
 {
