@@ -164,10 +164,13 @@ typedef struct tr_options {
   int allow_open;  /* mesh the convex hull, keep facets as constraints (default 0) */
   int verbose;     /* 0 quiet, 1 normal, 2 chatty; messages go to stderr */
   uint64_t round_budget; /* star checks the rounding repair may spend (0: 2,000,000) */
-  /* Called by tr_mesh_plc at the start (fraction 0) and end (fraction 1) of each stage
-   * named by tr_stage_name, from the calling thread. A non-zero return cancels the run:
-   * tr_mesh_plc frees everything it allocated and returns TR_ERR_CANCELLED. NULL: none
-   * (default). progress_user is passed back as `user`. */
+  /* Called by tr_mesh_plc, from the calling thread, at the start (fraction 0) and end
+   * (fraction 1) of each stage it runs, in this order: "validation" (its self-
+   * intersection and nesting sub-steps included), "smoothing" (unless smooth is 0),
+   * "delaunay", "edge_recovery", "facet_recovery", "coloring", "rounding". A non-zero
+   * return cancels the run: tr_mesh_plc frees everything it allocated, sets *out to NULL
+   * and returns TR_ERR_CANCELLED. NULL: none (default). progress_user is passed back as
+   * `user`. */
   int (*progress)(void *user, const char *stage, double fraction);
   void *progress_user;
 } tr_options;
@@ -209,7 +212,12 @@ const char *tr_plc_report(const tr_plc *plc);
 tr_status tr_plc_write(const tr_plc *plc, const char *path);
 /* Writes a mesh: .mesh (Medit), .vtu (VTK XML), .node/.ele/.face or a TetGen base name
  * (writes base.node, base.ele, base.face). exact != 0: Steiner points as exact
- * rationals num/den in the .node file. */
+ * rationals num/den in the .node file. Tets carry their region (Medit reference, .ele
+ * attribute, VTU "region" cell data). The faces written are those of
+ * tr_mesh_boundary_faces with their markers (Medit triangle references, .face markers,
+ * VTU triangle cells after the tets with "marker" cell data), plus, for an open input
+ * meshed within its convex hull, the hull faces with marker 0; a tr_delaunay mesh writes
+ * its hull faces with marker 1. */
 tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact);
 /* Writes the statistics as one JSON object (stage_seconds as "stage_seconds": {"reading":
  * ..., one key per tr_stage_name}). */
