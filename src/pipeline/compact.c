@@ -9,8 +9,8 @@ static int keep(const struct tr_mesh *m, uint32_t t)
   return tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER);
 }
 
-/* o->attrs from in, renumbered by vmap: sub-faces whose vertices are all kept (on a
- * conforming mesh, all of them: each is a face of a kept tet), origins, input edges. */
+/* o->attrs from in, renumbered by vmap: the sub-faces that are faces of a kept tet (a
+ * facet between two cavities has none), origins, input edges. */
 static tr_status attach(struct tr_mesh *o, const struct tr_mesh *m, const uint32_t *vmap,
                         const tr_compact_in *in)
 {
@@ -20,6 +20,26 @@ static tr_status attach(struct tr_mesh *o, const struct tr_mesh *m, const uint32
   o->attrs = a;
   const tr_subfaces *sub = in->sub;
   uint32_t n = sub ? sub->n : 0, nv = o->nv;
+  uint32_t *tet = malloc(sizeof *tet * (n ? n : 1));
+  if (!tet)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u output faces", n);
+  tr_status st = n ? tr_mesh_find_faces(m, sub->v, n, tet) : TR_OK;
+  for (uint32_t f = 0; f < n && st == TR_OK; f++) {
+    uint32_t t = tet[f];
+    if (t == TR_NONE) {
+      st = tr_error(TR_ERR_INTERNAL, "sub-face %u of input triangle %u is not a mesh face",
+                    f, sub->tri[f]);
+      break;
+    }
+    int k = tr_fcode(m, t, sub->v[3 * (size_t)f], sub->v[3 * (size_t)f + 1],
+                     sub->v[3 * (size_t)f + 2]);
+    uint32_t u = k < 0 ? TR_NONE : TR_NEIG(m, t, k);
+    tet[f] = keep(m, t) || (u != TR_NONE && keep(m, u)); /* 1: written */
+  }
+  if (st != TR_OK) {
+    free(tet);
+    return st;
+  }
   a->faces = malloc(sizeof *a->faces * 3 * (size_t)(n ? n : 1));
   a->face_tri = malloc(sizeof *a->face_tri * (n ? n : 1));
   a->face_marker = malloc(sizeof *a->face_marker * (n ? n : 1));
@@ -29,18 +49,20 @@ static tr_status attach(struct tr_mesh *o, const struct tr_mesh *m, const uint32
     a->vindex = malloc(sizeof *a->vindex * (nv ? nv : 1));
   }
   if (!a->faces || !a->face_tri || !a->face_marker || !a->edges ||
-      (in->vkind && (!a->vkind || !a->vindex)))
+      (in->vkind && (!a->vkind || !a->vindex))) {
+    free(tet);
     return tr_error(TR_ERR_NOMEM, "out of memory for %u output faces", n);
+  }
   for (uint32_t f = 0; f < n; f++) {
     const uint32_t *v = sub->v + 3 * (size_t)f;
-    if (vmap[v[0]] == TR_NONE || vmap[v[1]] == TR_NONE || vmap[v[2]] == TR_NONE)
-      return tr_error(TR_ERR_INTERNAL, "sub-face %u of input triangle %u is in no kept tet",
-                      f, sub->tri[f]);
+    if (!tet[f])
+      continue;
     for (int j = 0; j < 3; j++)
       a->faces[3 * (size_t)a->nfaces + (size_t)j] = vmap[v[j]];
     a->face_tri[a->nfaces] = sub->tri[f];
     a->face_marker[a->nfaces++] = in->tri_marker ? in->tri_marker[sub->tri[f]] : 0;
   }
+  free(tet);
   a->nedges = in->nedges;
   if (in->nedges)
     memcpy(a->edges, in->edges, sizeof *a->edges * 2 * (size_t)in->nedges);

@@ -32,6 +32,7 @@ for surface in "$@"; do
   tail -n 1 "$work/$name.txt"
 done
 # The program really ran against the installed copy.
-LD_LIBRARY_PATH="$libdir" ldd "$work/embed" | grep -q "$libdir/libtetrec.so" || {
+LD_LIBRARY_PATH="$libdir" ldd "$work/embed" >"$work/ldd.txt"
+grep -q "$libdir/libtetrec.so" "$work/ldd.txt" || {
   echo "FAIL: embed does not load $libdir/libtetrec.so"; exit 1; }
 echo "installed library: embed agrees with the CLI on $# surfaces"

@@ -81,6 +81,23 @@ static tr_plc *two_region_box(void)
   return p;
 }
 
+/* A case of tests/hard/hard_cases.c as a PLC (NULL if it does not exist). */
+static tr_plc *hard_plc(const char *name)
+{
+  tr_plc *p = NULL;
+  for (int i = 0; i < hard_case_count(); i++) {
+    if (strcmp(hard_case_name(i), name) != 0)
+      continue;
+    hard_case c;
+    EXPECT(hard_case_build(i, &c) == 0, "build %s", name);
+    EXPECT(tr_plc_create(&p) == TR_OK && tr_plc_set(p, c.xyz, c.np, c.tris, c.nt, NULL) == TR_OK,
+           "%s: %s", name, tr_last_error());
+    hard_case_free(&c);
+  }
+  EXPECT(p != NULL, "no hard case %s", name);
+  return p;
+}
+
 static tr_options quiet(void)
 {
   tr_options o;
@@ -169,6 +186,8 @@ static void area2(const tr_point *a, const tr_point *b, const tr_point *c, int d
 
 static int cmp_key(const void *a, const void *b) { return tr_cmp_face_key(a, b); }
 
+static unsigned triangles_without_faces; /* facets between two cavities seen */
+
 /* The accessors agree with the store, and the boundary faces tile every input triangle
  * exactly, each oriented like it, each a face of a tet, with its triangle's marker. */
 static void check_accessors(const tr_mesh *m, const tr_plc *used, const char *name)
@@ -222,8 +241,22 @@ static void check_accessors(const tr_mesh *m, const tr_plc *used, const char *na
       apex++;
     mpq_set_ui(sum, 0, 1);
     uint32_t first = f;
-    EXPECT(f < nf && btri[f] == k, "%s: triangle %u has no face (faces sorted by triangle)",
-           name, k);
+    if (f >= nf || btri[f] != k) {
+      /* no face listed (faces are sorted by triangle): then no tet has a face inside the
+       * triangle, as for a facet between two cavities */
+      triangles_without_faces++;
+      for (uint32_t t = 0; t < nt; t++)
+        for (int j = 0; j < 4; j++) {
+          int inside = 1;
+          for (int i = 0; i < 3; i++) {
+            tr_point q = vpt(m, tv[4 * t + tr_face_vtx[j][i]]);
+            inside &= in_triangle(&A, &B, &C, &q) >= 0;
+          }
+          EXPECT(!inside, "%s: triangle %u has no face listed but tet %u has one in it", name,
+                 k, t);
+        }
+      continue;
+    }
     for (; f < nf && btri[f] == k; f++) {
       const uint32_t *F = bf + 3 * (size_t)f;
       tr_point p[3] = {vpt(m, F[0]), vpt(m, F[1]), vpt(m, F[2])};
@@ -378,26 +411,20 @@ static void t_accessors(void)
   tr_plc_destroy(p);
   /* generated hard cases with Steiner points on facets, cracks and fins */
   static const char *const hard[] = {"chazelle_g4", "crack_inside_box", "fin_attached_inside",
-                                     "nested_cavity", "two_regions_inverted"};
-  for (size_t h = 0; h < sizeof hard / sizeof *hard; h++)
-    for (int i = 0; i < hard_case_count(); i++) {
-      if (strcmp(hard_case_name(i), hard[h]) != 0)
-        continue;
-      hard_case c;
-      EXPECT(hard_case_build(i, &c) == 0, "build %s", hard[h]);
-      p = NULL;
-      EXPECT(tr_plc_create(&p) == TR_OK &&
-                 tr_plc_set(p, c.xyz, c.np, c.tris, c.nt, NULL) == TR_OK,
-             "%s: %s", hard[h], tr_last_error());
-      if (p)
-        run_all_checks(p, hard[h], counts);
-      tr_plc_destroy(p);
-      hard_case_free(&c);
-    }
-  printf("vertex origins: %u input, %u on edges, %u on triangles, %u interior\n", counts[0],
-         counts[1], counts[2], counts[3]);
+                                     "nested_cavity", "two_regions_inverted",
+                                     "two_cavities_sharing_a_face", "cavity_and_crack"};
+  for (size_t h = 0; h < sizeof hard / sizeof *hard; h++) {
+    p = hard_plc(hard[h]);
+    if (p)
+      run_all_checks(p, hard[h], counts);
+    tr_plc_destroy(p);
+  }
+  printf("vertex origins: %u input, %u on edges, %u on triangles, %u interior; %u input "
+         "triangles between two cavities\n",
+         counts[0], counts[1], counts[2], counts[3], triangles_without_faces);
   /* the inputs exercise Steiner points on edges and on triangles */
   EXPECT(counts[1] > 0 && counts[2] > 0, "inputs gave no Steiner point on an edge/triangle");
+  EXPECT(triangles_without_faces > 0, "no input triangle between two cavities was tried");
 }
 
 /* Internal facet: both regions touch it, its faces are listed once each with markers. */
@@ -537,6 +564,70 @@ static void t_writers(const char *tmp)
     free(buf);
   } else
     EXPECT(0, "no .vtu");
+  tr_mesh_destroy(m);
+}
+
+/* An open surface meshed within its convex hull (allow_open): the .mesh triangles are
+ * the faces on input triangles with their markers, then every other hull face with
+ * reference 0, so together they bound the mesh. */
+static void t_writers_open(const char *tmp)
+{
+  tr_plc *p = hard_plc("open_box");
+  if (!p)
+    return;
+  tr_options o = quiet();
+  o.allow_open = 1;
+  tr_mesh *m = NULL;
+  EXPECT(tr_mesh_plc(p, &o, &m, NULL) == TR_OK, "open box: %s", tr_last_error());
+  tr_plc_destroy(p);
+  if (!m)
+    return;
+  EXPECT(tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT, NULL) == TR_OK, "open box: %s",
+         tr_last_error());
+  char path[4200];
+  snprintf(path, sizeof path, "%s/open.mesh", tmp);
+  EXPECT(tr_mesh_write(m, path, 0) == TR_OK, "write: %s", tr_last_error());
+  tr_plc *q = NULL;
+  EXPECT(tr_plc_read(path, &q) == TR_OK, "read back: %s", tr_last_error());
+  uint32_t nf = tr_mesh_num_boundary_faces(m), nt = tr_mesh_num_tets(m);
+  if (q) {
+    EXPECT(q->ntris > nf && memcmp(q->tris, tr_mesh_boundary_faces(m), 12 * (size_t)nf) == 0 &&
+               memcmp(q->tri_marker, tr_mesh_boundary_markers(m), 4 * (size_t)nf) == 0,
+           "open: the input faces come first (%u triangles, %u faces)", q->ntris, nf);
+    for (uint32_t i = nf; i < q->ntris; i++)
+      EXPECT(q->tri_marker[i] == 0, "open: hull face %u has marker %d", i, q->tri_marker[i]);
+    /* every face of exactly one tet (the hull) is among the triangles written */
+    const uint32_t *tv = tr_mesh_tets(m);
+    uint32_t *keys = malloc(sizeof *keys * 12 * (size_t)nt), *tk = malloc(12 * (size_t)q->ntris);
+    for (uint32_t t = 0; t < nt; t++)
+      for (int k = 0; k < 4; k++) {
+        uint32_t *f = keys + 12 * (size_t)t + 3 * k;
+        for (int j = 0; j < 3; j++)
+          f[j] = tv[4 * t + tr_face_vtx[k][j]];
+        tr_sort3(f);
+      }
+    qsort(keys, 4 * (size_t)nt, 12, cmp_key);
+    memcpy(tk, q->tris, 12 * (size_t)q->ntris);
+    for (uint32_t i = 0; i < q->ntris; i++)
+      tr_sort3(tk + 3 * (size_t)i);
+    qsort(tk, q->ntris, 12, cmp_key);
+    uint32_t hull = 0;
+    for (size_t i = 0; i < 4 * (size_t)nt;) {
+      size_t j = i + 1;
+      while (j < 4 * (size_t)nt && cmp_key(keys + 3 * i, keys + 3 * j) == 0)
+        j++;
+      if (j == i + 1) {
+        hull++;
+        EXPECT(bsearch(keys + 3 * i, tk, q->ntris, 12, cmp_key) != NULL,
+               "open: hull face not written");
+      }
+      i = j;
+    }
+    EXPECT(hull > 0, "open: no hull face");
+    free(keys);
+    free(tk);
+  }
+  tr_plc_destroy(q);
   tr_mesh_destroy(m);
 }
 
@@ -706,6 +797,8 @@ int main(int argc, char **argv)
     t_delaunay_accessors();
   else if (!strcmp(c, "writers"))
     t_writers(argc > 3 ? argv[3] : ".");
+  else if (!strcmp(c, "writers_open"))
+    t_writers_open(argc > 3 ? argv[3] : ".");
   else if (!strcmp(c, "progress"))
     t_progress();
   else if (!strcmp(c, "abi_size"))
