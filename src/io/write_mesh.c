@@ -29,12 +29,72 @@ void tr_io_put_ints(FILE *f, const int64_t *x, int n)
   fwrite(line, 1, (size_t)(p - line), f);
 }
 
-/* Boundary faces of the kept tets: a face is written when the tet across it is missing,
- * a ghost, or outside the domain, or belongs to another region. Each face is listed as
- * seen from its tet (right-hand normal pointing out of it). */
+/* Faces written: those of include/tetrec.h's tr_mesh_boundary_faces with their markers
+ * for a tr_mesh_plc mesh (input_faces); for other meshes (tr_delaunay's) the boundary
+ * faces of the kept tets: a face is written when the tet across it is missing, a ghost,
+ * or outside the domain, or belongs to another region, listed as seen from its tet
+ * (right-hand normal pointing out of it), marker 1. */
 static int keep(const struct tr_mesh *m, uint32_t t)
 {
   return tr_tet_is_real(m, t) && !(m->flags && (m->flags[t] & TR_TF_OUTER));
+}
+
+/* The faces a tr_mesh_plc mesh writes: the faces on input triangles with their markers
+ * (m->attrs, include/tetrec.h's boundary faces), then any other face on the boundary of
+ * the kept tets (the convex hull of an open input meshed with allow_open) with marker
+ * 0, as seen from its tet. */
+static tr_status input_faces(const struct tr_mesh *m, uint32_t **tris, int32_t **mark,
+                             uint32_t *nf)
+{
+  const struct tr_mesh_attrs *a = m->attrs;
+  uint32_t n = a->nfaces, extra = 0;
+  uint32_t *key = malloc(sizeof *key * 3 * (size_t)(n ? n : 1));
+  if (!key)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u faces", n);
+  memcpy(key, a->faces, sizeof *key * 3 * (size_t)n);
+  for (uint32_t f = 0; f < n; f++)
+    tr_sort3(key + 3 * (size_t)f);
+  qsort(key, n, 3 * sizeof *key, tr_cmp_face_key);
+  for (int pass = 0; pass < 2; pass++) {
+    if (pass) {
+      *tris = malloc(sizeof **tris * 3 * (size_t)(n + extra ? n + extra : 1));
+      *mark = malloc(sizeof **mark * (n + extra ? n + extra : 1));
+      if (!*tris || !*mark) {
+        free(*tris);
+        free(*mark);
+        free(key);
+        return tr_error(TR_ERR_NOMEM, "out of memory for %u faces", n + extra);
+      }
+      memcpy(*tris, a->faces, sizeof **tris * 3 * (size_t)n);
+      memcpy(*mark, a->face_marker, sizeof **mark * n);
+      extra = 0;
+    }
+    for (uint32_t t = 0; t < m->nt; t++) {
+      if (!keep(m, t))
+        continue;
+      for (int k = 0; k < 4; k++) {
+        uint32_t o = TR_NEIG(m, t, k);
+        if (o != TR_NONE && keep(m, o))
+          continue;
+        /* tr_face_vtx order has the normal pointing into the tet: reverse it. */
+        uint32_t w[3] = {m->tv[4 * (size_t)t + tr_face_vtx[k][0]],
+                         m->tv[4 * (size_t)t + tr_face_vtx[k][2]],
+                         m->tv[4 * (size_t)t + tr_face_vtx[k][1]]};
+        uint32_t q[3] = {w[0], w[1], w[2]};
+        tr_sort3(q);
+        if (bsearch(q, key, n, 3 * sizeof *key, tr_cmp_face_key))
+          continue;
+        if (pass) {
+          memcpy(*tris + 3 * (size_t)(n + extra), w, sizeof w);
+          (*mark)[n + extra] = 0;
+        }
+        extra++;
+      }
+    }
+  }
+  free(key);
+  *nf = n + extra;
+  return TR_OK;
 }
 
 tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
@@ -53,10 +113,11 @@ tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
                     "doubles; only the exact output (--exact, .node) is valid for this mesh",
                     path, bad);
   uint32_t nt = 0, nf = 0;
+  int from_input = m->attrs && m->attrs->faces;
   for (uint32_t t = 0; t < m->nt; t++)
     if (keep(m, t)) {
       nt++;
-      for (int k = 0; k < 4; k++) {
+      for (int k = 0; k < 4 && !from_input; k++) {
         uint32_t o = TR_NEIG(m, t, k);
         if (o == TR_NONE || !keep(m, o) || (m->region && m->region[o] != m->region[t] && o > t))
           nf++;
@@ -64,14 +125,21 @@ tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
     }
   uint32_t *tets = malloc(sizeof *tets * 4 * (size_t)(nt ? nt : 1));
   int32_t *reg = m->region ? malloc(sizeof *reg * (nt ? nt : 1)) : NULL;
-  uint32_t *tris = malloc(sizeof *tris * 3 * (size_t)(nf ? nf : 1));
-  int32_t *mark = calloc(nf ? nf : 1, sizeof *mark);
-  if (!tets || (m->region && !reg) || !tris || !mark) {
+  uint32_t *tris = NULL;
+  int32_t *mark = NULL;
+  tr_status st = TR_OK;
+  if (from_input)
+    st = input_faces(m, &tris, &mark, &nf);
+  else {
+    tris = malloc(sizeof *tris * 3 * (size_t)(nf ? nf : 1));
+    mark = calloc(nf ? nf : 1, sizeof *mark);
+  }
+  if (st != TR_OK || !tets || (m->region && !reg) || !tris || !mark) {
     free(tets);
     free(reg);
     free(tris);
     free(mark);
-    return tr_error(TR_ERR_NOMEM, "out of memory writing %s", path);
+    return st != TR_OK ? st : tr_error(TR_ERR_NOMEM, "out of memory writing %s", path);
   }
   uint32_t i = 0, f = 0;
   for (uint32_t t = 0; t < m->nt; t++) {
@@ -81,7 +149,7 @@ tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
     if (reg)
       reg[i] = (int32_t)m->region[t];
     i++;
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < 4 && !from_input; k++) {
       uint32_t o = TR_NEIG(m, t, k);
       if (o == TR_NONE || !keep(m, o) || (m->region && m->region[o] != m->region[t] && o > t)) {
         /* tr_face_vtx order has the normal pointing into the tet: reverse it. */
@@ -95,7 +163,7 @@ tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
   }
   struct tr_mesh_view v = {m->nv, m->xyz, (const tr_qpoint *const *)m->vq, nt, tets, reg,
                            nf, tris, mark};
-  tr_status st = tr_write_mesh_view(&v, path, exact);
+  st = tr_write_mesh_view(&v, path, exact);
   free(tets);
   free(reg);
   free(tris);
