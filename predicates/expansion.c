@@ -152,6 +152,28 @@ int tr_exp_compress(int elen, const double *e, double *h)
   return top;
 }
 
+int tr_exp_mul(int ne, const double *e, int nf, const double *f, double *h, double *scratch)
+{
+  if (ne > nf) { /* loop over the shorter one: fewer (longer) scalings and sums */
+    const double *t = e;
+    e = f;
+    f = t;
+    int k = ne;
+    ne = nf;
+    nf = k;
+  }
+  double *acc = scratch, *tmp = scratch + 2 * ne * nf, *sc = h;
+  int n = tr_exp_scale(nf, f, e[0], acc);
+  for (int i = 1; i < ne; i++) {
+    int ns = tr_exp_scale(nf, f, e[i], sc);
+    n = tr_exp_sum(n, acc, ns, sc, tmp);
+    double *sw = acc;
+    acc = tmp;
+    tmp = sw;
+  }
+  return tr_exp_compress(n, acc, h);
+}
+
 double tr_exp_estimate(int elen, const double *e)
 {
   double s = 0;

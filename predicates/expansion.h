@@ -128,6 +128,11 @@ int tr_exp_diff(int elen, const double *e, int flen, const double *f, double *h)
 int tr_exp_scale(int elen, const double *e, double b, double *h);
 /* h = e with fewer components (Compress); h may alias e. Returns the new length. */
 int tr_exp_compress(int elen, const double *e, double *h);
+/* h = e * f exactly, compressed (the product of two expansions: f scaled by every
+ * component of e, summed, then Compress so that later stages work on a handful of
+ * components instead of the 2 ne nf the scalings produce). h holds 2 ne nf doubles,
+ * scratch 4 ne nf; neither may alias e or f. Returns the length of h. */
+int tr_exp_mul(int ne, const double *e, int nf, const double *f, double *h, double *scratch);
 /* Floating approximation of the value of e (sum from the smallest component). */
 double tr_exp_estimate(int elen, const double *e);
 /* Exact sign of e (the sign of its largest nonzero component). */
@@ -166,8 +171,12 @@ static inline int tr_exp_in_range(int n, const double *const *p, int dim, double
 static inline int tr_exp_exact_in_float(int n, const double *d, int k, int deg)
 {
   double m = 0;
-  for (int i = 0; i < n; i++)
-    m = fmax(m, fabs(d[i])); /* fabs: a sign test would be a mispredicted branch */
+  for (int i = 0; i < n; i++) {
+    /* fabs: a sign test would be a mispredicted branch; the ternary is one maxsd where
+     * fmax is a libm call (NaN semantics) */
+    const double a = fabs(d[i]);
+    m = a > m ? a : m;
+  }
   if (m == 0)
     return 1;
   /* e with 2^(e-1) <= m < 2^e from the exponent field (no libm call on this path);

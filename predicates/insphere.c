@@ -14,6 +14,13 @@
  *    the largest rounded |difference| per axis and S = mx^2 + my^2 + mz^2,
  *    P <= 4 rows * 6 mx my mz * S / (1-eps)^5, so the bound is
  *    384 eps (1 + O(eps)) mx my mz S; seven roundings computing it: 385 eps.
+ * A (again, in tr_insphere_adapt, inside the exact range below): the same k = 16
+ *    against the permanent perm of the rounded differences, computed with at most 11
+ *    roundings on any monomial (|product| 1, minor sum 1, times |z| 1, two sums 2,
+ *    lift 3, l*f 1, final sums 2); the exact-difference permanent P <= perm /
+ *    (1-eps)^16, so |error| <= 16 eps (1 + O(eps)) perm; 17 eps covers the O(eps^2)
+ *    terms and the rounding of the bound. The range (no product underflows, nothing
+ *    overflows) makes every rounding relative, as for stages B and C.
  * B: n = 5: (5 eps + 10 eps^2 + ...) P~; P~ computed with 11 roundings: (5 + 256 eps) eps.
  * C: the first-order term is the directional derivative along the tails t:
  *      L = sum_rows +-( 2 (p.t_p) M_p + l_p dM_p ),
@@ -25,29 +32,51 @@
  *    D the raw orient3d expansion of orient.c's stage D and l_i = x^2 + y^2 + z^2
  *    multiplied in by scaling twice per axis. */
 #include "expansion.h"
+#include "intdet.h"
 #include "predicates.h"
 
 #include <math.h>
 #include <stdlib.h>
 
 #define EPS TR_EPS
+#define IS_A (17.0 * EPS)
 #define IS_B ((5.0 + 256.0 * EPS) * EPS)
 #define IS_C (82.0 * EPS * EPS)
 #define IS_LO 0x1p-120
 #define IS_HI 0x1p190
 
-/* h = m * (x^2 + y^2 + z^2) exactly; at most 12 nm components (nm <= 96). */
+/* h = x^2 + y^2 + z^2 exactly, compressed (at most 6 components). */
+static int lift3(double x, double y, double z, double *h)
+{
+  double a[2], b[2], c[2], t[4], u[6];
+  int na = 0, nb = 0, nc = 0;
+  double hi, lo;
+  tr_two_product(x, x, &hi, &lo);
+  if (lo != 0)
+    a[na++] = lo;
+  a[na++] = hi;
+  tr_two_product(y, y, &hi, &lo);
+  if (lo != 0)
+    b[nb++] = lo;
+  b[nb++] = hi;
+  tr_two_product(z, z, &hi, &lo);
+  if (lo != 0)
+    c[nc++] = lo;
+  c[nc++] = hi;
+  int nt = tr_exp_sum(na, a, nb, b, t);
+  int nu = tr_exp_sum(nt, t, nc, c, u);
+  return tr_exp_compress(nu, u, h);
+}
+
+/* h = m * (x^2 + y^2 + z^2) exactly, compressed: at most 12 nm components (nm <= 96).
+ * The operands of near-cospherical points carry 50 to 300 significant bits; compressed,
+ * m and the lift are a few components each, so the product costs a few scalings of
+ * short expansions instead of six scalings of m and two long sums. */
 static int lift3_times(int nm, const double *m, double x, double y, double z, double *h)
 {
-  double t1[192], t2[384], t3[384], s[768];
-  int n1 = tr_exp_scale(nm, m, x, t1);
-  int n2 = tr_exp_scale(n1, t1, x, t2);
-  n1 = tr_exp_scale(nm, m, y, t1);
-  int n3 = tr_exp_scale(n1, t1, y, t3);
-  int ns = tr_exp_sum(n2, t2, n3, t3, s);
-  n1 = tr_exp_scale(nm, m, z, t1);
-  n2 = tr_exp_scale(n1, t1, z, t2);
-  return tr_exp_sum(ns, s, n2, t2, h);
+  double l[6], scratch[4 * 6 * 96];
+  int nl = lift3(x, y, z, l);
+  return tr_exp_mul(nl, l, nm, m, h, scratch);
 }
 
 /* h = e*b + f*c + g*d exactly for 4-component minors (at most 24 components). */
@@ -59,7 +88,8 @@ static int det3_from_minors(int ne, const double *e, double b, int nf, const dou
   int n2 = tr_exp_scale(nf, f, c, s2);
   int n3 = tr_exp_scale(ng, g, d, s3);
   int nt = tr_exp_sum(n1, s1, n2, s2, t);
-  return tr_exp_sum(nt, t, n3, s3, h);
+  int nh = tr_exp_sum(nt, t, n3, s3, h);
+  return tr_exp_compress(nh, h, h);
 }
 
 /* ---- stage D: raw coordinates ---- */
@@ -70,7 +100,8 @@ static int raw_T(double mm[5][5][4], int nm[5][5], int i, int j, int k, double *
 {
   double t[8];
   int n = tr_exp_sum(nm[i][j], mm[i][j], nm[j][k], mm[j][k], t);
-  return tr_exp_diff(n, t, nm[i][k], mm[i][k], h);
+  n = tr_exp_diff(n, t, nm[i][k], mm[i][k], h);
+  return tr_exp_compress(n, h, h);
 }
 
 static int raw_orient3d(const double *const *p, double mm[5][5][4], int nm[5][5],
@@ -88,7 +119,8 @@ static int raw_orient3d(const double *const *p, double mm[5][5][4], int nm[5][5]
   }
   int n1 = tr_exp_sum(ns[0], s[0], ns[1], s[1], u1);
   int n2 = tr_exp_sum(ns[2], s[2], ns[3], s[3], u2);
-  return tr_exp_sum(n1, u1, n2, u2, h);
+  int n = tr_exp_sum(n1, u1, n2, u2, h);
+  return tr_exp_compress(n, h, h);
 }
 
 enum { IS_RAW_MAX = 5 * 1152 };
@@ -169,8 +201,8 @@ double tr_insphere_adapt(const double a[3], const double b[3], const double c[3]
    * intermediate of the filter's expression (predicates.h) a multiple of q^n below
    * 2^53 q^n: minors < 2^19 q^2, M < 2^30 q^3, lifts < 2^20 q^2, l M < 2^50 q^5, the
    * two-level sum < 2^52 q^5. The floating determinant is then exact. */
+  const double dv[12] = {ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz};
   if (exact_diffs) {
-    const double dv[12] = {ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz};
     if (tr_exp_exact_in_float(12, dv, 9, 5)) {
       const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
       const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
@@ -179,6 +211,11 @@ double tr_insphere_adapt(const double a[3], const double b[3], const double c[3]
       return (la * ma - lb * mb) + (lc * mc - ld * md);
     }
   }
+  /* Differences that are short integers times one power of two (near-cospherical
+   * points close together, the common hard case): exact in fixed-width integers. */
+  double v;
+  if (tr_insphere_int(p, dv, exact_diffs, &v))
+    return v;
   if (!tr_exp_in_range(5, p, 3, IS_LO, IS_HI))
     return -tr_gmp_lifted_det_sign(3, 1, p);
   {
@@ -190,6 +227,14 @@ double tr_insphere_adapt(const double a[3], const double b[3], const double c[3]
     const double fc = (fabs(az) * pbd + fabs(bz) * pad) + fabs(dz) * pab;
     const double fd = (fabs(az) * pbc + fabs(bz) * pac) + fabs(cz) * pab;
     const double perm = (la * fa + lb * fb) + (lc * fc + ld * fd);
+
+    /* Stage A with the permanent: the filter's determinant against its error bound in
+     * terms of the computed permanent, far tighter than the inline filter's
+     * mx my mz S on near-cospherical points (there |det| is some 10^3 eps P~ while
+     * mx my mz S exceeds P~ many times), and decisive for most of them. */
+    const double det = tr_insphere_det_(a, b, c, d, e);
+    if (det > IS_A * perm || -det > IS_A * perm)
+      return det;
 
     /* Stage B. */
     double ab[4], ac[4], ad[4], bc[4], bd[4], cd[4];

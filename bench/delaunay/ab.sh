@@ -5,7 +5,7 @@
 # checks that both binaries build the same store (bench_tetrec's `hash`).
 #
 # usage: bench/delaunay/ab.sh OLD_BENCH_TETREC NEW_BENCH_TETREC [CASE] [PAIRS]
-#   CASE: random1000000 (default), random100000, grid100 ...; PAIRS: default 5
+#   CASE: random1000000 (default), random100000, sphere250000, grid100 ...; PAIRS: default 5
 #   CGAL=path/to/bench_cgal to add CGAL's time (default: next to NEW, if built)
 # Keep the old binary with a plain cp before rebuilding, e.g.
 #   cp build-bench/bench/delaunay/bench_tetrec /tmp/bench_old
@@ -20,6 +20,7 @@ DIR=$(mktemp -d)
 trap 'rm -rf "$DIR"' EXIT
 case $CASE in
   random*) "$NEW" gen random "${CASE#random}" "$DIR/in.bin" "$DIR/in.node" ;;
+  sphere*) "$NEW" gen sphere "${CASE#sphere}" "$DIR/in.bin" "$DIR/in.node" ;;
   grid*) "$NEW" gen grid "${CASE#grid}" "$DIR/in.bin" "$DIR/in.node" ;;
   *) echo "unknown case $CASE"; exit 2 ;;
 esac

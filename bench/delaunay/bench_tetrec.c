@@ -1,6 +1,10 @@
 /* Delaunay benchmark driver for tetrec, and the point generator shared with the CGAL
  * and tetgen runs (bench/delaunay/run.sh).
- *   bench_tetrec gen random|grid N out.bin out.node   (grid: N points per axis)
+ *   bench_tetrec gen random|sphere|grid N out.bin out.node   (grid: N points per axis)
+ * random: N points uniform in the unit cube; sphere: N points on the unit sphere (Gaussian
+ * samples normalised, so every insphere test among close points is nearly degenerate:
+ * the case that exercises the exact stages of the predicates); grid: the N^3 integer
+ * grid (exactly cospherical: the symbolic perturbation decides). Fixed seeds.
  *   bench_tetrec run in.bin [check|hash]
  * .bin: uint32 n, then 3n doubles (native endianness). run prints one line
  * "tetrec n=.. tets=.. dt_seconds=.. dt_cpu=.." (triangulation only, reading excluded;
@@ -9,6 +13,7 @@
  * prints an FNV-1a hash of the store (nt, tv, tn, v2t), to compare two builds of the
  * kernel byte for byte. */
 #define _POSIX_C_SOURCE 199309L
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,6 +38,22 @@ static double cpu(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* xorshift64: a fixed sequence on every machine */
+static double uniform01(unsigned long long *s)
+{
+  *s ^= *s << 13;
+  *s ^= *s >> 7;
+  *s ^= *s << 17;
+  return (double)(*s >> 11) * 0x1p-53;
+}
+
+/* Standard normal by Box-Muller from two uniforms in (0, 1]. */
+static double gauss(unsigned long long *s)
+{
+  const double u = 1.0 - uniform01(s), v = uniform01(s);
+  return sqrt(-2.0 * log(u)) * cos(6.283185307179586 * v);
+}
+
 static int gen(const char *kind, unsigned long n, const char *bin, const char *node)
 {
   size_t np;
@@ -48,16 +69,35 @@ static int gen(const char *kind, unsigned long n, const char *bin, const char *n
           p[3 * k + 1] = (double)y;
           p[3 * k + 2] = (double)z;
         }
-  } else {
+  } else if (!strcmp(kind, "sphere")) {
+    np = n;
+    p = malloc(3 * np * sizeof *p);
+    unsigned long long s = 0x9e3779b97f4a7c15ull;
+    for (size_t i = 0; i < np; i++) {
+      double x, y, z, r;
+      do {
+        x = gauss(&s);
+        y = gauss(&s);
+        z = gauss(&s);
+        r = sqrt(x * x + y * y + z * z);
+      } while (!(r > 1e-3)); /* keep the direction well defined */
+      p[3 * i] = x / r;
+      p[3 * i + 1] = y / r;
+      p[3 * i + 2] = z / r;
+    }
+  } else if (!strcmp(kind, "random")) {
     np = n;
     p = malloc(3 * np * sizeof *p);
     unsigned long long s = 88172645463325252ull;
-    for (size_t i = 0; i < 3 * np; i++) {
-      s ^= s << 13;
-      s ^= s >> 7;
-      s ^= s << 17;
-      p[i] = (double)(s >> 11) * 0x1p-53;
-    }
+    for (size_t i = 0; i < 3 * np; i++)
+      p[i] = uniform01(&s);
+  } else {
+    fprintf(stderr, "unknown point set %s (random, sphere, grid)\n", kind);
+    return 2;
+  }
+  if (!p) {
+    fprintf(stderr, "out of memory\n");
+    return 1;
   }
   FILE *f = fopen(bin, "wb");
   uint32_t n32 = (uint32_t)np;
@@ -137,7 +177,7 @@ int main(int argc, char **argv)
   if (argc >= 3 && !strcmp(argv[1], "run"))
     return run(argv[2], argc >= 4 && !strcmp(argv[3], "check"),
                argc >= 4 && !strcmp(argv[3], "hash"));
-  fprintf(stderr, "usage: bench_tetrec gen random|grid N out.bin out.node\n"
+  fprintf(stderr, "usage: bench_tetrec gen random|sphere|grid N out.bin out.node\n"
                   "       bench_tetrec run in.bin [check|hash]\n");
   return 2;
 }

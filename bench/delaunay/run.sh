@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Delaunay peer benchmark: tetrec vs CGAL Delaunay_triangulation_3<Epick> (range insertion,
 # spatially sorted) vs tetgen (Debian 1.5, Delaunay only: `tetgen -NEF`, no output files).
-# Cases: 10^5 and 10^6 uniform random points in the unit cube, the 100^3 integer grid.
+# Cases: 10^5 and 10^6 uniform random points in the unit cube, 2.5x10^5 and 10^6 points on
+# the unit sphere (nearly cospherical everywhere: the exact stages of insphere decide most
+# tests among close points), the 100^3 integer grid (exactly cospherical: the symbolic
+# perturbation decides).
 # For each program: the in-process triangulation CPU time (dt: reading excluded; for
 # tetgen its own "Delaunay seconds", which is clock() time), the whole-process wall and
 # user time and peak RSS (GNU time, i.e. getrusage of the child), and the ratios
@@ -12,12 +15,13 @@
 #
 # usage: bench/delaunay/run.sh [build-dir]      (default build-bench, a release build)
 #   REPEAT=n   best of n runs per measurement (default 1)
-#   CASES="random100000 random1000000 grid100"   subset to run
+#   CASES="random100000 random1000000 sphere250000 sphere1000000 grid100"   subset to run
+#   NO_TETGEN=1   skip tetgen
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build-bench}
 REPEAT=${REPEAT:-1}
-CASES=${CASES:-"random100000 random1000000 grid100"}
+CASES=${CASES:-"random100000 random1000000 sphere250000 sphere1000000 grid100"}
 OUT=$ROOT/bench/out/delaunay
 mkdir -p "$OUT"
 if [ ! -f "$BUILD/build.ninja" ]; then
@@ -28,6 +32,7 @@ TR=$BUILD/bench/delaunay/bench_tetrec
 CG=$BUILD/bench/delaunay/bench_cgal
 ninja -C "$BUILD" -j2 bench/delaunay/bench_cgal >/dev/null 2>&1 || CG=""
 TG=$(command -v tetgen || true)
+[ -n "${NO_TETGEN:-}" ] && TG=""
 
 # measure <label> <cmd...>: best of REPEAT; sets M_DT M_WALL M_USER M_RSS (KB)
 measure() {
@@ -55,6 +60,7 @@ echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
 for c in $CASES; do
   case $c in
     random*) kind=random; n=${c#random} ;;
+    sphere*) kind=sphere; n=${c#sphere} ;;
     grid*) kind=grid; n=${c#grid} ;;
     *) echo "unknown case $c"; exit 2 ;;
   esac

@@ -432,6 +432,127 @@ static void prop_antisymmetry(const pred_t *P)
   }
 }
 
+/* ---- near-cospherical inputs (the Delaunay kernel's hard case) ----
+ * They take insphere.c's fixed-width integer stage (intdet.c) or, when the coordinates
+ * span too many bits for it, the expansion stages: both must match the reference. */
+
+/* A standard normal (Box-Muller). */
+static double rng_gauss(rng_t *r)
+{
+  const double u = 1.0 - rng_unit(r), v = rng_unit(r);
+  return sqrt(-2.0 * log(u)) * cos(6.283185307179586 * v);
+}
+
+/* Five rounded points of the unit sphere within about 2^-k of each other (normalised
+ * Gaussian directions around a random one), the way a sphere sample looks to the
+ * Delaunay kernel; sometimes scaled by a power of two and/or translated, so that the
+ * differences are exact (same binades), inexact (coordinates crossing 0 or binades)
+ * or span more than 62 bits (a coordinate near 0). */
+static void gen_sphere_cap(rng_t *r, pts_t p)
+{
+  double c[3], h = ldexp(1.0, -rng_int(r, 1, 24));
+  for (int j = 0; j < 3; j++)
+    c[j] = rng_gauss(r);
+  if (rng_int(r, 0, 3) == 0) /* a centre direction in a coordinate plane: coordinates near 0 */
+    c[rng_int(r, 0, 2)] = ldexp(rng_gauss(r), -rng_int(r, 10, 60));
+  for (int i = 0; i < 5; i++) {
+    double x[3], n = 0;
+    for (int j = 0; j < 3; j++) {
+      x[j] = c[j] + h * rng_gauss(r);
+      n += x[j] * x[j];
+    }
+    n = sqrt(n);
+    for (int j = 0; j < 3; j++)
+      p[i][j] = x[j] / n;
+  }
+  const int mode = rng_int(r, 0, 3);
+  if (mode == 1) {
+    const int k = rng_int(r, -300, 300);
+    for (int i = 0; i < 5; i++)
+      for (int j = 0; j < 3; j++)
+        p[i][j] = ldexp(p[i][j], k);
+  } else if (mode == 2) { /* translated: rounded again, still near-cospherical */
+    const double off[3] = {rng_int(r, -8, 8) * 0.5, rng_int(r, -8, 8) * 0.25, 3.0};
+    for (int i = 0; i < 5; i++)
+      for (int j = 0; j < 3; j++)
+        p[i][j] += off[j];
+  }
+}
+
+/* An exactly cospherical integer set (sphere table) scaled by 2^k and translated by a
+ * multiple of 2^k up to 2^(k+b): differences are exact and short, raw coordinates
+ * span b + 7 bits, across the integer stage's 61-bit limit for the raw form; one
+ * coordinate sometimes moved by an ulp (then the differences may be inexact). */
+static void gen_cospherical_offset(rng_t *r, pts_t p)
+{
+  const int k = rng_int(r, -200, 200), b = rng_int(r, 0, 64);
+  double off[3];
+  for (int j = 0; j < 3; j++)
+    off[j] = ldexp((double)(rng_u64(r) >> 11) * 0x1p-53 * (rng_u64(r) & 1 ? 1 : -1), b);
+  for (int i = 0; i < 5; i++) {
+    const int *q = sphere[rng_int(r, 0, nsphere - 1)];
+    for (int j = 0; j < 3; j++)
+      p[i][j] = ldexp(floor(off[j]) + q[j], k);
+  }
+  if (rng_u64(r) & 1) {
+    const int i = rng_int(r, 0, 4), j = rng_int(r, 0, 2);
+    p[i][j] = nextafter(p[i][j], (rng_u64(r) & 1) ? INFINITY : -INFINITY);
+  }
+}
+
+/* Coordinates at the integer stage's limits: differences that are full 53-bit
+ * integers times 2^9 (|d| just below 2^62, every minor, M and lift near its bound), or
+ * raw coordinates just below 2^61 with inexact differences, all signs mixed. */
+static void gen_int_limits(rng_t *r, pts_t p)
+{
+  const int raw = rng_int(r, 0, 1), scale = rng_int(r, -100, 100);
+  for (int i = 0; i < 5; i++)
+    for (int j = 0; j < 3; j++) {
+      double m = (double)(rng_u64(r) >> 11); /* < 2^53 */
+      if (rng_u64(r) & 1)
+        m = -m;
+      if (raw)
+        p[i][j] = ldexp(m, 7 + rng_int(r, 0, 1)); /* < 2^61 */
+      else
+        p[i][j] = i == 4 ? 0 : ldexp(m, 9); /* e = 0: d = a - e exact, < 2^62 */
+      p[i][j] = ldexp(p[i][j], scale);
+    }
+  if (rng_u64(r) & 1) { /* make it nearly cospherical: e on the sphere through a..d */
+    pts_t q;
+    memcpy(q, p, sizeof q);
+    for (int t = 0; t < 3; t++)
+      q[4][t] = q[0][t];
+    const int j = rng_int(r, 0, 2);
+    q[4][j] = nextafter(q[4][j], INFINITY);
+    memcpy(p, q, sizeof q);
+  }
+}
+
+/* 40000 near-cospherical, exactly cospherical and limit-magnitude inputs against the
+ * GMP reference, through tr_insphere and through the exact stage alone. */
+static void prop_cospherical(const pred_t *P)
+{
+  rng_t r = {71};
+  pts_t p;
+  int zero = 0, nonzero = 0;
+  for (int i = 0; i < 40000; i++) {
+    switch (i % 4) {
+    case 0:
+    case 1: gen_sphere_cap(&r, p); break;
+    case 2: gen_cospherical_offset(&r, p); break;
+    default: gen_int_limits(&r, p); break;
+    }
+    check_vs_ref(P, p, "near-cospherical case");
+    const int e = P->ref((const double(*)[3])p);
+    CHECK(sgn(P->exact((const double(*)[3])p)) == e, "%s exact stage on a near-cospherical case",
+          P->name);
+    zero += e == 0;
+    nonzero += e != 0;
+  }
+  CHECK(zero > 2000 && nonzero > 20000, "%s: too few cospherical (%d) or decided (%d) cases",
+        P->name, zero, nonzero);
+}
+
 /* The documented sign conventions on explicit examples. */
 static void prop_conventions(void)
 {
@@ -493,6 +614,8 @@ int main(int argc, char **argv)
       prop_scale(P);
     else if (!strcmp(w, "antisymmetry"))
       prop_antisymmetry(P);
+    else if (!strcmp(w, "cospherical") && P->lifted && P->dim == 3)
+      prop_cospherical(P);
     else
       return 2;
   }
