@@ -15,6 +15,20 @@
  *
  * Every fallible function returns a tr_status; on failure tr_last_error() holds a
  * message that says what is wrong and where (file, line, element).
+ *
+ * Threads: the library has no global mutable state. Every function may be called from
+ * several threads at once on distinct objects (tests/api/test_threads.c meshes four
+ * inputs on four threads and runs under ThreadSanitizer). Functions taking a const
+ * object may also run concurrently on the same object; a function taking a non-const
+ * object (tr_plc_set, tr_plc_validate, the destroy functions) needs it to itself.
+ * tr_last_error() is per thread. The notes "thread-safe" below repeat this per function.
+ *
+ * ABI growth: tr_options and tr_stats begin with `size_t size` and only grow at their
+ * end. tr_options_default() sets opt->size = sizeof(tr_options); the library reads only
+ * the first opt->size bytes and uses defaults for fields beyond them (size 0 means this
+ * header's size). A caller sets stats->size to sizeof(tr_stats) (or 0, meaning this
+ * header's size, so a zeroed struct is fine) before a call that fills it; the library
+ * writes no more than that many bytes and sets size to the number of bytes it filled.
  */
 #ifndef TETREC_H
 #define TETREC_H
@@ -26,6 +40,12 @@
 extern "C" {
 #endif
 
+/* The version of this header; tr_version() gives the library's (they differ only when a
+ * program runs against another build of the shared library than it was compiled with).
+ * Both follow meson.build's project version. */
+#define TETREC_VERSION_MAJOR 0
+#define TETREC_VERSION_MINOR 1
+#define TETREC_VERSION_PATCH 0
 #define TETREC_VERSION_STRING "0.1.0"
 
 typedef enum tr_status {
@@ -40,17 +60,25 @@ typedef enum tr_status {
   TR_ERR_NOMEM = 8,          /* allocation failed or a size limit was exceeded */
   TR_ERR_INVALID_MESH = 9,   /* the validator found a violated property */
   TR_ERR_INTERNAL = 10,      /* a bug in tetrec: please report it with the input */
-  TR_ERR_UNSUPPORTED = 11    /* a feature not implemented yet */
+  TR_ERR_UNSUPPORTED = 11,   /* a feature not implemented yet */
+  TR_ERR_CANCELLED = 12      /* the progress callback asked to stop (tr_options.progress) */
 } tr_status;
 
-/* A stable short name ("TR_ERR_PARSE") for a status. */
+/* A stable short name ("TR_ERR_PARSE") for a status. Thread-safe. */
 const char *tr_status_name(tr_status s);
-/* The detailed message of the last failure in the calling thread ("" if none). */
+/* The detailed message of the last failure in the calling thread ("" if none). The
+ * buffer is thread-local: thread-safe. */
 const char *tr_last_error(void);
+/* The library's version (meson.build's project version). Any argument may be NULL.
+ * Thread-safe. */
+void tr_version(int *major, int *minor, int *patch);
+/* Frees memory the library returned to the caller (tr_mesh_point_exact). Thread-safe. */
+void tr_free(void *p);
 
 /* ---- input: a piecewise linear complex (points + triangles + segments) ---- */
 typedef struct tr_plc tr_plc;
 
+/* All tr_plc functions: thread-safe on distinct PLCs; the const ones also on one PLC. */
 tr_status tr_plc_create(tr_plc **out);
 void tr_plc_destroy(tr_plc *plc);
 /* Copies the arrays. xyz: 3*npoints doubles; tris: 3*ntris indices; markers may be NULL. */
@@ -67,21 +95,83 @@ const uint32_t *tr_plc_triangles(const tr_plc *plc);
 /* ---- output: a tetrahedral mesh ---- */
 typedef struct tr_mesh tr_mesh;
 
+/* All tr_mesh functions: thread-safe on distinct meshes; the const accessors also on one
+ * mesh (they never allocate or cache). Arrays returned stay valid until tr_mesh_destroy. */
 void tr_mesh_destroy(tr_mesh *mesh);
 uint32_t tr_mesh_num_vertices(const tr_mesh *mesh);
 uint32_t tr_mesh_num_tets(const tr_mesh *mesh);
+/* 3 doubles per vertex: exactly the doubles the writers print (for a Steiner point its
+ * rounded, possibly repaired double; tr_mesh_point_exact gives its exact position). */
+const double *tr_mesh_points(const tr_mesh *mesh);
+/* 4 vertex indices per tet, every tet positively oriented (see the conventions above). */
+const uint32_t *tr_mesh_tets(const tr_mesh *mesh);
+/* One region id per tet (the Medit tet reference); NULL for a tr_delaunay mesh. */
+const int32_t *tr_mesh_tet_regions(const tr_mesh *mesh);
+/* The mesh faces that lie on an input triangle (boundary facets and internal facets
+ * alike): 3 vertex indices per face, ordered so that its right-hand normal points the way
+ * its input triangle's does (outward on the boundary), and per face the marker of that
+ * triangle (tr_plc_set's markers, a file's boundary markers; 0 when it has none). Sorted
+ * by input triangle. A tr_delaunay mesh has none (0, NULL). */
+uint32_t tr_mesh_num_boundary_faces(const tr_mesh *mesh);
+const uint32_t *tr_mesh_boundary_faces(const tr_mesh *mesh);
+const int32_t *tr_mesh_boundary_markers(const tr_mesh *mesh);
+/* The input triangle of each boundary face (index in the PLC as meshed, see below). */
+const uint32_t *tr_mesh_boundary_triangles(const tr_mesh *mesh);
+/* The exact position of vertex v as text "x y z", each coordinate a rational num/den in
+ * lowest terms, base 10, den > 0 (an integer when den is 1): for an input vertex the
+ * exact value of its double, for a Steiner point its exact position, which lies exactly
+ * on its input edge or triangle. *xyz_text is malloc'ed: free it with tr_free. */
+tr_status tr_mesh_point_exact(const tr_mesh *mesh, uint32_t v, char **xyz_text);
+/* Where vertex v comes from. Indices refer to the PLC as meshed: the input after
+ * tr_plc_validate (which merges duplicate vertices and removes duplicate triangles; a
+ * valid input keeps its numbering) and smoothing (which swaps diagonals in place and
+ * keeps the triangle count). */
+enum tr_vertex_origin {
+  TR_VERTEX_INPUT = 0,       /* index = the input vertex */
+  TR_VERTEX_ON_EDGE = 1,     /* Steiner point on input edge `index` (tr_mesh_input_edge) */
+  TR_VERTEX_ON_TRIANGLE = 2, /* Steiner point inside input triangle `index` */
+  TR_VERTEX_INTERIOR = 3     /* Steiner point on no input edge or triangle; index = v */
+};
+tr_status tr_mesh_vertex_origin(const tr_mesh *mesh, uint32_t v, int *kind, uint32_t *index);
+/* The input edges (unique, a < b, sorted) that TR_VERTEX_ON_EDGE indices refer to. */
+uint32_t tr_mesh_num_input_edges(const tr_mesh *mesh);
+tr_status tr_mesh_input_edge(const tr_mesh *mesh, uint32_t k, uint32_t *a, uint32_t *b);
 
 /* ---- the whole pipeline ---- */
+/* Stages, in pipeline order: the indices of tr_stats.stage_seconds and the names that
+ * tr_options.progress receives, `-v` prints and --stats writes (tr_stage_name). The
+ * validation row excludes its two sub-steps, self-intersection and nesting (the
+ * orientation of closed shells, cavities and cells), which have their own rows. Reading
+ * and writing are filled by the caller that reads and writes (the CLI does). */
+enum tr_stage {
+  TR_STAGE_READ, TR_STAGE_VALIDATE, TR_STAGE_SELFINT, TR_STAGE_NESTING, TR_STAGE_SMOOTH,
+  TR_STAGE_DELAUNAY, TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR, TR_STAGE_ROUND,
+  TR_STAGE_WRITE, TR_STAGE_COUNT
+};
+/* "reading", "validation", "self_intersection", "nesting", "smoothing", "delaunay",
+ * "edge_recovery", "facet_recovery", "coloring", "rounding", "writing"; NULL out of range.
+ * Thread-safe. */
+const char *tr_stage_name(int stage);
+
 typedef struct tr_options {
+  size_t size;     /* sizeof(tr_options), set by tr_options_default (ABI growth) */
   int smooth;      /* surface diagonal swaps before recovery (default 1) */
   int allow_open;  /* mesh the convex hull, keep facets as constraints (default 0) */
   int verbose;     /* 0 quiet, 1 normal, 2 chatty; messages go to stderr */
   uint64_t round_budget; /* star checks the rounding repair may spend (0: 2,000,000) */
+  /* Called by tr_mesh_plc at the start (fraction 0) and end (fraction 1) of each stage
+   * named by tr_stage_name, from the calling thread. A non-zero return cancels the run:
+   * tr_mesh_plc frees everything it allocated and returns TR_ERR_CANCELLED. NULL: none
+   * (default). progress_user is passed back as `user`. */
+  int (*progress)(void *user, const char *stage, double fraction);
+  void *progress_user;
 } tr_options;
+/* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
 
-/* The rows of the seed paper's Table 14, plus memory. */
+/* The rows of the seed paper's Table 14, plus memory and per-stage times. */
 typedef struct tr_stats {
+  size_t size; /* see "ABI growth" at the top: in, the caller's size; out, bytes filled */
   uint64_t surface_nodes, surface_facets;
   uint64_t volume_nodes, volume_elements;
   uint64_t missing_edges, edges_recovered_by_swap, points_added_for_edges;
@@ -90,12 +180,15 @@ typedef struct tr_stats {
   uint64_t rounding_flips; /* flips that took away tets flat in doubles (output/flatflip.h) */
   double total_seconds, recovery_seconds;
   uint64_t peak_memory_bytes;
+  double stage_seconds[TR_STAGE_COUNT]; /* wall-clock time of each stage (enum tr_stage) */
 } tr_stats;
 
-/* Delaunay tetrahedralization of a point set (duplicates merged and reported). */
+/* Delaunay tetrahedralization of a point set (duplicates merged and reported).
+ * Thread-safe. */
 tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out);
 
-/* ---- I/O, input validation and CLI support (owner: io/input engineer) ---- */
+/* ---- I/O, input validation and CLI support ----
+ * Thread-safe on distinct objects; the writers also on one mesh or PLC. */
 /* Checks and repairs the input in place: exact duplicate vertices are merged and
  * duplicate triangles removed, inconsistent orientation is repaired (each closed shell
  * oriented outward). Edges of three or more triangles (internal facets between regions)
@@ -113,10 +206,12 @@ tr_status tr_plc_write(const tr_plc *plc, const char *path);
  * (writes base.node, base.ele, base.face). exact != 0: Steiner points as exact
  * rationals num/den in the .node file. */
 tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact);
-/* Writes the statistics as one JSON object. */
+/* Writes the statistics as one JSON object (stage_seconds as "stage_seconds": {"reading":
+ * ..., one key per tr_stage_name}). */
 tr_status tr_stats_write_json(const tr_stats *stats, const char *path);
-/* The whole pipeline (read -> Delaunay -> recovery -> outer removal). Declared for the
- * CLI; implemented by the pipeline owner. */
+/* The whole pipeline (validation -> smoothing -> Delaunay -> edge and facet recovery ->
+ * outer removal by coloring -> rounding). opt and stats may be NULL. Thread-safe: runs on
+ * several threads at once give the same meshes as one after the other. */
 tr_status tr_mesh_plc(const tr_plc *plc, const tr_options *opt, tr_mesh **out, tr_stats *stats);
 
 #ifdef __cplusplus

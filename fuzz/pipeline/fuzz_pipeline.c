@@ -128,7 +128,7 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
   opt.verbose = verbose && *verbose >= '2' ? 2 : 0;
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
-  tr_stats stats;
+  tr_stats stats = {.size = sizeof stats};
   /* TR_PIPE_KEEP_EXACT: a Steiner point whose doubles cannot keep its tets positive is
    * a rounding (output) problem, not a recovery one; the exact mesh is still returned and
    * validated, and the rounding failure is a finding only with TR_FUZZ_STRICT_ROUNDING=1

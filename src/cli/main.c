@@ -191,8 +191,11 @@ static int cmd_mesh(const args *a)
   tr_plc *plc = NULL;
   progress("reading", a->in);
   tr_status s = tr_plc_read(a->in, &plc);
+  double t_read = now() - t0;
   if (s != TR_OK)
     return fail(s);
+  if (a->verbose)
+    fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(TR_STAGE_READ), t_read);
   progress("validating", a->in);
   s = tr_plc_validate(plc, &opt);
   print_report(a, plc);
@@ -206,7 +209,12 @@ static int cmd_mesh(const args *a)
     fprintf(stderr, "tetrec: %s: %u vertices, %u triangles: valid\n", a->in,
             tr_plc_num_points(plc), tr_plc_num_triangles(plc));
   stats.total_seconds = now() - t0;
+  stats.stage_seconds[TR_STAGE_READ] = t_read;
   if (a->check_only) {
+    stats.stage_seconds[TR_STAGE_SELFINT] = plc->validate_seconds[1];
+    stats.stage_seconds[TR_STAGE_NESTING] = plc->validate_seconds[2];
+    stats.stage_seconds[TR_STAGE_VALIDATE] =
+        plc->validate_seconds[0] - plc->validate_seconds[1] - plc->validate_seconds[2];
     tr_plc_destroy(plc);
     return write_stats(a, &stats);
   }
@@ -227,8 +235,14 @@ static int cmd_mesh(const args *a)
   char *out = a->out ? NULL : default_out(a->in);
   const char *path = a->out ? a->out : out;
   progress("writing", path);
+  double t_write = now();
   s = path ? tr_mesh_write(mesh, path, a->exact) : TR_ERR_NOMEM;
+  stats.stage_seconds[TR_STAGE_READ] = t_read; /* the pipeline filled the others */
+  stats.stage_seconds[TR_STAGE_WRITE] = now() - t_write;
   stats.total_seconds = now() - t0;
+  if (s == TR_OK && a->verbose)
+    fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(TR_STAGE_WRITE),
+            stats.stage_seconds[TR_STAGE_WRITE]);
   if (s == TR_OK && !a->quiet)
     fprintf(stderr, "tetrec: %s: %u vertices, %u tetrahedra, %llu Steiner points\n", path,
             tr_mesh_num_vertices(mesh), tr_mesh_num_tets(mesh),

@@ -22,6 +22,8 @@ struct tr_plc {
   uint32_t *tets;        /* 4 * ntets */
   char *source;          /* file name for messages, or NULL */
   char *report;          /* repairs made by tr_plc_validate, one per line, or NULL */
+  double validate_seconds[3]; /* the last tr_plc_validate: whole, of which
+                                 self-intersection, and nesting (shells, cells) */
   uint8_t validated;     /* 1 + allow_open of the last successful tr_plc_validate, 0 if
                             none: the struct is opaque and every setter builds a new one,
                             so a validated PLC stays valid and the pipeline skips a second

@@ -35,6 +35,7 @@ const char *tr_status_name(tr_status s)
   case TR_ERR_INVALID_MESH: return "TR_ERR_INVALID_MESH";
   case TR_ERR_INTERNAL: return "TR_ERR_INTERNAL";
   case TR_ERR_UNSUPPORTED: return "TR_ERR_UNSUPPORTED";
+  case TR_ERR_CANCELLED: return "TR_ERR_CANCELLED";
   }
   return "TR_ERR_UNKNOWN";
 }

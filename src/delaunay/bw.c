@@ -791,5 +791,11 @@ tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out)
   tr_error_clear();
   if (!out || (!xyz && npoints))
     return tr_error(TR_ERR_USAGE, "tr_delaunay: NULL argument");
-  return tr_delaunay_build(xyz, npoints, out);
+  tr_status s = tr_delaunay_build(xyz, npoints, out);
+  if (s == TR_OK && (s = tr_mesh_attach_dense_tets(*out)) != TR_OK) {
+    /* the dense tet array of tr_mesh_tets (the store keeps its ghost tets) */
+    tr_mesh_destroy(*out);
+    *out = NULL;
+  }
+  return s;
 }

@@ -6,6 +6,7 @@
 void tr_options_default(tr_options *opt)
 {
   memset(opt, 0, sizeof *opt);
+  opt->size = sizeof *opt;
   opt->smooth = 1;
   opt->allow_open = 0;
   opt->verbose = 1;

@@ -8,14 +8,24 @@
  * whether its free edges lie inside the domain. Messages name input triangle numbers
  * (after polygon triangulation; "input face" is the polygon it came from) and input
  * vertex numbers, both 0-based. */
+#define _POSIX_C_SOURCE 200809L
 #include <gmp.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "core/edgesort.h"
 #include "predicates.h"
 #include "validate.h"
+
+/* Monotonic seconds: the sub-step times of plc->validate_seconds (tetrec -v, --stats). */
+static double vclock(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
 
 static int cmp_point(const void *ctx, uint32_t a, uint32_t b)
 {
@@ -367,9 +377,13 @@ static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
       flip(plc, t);
   if (general) {
     /* the cell analysis assumes triangles meet only in shared vertices and edges */
+    double c0 = vclock();
     st = tr_input_self_intersections(plc, tnum);
+    double c1 = vclock();
+    plc->validate_seconds[1] += c1 - c0;
     if (st == TR_OK)
       st = tr_input_orient_cells(plc, tnum, orig, allow_open, flipme);
+    plc->validate_seconds[2] += vclock() - c1;
     *selfint_done = 1;
     goto report;
   }
@@ -393,10 +407,12 @@ static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
     /* A cavity (inside an odd number of shells) faces inward: negative volume. The
      * nesting test needs consistently oriented shells, which they are by now. */
     char *cavity = malloc(ncomp ? ncomp : 1);
+    double c0 = vclock();
     if (!cavity)
       st = tr_error(TR_ERR_NOMEM, "out of memory");
     else
       st = tr_input_shell_cavities(plc, order, start, closed, ncomp, cavity);
+    plc->validate_seconds[2] += vclock() - c0;
     for (uint32_t c = 0; c < ncomp && st == TR_OK; c++) {
       if (!closed[c])
         continue;
@@ -438,7 +454,9 @@ done:
 tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt)
 {
   tr_error_clear();
+  double c0 = vclock();
   plc->validated = 0;
+  memset(plc->validate_seconds, 0, sizeof plc->validate_seconds);
   tr_options def;
   if (!opt) {
     tr_options_default(&def);
@@ -469,12 +487,16 @@ tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt)
   int selfint_done = 0;
   if (st == TR_OK)
     st = manifold_and_orient(plc, orig, tnum, opt->allow_open, &rep, &selfint_done);
-  if (st == TR_OK && !selfint_done)
+  if (st == TR_OK && !selfint_done) {
+    double c1 = vclock();
     st = tr_input_self_intersections(plc, tnum);
+    plc->validate_seconds[1] += vclock() - c1;
+  }
   free(plc->report);
   plc->report = tr_report_finish(&rep);
   plc->validated = st == TR_OK ? (uint8_t)(1 + (opt->allow_open != 0)) : 0;
   free(orig);
   free(tnum);
+  plc->validate_seconds[0] = vclock() - c0;
   return st;
 }

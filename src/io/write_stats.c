@@ -1,4 +1,5 @@
-/* tr_stats as one JSON object (keys = the field names of tr_stats). */
+/* tr_stats as one JSON object (keys = the field names of tr_stats; stage_seconds as an
+ * object keyed by tr_stage_name). */
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
@@ -18,7 +19,7 @@ tr_status tr_stats_write_json(const tr_stats *s, const char *path)
           "  \"facets_recovered_by_swap\": %llu,\n  \"points_added_for_facets\": %llu,\n"
           "  \"surface_swaps\": %llu,\n  \"rounding_repairs\": %llu,\n  \"rounding_flips\": %llu,\n"
           "  \"total_seconds\": %.6f,\n  \"recovery_seconds\": %.6f,\n"
-          "  \"peak_memory_bytes\": %llu\n}\n",
+          "  \"peak_memory_bytes\": %llu,\n  \"stage_seconds\": {",
           (unsigned long long)s->surface_nodes, (unsigned long long)s->surface_facets,
           (unsigned long long)s->volume_nodes, (unsigned long long)s->volume_elements,
           (unsigned long long)s->missing_edges, (unsigned long long)s->edges_recovered_by_swap,
@@ -28,6 +29,10 @@ tr_status tr_stats_write_json(const tr_stats *s, const char *path)
           (unsigned long long)s->rounding_repairs,
           (unsigned long long)s->rounding_flips, s->total_seconds, s->recovery_seconds,
           (unsigned long long)s->peak_memory_bytes);
+  /* one key per stage, named as `tetrec -v` prints them (tr_stage_name) */
+  for (int k = 0; k < TR_STAGE_COUNT; k++)
+    fprintf(f, "%s\n    \"%s\": %.6f", k ? "," : "", tr_stage_name(k), s->stage_seconds[k]);
+  fprintf(f, "\n  }\n}\n");
   int bad = ferror(f);
   if (fclose(f) != 0 || bad)
     return tr_error(TR_ERR_IO, "%s: write failed", path);

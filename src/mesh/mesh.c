@@ -71,7 +71,32 @@ void tr_mesh_destroy(struct tr_mesh *m)
   free(m->flags);
   free(m->region);
   free(m->dup_map);
+  tr_mesh_attrs_free(m->attrs);
   free(m);
+}
+
+tr_status tr_mesh_attach_dense_tets(struct tr_mesh *m)
+{
+  struct tr_mesh_attrs *a = m->attrs;
+  if (!a && !(a = m->attrs = calloc(1, sizeof *a)))
+    return tr_error(TR_ERR_NOMEM, "out of memory for the output attributes");
+  free(a->tets);
+  a->tets = NULL;
+  return tr_mesh_export_tets(m, &a->tets, &a->ntets);
+}
+
+void tr_mesh_attrs_free(struct tr_mesh_attrs *a)
+{
+  if (!a)
+    return;
+  free(a->tets);
+  free(a->faces);
+  free(a->face_tri);
+  free(a->face_marker);
+  free(a->vkind);
+  free(a->vindex);
+  free(a->edges);
+  free(a);
 }
 
 uint32_t tr_mesh_num_vertices(const struct tr_mesh *m) { return m ? m->nv : 0; }

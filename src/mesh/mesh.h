@@ -15,8 +15,8 @@
  * (see delaunay/), so every real tet has 4 neighbours; ghost tets are skipped by
  * iterators that say so and removed by outer removal.
  *
- * Owner: the mesh/delaunay work. Memory per tet slot: tv 16 + tn 16 + flags 1 bytes, plus
- * 4 bytes of region id only once tr_mesh_enable_regions() was called (37 <= 40).
+ * Memory per tet slot: tv 16 + tn 16 + flags 1 bytes, plus 4 bytes of region id only once
+ * tr_mesh_enable_regions() was called (37 <= 40).
  */
 #ifndef TR_MESH_H
 #define TR_MESH_H
@@ -55,6 +55,26 @@ enum {
   TR_TF_USER = 1u << 4     /* bits 4..7 free for later stages */
 };
 
+/* What an output mesh knows of its input, for the accessors of include/tetrec.h
+ * (src/pipeline/access.c). Only the meshes that tr_mesh_plc and tr_delaunay return have
+ * it; every array is malloc'ed and freed by tr_mesh_destroy. */
+struct tr_mesh_attrs {
+  uint32_t *tets;         /* NULL, or 4 per real tet when tv has ghost or free slots */
+  uint32_t ntets;
+  uint32_t nfaces;        /* faces on input triangles (tetrec.h's boundary faces) */
+  uint32_t *faces;        /* 3 * nfaces, oriented like their input triangle */
+  uint32_t *face_tri;     /* nfaces: the input triangle */
+  int32_t *face_marker;   /* nfaces: its marker */
+  uint8_t *vkind;         /* NULL (every vertex an input vertex), or nv enum tr_vertex_origin */
+  uint32_t *vindex;       /* nv: the input vertex, edge or triangle */
+  uint32_t nedges;
+  uint32_t *edges;        /* 2 * nedges: the input edges, a < b, sorted */
+};
+void tr_mesh_attrs_free(struct tr_mesh_attrs *a);
+/* Fills m->attrs->tets (creating attrs) with the real tets, for a store that keeps ghost
+ * or free slots (tr_delaunay's), so that tr_mesh_tets returns a dense array. */
+tr_status tr_mesh_attach_dense_tets(struct tr_mesh *m);
+
 /* The public opaque handle of include/tetrec.h is the store itself. */
 struct tr_mesh {
   /* vertices */
@@ -75,6 +95,7 @@ struct tr_mesh {
   uint32_t ndup;      /* number of input points dropped as duplicates */
   uint32_t *dup_map;  /* NULL, or nv entries: dup_map[i] = kept vertex equal to point i
                          (dup_map[i] == i for kept points) */
+  struct tr_mesh_attrs *attrs; /* NULL, or output attributes (see above) */
 };
 typedef struct tr_mesh tr_mesh_store;
 

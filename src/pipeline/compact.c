@@ -9,7 +9,54 @@ static int keep(const struct tr_mesh *m, uint32_t t)
   return tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER);
 }
 
-tr_status tr_pipeline_compact(struct tr_mesh *m, struct tr_mesh **out)
+/* o->attrs from in, renumbered by vmap: sub-faces whose vertices are all kept (on a
+ * conforming mesh, all of them: each is a face of a kept tet), origins, input edges. */
+static tr_status attach(struct tr_mesh *o, const struct tr_mesh *m, const uint32_t *vmap,
+                        const tr_compact_in *in)
+{
+  struct tr_mesh_attrs *a = calloc(1, sizeof *a);
+  if (!a)
+    return tr_error(TR_ERR_NOMEM, "out of memory for the output attributes");
+  o->attrs = a;
+  const tr_subfaces *sub = in->sub;
+  uint32_t n = sub ? sub->n : 0, nv = o->nv;
+  a->faces = malloc(sizeof *a->faces * 3 * (size_t)(n ? n : 1));
+  a->face_tri = malloc(sizeof *a->face_tri * (n ? n : 1));
+  a->face_marker = malloc(sizeof *a->face_marker * (n ? n : 1));
+  a->edges = malloc(sizeof *a->edges * 2 * (size_t)(in->nedges ? in->nedges : 1));
+  if (in->vkind) {
+    a->vkind = malloc(nv ? nv : 1);
+    a->vindex = malloc(sizeof *a->vindex * (nv ? nv : 1));
+  }
+  if (!a->faces || !a->face_tri || !a->face_marker || !a->edges ||
+      (in->vkind && (!a->vkind || !a->vindex)))
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u output faces", n);
+  for (uint32_t f = 0; f < n; f++) {
+    const uint32_t *v = sub->v + 3 * (size_t)f;
+    if (vmap[v[0]] == TR_NONE || vmap[v[1]] == TR_NONE || vmap[v[2]] == TR_NONE)
+      return tr_error(TR_ERR_INTERNAL, "sub-face %u of input triangle %u is in no kept tet",
+                      f, sub->tri[f]);
+    for (int j = 0; j < 3; j++)
+      a->faces[3 * (size_t)a->nfaces + (size_t)j] = vmap[v[j]];
+    a->face_tri[a->nfaces] = sub->tri[f];
+    a->face_marker[a->nfaces++] = in->tri_marker ? in->tri_marker[sub->tri[f]] : 0;
+  }
+  a->nedges = in->nedges;
+  if (in->nedges)
+    memcpy(a->edges, in->edges, sizeof *a->edges * 2 * (size_t)in->nedges);
+  if (in->vkind)
+    for (uint32_t v = 0; v < m->nv; v++) {
+      uint32_t w = vmap[v];
+      if (w == TR_NONE)
+        continue;
+      a->vkind[w] = in->vkind[v];
+      /* input points keep their PLC index (they are m's first vertices) */
+      a->vindex[w] = in->vkind[v] == TR_VERTEX_INTERIOR ? w : in->vindex[v];
+    }
+  return TR_OK;
+}
+
+tr_status tr_pipeline_compact(struct tr_mesh *m, const tr_compact_in *in, struct tr_mesh **out)
 {
   *out = NULL;
   uint32_t nv = m->nv, nt = m->nt, kt = 0, kv = 0;
@@ -66,6 +113,8 @@ tr_status tr_pipeline_compact(struct tr_mesh *m, struct tr_mesh **out)
     if (m->region)
       o->region[id] = m->region[t];
   }
+  if (st == TR_OK && in)
+    st = attach(o, m, vmap, in);
 done:
   free(vmap);
   free(tmap);

@@ -37,31 +37,46 @@ static tr_status copy_plc(const tr_plc *in, tr_plc **out)
   if (st != TR_OK) {
     tr_plc_destroy(p);
     *out = NULL;
-  } else
+  } else {
     p->validated = in->validated;
+    memcpy(p->validate_seconds, in->validate_seconds, sizeof p->validate_seconds);
+  }
   return st;
 }
 
-static void say(const tr_options *opt, int level, const char *what, double secs)
+static void say(const tr_options *opt, int stage, double secs)
 {
-  if (opt->verbose >= level)
-    fprintf(stderr, "tetrec: %-22s %.3f s\n", what, secs);
+  if (opt->verbose >= 2)
+    fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(stage), secs);
 }
 
+/* The caller's options, read up to its opt->size (ABI growth, include/tetrec.h). */
+static void read_options(const tr_options *in, tr_options *opt)
+{
+  tr_options_default(opt);
+  if (!in)
+    return;
+  size_t n = in->size == 0 || in->size > sizeof *opt ? sizeof *opt : in->size;
+  memcpy(opt, in, n);
+  opt->size = sizeof *opt;
+}
+
+/* Progress at a stage boundary, unless an earlier step failed. */
+#define PROGRESS(stage, fraction)                                 \
+  do {                                                            \
+    if (st == TR_OK)                                              \
+      st = tr_pipeline_progress(&opt, (stage), (fraction));       \
+  } while (0)
+
 tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh **out,
-                            tr_stats *stats, tr_plc **used, unsigned flags)
+                            tr_stats *statsout, tr_plc **used, unsigned flags)
 {
   tr_error_clear();
   double t0 = tr_pipeline_now();
   tr_options opt;
-  if (optin)
-    opt = *optin;
-  else
-    tr_options_default(&opt);
-  tr_stats local;
-  if (!stats)
-    stats = &local;
-  memset(stats, 0, sizeof *stats);
+  read_options(optin, &opt);
+  tr_stats full, *stats = &full;
+  memset(&full, 0, sizeof full);
   if (out)
     *out = NULL;
   if (used)
@@ -71,45 +86,71 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   tr_plc *p = NULL;
   struct tr_mesh *m = NULL, *res = NULL;
   uint32_t *edges = NULL, ne = 0, nopen = 0, nmulti = 0, nreg = 0;
-  uint8_t *sides = NULL;
+  uint8_t *sides = NULL, *vkind = NULL;
+  uint32_t *vindex = NULL;
   tr_subfaces sub;
   memset(&sub, 0, sizeof sub);
   double secs[2];
-  tr_status st = copy_plc(plc, &p);
+  double *stage = stats->stage_seconds;
+  tr_status st = tr_pipeline_progress(&opt, TR_STAGE_VALIDATE, 0);
+  if (st == TR_OK)
+    st = copy_plc(plc, &p);
   /* Validation works on a copy: the caller's PLC is const. One the caller validated
    * (tetrec mesh does, to print its report) is not validated twice, unless it was
    * validated as open and this call wants a closed surface. */
   if (st == TR_OK && !(p->validated == 1 || (p->validated == 2 && opt.allow_open)))
     st = tr_plc_validate(p, &opt);
+  if (p) {
+    /* the caller's validation times when it validated, else this call's */
+    stage[TR_STAGE_SELFINT] = p->validate_seconds[1];
+    stage[TR_STAGE_NESTING] = p->validate_seconds[2];
+    stage[TR_STAGE_VALIDATE] = p->validate_seconds[0] - p->validate_seconds[1] -
+                               p->validate_seconds[2];
+    if (stage[TR_STAGE_VALIDATE] < 0)
+      stage[TR_STAGE_VALIDATE] = 0;
+  }
   if (st == TR_OK && p->ntris == 0 && p->nsegs == 0)
     st = tr_error(TR_ERR_INPUT, "the input has no triangles to recover");
-  double t1 = tr_pipeline_now();
-  say(&opt, 2, "validation", t1 - t0);
+  PROGRESS(TR_STAGE_VALIDATE, 1);
+  say(&opt, TR_STAGE_VALIDATE, stage[TR_STAGE_VALIDATE]);
+  say(&opt, TR_STAGE_SELFINT, stage[TR_STAGE_SELFINT]);
+  say(&opt, TR_STAGE_NESTING, stage[TR_STAGE_NESTING]);
   if (st == TR_OK) {
     stats->surface_nodes = p->npoints;
     stats->surface_facets = p->ntris;
   }
-  if (st == TR_OK && opt.smooth) {
-    st = tr_smooth_surface(p, &stats->surface_swaps);
-    say(&opt, 2, "surface smoothing", tr_pipeline_now() - t1);
+  double t1 = tr_pipeline_now();
+  if (opt.smooth) {
+    PROGRESS(TR_STAGE_SMOOTH, 0);
+    if (st == TR_OK)
+      st = tr_smooth_surface(p, &stats->surface_swaps);
+    PROGRESS(TR_STAGE_SMOOTH, 1);
+    stage[TR_STAGE_SMOOTH] = tr_pipeline_now() - t1;
+    say(&opt, TR_STAGE_SMOOTH, stage[TR_STAGE_SMOOTH]);
   }
+  double t2 = tr_pipeline_now();
+  PROGRESS(TR_STAGE_DELAUNAY, 0);
   if (st == TR_OK)
     st = tr_pipeline_edges(p, &edges, &ne, &nopen, &nmulti);
-  double t2 = tr_pipeline_now();
   if (st == TR_OK)
     st = tr_delaunay_build(p->xyz, p->npoints, &m);
+  PROGRESS(TR_STAGE_DELAUNAY, 1);
   double t3 = tr_pipeline_now();
-  say(&opt, 2, "Delaunay", t3 - t2);
+  stage[TR_STAGE_DELAUNAY] = t3 - t2;
+  say(&opt, TR_STAGE_DELAUNAY, t3 - t2);
   if (st == TR_OK && m->ndup)
     st = tr_error(TR_ERR_INTERNAL, "duplicate points survived validation");
   if (st == TR_OK) {
-    st = tr_pipeline_recover(m, p, edges, ne, &sub, stats, secs);
+    st = tr_pipeline_recover(m, p, edges, ne, &sub, stats, secs, &opt, &vkind, &vindex);
     stats->recovery_seconds = secs[0] + secs[1];
-    say(&opt, 2, "edge recovery", secs[0]);
-    say(&opt, 2, "facet recovery", secs[1]);
+    stage[TR_STAGE_EDGES] = secs[0];
+    stage[TR_STAGE_FACETS] = secs[1];
+    say(&opt, TR_STAGE_EDGES, secs[0]);
+    say(&opt, TR_STAGE_FACETS, secs[1]);
   }
   double t4 = tr_pipeline_now();
-  int keep_hull = opt.allow_open && (nopen > 0 || p->nsegs > 0);
+  PROGRESS(TR_STAGE_COLOR, 0);
+  int keep_hull = p && opt.allow_open && (nopen > 0 || p->nsegs > 0);
   /* Not a union of closed 2-manifold shells (internal facets, cracks): which side of each
    * triangle is in the domain comes from the input's cell analysis, since FLAGE votes
    * cannot tell a region bounded only by internal facets from a cavity. */
@@ -123,14 +164,21 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = tr_outer_color(m, &sub, keep_hull, sides, &nreg);
   free(sides);
   sides = NULL;
+  PROGRESS(TR_STAGE_COLOR, 1);
+  double t5 = tr_pipeline_now();
+  stage[TR_STAGE_COLOR] = t5 - t4;
+  say(&opt, TR_STAGE_COLOR, t5 - t4);
+  PROGRESS(TR_STAGE_ROUND, 0);
   /* Before compaction: the flips need the sub-faces, which are in m's numbering. */
   if (st == TR_OK)
     st = tr_round_flip_flat(m, &sub, p, &stats->rounding_flips);
   if (st == TR_OK && stats->rounding_flips && opt.verbose >= 2)
     fprintf(stderr, "tetrec: %llu flips took away tets flat in doubles\n",
             (unsigned long long)stats->rounding_flips);
-  if (st == TR_OK)
-    st = tr_pipeline_compact(m, &res);
+  if (st == TR_OK) {
+    tr_compact_in cin = {&sub, p->tri_marker, vkind, vindex, edges, ne};
+    st = tr_pipeline_compact(m, &cin, &res);
+  }
   if (st == TR_OK && (flags & TR_PIPE_KEEP_EXACT)) {
     /* The caller writes the exact points: the repair would only move doubles nobody
      * prints, and where no doubles exist it searches for its whole budget (35 s of the
@@ -149,7 +197,9 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
               "tet is positive in doubles (exact positions: --exact)\n",
               (unsigned long long)stats->rounding_repairs);
   }
-  say(&opt, 2, "outer removal, output", tr_pipeline_now() - t4);
+  PROGRESS(TR_STAGE_ROUND, 1);
+  stage[TR_STAGE_ROUND] = tr_pipeline_now() - t5;
+  say(&opt, TR_STAGE_ROUND, stage[TR_STAGE_ROUND]);
   if (st == TR_OK && tr_mesh_num_tets(res) == 0)
     st = tr_error(TR_ERR_INPUT, "the surface encloses no tetrahedron (is it inside out?)");
   if (st == TR_OK) {
@@ -160,11 +210,21 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   }
   tr_pipeline_subfaces_free(&sub);
   free(edges);
+  free(vkind);
+  free(vindex);
   tr_mesh_destroy(m);
   stats->total_seconds = tr_pipeline_now() - t0;
   struct rusage ru;
   if (getrusage(RUSAGE_SELF, &ru) == 0)
     stats->peak_memory_bytes = (uint64_t)ru.ru_maxrss * 1024u; /* Linux: kilobytes */
+  if (statsout) {
+    /* no more than the caller's struct holds (ABI growth, include/tetrec.h) */
+    size_t n = statsout->size == 0 || statsout->size > sizeof full ? sizeof full
+                                                                     : statsout->size;
+    full.size = n;
+    if (n >= sizeof full.size)
+      memcpy(statsout, &full, n);
+  }
   if (st != TR_OK) {
     tr_mesh_destroy(res);
     tr_plc_destroy(p);

@@ -14,6 +14,7 @@
 
 #include "core/plc.h"
 #include "mesh/mesh.h"
+#include "recover_edges/recover_edges.h"
 #include "recover_facets/recover_facets.h"
 
 /* tr_mesh_plc, and *used (may be NULL) receives the PLC actually meshed: validated
@@ -41,18 +42,45 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *opt, tr_mesh **
 tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t *n,
                             uint32_t *nopen, uint32_t *nmulti);
 
-/* Edge then facet recovery on m (vertex ids = plc point ids). Fills sub and the stats
- * rows; secs[0], secs[1] = time of each stage. */
+/* Edge then facet recovery on m (vertex ids = plc point ids). Fills sub, the stats rows
+ * and *vkind, *vindex (tr_pipeline_origins; NULL when the build has no recovery stages,
+ * so every vertex is an input vertex); secs[0], secs[1] = time of each stage. Reports
+ * both stages to opt->progress (TR_ERR_CANCELLED when it asks to stop). */
 tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
                               const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
-                              tr_stats *stats, double secs[2]);
+                              tr_stats *stats, double secs[2], const tr_options *opt,
+                              uint8_t **vkind, uint32_t **vindex);
+/* opt->progress(user, tr_stage_name(stage), fraction) if set; TR_ERR_CANCELLED with a
+ * message naming the stage when it returns non-zero. */
+tr_status tr_pipeline_progress(const tr_options *opt, int stage, double fraction);
+
+/* The origin of every vertex of m (enum tr_vertex_origin, indices in m's numbering and
+ * the PLC's): input points are the first npoints vertices, a Steiner point on an edge
+ * chain is on that input edge, one on a sub-face of triangle k (and on no chain) is on
+ * triangle k, any other is interior. malloc'ed arrays of m->nv entries. */
+tr_status tr_pipeline_origins(const struct tr_mesh *m, uint32_t npoints,
+                              const tr_edge_chains *chains, const tr_subfaces *sub,
+                              uint8_t **kind, uint32_t **index);
 /* Frees sub's arrays (works whether or not the facet stage is built). */
 void tr_pipeline_subfaces_free(tr_subfaces *sub);
 
+/* What the compact mesh carries besides its tets (its tr_mesh_attrs): the sub-faces
+ * with their triangles' markers, the vertex origins (may be NULL: all input) and the
+ * input edges, all in m's numbering; compaction renumbers them. */
+typedef struct tr_compact_in {
+  const tr_subfaces *sub;
+  const int32_t *tri_marker; /* per input triangle, may be NULL (all 0) */
+  const uint8_t *vkind;
+  const uint32_t *vindex;
+  const uint32_t *edges;
+  uint32_t nedges;
+} tr_compact_in;
 /* A new store holding the non-outer real tets of m, vertices renumbered densely in
  * increasing old id (input points first, Steiner points in creation order), tets in slot
- * order, neighbours and regions kept. Steiner points are moved out of m. */
-tr_status tr_pipeline_compact(struct tr_mesh *m, struct tr_mesh **out);
+ * order, neighbours and regions kept, and attrs built from in (NULL: none). Steiner
+ * points are moved out of m. */
+tr_status tr_pipeline_compact(struct tr_mesh *m, const tr_compact_in *in,
+                              struct tr_mesh **out);
 
 /* Monotonic clock in seconds. */
 double tr_pipeline_now(void);

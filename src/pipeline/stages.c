@@ -169,12 +169,24 @@ done:
 }
 #endif
 
+tr_status tr_pipeline_progress(const tr_options *opt, int stage, double fraction)
+{
+  if (opt->progress && opt->progress(opt->progress_user, tr_stage_name(stage), fraction))
+    return tr_error(TR_ERR_CANCELLED, "cancelled by the progress callback at %s (%g)",
+                    tr_stage_name(stage), fraction);
+  return TR_OK;
+}
+
 tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
                               const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
-                              tr_stats *stats, double secs[2])
+                              tr_stats *stats, double secs[2], const tr_options *opt,
+                              uint8_t **vkind, uint32_t **vindex)
 {
   memset(sub, 0, sizeof *sub);
   secs[0] = secs[1] = 0;
+  *vkind = NULL;
+  *vindex = NULL;
+  TR_CHECK(tr_pipeline_progress(opt, TR_STAGE_EDGES, 0));
 #if TR_HAVE_RECOVERY
   tr_edge_chains chains;
   tr_edge_recovery_stats es;
@@ -189,19 +201,31 @@ tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
   stats->missing_edges = es.missing_edges;
   stats->edges_recovered_by_swap = es.recovered_by_swap;
   stats->points_added_for_edges = es.points_added;
+  if (st == TR_OK)
+    st = tr_pipeline_progress(opt, TR_STAGE_EDGES, 1);
+  if (st == TR_OK)
+    st = tr_pipeline_progress(opt, TR_STAGE_FACETS, 0);
   if (st == TR_OK) {
+    t1 = tr_pipeline_now();
     st = tr_recover_facets(m, plc->tris, plc->ntris, &chains, sub, &fs);
     secs[1] = tr_pipeline_now() - t1;
     stats->missing_facets = fs.missing_facets;
     stats->facets_recovered_by_swap = fs.recovered_by_swap;
     stats->points_added_for_facets = fs.points_added;
   }
+  if (st == TR_OK)
+    st = tr_pipeline_origins(m, plc->npoints, &chains, sub, vkind, vindex);
   tr_edge_chains_free(&chains);
-  return st;
 #else
   double t0 = tr_pipeline_now();
   tr_status st = recover_none(m, plc, edges, ne, sub, stats);
   secs[0] = tr_pipeline_now() - t0;
-  return st;
+  if (st == TR_OK)
+    st = tr_pipeline_progress(opt, TR_STAGE_EDGES, 1);
+  if (st == TR_OK)
+    st = tr_pipeline_progress(opt, TR_STAGE_FACETS, 0);
 #endif
+  if (st == TR_OK)
+    st = tr_pipeline_progress(opt, TR_STAGE_FACETS, 1);
+  return st;
 }

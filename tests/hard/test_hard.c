@@ -46,7 +46,7 @@ static void run_case(const hard_case *c)
   opt.round_budget = run_budget;
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
-  tr_stats st;
+  tr_stats st = {.size = sizeof st};
   s = tr_mesh_plc_flags(plc, &opt, &m, &st, &used, run_flags);
   if (c->status != TR_OK) {
     const char *msg = tr_last_error();

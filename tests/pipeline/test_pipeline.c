@@ -105,7 +105,7 @@ static int run(const char *name, tr_plc *plc, int allow_open, int smooth, double
   opt.smooth = smooth;
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
-  tr_stats st;
+  tr_stats st = {.size = sizeof st};
   tr_status s = tr_mesh_plc_ex(plc, &opt, &m, &st, &used);
   if (s != TR_OK) {
     EXPECT(0, "%s: tr_mesh_plc failed: %s: %s", name, tr_status_name(s), tr_last_error());
@@ -159,7 +159,7 @@ static void t_tet(void)
   tri(&b, c, d, e);
   tr_plc *p = make(&b);
   uint32_t nt = 0;
-  tr_stats st;
+  tr_stats st = {.size = sizeof st};
   int r = run("tetrahedron", p, 0, 1, 0, &st, &nt);
   EXPECT(r == 1 && nt == 1, "tetrahedron: expected 1 region / 1 tet, got %d / %u", r, nt);
   EXPECT(st.missing_edges == 0 && st.missing_facets == 0 && st.surface_nodes == 4 &&
@@ -176,7 +176,7 @@ static void t_cube(int n)
   tr_plc *p = make(&b);
   char name[64];
   snprintf(name, sizeof name, "cube_%dx%d", n, n);
-  tr_stats st;
+  tr_stats st = {.size = sizeof st};
   int r = run(name, p, 0, 0, 0, &st, NULL);
   EXPECT(r == 1, "%s: expected 1 region, got %d", name, r);
   EXPECT(st.surface_nodes == (uint64_t)(6 * n * n + 2), "%s: surface nodes %llu", name,
@@ -212,7 +212,7 @@ static void t_schoenhardt(void)
     tri(&b, A[i], B[j], B[i]);
   }
   tr_plc *p = make(&b);
-  tr_stats st;
+  tr_stats st = {.size = sizeof st};
   uint32_t nt = 0;
   int r = run("schoenhardt", p, 0, 1, 0, &st, &nt);
   EXPECT(r == 1, "schoenhardt: expected 1 region, got %d", r);
@@ -345,7 +345,7 @@ static void t_smooth(void)
   tri(&b, C, D, E);
   tri(&b, D, A, E);
   p = make(&b);
-  tr_stats st;
+  tr_stats st = {.size = sizeof st};
   EXPECT(run("pyramid_smoothed", p, 0, 1, 0, &st, NULL) == 1 && st.surface_swaps == 1,
          "pyramid_smoothed: want 1 region and 1 surface swap");
   EXPECT(run("pyramid_unsmoothed", p, 0, 0, 0, &st, NULL) == 1 && st.surface_swaps == 0,

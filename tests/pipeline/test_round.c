@@ -342,7 +342,7 @@ static uint64_t end_to_end(const char *name, tr_plc *plc, uint64_t *repairs)
   opt.verbose = 0;
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
-  tr_stats st;
+  tr_stats st = {.size = sizeof st};
   tr_status s = tr_mesh_plc_ex(plc, &opt, &m, &st, &used);
   EXPECT(s == TR_OK, "%s: tr_mesh_plc: %s", name, tr_last_error());
   if (s != TR_OK)
