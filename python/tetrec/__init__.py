@@ -10,8 +10,8 @@ edge and triangle is in the mesh. Failures raise tetrec.Error with .status (the 
 library's tr_status name, e.g. "TR_ERR_OPEN") and .message.
 """
 from ._tetrec import C_VERSION, SUPPORTED_OPTIONS, Error, status_name
-from ._mesh import Mesh, Surface, read, tetrahedralize
+from ._mesh import Mesh, Surface, read, tetrahedralize, validate
 
 __version__ = C_VERSION
-__all__ = ["Error", "Mesh", "Surface", "read", "tetrahedralize", "status_name",
+__all__ = ["Error", "Mesh", "Surface", "read", "tetrahedralize", "validate", "status_name",
            "SUPPORTED_OPTIONS", "__version__"]

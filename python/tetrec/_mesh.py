@@ -6,6 +6,7 @@ back as tetrec.Error with the library's status name and message.
 """
 from fractions import Fraction
 import os
+import warnings
 from typing import NamedTuple, Optional
 
 import numpy as np
@@ -28,8 +29,14 @@ class Surface(NamedTuple):
 
 def read(path) -> Surface:
     """Reads a surface (.off .stl .obj .ply .mesh .node .poly .smesh; the extension picks
-    the reader). Polygons come back triangulated in their plane."""
-    points, triangles, markers = _tetrec.read(os.fspath(path))
+    the reader). Polygons come back triangulated in their plane. Segments on no
+    triangle and volume tets in the file are not part of a Surface: a warning says how
+    many were left out."""
+    points, triangles, markers, nsegs, ntets = _tetrec.read(os.fspath(path))
+    for n, what in ((nsegs, "segments on no triangle"), (ntets, "tetrahedra")):
+        if n:
+            warnings.warn(f"tetrec.read({os.fspath(path)!r}): {n} {what} left out "
+                          f"(a Surface holds points, triangles and markers)", stacklevel=2)
     return Surface(points, triangles, markers)
 
 
@@ -41,10 +48,14 @@ class Mesh:
         their exact rational positions);
     tets (m,4) uint32: positively oriented, det[v1-v0, v2-v0, v3-v0] > 0;
     regions (m,) int32: region id of each tet;
-    boundary_faces (f,3) uint32: faces on the domain boundary or between regions, with
-        normals pointing out of their tet;
-    boundary_markers (f,) int32;
-    stats: the rows of the C library's tr_stats.
+    boundary_faces (f,3) uint32: the mesh faces on input triangles (the boundary and
+        internal facets alike), each with its right-hand normal pointing the way its
+        input triangle's does (outward on the boundary), sorted by input triangle;
+    boundary_markers (f,) int32: the marker of each face's input triangle;
+    boundary_triangles (f,) uint32: each face's input triangle, indexed in the surface
+        as meshed (validate()'s; the input itself when nothing needed repair);
+    stats: the rows of the C library's tr_stats (the seed paper's Table 14, times,
+        peak memory, stage_seconds per pipeline stage).
     """
 
     def __init__(self, handle, stats, exact):
@@ -55,10 +66,11 @@ class Mesh:
         self.regions = arrays["regions"]
         self.boundary_faces = arrays["boundary_faces"]
         self.boundary_markers = arrays["boundary_markers"]
+        self.boundary_triangles = arrays["boundary_triangles"]
         self.stats = stats
         self.exact = exact
         for a in (self.points, self.tets, self.regions, self.boundary_faces,
-                  self.boundary_markers):
+                  self.boundary_markers, self.boundary_triangles):
             a.flags.writeable = False
 
     def __repr__(self):
@@ -69,9 +81,6 @@ class Mesh:
         """Exact coordinates as fractions.Fraction triples: the Steiner points exactly on
         the edges and facets they were built on, the input points as given. vertices:
         an iterable of indices, or None for all."""
-        if not _tetrec.HAS_EXACT_POINTS:
-            raise NotImplementedError("this build of the tetrec C library cannot give "
-                                      "exact Steiner coordinates")
         if vertices is None:
             vertices = range(len(self.points))
         return [tuple(Fraction(c) for c in self._handle.exact_point(int(v)))
@@ -139,9 +148,38 @@ def _as_index_array(x, name, ncols, dtype, lo, hi):
     return np.ascontiguousarray(a, dtype=dtype)
 
 
+def _prepare(points, triangles, markers):
+    """points, triangles, markers as the C layer takes them; a Surface may stand for
+    all three (its markers unless markers is given)."""
+    if triangles is None:
+        if not isinstance(points, Surface):
+            raise TypeError("expected (points, triangles) or a Surface")
+        if markers is None:
+            markers = points.markers
+        points, triangles = points.points, points.triangles
+    pts = _as_points(points)
+    tris = _as_index_array(triangles, "triangles", 3, np.uint32, 0, 2**32 - 2)
+    mk = None
+    if markers is not None:
+        mk = _as_index_array(markers, "markers", 0, np.int32, -2**31, 2**31 - 1)
+        if len(mk) != len(tris):
+            raise ValueError(f"markers: {len(mk)} values for {len(tris)} triangles")
+    return pts, tris, mk
+
+
+def validate(points, triangles=None, *, markers=None):
+    """The surface as tetrahedralize() meshes it, and what was repaired: exact duplicate
+    vertices merged, duplicate triangles removed, each closed shell oriented outward
+    (cavities inward). Returns (Surface, report), report one line per repair ("" if
+    none). Raises tetrec.Error for what cannot be repaired (open surface,
+    self-intersection, zero-area triangle, ...)."""
+    p, t, m, report = _tetrec.validate(*_prepare(points, triangles, markers))
+    return Surface(p, t, m), report
+
+
 def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
                    keep_surface=False, quality=None, max_volume=None, exact=False,
-                   smooth=True, round_budget=None, verbose=0):
+                   smooth=True, round_budget=None, verbose=0, progress=None):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
     points (n,3) floats and triangles (m,3) 0-based indices, or a Surface from read()
@@ -152,16 +190,13 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     exact: Mesh.write() defaults to writing exact rational Steiner points.
     smooth: surface diagonal swaps before recovery. round_budget: star checks the
     rounding repair may spend. verbose: 0 quiet, 1 normal, 2 chatty (on stderr).
+    progress: called as progress(stage, fraction) at the start (0.0) and end (1.0) of
+    each pipeline stage; a true return value or an exception cancels the run (then
+    tetrec.Error with status TR_ERR_CANCELLED, or the exception). Ctrl-C cancels too.
 
     Returns a Mesh; raises tetrec.Error (.status, .code, .message) when the library
     refuses the input (open surface, self-intersection, ...).
     """
-    if triangles is None:
-        if not isinstance(points, Surface):
-            raise TypeError("tetrahedralize(points, triangles) or tetrahedralize(surface)")
-        if markers is None:
-            markers = points.markers
-        points, triangles = points.points, points.triangles
     # Every option that is not at its default goes to the C layer, which raises
     # NotImplementedError for any it does not know: none is dropped on the way.
     options = {name: value for name, value in (("holes", holes), ("regions", regions),
@@ -175,12 +210,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
         options["smooth"] = 0
     if verbose:
         options["verbose"] = int(verbose)
-    pts = _as_points(points)
-    tris = _as_index_array(triangles, "triangles", 3, np.uint32, 0, 2**32 - 2)
-    mk = None
-    if markers is not None:
-        mk = _as_index_array(markers, "markers", 0, np.int32, -2**31, 2**31 - 1)
-        if len(mk) != len(tris):
-            raise ValueError(f"markers: {len(mk)} values for {len(tris)} triangles")
+    if progress is not None:
+        options["progress"] = progress
+    pts, tris, mk = _prepare(points, triangles, markers)
     handle, stats = _tetrec.tetrahedralize(pts, tris, mk, options)
     return Mesh(handle, stats, bool(exact))

@@ -35,7 +35,7 @@ static PyObject *make_error(int code, const char *message)
   return exc;
 }
 
-static PyObject *raise_status(tr_status st)
+PyObject *tetrec_py_raise(tr_status st)
 {
   PyObject *exc = make_error((int)st, tr_last_error());
   if (exc) {
@@ -70,7 +70,7 @@ static PyObject *cmesh_write(CMesh *self, PyObject *args)
   Py_END_ALLOW_THREADS
   Py_DECREF(path_obj);
   if (st != TR_OK)
-    return raise_status(st);
+    return tetrec_py_raise(st);
   Py_RETURN_NONE;
 }
 
@@ -88,22 +88,14 @@ static PyObject *cmesh_exact_point(CMesh *self, PyObject *args)
   return tetrec_py_mesh_exact_point(self->mesh, v);
 }
 
-static PyObject *cmesh_counts(CMesh *self, PyObject *Py_UNUSED(ignored))
-{
-  return Py_BuildValue("(kk)", (unsigned long)tr_mesh_num_vertices(self->mesh),
-                       (unsigned long)tr_mesh_num_tets(self->mesh));
-}
-
 static PyMethodDef cmesh_methods[] = {
     {"write", (PyCFunction)cmesh_write, METH_VARARGS,
      "write(path, exact): tr_mesh_write; the extension picks the format."},
     {"arrays", (PyCFunction)cmesh_arrays, METH_NOARGS,
-     "arrays() -> dict of numpy arrays: points, tets, regions, boundary_faces, "
-     "boundary_markers."},
+     "arrays() -> dict of numpy arrays (copies): points, tets, regions, boundary_faces, "
+     "boundary_markers, boundary_triangles."},
     {"exact_point", (PyCFunction)cmesh_exact_point, METH_VARARGS,
-     "exact_point(v) -> 'x y z' with each coordinate a decimal or num/den."},
-    {"counts", (PyCFunction)cmesh_counts, METH_NOARGS,
-     "counts() -> (vertices, tets)."},
+     "exact_point(v) -> (x, y, z), each an exact rational as text, num/den or num."},
     {NULL, NULL, 0, NULL}};
 
 static PyTypeObject CMeshType = {
@@ -116,17 +108,51 @@ static PyTypeObject CMeshType = {
     .tp_methods = cmesh_methods,
 };
 
+/* tr_options.progress: runs on the thread that called tr_mesh_plc, which released the
+ * GIL; it takes the GIL back to look for a pending KeyboardInterrupt and to call the
+ * user's progress(stage, fraction). A signal, an exception or a true return cancels
+ * the run (TR_ERR_CANCELLED); the exception is kept and raised afterwards. */
+typedef struct {
+  PyObject *callback; /* or NULL */
+  PyObject *exc_type, *exc_value, *exc_tb;
+} progress_state;
+
+static int progress_hook(void *user, const char *stage, double fraction)
+{
+  progress_state *ps = user;
+  PyGILState_STATE g = PyGILState_Ensure();
+  int stop = 0;
+  if (!ps->exc_type) {
+    if (PyErr_CheckSignals() < 0) {
+      stop = 1;
+    } else if (ps->callback) {
+      PyObject *r = PyObject_CallFunction(ps->callback, "sd", stage, fraction);
+      stop = !r || PyObject_IsTrue(r) != 0;
+      Py_XDECREF(r);
+    }
+    if (PyErr_Occurred())
+      PyErr_Fetch(&ps->exc_type, &ps->exc_value, &ps->exc_tb);
+  } else {
+    stop = 1;
+  }
+  PyGILState_Release(g);
+  return stop;
+}
+
 /* ---- options ---- */
 /* Every key of `opts` is an option the caller set to a non-default value. Each one this
  * build of the C library supports is copied into tr_options; any other raises
  * NotImplementedError, so no option is ever dropped. To wire a new option: handle its
  * key here and add its name to SUPPORTED_OPTIONS below. */
-static const char *const SUPPORTED_OPTIONS[] = {"smooth", "verbose", "round_budget", NULL};
+static const char *const SUPPORTED_OPTIONS[] = {"smooth", "verbose", "round_budget",
+                                                "progress", NULL};
 
-static int set_options(PyObject *opts, tr_options *opt)
+static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
 {
   tr_options_default(opt);
   opt->verbose = 0;
+  opt->progress = progress_hook;
+  opt->progress_user = ps;
   if (opts == Py_None)
     return 0;
   if (!PyDict_Check(opts)) {
@@ -153,6 +179,12 @@ static int set_options(PyObject *opts, tr_options *opt)
         opt->smooth = (int)x;
       else
         opt->verbose = (int)x;
+    } else if (!strcmp(k, "progress")) {
+      if (!PyCallable_Check(value)) {
+        PyErr_SetString(PyExc_TypeError, "progress must be callable(stage, fraction)");
+        return -1;
+      }
+      ps->callback = value;
     } else if (!strcmp(k, "round_budget")) {
       unsigned long long x = PyLong_AsUnsignedLongLong(value);
       if (x == (unsigned long long)-1 && PyErr_Occurred())
@@ -175,7 +207,7 @@ static int set_options(PyObject *opts, tr_options *opt)
 
 static PyObject *stats_dict(const tr_stats *s)
 {
-  return Py_BuildValue(
+  PyObject *d = Py_BuildValue(
       "{sKsKsKsKsKsKsKsKsKsKsKsKsKsdsdsK}", "surface_nodes", (unsigned long long)s->surface_nodes,
       "surface_facets", (unsigned long long)s->surface_facets, "volume_nodes",
       (unsigned long long)s->volume_nodes, "volume_elements",
@@ -191,6 +223,20 @@ static PyObject *stats_dict(const tr_stats *s)
       (unsigned long long)s->rounding_flips, "total_seconds", s->total_seconds,
       "recovery_seconds", s->recovery_seconds, "peak_memory_bytes",
       (unsigned long long)s->peak_memory_bytes);
+  PyObject *stages = d ? PyDict_New() : NULL;
+  for (int k = 0; stages && k < TR_STAGE_COUNT; k++) {
+    PyObject *x = PyFloat_FromDouble(s->stage_seconds[k]);
+    if (!x || PyDict_SetItemString(stages, tr_stage_name(k), x) < 0)
+      Py_CLEAR(stages);
+    Py_XDECREF(x);
+  }
+  if (!stages || PyDict_SetItemString(d, "stage_seconds", stages) < 0) {
+    Py_XDECREF(stages);
+    Py_XDECREF(d);
+    return NULL;
+  }
+  Py_DECREF(stages);
+  return d;
 }
 
 /* The arrays _mesh.py hands over are already C-contiguous with the exact dtypes; this
@@ -223,16 +269,9 @@ static PyObject *new_cmesh(tr_mesh *mesh)
   return (PyObject *)h;
 }
 
-/* tetrahedralize(points float64 (n,3), triangles uint32 (m,3), markers int32 (m,) or None,
- * options dict or None) -> (CMesh, stats dict) */
-static PyObject *py_tetrahedralize(PyObject *Py_UNUSED(mod), PyObject *args)
+/* A PLC from the arrays _mesh.py prepared; NULL with an exception set on failure. */
+static tr_plc *build_plc(PyObject *pts_obj, PyObject *tri_obj, PyObject *mark_obj)
 {
-  PyObject *pts_obj, *tri_obj, *mark_obj, *opts;
-  if (!PyArg_ParseTuple(args, "OOOO", &pts_obj, &tri_obj, &mark_obj, &opts))
-    return NULL;
-  tr_options opt;
-  if (set_options(opts, &opt) < 0)
-    return NULL;
   PyArrayObject *pts = as_array(pts_obj, NPY_FLOAT64, 3, "points");
   PyArrayObject *tri = pts ? as_array(tri_obj, NPY_UINT32, 3, "triangles") : NULL;
   if (!tri)
@@ -252,17 +291,44 @@ static PyObject *py_tetrahedralize(PyObject *Py_UNUSED(mod), PyObject *args)
     st = tr_plc_set(plc, (const double *)PyArray_DATA(pts), (uint32_t)PyArray_DIM(pts, 0),
                     (const uint32_t *)PyArray_DATA(tri), (uint32_t)PyArray_DIM(tri, 0),
                     mark ? (const int32_t *)PyArray_DATA(mark) : NULL);
+  if (st != TR_OK) {
+    tr_plc_destroy(plc);
+    tetrec_py_raise(st);
+    return NULL;
+  }
+  return plc;
+}
+
+/* tetrahedralize(points float64 (n,3), triangles uint32 (m,3), markers int32 (m,) or None,
+ * options dict or None) -> (CMesh, stats dict) */
+static PyObject *py_tetrahedralize(PyObject *Py_UNUSED(mod), PyObject *args)
+{
+  PyObject *pts_obj, *tri_obj, *mark_obj, *opts;
+  if (!PyArg_ParseTuple(args, "OOOO", &pts_obj, &tri_obj, &mark_obj, &opts))
+    return NULL;
+  tr_options opt;
+  progress_state ps = {NULL, NULL, NULL, NULL};
+  if (set_options(opts, &opt, &ps) < 0)
+    return NULL;
+  tr_plc *plc = build_plc(pts_obj, tri_obj, mark_obj);
+  if (!plc)
+    return NULL;
   tr_mesh *mesh = NULL;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
-  if (st == TR_OK) {
-    Py_BEGIN_ALLOW_THREADS
-    st = tr_mesh_plc(plc, &opt, &mesh, &stats);
-    Py_END_ALLOW_THREADS
-  }
+  stats.size = sizeof stats;
+  tr_status st;
+  Py_BEGIN_ALLOW_THREADS
+  st = tr_mesh_plc(plc, &opt, &mesh, &stats);
+  Py_END_ALLOW_THREADS
   tr_plc_destroy(plc);
+  if (ps.exc_type) {
+    tr_mesh_destroy(mesh);
+    PyErr_Restore(ps.exc_type, ps.exc_value, ps.exc_tb);
+    return NULL;
+  }
   if (st != TR_OK)
-    return raise_status(st);
+    return tetrec_py_raise(st);
   PyObject *h = new_cmesh(mesh);
   PyObject *sd = h ? stats_dict(&stats) : NULL;
   if (!sd) {
@@ -272,7 +338,37 @@ static PyObject *py_tetrahedralize(PyObject *Py_UNUSED(mod), PyObject *args)
   return Py_BuildValue("(NN)", h, sd);
 }
 
-/* read(path) -> (points (n,3) float64, triangles (m,3) uint32, markers (m,) int32) */
+/* validate(points, triangles, markers or None) -> (points, triangles, markers, report):
+ * the surface after tr_plc_validate's repairs, i.e. the one tr_mesh_plc meshes. */
+static PyObject *py_validate(PyObject *Py_UNUSED(mod), PyObject *args)
+{
+  PyObject *pts_obj, *tri_obj, *mark_obj;
+  if (!PyArg_ParseTuple(args, "OOO", &pts_obj, &tri_obj, &mark_obj))
+    return NULL;
+  tr_plc *plc = build_plc(pts_obj, tri_obj, mark_obj);
+  if (!plc)
+    return NULL;
+  tr_status st;
+  Py_BEGIN_ALLOW_THREADS
+  st = tr_plc_validate(plc, NULL);
+  Py_END_ALLOW_THREADS
+  if (st != TR_OK) {
+    tr_plc_destroy(plc);
+    return tetrec_py_raise(st);
+  }
+  PyObject *arrays = tetrec_py_plc_arrays(plc);
+  PyObject *res = arrays ? Py_BuildValue("(OOOs)", PyTuple_GET_ITEM(arrays, 0),
+                                         PyTuple_GET_ITEM(arrays, 1),
+                                         PyTuple_GET_ITEM(arrays, 2), tr_plc_report(plc))
+                         : NULL;
+  Py_XDECREF(arrays);
+  tr_plc_destroy(plc);
+  return res;
+}
+
+/* read(path) -> (points (n,3) float64, triangles (m,3) uint32, markers (m,) int32,
+ * segments, tets): the last two count what the file held beside its surface (segments on
+ * no triangle, volume tets), which a Surface cannot carry. */
 static PyObject *py_read(PyObject *Py_UNUSED(mod), PyObject *args)
 {
   PyObject *path_obj;
@@ -285,9 +381,17 @@ static PyObject *py_read(PyObject *Py_UNUSED(mod), PyObject *args)
   Py_END_ALLOW_THREADS
   Py_DECREF(path_obj);
   if (st != TR_OK)
-    return raise_status(st);
-  PyObject *res = tetrec_py_plc_arrays(plc);
+    return tetrec_py_raise(st);
+  PyObject *arrays = tetrec_py_plc_arrays(plc);
+  unsigned long extra[2];
+  tetrec_py_plc_extras(plc, &extra[0], &extra[1]);
   tr_plc_destroy(plc);
+  if (!arrays)
+    return NULL;
+  PyObject *res = Py_BuildValue("(OOOkk)", PyTuple_GET_ITEM(arrays, 0),
+                                PyTuple_GET_ITEM(arrays, 1), PyTuple_GET_ITEM(arrays, 2),
+                                extra[0], extra[1]);
+  Py_DECREF(arrays);
   return res;
 }
 
@@ -313,7 +417,9 @@ static PyObject *py_error(PyObject *Py_UNUSED(mod), PyObject *args)
 static PyMethodDef module_methods[] = {
     {"tetrahedralize", py_tetrahedralize, METH_VARARGS,
      "tetrahedralize(points, triangles, markers, options) -> (CMesh, stats)"},
-    {"read", py_read, METH_VARARGS, "read(path) -> (points, triangles, markers)"},
+    {"read", py_read, METH_VARARGS, "read(path) -> (points, triangles, markers, segments, tets)"},
+    {"validate", py_validate, METH_VARARGS,
+     "validate(points, triangles, markers) -> (points, triangles, markers, report)"},
     {"status_name", py_status_name, METH_VARARGS, "status_name(code) -> 'TR_ERR_...'"},
     {"error", py_error, METH_VARARGS, "error(code, message) -> tetrec.Error"},
     {NULL, NULL, 0, NULL}};
@@ -321,6 +427,14 @@ static PyMethodDef module_methods[] = {
 static struct PyModuleDef module_def = {PyModuleDef_HEAD_INIT, "_tetrec",
                                         "C extension of the tetrec package.", -1,
                                         module_methods, NULL, NULL, NULL, NULL};
+
+/* The library's version as "major.minor.patch" (tr_version: the library linked in). */
+static PyObject *c_version(void)
+{
+  int v[3];
+  tr_version(&v[0], &v[1], &v[2]);
+  return PyUnicode_FromFormat("%d.%d.%d", v[0], v[1], v[2]);
+}
 
 PyMODINIT_FUNC PyInit__tetrec(void)
 {
@@ -350,8 +464,7 @@ PyMODINIT_FUNC PyInit__tetrec(void)
   Py_XINCREF(Error);
   if (!Error || !supported || PyModule_AddObject(m, "Error", Error) < 0 ||
       PyModule_AddObject(m, "SUPPORTED_OPTIONS", supported) < 0 ||
-      PyModule_AddStringConstant(m, "C_VERSION", TETREC_VERSION_STRING) < 0 ||
-      PyModule_AddIntConstant(m, "HAS_EXACT_POINTS", TETREC_PY_HAS_EXACT_POINTS) < 0) {
+      PyModule_AddObject(m, "C_VERSION", c_version()) < 0) {
     Py_DECREF(m);
     return NULL;
   }

@@ -1,13 +1,9 @@
-/* Mesh and surface arrays for the Python extension, read from the library's own
- * structs (src/mesh/mesh.h, src/core/plc.h): the public header has counts but no array
- * accessors yet. The extension links the static library, so the structs are the ones
- * it was built with. Once include/tetrec.h has tr_mesh_points & co., this file reads
- * those instead and stops including internal headers.
- *
- * The boundary faces are the ones tr_mesh_write writes (src/io/write_mesh.c): a face of
- * a kept tet whose neighbour is missing, a ghost, outside, or in another region (listed
- * once, from the lower tet), oriented with its normal out of its tet. */
-#define NO_IMPORT_ARRAY
+/* Mesh and surface arrays for the Python extension, copied from the public accessors of
+ * include/tetrec.h into fresh numpy arrays. One exception: the public header has no
+ * accessor for a PLC's triangle markers, segments or tets yet, so tetrec_py_plc_arrays
+ * and tetrec_py_plc_extras read them from struct tr_plc (src/core/plc.h); the extension links the static library, so the
+ * struct is the one it was built with. */
+#define NO_IMPORT_ARRAY /* _tetrec.c imports the numpy C API */
 #include "arrays.h"
 
 #include <numpy/arrayobject.h>
@@ -15,18 +11,6 @@
 #include <string.h>
 
 #include "core/plc.h"
-#include "mesh/mesh.h"
-
-static int keep(const struct tr_mesh *m, uint32_t t)
-{
-  return tr_tet_is_real(m, t) && !(m->flags && (m->flags[t] & TR_TF_OUTER));
-}
-
-static int boundary(const struct tr_mesh *m, uint32_t t, int k)
-{
-  uint32_t o = TR_NEIG(m, t, k);
-  return o == TR_NONE || !keep(m, o) || (m->region && m->region[o] != m->region[t] && o > t);
-}
 
 static PyArrayObject *new_array(int nd, npy_intp rows, npy_intp cols, int type)
 {
@@ -34,121 +18,86 @@ static PyArrayObject *new_array(int nd, npy_intp rows, npy_intp cols, int type)
   return (PyArrayObject *)PyArray_SimpleNew(nd, dims, type);
 }
 
-/* Steals the arrays' references; NULL (exception set) if any is NULL. */
-static PyObject *mesh_dict(PyArrayObject *pts, PyArrayObject *tets, PyArrayObject *reg,
-                           PyArrayObject *faces, PyArrayObject *mark)
+/* A new array holding a copy of rows*cols items of src (zeros when src is NULL). */
+static PyArrayObject *copy_array(const void *src, int nd, npy_intp rows, npy_intp cols,
+                                 int type)
 {
-  if (!pts || !tets || !reg || !faces || !mark) {
-    Py_XDECREF(pts);
-    Py_XDECREF(tets);
-    Py_XDECREF(reg);
-    Py_XDECREF(faces);
-    Py_XDECREF(mark);
-    return NULL;
+  PyArrayObject *a = new_array(nd, rows, cols, type);
+  size_t bytes = a ? (size_t)PyArray_ITEMSIZE(a) * (size_t)PyArray_SIZE(a) : 0;
+  if (bytes) {
+    if (src)
+      memcpy(PyArray_DATA(a), src, bytes);
+    else
+      memset(PyArray_DATA(a), 0, bytes);
   }
-  return Py_BuildValue("{sNsNsNsNsN}", "points", pts, "tets", tets, "regions", reg,
-                       "boundary_faces", faces, "boundary_markers", mark);
+  return a;
 }
 
 PyObject *tetrec_py_mesh_arrays(const tr_mesh *mesh)
 {
-  const struct tr_mesh *m = mesh;
-  npy_intp nt = 0, nf = 0;
-  for (uint32_t t = 0; t < m->nt; t++)
-    if (keep(m, t)) {
-      nt++;
-      for (int k = 0; k < 4; k++)
-        nf += boundary(m, t, k);
+  npy_intp nv = tr_mesh_num_vertices(mesh), nt = tr_mesh_num_tets(mesh);
+  npy_intp nf = tr_mesh_num_boundary_faces(mesh);
+  PyArrayObject *a[6] = {
+      copy_array(tr_mesh_points(mesh), 2, nv, 3, NPY_FLOAT64),
+      copy_array(tr_mesh_tets(mesh), 2, nt, 4, NPY_UINT32),
+      /* NULL only for a tr_delaunay mesh, which has one region */
+      copy_array(tr_mesh_tet_regions(mesh), 1, nt, 0, NPY_INT32),
+      copy_array(tr_mesh_boundary_faces(mesh), 2, nf, 3, NPY_UINT32),
+      copy_array(tr_mesh_boundary_markers(mesh), 1, nf, 0, NPY_INT32),
+      copy_array(tr_mesh_boundary_triangles(mesh), 1, nf, 0, NPY_UINT32)};
+  for (int i = 0; i < 6; i++)
+    if (!a[i]) {
+      for (int j = 0; j < 6; j++)
+        Py_XDECREF(a[j]);
+      return NULL;
     }
-  PyArrayObject *pts = new_array(2, m->nv, 3, NPY_FLOAT64);
-  PyArrayObject *tets = new_array(2, nt, 4, NPY_UINT32);
-  PyArrayObject *reg = new_array(1, nt, 0, NPY_INT32);
-  PyArrayObject *faces = new_array(2, nf, 3, NPY_UINT32);
-  PyArrayObject *mark = new_array(1, nf, 0, NPY_INT32);
-  if (!pts || !tets || !reg || !faces || !mark)
-    return mesh_dict(pts, tets, reg, faces, mark);
-  if (m->nv)
-    memcpy(PyArray_DATA(pts), m->xyz, sizeof(double) * 3 * (size_t)m->nv);
-  uint32_t *tv = PyArray_DATA(tets), *fv = PyArray_DATA(faces);
-  int32_t *rv = PyArray_DATA(reg), *mv = PyArray_DATA(mark);
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!keep(m, t))
-      continue;
-    memcpy(tv, m->tv + 4 * (size_t)t, 4 * sizeof *tv);
-    tv += 4;
-    *rv++ = m->region ? (int32_t)m->region[t] : 0;
-    for (int k = 0; k < 4; k++)
-      if (boundary(m, t, k)) {
-        /* tr_face_vtx order has the normal pointing into the tet: reverse it. */
-        fv[0] = m->tv[4 * (size_t)t + tr_face_vtx[k][0]];
-        fv[1] = m->tv[4 * (size_t)t + tr_face_vtx[k][2]];
-        fv[2] = m->tv[4 * (size_t)t + tr_face_vtx[k][1]];
-        fv += 3;
-        /* The store keeps no input markers; tr_mesh_write writes 1 for every face. */
-        *mv++ = 1;
-      }
-  }
-  return mesh_dict(pts, tets, reg, faces, mark);
-}
-
-static PyObject *mpq_text(const mpq_t q)
-{
-  char *s = mpq_get_str(NULL, 10, q);
-  if (!s)
-    return PyErr_NoMemory();
-  PyObject *r = PyUnicode_FromString(s);
-  void (*freefunc)(void *, size_t);
-  mp_get_memory_functions(NULL, NULL, &freefunc);
-  freefunc(s, strlen(s) + 1);
-  return r;
+  return Py_BuildValue("{sNsNsNsNsNsN}", "points", a[0], "tets", a[1], "regions", a[2],
+                       "boundary_faces", a[3], "boundary_markers", a[4],
+                       "boundary_triangles", a[5]);
 }
 
 PyObject *tetrec_py_mesh_exact_point(const tr_mesh *mesh, unsigned long v)
 {
-  const struct tr_mesh *m = mesh;
-  if (v >= m->nv) {
-    PyErr_Format(PyExc_IndexError, "vertex %lu of a mesh with %u", v, m->nv);
+  if (v >= tr_mesh_num_vertices(mesh)) {
+    PyErr_Format(PyExc_IndexError, "vertex %lu of a mesh with %u", v,
+                 tr_mesh_num_vertices(mesh));
     return NULL;
   }
-  PyObject *c[3] = {NULL, NULL, NULL};
-  const tr_qpoint *q = m->vq ? m->vq[v] : NULL;
-  for (int k = 0; k < 3; k++) {
-    if (q) {
-      c[k] = mpq_text(q->c[k]);
-    } else {
-      mpq_t x;
-      mpq_init(x);
-      mpq_set_d(x, m->xyz[3 * (size_t)v + k]);
-      c[k] = mpq_text(x);
-      mpq_clear(x);
-    }
-    if (!c[k]) {
-      Py_XDECREF(c[0]);
-      Py_XDECREF(c[1]);
-      return NULL;
-    }
+  char *text = NULL;
+  tr_status st = tr_mesh_point_exact(mesh, (uint32_t)v, &text);
+  if (st != TR_OK)
+    return tetrec_py_raise(st);
+  /* "x y z", each num/den or an integer */
+  PyObject *s = PyUnicode_FromString(text);
+  PyObject *parts = s ? PyUnicode_Split(s, NULL, -1) : NULL;
+  if (parts && PyList_GET_SIZE(parts) != 3) {
+    Py_CLEAR(parts);
+    PyErr_Format(PyExc_RuntimeError, "tr_mesh_point_exact gave '%s' for vertex %lu", text, v);
   }
-  return Py_BuildValue("(NNN)", c[0], c[1], c[2]);
+  tr_free(text);
+  Py_XDECREF(s);
+  PyObject *t = parts ? PyList_AsTuple(parts) : NULL;
+  Py_XDECREF(parts);
+  return t;
 }
 
 PyObject *tetrec_py_plc_arrays(const tr_plc *plc)
 {
-  uint32_t np = tr_plc_num_points(plc), nt = tr_plc_num_triangles(plc);
-  PyArrayObject *pts = new_array(2, np, 3, NPY_FLOAT64);
-  PyArrayObject *tri = new_array(2, nt, 3, NPY_UINT32);
-  PyArrayObject *mark = new_array(1, nt, 0, NPY_INT32);
+  npy_intp np = tr_plc_num_points(plc), nt = tr_plc_num_triangles(plc);
+  PyArrayObject *pts = copy_array(tr_plc_points(plc), 2, np, 3, NPY_FLOAT64);
+  PyArrayObject *tri = copy_array(tr_plc_triangles(plc), 2, nt, 3, NPY_UINT32);
+  PyArrayObject *mark = copy_array(plc->tri_marker, 1, nt, 0, NPY_INT32);
   if (!pts || !tri || !mark) {
     Py_XDECREF(pts);
     Py_XDECREF(tri);
     Py_XDECREF(mark);
     return NULL;
   }
-  if (np)
-    memcpy(PyArray_DATA(pts), tr_plc_points(plc), sizeof(double) * 3 * (size_t)np);
-  if (nt)
-    memcpy(PyArray_DATA(tri), tr_plc_triangles(plc), sizeof(uint32_t) * 3 * (size_t)nt);
-  int32_t *mv = PyArray_DATA(mark);
-  for (uint32_t i = 0; i < nt; i++)
-    mv[i] = plc->tri_marker ? plc->tri_marker[i] : 0;
   return Py_BuildValue("(NNN)", pts, tri, mark);
+}
+
+void tetrec_py_plc_extras(const tr_plc *plc, unsigned long *nsegs, unsigned long *ntets)
+{
+  *nsegs = plc->nsegs;
+  *ntets = plc->ntets;
 }
