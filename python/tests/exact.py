@@ -25,12 +25,14 @@ def frac_points(points):
     return [tuple(Fraction(float(c)) for c in p) for p in points]
 
 
-def enclosed_volume6(points, triangles):
+def enclosed_volume6(points, triangles, internal=()):
     """Six times the volume an outward-oriented closed surface encloses (divergence
-    theorem: each triangle contributes det[a; b; c])."""
+    theorem: each triangle contributes det[a; b; c]); the triangles numbered in
+    `internal` are facets inside the volume and add nothing."""
     o = (Fraction(0),) * 3
     pts = frac_points(points)
-    return sum((det(o, pts[a], pts[b], pts[c]) for a, b, c in triangles), Fraction(0))
+    return sum((det(o, pts[a], pts[b], pts[c]) for i, (a, b, c) in enumerate(triangles)
+                if i not in internal), Fraction(0))
 
 
 def tets_volume6(points, tets):
@@ -98,7 +100,7 @@ def check_boundary_covers_input(exact_pts, faces, in_points, in_tris):
     return owner
 
 
-def check_mesh(mesh, in_points, in_tris):
+def check_mesh(mesh, in_points, in_tris, internal=()):
     """The properties every mesh tetrec returns must have, checked exactly."""
     n = len(mesh.points)
     assert mesh.points.shape == (n, 3) and mesh.points.dtype.name == "float64"
@@ -116,7 +118,7 @@ def check_mesh(mesh, in_points, in_tris):
     assert xpts[:len(in_points)] == frac_points(in_points)
     for t in mesh.tets:
         assert det(*(xpts[v] for v in t)) > 0, f"tet {list(t)} not positive exactly"
-    assert tets_volume6(xpts, mesh.tets) == enclosed_volume6(in_points, in_tris)
+    assert tets_volume6(xpts, mesh.tets) == enclosed_volume6(in_points, in_tris, internal)
     # conformity: each face in at most two tets; the faces in one tet are the boundary
     faces = faces_of_tets(mesh.tets)
     assert max(faces.values()) <= 2

@@ -180,3 +180,33 @@ def test_version_is_the_package_version():
     from importlib.metadata import version
 
     assert tetrec.__version__ == version("tetrec")
+
+
+def test_internal_facet_splits_two_regions():
+    """Two unit cubes side by side, their common square given once as an internal facet:
+    two regions, tets on either side, the facet's faces listed once."""
+    a, ta = cube(0.0, 1.0)
+    b, tb = cube(0.0, 1.0)
+    b = b + [1.0, 0.0, 0.0]
+    pts = np.vstack([a, b])
+    # b's -x side coincides with a's +x side: keep a's +x side as the internal facet
+    # (triangles 2 and 3 of a), drop b's -x side (triangles 0 and 1 of b), and glue
+    # b's points on it to a's
+    glue = {8 + i: j for i in range(8) for j in range(8) if (b[i] == a[j]).all()}
+    tris = [t for t in ta.tolist()] + [[glue.get(v + 8, v + 8) for v in t]
+                                        for t in tb.tolist()[2:]]
+    used = sorted({v for t in tris for v in t})
+    renum = {v: k for k, v in enumerate(used)}
+    pts = pts[used]
+    tris = np.array([[renum[v] for v in t] for t in tris], dtype=np.uint32)
+    mesh = tetrec.tetrahedralize(pts, tris)
+    check_mesh(mesh, pts, tris, internal={2, 3})
+    assert tets_volume6(frac_points(mesh.points), mesh.tets) == 6 * 2
+    xs = mesh.points[mesh.tets][:, :, 0]
+    left = xs.max(axis=1) <= 1
+    assert (left | (xs.min(axis=1) >= 1)).all()
+    assert len(set(mesh.regions[left].tolist())) == 1
+    assert len(set(mesh.regions[~left].tolist())) == 1
+    assert set(mesh.regions[left].tolist()) != set(mesh.regions[~left].tolist())
+    on_facet = [f for f in mesh.boundary_faces.tolist() if (mesh.points[f][:, 0] == 1).all()]
+    assert on_facet and len(on_facet) == len({tuple(sorted(f)) for f in on_facet})
