@@ -210,3 +210,15 @@ def test_internal_facet_splits_two_regions():
     assert set(mesh.regions[left].tolist()) != set(mesh.regions[~left].tolist())
     on_facet = [f for f in mesh.boundary_faces.tolist() if (mesh.points[f][:, 0] == 1).all()]
     assert on_facet and len(on_facet) == len({tuple(sorted(f)) for f in on_facet})
+
+
+def test_duplicate_vertex_is_merged_and_the_mesh_follows_the_validated_surface(unit_cube):
+    pts, tris = unit_cube
+    pts = np.vstack([pts, pts[:1]])
+    tris = tris.copy()
+    tris[tris == 0] = np.where(np.arange(tris.size).reshape(tris.shape)[tris == 0] % 2, 8, 0)
+    assert (tris == 8).any() and (tris == 0).any()
+    meshed, report = tetrec.validate(pts, tris)
+    assert len(meshed.points) == 8 and report
+    mesh = tetrec.tetrahedralize(pts, tris)
+    check_mesh(mesh, meshed.points, meshed.triangles)

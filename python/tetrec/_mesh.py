@@ -7,7 +7,7 @@ back as tetrec.Error with the library's status name and message.
 from fractions import Fraction
 import os
 import warnings
-from typing import NamedTuple, Optional
+from typing import NamedTuple
 
 import numpy as np
 
@@ -43,9 +43,10 @@ def read(path) -> Surface:
 class Mesh:
     """A tetrahedral mesh returned by tetrahedralize().
 
-    points (n,3) float64: input points first, in input order, then Steiner points (at
-        doubles chosen so that every tet is positive in doubles; exact_points() gives
-        their exact rational positions);
+    points (n,3) float64: the surface's points first (as validate() gives them: the
+        input's, in input order, unless exact duplicates were merged), then Steiner
+        points (at doubles chosen so that every tet is positive in doubles;
+        exact_points() gives their exact rational positions);
     tets (m,4) uint32: positively oriented, det[v1-v0, v2-v0, v3-v0] > 0;
     regions (m,) int32: region id of each tet;
     boundary_faces (f,3) uint32: the mesh faces on input triangles (the boundary and
