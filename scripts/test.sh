@@ -11,11 +11,13 @@ else
   meson setup "$dir" "$@" >/dev/null
 fi
 ninja -C "$dir"
-meson test -C "$dir" --print-errorlogs --num-processes 2
+status=0
+meson test -C "$dir" --print-errorlogs --num-processes 2 || status=1
 
 # The Python package: built by meson-python into a venv under the build dir, then its
-# pytest suite (python/tests) against the installed package. pytest exits 5 when it
-# collects no test: that is a failure here, not a pass.
+# pytest suite (python/tests) against the installed package, run even when a C test
+# failed so that one run reports both. pytest exits 5 when it collects no test: that
+# is a failure here, not a pass.
 bash scripts/python.sh "$dir/python-venv"
 set +e
 "$dir/python-venv/bin/python" -m pytest -q -p no:cacheprovider python/tests
@@ -23,6 +25,8 @@ rc=$?
 set -e
 if [ "$rc" -eq 5 ]; then
   echo "scripts/test.sh: pytest found no Python tests in python/tests" >&2
-  exit 1
 fi
-exit "$rc"
+if [ "$rc" -ne 0 ]; then
+  status=1
+fi
+exit "$status"
