@@ -121,3 +121,13 @@ def test_one_marker_per_triangle(unit_cube):
     pts, tris = unit_cube
     with pytest.raises(ValueError, match="markers"):
         tetrec.tetrahedralize(pts, tris, markers=np.zeros(len(tris) - 1, dtype=np.int32))
+
+
+def test_error_pickles_with_its_status(tmp_path):
+    """multiprocessing pickles the exceptions of its workers."""
+    import pickle
+
+    e = status_of(lambda: tetrec.read(tmp_path / "nothing.off"))
+    f = pickle.loads(pickle.dumps(e))
+    assert type(f) is tetrec.Error
+    assert (f.status, f.code, f.message) == (e.status, e.code, e.message)
