@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds tetrec and runs the whole meson test suite (CGAL cross-checks included when
-# libcgal-dev is installed). Usage: scripts/test.sh [BUILD_DIR] [extra meson setup args]
+# libcgal-dev is installed), then the Python package's tests. Usage: scripts/test.sh [BUILD_DIR] [extra meson setup args]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=${1:-build}
@@ -11,4 +11,22 @@ else
   meson setup "$dir" "$@" >/dev/null
 fi
 ninja -C "$dir"
-meson test -C "$dir" --print-errorlogs --num-processes 2
+status=0
+meson test -C "$dir" --print-errorlogs --num-processes 2 || status=1
+
+# The Python package: built by meson-python into a venv under the build dir, then its
+# pytest suite (python/tests) against the installed package, run even when a C test
+# failed so that one run reports both. pytest exits 5 when it collects no test: that
+# is a failure here, not a pass.
+bash scripts/python.sh "$dir/python-venv"
+set +e
+"$dir/python-venv/bin/python" -m pytest -q -p no:cacheprovider python/tests
+rc=$?
+set -e
+if [ "$rc" -eq 5 ]; then
+  echo "scripts/test.sh: pytest found no Python tests in python/tests" >&2
+fi
+if [ "$rc" -ne 0 ]; then
+  status=1
+fi
+exit "$status"

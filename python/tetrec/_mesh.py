@@ -1,0 +1,218 @@
+"""tetrahedralize(), read(), Mesh and Surface: the Python face of the C library.
+
+Input checks that belong to Python (shapes, dtypes, integer ranges) raise TypeError or
+ValueError here; everything about the geometry is decided by the C library and comes
+back as tetrec.Error with the library's status name and message.
+"""
+from fractions import Fraction
+import os
+import warnings
+from typing import NamedTuple
+
+import numpy as np
+
+from . import _tetrec
+
+Error = _tetrec.Error
+
+_STATUS_INPUT = 4  # TR_ERR_INPUT
+
+
+class Surface(NamedTuple):
+    """A surface as read from a file: points (n,3) float64, triangles (m,3) uint32
+    (0-based), markers (m,) int32 (0 where the format has none)."""
+
+    points: np.ndarray
+    triangles: np.ndarray
+    markers: np.ndarray
+
+
+def read(path) -> Surface:
+    """Reads a surface (.off .stl .obj .ply .mesh .node .poly .smesh; the extension picks
+    the reader). Polygons come back triangulated in their plane. Segments on no
+    triangle and volume tets in the file are not part of a Surface: a warning says how
+    many were left out."""
+    points, triangles, markers, nsegs, ntets = _tetrec.read(os.fspath(path))
+    for n, what in ((nsegs, "segments on no triangle"), (ntets, "tetrahedra")):
+        if n:
+            warnings.warn(f"tetrec.read({os.fspath(path)!r}): {n} {what} left out "
+                          f"(a Surface holds points, triangles and markers)", stacklevel=2)
+    return Surface(points, triangles, markers)
+
+
+class Mesh:
+    """A tetrahedral mesh returned by tetrahedralize().
+
+    points (n,3) float64: the surface's points first (as validate() gives them: the
+        input's, in input order, unless exact duplicates were merged), then Steiner
+        points (at doubles chosen so that every tet is positive in doubles;
+        exact_points() gives their exact rational positions);
+    tets (m,4) uint32: positively oriented, det[v1-v0, v2-v0, v3-v0] > 0;
+    regions (m,) int32: region id of each tet;
+    boundary_faces (f,3) uint32: the mesh faces on input triangles (the boundary and
+        internal facets alike), each with its right-hand normal pointing the way its
+        input triangle's does (outward on the boundary), sorted by input triangle;
+    boundary_markers (f,) int32: the marker of each face's input triangle;
+    boundary_triangles (f,) uint32: each face's input triangle, indexed in the surface
+        as meshed (validate()'s; the input itself when nothing needed repair);
+    stats: the rows of the C library's tr_stats (the seed paper's Table 14, times,
+        peak memory, stage_seconds per pipeline stage).
+    """
+
+    def __init__(self, handle, stats, exact):
+        self._handle = handle
+        arrays = handle.arrays()
+        self.points = arrays["points"]
+        self.tets = arrays["tets"]
+        self.regions = arrays["regions"]
+        self.boundary_faces = arrays["boundary_faces"]
+        self.boundary_markers = arrays["boundary_markers"]
+        self.boundary_triangles = arrays["boundary_triangles"]
+        self.stats = stats
+        self.exact = exact
+        for a in (self.points, self.tets, self.regions, self.boundary_faces,
+                  self.boundary_markers, self.boundary_triangles):
+            a.flags.writeable = False
+
+    def __repr__(self):
+        return (f"tetrec.Mesh({len(self.points)} points, {len(self.tets)} tets, "
+                f"{len(self.boundary_faces)} boundary faces)")
+
+    def exact_points(self, vertices=None):
+        """Exact coordinates as fractions.Fraction triples: the Steiner points exactly on
+        the edges and facets they were built on, the input points as given. vertices:
+        an iterable of indices, or None for all."""
+        if vertices is None:
+            vertices = range(len(self.points))
+        return [tuple(Fraction(c) for c in self._handle.exact_point(int(v)))
+                for v in vertices]
+
+    def write(self, path, exact=None):
+        """Writes the mesh through the C library; the extension picks the format:
+        .mesh (Medit), .vtu (VTK XML), .node/.ele/.face or a TetGen base name.
+        exact (default: the exact= given to tetrahedralize): Steiner points as exact
+        rationals num/den in the .node file."""
+        if exact is None:
+            exact = self.exact
+        self._handle.write(os.fspath(path), bool(exact))
+
+    def to_meshio(self):
+        """A meshio.Mesh with a "tetra" block and a "triangle" block (the boundary
+        faces); cell_data "tetrec:ref" holds the regions of the tets and the markers of
+        the triangles."""
+        import meshio
+
+        return meshio.Mesh(
+            np.array(self.points),
+            [("tetra", np.array(self.tets, dtype=np.int64)),
+             ("triangle", np.array(self.boundary_faces, dtype=np.int64))],
+            cell_data={"tetrec:ref": [np.array(self.regions), np.array(self.boundary_markers)]},
+        )
+
+
+def _as_points(points):
+    a = np.asarray(points)
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise ValueError(f"points: expected shape (n, 3), got {a.shape}")
+    if a.dtype.kind in "iu":
+        p = a.astype(np.float64)
+        # Large integers do not all have a double: refuse rather than move a point.
+        if not np.array_equal(p.astype(a.dtype), a):
+            raise ValueError("points: an integer coordinate is not exactly a double")
+        return np.ascontiguousarray(p)
+    if a.dtype.kind != "f":
+        raise TypeError(f"points: expected floats, got dtype {a.dtype}")
+    if a.dtype.itemsize > 8:
+        p = a.astype(np.float64)
+        if not np.array_equal(p.astype(a.dtype), a):
+            raise ValueError(f"points: a {a.dtype} coordinate is not exactly a double")
+        return np.ascontiguousarray(p)
+    return np.ascontiguousarray(a, dtype=np.float64)
+
+
+def _as_index_array(x, name, ncols, dtype, lo, hi):
+    a = np.asarray(x)
+    if a.dtype.kind not in "iu":
+        # An empty list has dtype float64; it still has no index to misread.
+        if a.size == 0:
+            a = a.astype(np.int64)
+        else:
+            raise TypeError(f"{name}: expected integers, got dtype {a.dtype}")
+    shape = (a.shape[0], ncols) if ncols else (a.shape[0],) if a.ndim else None
+    if a.ndim != (2 if ncols else 1) or a.shape != shape:
+        want = f"(m, {ncols})" if ncols else "(m,)"
+        raise ValueError(f"{name}: expected shape {want}, got {a.shape}")
+    if a.size and (a.min() < lo or a.max() > hi):
+        bad = int(np.flatnonzero((a < lo) | (a > hi))[0]) // max(ncols, 1)
+        raise _tetrec.error(_STATUS_INPUT, f"{name}: row {bad} has a value outside "
+                                           f"[{lo}, {hi}]: {a[bad].tolist()}")
+    return np.ascontiguousarray(a, dtype=dtype)
+
+
+def _prepare(points, triangles, markers):
+    """points, triangles, markers as the C layer takes them; a Surface may stand for
+    all three (its markers unless markers is given)."""
+    if triangles is None:
+        if not isinstance(points, Surface):
+            raise TypeError("expected (points, triangles) or a Surface")
+        if markers is None:
+            markers = points.markers
+        points, triangles = points.points, points.triangles
+    pts = _as_points(points)
+    tris = _as_index_array(triangles, "triangles", 3, np.uint32, 0, 2**32 - 2)
+    mk = None
+    if markers is not None:
+        mk = _as_index_array(markers, "markers", 0, np.int32, -2**31, 2**31 - 1)
+        if len(mk) != len(tris):
+            raise ValueError(f"markers: {len(mk)} values for {len(tris)} triangles")
+    return pts, tris, mk
+
+
+def validate(points, triangles=None, *, markers=None):
+    """The surface as tetrahedralize() meshes it, and what was repaired: exact duplicate
+    vertices merged, duplicate triangles removed, each closed shell oriented outward
+    (cavities inward). Returns (Surface, report), report one line per repair ("" if
+    none). Raises tetrec.Error for what cannot be repaired (open surface,
+    self-intersection, zero-area triangle, ...)."""
+    p, t, m, report = _tetrec.validate(*_prepare(points, triangles, markers))
+    return Surface(p, t, m), report
+
+
+def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
+                   keep_surface=False, quality=None, max_volume=None, exact=False,
+                   smooth=True, round_budget=None, verbose=0, progress=None):
+    """Tetrahedralizes the volume enclosed by a triangulated surface.
+
+    points (n,3) floats and triangles (m,3) 0-based indices, or a Surface from read()
+    as the only positional argument (its markers are used unless markers= is given).
+    markers: one int32 per triangle, carried to the boundary faces.
+    holes, regions, keep_surface, quality, max_volume: raise NotImplementedError until
+    the C library offers them (tetrec.SUPPORTED_OPTIONS lists what it offers).
+    exact: Mesh.write() defaults to writing exact rational Steiner points.
+    smooth: surface diagonal swaps before recovery. round_budget: star checks the
+    rounding repair may spend. verbose: 0 quiet, 1 normal, 2 chatty (on stderr).
+    progress: called as progress(stage, fraction) at the start (0.0) and end (1.0) of
+    each pipeline stage; a true return value or an exception cancels the run (then
+    tetrec.Error with status TR_ERR_CANCELLED, or the exception). Ctrl-C cancels too.
+
+    Returns a Mesh; raises tetrec.Error (.status, .code, .message) when the library
+    refuses the input (open surface, self-intersection, ...).
+    """
+    # Every option that is not at its default goes to the C layer, which raises
+    # NotImplementedError for any it does not know: none is dropped on the way.
+    options = {name: value for name, value in (("holes", holes), ("regions", regions),
+                                               ("quality", quality),
+                                               ("max_volume", max_volume),
+                                               ("round_budget", round_budget))
+               if value is not None}
+    if keep_surface:
+        options["keep_surface"] = keep_surface
+    if not smooth:
+        options["smooth"] = 0
+    if verbose:
+        options["verbose"] = int(verbose)
+    if progress is not None:
+        options["progress"] = progress
+    pts, tris, mk = _prepare(points, triangles, markers)
+    handle, stats = _tetrec.tetrahedralize(pts, tris, mk, options)
+    return Mesh(handle, stats, bool(exact))

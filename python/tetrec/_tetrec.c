@@ -1,0 +1,477 @@
+/* _tetrec: the C extension under the tetrec Python package. It converts numpy arrays to
+ * the C API's flat arrays, runs the pipeline with the GIL released, and turns every
+ * tr_status into a tetrec.Error carrying the status name and tr_last_error(). The
+ * user-facing signatures and checks live in _mesh.py; this layer is kept thin. */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <numpy/arrayobject.h>
+
+#include <string.h>
+
+#include "arrays.h"
+#include "tetrec.h"
+
+static PyObject *Error; /* tetrec.Error */
+
+/* Builds tetrec.Error(message) with .status (tr_status_name), .code and .message. */
+static PyObject *make_error(int code, const char *message)
+{
+  PyObject *exc = PyObject_CallFunction(Error, "s", message);
+  if (!exc)
+    return NULL;
+  PyObject *name = PyUnicode_FromString(tr_status_name((tr_status)code));
+  PyObject *num = PyLong_FromLong(code);
+  PyObject *msg = PyUnicode_FromString(message);
+  int bad = !name || !num || !msg || PyObject_SetAttrString(exc, "status", name) < 0 ||
+            PyObject_SetAttrString(exc, "code", num) < 0 ||
+            PyObject_SetAttrString(exc, "message", msg) < 0;
+  Py_XDECREF(name);
+  Py_XDECREF(num);
+  Py_XDECREF(msg);
+  if (bad) {
+    Py_DECREF(exc);
+    return NULL;
+  }
+  return exc;
+}
+
+PyObject *tetrec_py_raise(tr_status st)
+{
+  PyObject *exc = make_error((int)st, tr_last_error());
+  if (exc) {
+    PyErr_SetObject(Error, exc);
+    Py_DECREF(exc);
+  }
+  return NULL;
+}
+
+/* ---- the mesh handle ---- */
+typedef struct {
+  PyObject_HEAD
+  tr_mesh *mesh;
+} CMesh;
+
+static void cmesh_dealloc(CMesh *self)
+{
+  tr_mesh_destroy(self->mesh);
+  Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyObject *cmesh_write(CMesh *self, PyObject *args)
+{
+  PyObject *path_obj;
+  int exact = 0;
+  if (!PyArg_ParseTuple(args, "O&p", PyUnicode_FSConverter, &path_obj, &exact))
+    return NULL;
+  const char *path = PyBytes_AS_STRING(path_obj);
+  tr_status st;
+  Py_BEGIN_ALLOW_THREADS
+  st = tr_mesh_write(self->mesh, path, exact);
+  Py_END_ALLOW_THREADS
+  Py_DECREF(path_obj);
+  if (st != TR_OK)
+    return tetrec_py_raise(st);
+  Py_RETURN_NONE;
+}
+
+/* A dict of fresh numpy arrays (copies: the Python Mesh outlives nothing it points at). */
+static PyObject *cmesh_arrays(CMesh *self, PyObject *Py_UNUSED(ignored))
+{
+  return tetrec_py_mesh_arrays(self->mesh);
+}
+
+static PyObject *cmesh_exact_point(CMesh *self, PyObject *args)
+{
+  unsigned long v;
+  if (!PyArg_ParseTuple(args, "k", &v))
+    return NULL;
+  return tetrec_py_mesh_exact_point(self->mesh, v);
+}
+
+static PyMethodDef cmesh_methods[] = {
+    {"write", (PyCFunction)cmesh_write, METH_VARARGS,
+     "write(path, exact): tr_mesh_write; the extension picks the format."},
+    {"arrays", (PyCFunction)cmesh_arrays, METH_NOARGS,
+     "arrays() -> dict of numpy arrays (copies): points, tets, regions, boundary_faces, "
+     "boundary_markers, boundary_triangles."},
+    {"exact_point", (PyCFunction)cmesh_exact_point, METH_VARARGS,
+     "exact_point(v) -> (x, y, z), each an exact rational as text, num/den or num."},
+    {NULL, NULL, 0, NULL}};
+
+static PyTypeObject CMeshType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "tetrec._tetrec.CMesh",
+    .tp_basicsize = sizeof(CMesh),
+    .tp_dealloc = (destructor)cmesh_dealloc,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "A tetrec mesh (tr_mesh) owned by Python.",
+    .tp_methods = cmesh_methods,
+};
+
+/* tr_options.progress: runs on the thread that called tr_mesh_plc, which released the
+ * GIL; it takes the GIL back to look for a pending KeyboardInterrupt and to call the
+ * user's progress(stage, fraction). A signal, an exception or a true return cancels
+ * the run (TR_ERR_CANCELLED); the exception is kept and raised afterwards. */
+typedef struct {
+  PyObject *callback; /* or NULL */
+  PyObject *exc_type, *exc_value, *exc_tb;
+} progress_state;
+
+static int progress_hook(void *user, const char *stage, double fraction)
+{
+  progress_state *ps = user;
+  PyGILState_STATE g = PyGILState_Ensure();
+  int stop = 0;
+  if (!ps->exc_type) {
+    if (PyErr_CheckSignals() < 0) {
+      stop = 1;
+    } else if (ps->callback) {
+      PyObject *r = PyObject_CallFunction(ps->callback, "sd", stage, fraction);
+      stop = !r || PyObject_IsTrue(r) != 0;
+      Py_XDECREF(r);
+    }
+    if (PyErr_Occurred())
+      PyErr_Fetch(&ps->exc_type, &ps->exc_value, &ps->exc_tb);
+  } else {
+    stop = 1;
+  }
+  PyGILState_Release(g);
+  return stop;
+}
+
+/* ---- options ---- */
+/* Every key of `opts` is an option the caller set to a non-default value. Each one this
+ * build of the C library supports is copied into tr_options; any other raises
+ * NotImplementedError, so no option is ever dropped. To wire a new option: handle its
+ * key here and add its name to SUPPORTED_OPTIONS below. */
+static const char *const SUPPORTED_OPTIONS[] = {"smooth", "verbose", "round_budget",
+                                                "progress", NULL};
+
+static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
+{
+  tr_options_default(opt);
+  opt->verbose = 0;
+  opt->progress = progress_hook;
+  opt->progress_user = ps;
+  if (opts == Py_None)
+    return 0;
+  if (!PyDict_Check(opts)) {
+    PyErr_SetString(PyExc_TypeError, "options must be a dict");
+    return -1;
+  }
+  PyObject *key, *value;
+  Py_ssize_t pos = 0;
+  while (PyDict_Next(opts, &pos, &key, &value)) {
+    const char *k = PyUnicode_Check(key) ? PyUnicode_AsUTF8(key) : NULL;
+    if (!k) {
+      PyErr_SetString(PyExc_TypeError, "option names must be strings");
+      return -1;
+    }
+    if (!strcmp(k, "smooth") || !strcmp(k, "verbose")) {
+      long x = PyLong_AsLong(value);
+      if (x == -1 && PyErr_Occurred())
+        return -1;
+      if (x < 0 || x > 2) {
+        PyErr_Format(PyExc_ValueError, "%s must be 0, 1 or 2, not %ld", k, x);
+        return -1;
+      }
+      if (k[0] == 's')
+        opt->smooth = (int)x;
+      else
+        opt->verbose = (int)x;
+    } else if (!strcmp(k, "progress")) {
+      if (!PyCallable_Check(value)) {
+        PyErr_SetString(PyExc_TypeError, "progress must be callable(stage, fraction)");
+        return -1;
+      }
+      ps->callback = value;
+    } else if (!strcmp(k, "round_budget")) {
+      unsigned long long x = PyLong_AsUnsignedLongLong(value);
+      if (x == (unsigned long long)-1 && PyErr_Occurred())
+        return -1;
+      if (x == 0) {
+        PyErr_SetString(PyExc_ValueError, "round_budget must be positive");
+        return -1;
+      }
+      opt->round_budget = (uint64_t)x;
+    } else {
+      PyErr_Format(PyExc_NotImplementedError,
+                   "tetrahedralize(%s=...): the tetrec C library (version %s) has no such "
+                   "option yet",
+                   k, TETREC_VERSION_STRING);
+      return -1;
+    }
+  }
+  return 0;
+}
+
+static PyObject *stats_dict(const tr_stats *s)
+{
+  PyObject *d = Py_BuildValue(
+      "{sKsKsKsKsKsKsKsKsKsKsKsKsKsdsdsK}", "surface_nodes", (unsigned long long)s->surface_nodes,
+      "surface_facets", (unsigned long long)s->surface_facets, "volume_nodes",
+      (unsigned long long)s->volume_nodes, "volume_elements",
+      (unsigned long long)s->volume_elements, "missing_edges",
+      (unsigned long long)s->missing_edges, "edges_recovered_by_swap",
+      (unsigned long long)s->edges_recovered_by_swap, "points_added_for_edges",
+      (unsigned long long)s->points_added_for_edges, "missing_facets",
+      (unsigned long long)s->missing_facets, "facets_recovered_by_swap",
+      (unsigned long long)s->facets_recovered_by_swap, "points_added_for_facets",
+      (unsigned long long)s->points_added_for_facets, "surface_swaps",
+      (unsigned long long)s->surface_swaps, "rounding_repairs",
+      (unsigned long long)s->rounding_repairs, "rounding_flips",
+      (unsigned long long)s->rounding_flips, "total_seconds", s->total_seconds,
+      "recovery_seconds", s->recovery_seconds, "peak_memory_bytes",
+      (unsigned long long)s->peak_memory_bytes);
+  PyObject *stages = d ? PyDict_New() : NULL;
+  for (int k = 0; stages && k < TR_STAGE_COUNT; k++) {
+    PyObject *x = PyFloat_FromDouble(s->stage_seconds[k]);
+    if (!x || PyDict_SetItemString(stages, tr_stage_name(k), x) < 0)
+      Py_CLEAR(stages);
+    Py_XDECREF(x);
+  }
+  if (!stages || PyDict_SetItemString(d, "stage_seconds", stages) < 0) {
+    Py_XDECREF(stages);
+    Py_XDECREF(d);
+    return NULL;
+  }
+  Py_DECREF(stages);
+  return d;
+}
+
+/* The arrays _mesh.py hands over are already C-contiguous with the exact dtypes; this
+ * checks it again rather than trusting it, since a wrong stride would read garbage. */
+static PyArrayObject *as_array(PyObject *obj, int type, npy_intp cols, const char *what)
+{
+  if (!PyArray_Check(obj) || PyArray_TYPE((PyArrayObject *)obj) != type ||
+      !PyArray_IS_C_CONTIGUOUS((PyArrayObject *)obj) ||
+      PyArray_NDIM((PyArrayObject *)obj) != (cols ? 2 : 1) ||
+      (cols && PyArray_DIM((PyArrayObject *)obj, 1) != cols)) {
+    PyErr_Format(PyExc_TypeError, "%s: expected a C-contiguous array of the right dtype/shape",
+                 what);
+    return NULL;
+  }
+  if (PyArray_DIM((PyArrayObject *)obj, 0) > (npy_intp)UINT32_MAX - 1) {
+    PyErr_Format(PyExc_ValueError, "%s: more than 2^32-2 rows", what);
+    return NULL;
+  }
+  return (PyArrayObject *)obj;
+}
+
+static PyObject *new_cmesh(tr_mesh *mesh)
+{
+  CMesh *h = PyObject_New(CMesh, &CMeshType);
+  if (!h) {
+    tr_mesh_destroy(mesh);
+    return NULL;
+  }
+  h->mesh = mesh;
+  return (PyObject *)h;
+}
+
+/* A PLC from the arrays _mesh.py prepared; NULL with an exception set on failure. */
+static tr_plc *build_plc(PyObject *pts_obj, PyObject *tri_obj, PyObject *mark_obj)
+{
+  PyArrayObject *pts = as_array(pts_obj, NPY_FLOAT64, 3, "points");
+  PyArrayObject *tri = pts ? as_array(tri_obj, NPY_UINT32, 3, "triangles") : NULL;
+  if (!tri)
+    return NULL;
+  PyArrayObject *mark = NULL;
+  if (mark_obj != Py_None) {
+    if (!(mark = as_array(mark_obj, NPY_INT32, 0, "markers")))
+      return NULL;
+    if (PyArray_DIM(mark, 0) != PyArray_DIM(tri, 0)) {
+      PyErr_SetString(PyExc_ValueError, "markers: one per triangle");
+      return NULL;
+    }
+  }
+  tr_plc *plc = NULL;
+  tr_status st = tr_plc_create(&plc);
+  if (st == TR_OK)
+    st = tr_plc_set(plc, (const double *)PyArray_DATA(pts), (uint32_t)PyArray_DIM(pts, 0),
+                    (const uint32_t *)PyArray_DATA(tri), (uint32_t)PyArray_DIM(tri, 0),
+                    mark ? (const int32_t *)PyArray_DATA(mark) : NULL);
+  if (st != TR_OK) {
+    tr_plc_destroy(plc);
+    tetrec_py_raise(st);
+    return NULL;
+  }
+  return plc;
+}
+
+/* tetrahedralize(points float64 (n,3), triangles uint32 (m,3), markers int32 (m,) or None,
+ * options dict or None) -> (CMesh, stats dict) */
+static PyObject *py_tetrahedralize(PyObject *Py_UNUSED(mod), PyObject *args)
+{
+  PyObject *pts_obj, *tri_obj, *mark_obj, *opts;
+  if (!PyArg_ParseTuple(args, "OOOO", &pts_obj, &tri_obj, &mark_obj, &opts))
+    return NULL;
+  tr_options opt;
+  progress_state ps = {NULL, NULL, NULL, NULL};
+  if (set_options(opts, &opt, &ps) < 0)
+    return NULL;
+  tr_plc *plc = build_plc(pts_obj, tri_obj, mark_obj);
+  if (!plc)
+    return NULL;
+  tr_mesh *mesh = NULL;
+  tr_stats stats;
+  memset(&stats, 0, sizeof stats);
+  stats.size = sizeof stats;
+  tr_status st;
+  Py_BEGIN_ALLOW_THREADS
+  st = tr_mesh_plc(plc, &opt, &mesh, &stats);
+  Py_END_ALLOW_THREADS
+  tr_plc_destroy(plc);
+  if (ps.exc_type) {
+    tr_mesh_destroy(mesh);
+    PyErr_Restore(ps.exc_type, ps.exc_value, ps.exc_tb);
+    return NULL;
+  }
+  if (st != TR_OK)
+    return tetrec_py_raise(st);
+  PyObject *h = new_cmesh(mesh);
+  PyObject *sd = h ? stats_dict(&stats) : NULL;
+  if (!sd) {
+    Py_XDECREF(h);
+    return NULL;
+  }
+  return Py_BuildValue("(NN)", h, sd);
+}
+
+/* validate(points, triangles, markers or None) -> (points, triangles, markers, report):
+ * the surface after tr_plc_validate's repairs, i.e. the one tr_mesh_plc meshes. */
+static PyObject *py_validate(PyObject *Py_UNUSED(mod), PyObject *args)
+{
+  PyObject *pts_obj, *tri_obj, *mark_obj;
+  if (!PyArg_ParseTuple(args, "OOO", &pts_obj, &tri_obj, &mark_obj))
+    return NULL;
+  tr_plc *plc = build_plc(pts_obj, tri_obj, mark_obj);
+  if (!plc)
+    return NULL;
+  tr_status st;
+  Py_BEGIN_ALLOW_THREADS
+  st = tr_plc_validate(plc, NULL);
+  Py_END_ALLOW_THREADS
+  if (st != TR_OK) {
+    tr_plc_destroy(plc);
+    return tetrec_py_raise(st);
+  }
+  PyObject *arrays = tetrec_py_plc_arrays(plc);
+  PyObject *res = arrays ? Py_BuildValue("(OOOs)", PyTuple_GET_ITEM(arrays, 0),
+                                         PyTuple_GET_ITEM(arrays, 1),
+                                         PyTuple_GET_ITEM(arrays, 2), tr_plc_report(plc))
+                         : NULL;
+  Py_XDECREF(arrays);
+  tr_plc_destroy(plc);
+  return res;
+}
+
+/* read(path) -> (points (n,3) float64, triangles (m,3) uint32, markers (m,) int32,
+ * segments, tets): the last two count what the file held beside its surface (segments on
+ * no triangle, volume tets), which a Surface cannot carry. */
+static PyObject *py_read(PyObject *Py_UNUSED(mod), PyObject *args)
+{
+  PyObject *path_obj;
+  if (!PyArg_ParseTuple(args, "O&", PyUnicode_FSConverter, &path_obj))
+    return NULL;
+  tr_plc *plc = NULL;
+  tr_status st;
+  Py_BEGIN_ALLOW_THREADS
+  st = tr_plc_read(PyBytes_AS_STRING(path_obj), &plc);
+  Py_END_ALLOW_THREADS
+  Py_DECREF(path_obj);
+  if (st != TR_OK)
+    return tetrec_py_raise(st);
+  PyObject *arrays = tetrec_py_plc_arrays(plc);
+  unsigned long extra[2];
+  tetrec_py_plc_extras(plc, &extra[0], &extra[1]);
+  tr_plc_destroy(plc);
+  if (!arrays)
+    return NULL;
+  PyObject *res = Py_BuildValue("(OOOkk)", PyTuple_GET_ITEM(arrays, 0),
+                                PyTuple_GET_ITEM(arrays, 1), PyTuple_GET_ITEM(arrays, 2),
+                                extra[0], extra[1]);
+  Py_DECREF(arrays);
+  return res;
+}
+
+static PyObject *py_status_name(PyObject *Py_UNUSED(mod), PyObject *args)
+{
+  int code;
+  if (!PyArg_ParseTuple(args, "i", &code))
+    return NULL;
+  return PyUnicode_FromString(tr_status_name((tr_status)code));
+}
+
+/* error(code, message) -> a tetrec.Error instance, for errors the Python layer finds
+ * itself (the same classification as the C library's). */
+static PyObject *py_error(PyObject *Py_UNUSED(mod), PyObject *args)
+{
+  int code;
+  const char *msg;
+  if (!PyArg_ParseTuple(args, "is", &code, &msg))
+    return NULL;
+  return make_error(code, msg);
+}
+
+static PyMethodDef module_methods[] = {
+    {"tetrahedralize", py_tetrahedralize, METH_VARARGS,
+     "tetrahedralize(points, triangles, markers, options) -> (CMesh, stats)"},
+    {"read", py_read, METH_VARARGS, "read(path) -> (points, triangles, markers, segments, tets)"},
+    {"validate", py_validate, METH_VARARGS,
+     "validate(points, triangles, markers) -> (points, triangles, markers, report)"},
+    {"status_name", py_status_name, METH_VARARGS, "status_name(code) -> 'TR_ERR_...'"},
+    {"error", py_error, METH_VARARGS, "error(code, message) -> tetrec.Error"},
+    {NULL, NULL, 0, NULL}};
+
+static struct PyModuleDef module_def = {PyModuleDef_HEAD_INIT, "_tetrec",
+                                        "C extension of the tetrec package.", -1,
+                                        module_methods, NULL, NULL, NULL, NULL};
+
+/* The library's version as "major.minor.patch" (tr_version: the library linked in). */
+static PyObject *c_version(void)
+{
+  int v[3];
+  tr_version(&v[0], &v[1], &v[2]);
+  return PyUnicode_FromFormat("%d.%d.%d", v[0], v[1], v[2]);
+}
+
+PyMODINIT_FUNC PyInit__tetrec(void)
+{
+  import_array();
+  if (PyType_Ready(&CMeshType) < 0)
+    return NULL;
+  PyObject *m = PyModule_Create(&module_def);
+  if (!m)
+    return NULL;
+  Error = PyErr_NewExceptionWithDoc(
+      "tetrec.Error",
+      "A failure reported by the tetrec C library: .status is the tr_status name "
+      "('TR_ERR_OPEN', ...), .code its number, .message tr_last_error().",
+      NULL, NULL);
+  Py_ssize_t nsup = 0;
+  while (SUPPORTED_OPTIONS[nsup])
+    nsup++;
+  PyObject *supported = PyTuple_New(nsup);
+  for (Py_ssize_t i = 0; supported && i < nsup; i++) {
+    PyObject *s = PyUnicode_FromString(SUPPORTED_OPTIONS[i]);
+    if (!s)
+      Py_CLEAR(supported);
+    else
+      PyTuple_SET_ITEM(supported, i, s);
+  }
+  /* The static pointer keeps its own reference for make_error. */
+  Py_XINCREF(Error);
+  if (!Error || !supported || PyModule_AddObject(m, "Error", Error) < 0 ||
+      PyModule_AddObject(m, "SUPPORTED_OPTIONS", supported) < 0 ||
+      PyModule_AddObject(m, "C_VERSION", c_version()) < 0) {
+    Py_DECREF(m);
+    return NULL;
+  }
+  Py_INCREF(&CMeshType);
+  if (PyModule_AddObject(m, "CMesh", (PyObject *)&CMeshType) < 0) {
+    Py_DECREF(m);
+    return NULL;
+  }
+  return m;
+}
