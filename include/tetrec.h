@@ -77,6 +77,11 @@ typedef struct tr_options {
   int allow_open;  /* mesh the convex hull, keep facets as constraints (default 0) */
   int verbose;     /* 0 quiet, 1 normal, 2 chatty; messages go to stderr */
   uint64_t round_budget; /* star checks the rounding repair may spend (0: 2,000,000) */
+  int recovery;    /* 0 default; 1 the paper's algorithm only: Swap23/Swap44 then pipels for
+                      edges, Swap32 then clusterels for facets (no general flips, midpoint
+                      splits, Lawson flips, hub splits or cavity retriangulation); 2 the
+                      default without the general flips for facets, so missing facets go
+                      from Swap32 straight to cavity retriangulation (for comparisons) */
 } tr_options;
 void tr_options_default(tr_options *opt);
 
@@ -90,6 +95,8 @@ typedef struct tr_stats {
   uint64_t rounding_flips; /* flips that took away tets flat in doubles (output/flatflip.h) */
   double total_seconds, recovery_seconds;
   uint64_t peak_memory_bytes;
+  uint64_t facets_recovered_by_cavity; /* missing facets recovered by cavity
+                                          retriangulation, without Steiner points */
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported). */

@@ -103,7 +103,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK && m->ndup)
     st = tr_error(TR_ERR_INTERNAL, "duplicate points survived validation");
   if (st == TR_OK) {
-    st = tr_pipeline_recover(m, p, edges, ne, &sub, stats, secs);
+    st = tr_pipeline_recover(m, p, edges, ne, opt.recovery, &sub, stats, secs);
     stats->recovery_seconds = secs[0] + secs[1];
     say(&opt, 2, "edge recovery", secs[0]);
     say(&opt, 2, "facet recovery", secs[1]);

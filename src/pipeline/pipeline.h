@@ -42,10 +42,11 @@ tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t
                             uint32_t *nopen, uint32_t *nmulti);
 
 /* Edge then facet recovery on m (vertex ids = plc point ids). Fills sub and the stats
- * rows; secs[0], secs[1] = time of each stage. */
+ * rows; secs[0], secs[1] = time of each stage. recovery: tr_options.recovery (1: the
+ * paper's steps only). */
 tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
-                              const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
-                              tr_stats *stats, double secs[2]);
+                              const uint32_t *edges, uint32_t ne, int recovery,
+                              tr_subfaces *sub, tr_stats *stats, double secs[2]);
 /* Frees sub's arrays (works whether or not the facet stage is built). */
 void tr_pipeline_subfaces_free(tr_subfaces *sub);
 

@@ -170,11 +170,14 @@ done:
 #endif
 
 tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
-                              const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
-                              tr_stats *stats, double secs[2])
+                              const uint32_t *edges, uint32_t ne, int recovery,
+                              tr_subfaces *sub, tr_stats *stats, double secs[2])
 {
   memset(sub, 0, sizeof *sub);
   secs[0] = secs[1] = 0;
+  if (recovery < 0 || recovery > 2)
+    return tr_error(TR_ERR_USAGE, "tr_options.recovery is %d: 0 (default), 1 (paper) or 2 "
+                    "(no facet flips)", recovery);
 #if TR_HAVE_RECOVERY
   tr_edge_chains chains;
   tr_edge_recovery_stats es;
@@ -183,22 +186,29 @@ tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
   memset(&es, 0, sizeof es);
   memset(&fs, 0, sizeof fs);
   double t0 = tr_pipeline_now();
-  tr_status st = tr_recover_edges(m, edges, ne, &chains, &es);
+  /* the paper's algorithm: Swap23/Swap44 then pipels; Swap32 then clusterels */
+  tr_edge_recovery_opts eo = {0};
+  tr_facet_recovery_opts fo = {0};
+  eo.no_flips = eo.no_midpoints = eo.no_lawson = fo.paper = recovery == 1;
+  fo.no_flips = recovery == 2;
+  tr_status st = tr_recover_edges_ex(m, edges, ne, &eo, &chains, &es);
   double t1 = tr_pipeline_now();
   secs[0] = t1 - t0;
   stats->missing_edges = es.missing_edges;
   stats->edges_recovered_by_swap = es.recovered_by_swap;
   stats->points_added_for_edges = es.points_added;
   if (st == TR_OK) {
-    st = tr_recover_facets(m, plc->tris, plc->ntris, &chains, sub, &fs);
+    st = tr_recover_facets_ex(m, plc->tris, plc->ntris, &chains, &fo, sub, &fs);
     secs[1] = tr_pipeline_now() - t1;
     stats->missing_facets = fs.missing_facets;
     stats->facets_recovered_by_swap = fs.recovered_by_swap;
     stats->points_added_for_facets = fs.points_added;
+    stats->facets_recovered_by_cavity = fs.recovered_by_cavity;
   }
   tr_edge_chains_free(&chains);
   return st;
 #else
+  (void)recovery; /* nothing is recovered in this build */
   double t0 = tr_pipeline_now();
   tr_status st = recover_none(m, plc, edges, ne, sub, stats);
   secs[0] = tr_pipeline_now() - t0;
