@@ -698,7 +698,7 @@ tr_status tr_facet_cavity(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t 
                           const tr_clusterel *cl, uint32_t ncl, tr_flip_guard guard, void *ud,
                           tr_cavity_stats *st, int *done)
 {
-  (void)idx;
+  (void)idx; /* the refusals are not errors: nothing to name it in */
   *done = 0;
   cav c;
   memset(&c, 0, sizeof c);
@@ -735,8 +735,14 @@ tr_status tr_facet_cavity(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t 
       *done = 1;
     }
   }
-  if (st && s == TR_OK)
-    why == 0 && *done ? st->recovered++ : why == 1 ? st->failed_boundary++ : st->failed_other++;
+  if (st && s == TR_OK) {
+    if (*done)
+      st->recovered++;
+    else if (why == 1)
+      st->failed_boundary++;
+    else
+      st->failed_other++;
+  }
   cav_free(&c);
   return s;
 }
