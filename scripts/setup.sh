@@ -9,4 +9,4 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential meson ninja-build pkg-config cmake \
   libgmp-dev libmpfr-dev libcgal-dev \
   clang libfuzzer-14-dev libclang-rt-14-dev \
-  tetgen libcgal-demo python3 python3-meshio libopenmesh-dev >/dev/null
+  tetgen libcgal-demo python3 python3-meshio libopenmesh-dev time >/dev/null

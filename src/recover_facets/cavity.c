@@ -672,8 +672,11 @@ static tr_status retriangulate(cav *c, tr_cavity_stats *st, int *why)
       if (!ok)
         break;
     }
+    /* two missing faces may lead to the same tet: add each once */
+    if (add.n)
+      qsort(add.a, add.n, sizeof *add.a, cmp_u32);
     for (size_t i = 0; i < add.n && s == TR_OK && ok; i++)
-      if (!in_sorted(c->reg.a, c->reg.n, add.a[i])) {
+      if (i == 0 || add.a[i] != add.a[i - 1]) {
         s = tr_u32buf_push(&c->reg, add.a[i]);
         if (st)
           st->expanded++;
