@@ -37,8 +37,8 @@
 /* Test hooks; zero-initialise for normal use (force_first = 0 means "off" only when
  * force_on is 0). */
 typedef struct tr_facet_opts {
-  int no_swap;   /* skip Swap32 and the flips, so the clusterel path runs on Swap32
-                    configurations */
+  int no_swap;   /* skip Swap32, the flips and the cavity retriangulation, so the
+                    clusterel path runs on Swap32 configurations */
   int force_on;  /* decompose the first clusterel of the highest type >= THR_EDG first,
                     imposing force_first on it */
   int force_first; /* bit k set: that clusterel's free two-cut face k (local code) gets
