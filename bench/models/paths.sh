@@ -34,9 +34,9 @@ for f in "$out"/data/meshes/*.off "$out"/hard/*.off; do
       cpu=$(awk 'END { print $1 + $2 }' "$out/cpu")
       awk -v b="$b" -v m="$m" -v cpu="$cpu" -F'[:,]' '
         { gsub(/[" ]/, "", $1); v[$1] = $2 + 0 }
-        END { print b, m, v["missing_facets"], v["facets_recovered_by_swap"],
-                    v["facets_recovered_by_cavity"], v["points_added_for_facets"],
-                    v["points_added_for_edges"], cpu }' "$s" >>"$rows"
+        END { print b, m, v["missing_facets"] + 0, v["facets_recovered_by_swap"] + 0,
+                    v["facets_recovered_by_cavity"] + 0, v["points_added_for_facets"] + 0,
+                    v["points_added_for_edges"] + 0, cpu }' "$s" >>"$rows"
     else
       echo "$b $m FAIL" >>"$rows"
     fi
