@@ -276,6 +276,8 @@ static int in_sorted(const uint32_t *a, size_t n, uint32_t x)
 
 static int vside(const cav *c, uint32_t v)
 {
+  if (c->nv == 0) /* the first round: no side known yet (bsearch wants an array) */
+    return 2;
   const uint32_t *r = bsearch(&v, c->vid, c->nv, sizeof v, cmp_u32);
   return r ? c->vside[r - c->vid] : 2;
 }
@@ -578,9 +580,11 @@ static int same_planes(cav *c)
   tr_u32buf *a = &c->plane[0], *b = &c->plane[1];
   if (a->n != b->n)
     return 0;
+  if (a->n == 0)
+    return 1;
   qsort(a->a, a->n / 3, 3 * sizeof *a->a, tr_cmp_face_key);
   qsort(b->a, b->n / 3, 3 * sizeof *b->a, tr_cmp_face_key);
-  return a->n == 0 || memcmp(a->a, b->a, a->n * sizeof *a->a) == 0;
+  return memcmp(a->a, b->a, a->n * sizeof *a->a) == 0;
 }
 
 /* Every protected edge and face of the old tets is a simplex of the new ones. */
