@@ -173,6 +173,11 @@ typedef struct tr_options {
    * `user`. */
   int (*progress)(void *user, const char *stage, double fraction);
   void *progress_user;
+  int recovery;    /* 0 default; 1 the paper's algorithm only: Swap23/Swap44 then pipels for
+                      edges, Swap32 then clusterels for facets (no general flips, midpoint
+                      splits, Lawson flips, hub splits or cavity retriangulation); 2 the
+                      default without the general flips for facets, so missing facets go
+                      from Swap32 straight to cavity retriangulation (for comparisons) */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
@@ -189,6 +194,8 @@ typedef struct tr_stats {
   double total_seconds, recovery_seconds;
   uint64_t peak_memory_bytes;
   double stage_seconds[TR_STAGE_COUNT]; /* wall-clock time of each stage (enum tr_stage) */
+  uint64_t facets_recovered_by_cavity; /* missing facets recovered by cavity
+                                          retriangulation, without Steiner points */
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

@@ -10,6 +10,6 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libgmp-dev libmpfr-dev libcgal-dev \
   clang libfuzzer-14-dev libclang-rt-14-dev \
   tetgen libcgal-demo python3 python3-meshio libopenmesh-dev \
-  python3-dev python3-venv python3-numpy python3-mesonpy python3-pytest >/dev/null
+  python3-dev python3-venv python3-numpy python3-mesonpy python3-pytest time >/dev/null
 # The tetrec Python package, into .venv (README: Python).
 bash "$(dirname "$0")/python.sh" "$(dirname "$0")/../.venv"

@@ -42,6 +42,11 @@ static const char usage[] =
     "  --no-smooth       no surface diagonal swaps before recovery\n"
     "  --round-budget N  star checks the rounding repair may spend before it gives up\n"
     "                    (exit 9; default 2000000)\n"
+    "  --recovery MODE   default: every recovery step; paper: the published algorithm\n"
+    "                    only (Swap23/Swap44 and pipels for edges, Swap32 and\n"
+    "                    clusterels for facets), to reproduce the paper's Table 14;\n"
+    "                    no-facet-flips: the default without the general flips for\n"
+    "                    facets (cavity retriangulation right after Swap32)\n"
     "  --help, --version\n"
     "\n"
     "exit status (= tr_status):\n"
@@ -54,6 +59,7 @@ typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
   int quiet, verbose, exact, allow_open, check_only, no_smooth;
   uint64_t round_budget; /* 0: the default */
+  int recovery;          /* tr_options.recovery */
 } args;
 
 static int fail(tr_status s)
@@ -133,6 +139,18 @@ static int parse_args(int argc, char **argv, args *a)
                         "not '%s'", v);
       a->round_budget = n;
     }
+    else if (!strcmp(s, "--recovery")) {
+      const char *v = i + 1 < argc ? argv[++i] : "";
+      if (!strcmp(v, "paper"))
+        a->recovery = 1;
+      else if (!strcmp(v, "default"))
+        a->recovery = 0;
+      else if (!strcmp(v, "no-facet-flips"))
+        a->recovery = 2;
+      else
+        return tr_error(TR_ERR_USAGE, "--recovery needs 'default', 'paper' or "
+                        "'no-facet-flips', not '%s'", v);
+    }
     else if (s[0] == '-' && s[1])
       return tr_error(TR_ERR_USAGE, "unknown option '%s' (see tetrec --help)", s);
     else if (npos < 3)
@@ -185,6 +203,7 @@ static int cmd_mesh(const args *a)
   opt.smooth = !a->no_smooth;
   opt.verbose = a->quiet ? 0 : a->verbose ? 2 : 1;
   opt.round_budget = a->round_budget;
+  opt.recovery = a->recovery;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();

@@ -45,7 +45,8 @@ tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t
 /* Edge then facet recovery on m (vertex ids = plc point ids). Fills sub, the stats rows
  * and *vkind, *vindex (tr_pipeline_origins; NULL when the build has no recovery stages,
  * so every vertex is an input vertex); secs[0], secs[1] = time of each stage. Reports
- * both stages to opt->progress (TR_ERR_CANCELLED when it asks to stop). */
+ * both stages to opt->progress (TR_ERR_CANCELLED when it asks to stop). opt->recovery
+ * picks the steps (1: the paper's only; 2: no facet flips). */
 tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
                               const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
                               tr_stats *stats, double secs[2], const tr_options *opt,

@@ -186,6 +186,10 @@ tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
   secs[0] = secs[1] = 0;
   *vkind = NULL;
   *vindex = NULL;
+  int recovery = opt->recovery;
+  if (recovery < 0 || recovery > 2)
+    return tr_error(TR_ERR_USAGE, "tr_options.recovery is %d: 0 (default), 1 (paper) or 2 "
+                    "(no facet flips)", recovery);
   TR_CHECK(tr_pipeline_progress(opt, TR_STAGE_EDGES, 0));
 #if TR_HAVE_RECOVERY
   tr_edge_chains chains;
@@ -195,7 +199,12 @@ tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
   memset(&es, 0, sizeof es);
   memset(&fs, 0, sizeof fs);
   double t0 = tr_pipeline_now();
-  tr_status st = tr_recover_edges(m, edges, ne, &chains, &es);
+  /* the paper's algorithm: Swap23/Swap44 then pipels; Swap32 then clusterels */
+  tr_edge_recovery_opts eo = {0};
+  tr_facet_recovery_opts fo = {0};
+  eo.no_flips = eo.no_midpoints = eo.no_lawson = fo.paper = recovery == 1;
+  fo.no_flips = recovery == 2;
+  tr_status st = tr_recover_edges_ex(m, edges, ne, &eo, &chains, &es);
   double t1 = tr_pipeline_now();
   secs[0] = t1 - t0;
   stats->missing_edges = es.missing_edges;
@@ -207,16 +216,18 @@ tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
     st = tr_pipeline_progress(opt, TR_STAGE_FACETS, 0);
   if (st == TR_OK) {
     t1 = tr_pipeline_now();
-    st = tr_recover_facets(m, plc->tris, plc->ntris, &chains, sub, &fs);
+    st = tr_recover_facets_ex(m, plc->tris, plc->ntris, &chains, &fo, sub, &fs);
     secs[1] = tr_pipeline_now() - t1;
     stats->missing_facets = fs.missing_facets;
     stats->facets_recovered_by_swap = fs.recovered_by_swap;
     stats->points_added_for_facets = fs.points_added;
+    stats->facets_recovered_by_cavity = fs.recovered_by_cavity;
   }
   if (st == TR_OK)
     st = tr_pipeline_origins(m, plc->npoints, &chains, sub, vkind, vindex);
   tr_edge_chains_free(&chains);
 #else
+  (void)recovery; /* nothing is recovered in this build */
   double t0 = tr_pipeline_now();
   tr_status st = recover_none(m, plc, edges, ne, sub, stats);
   secs[0] = tr_pipeline_now() - t0;

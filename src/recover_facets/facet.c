@@ -1,5 +1,5 @@
-/* Recovery of one missing facet: Swap32, general flips, else clusterel decomposition
- * (see facet.h). */
+/* Recovery of one missing facet: Swap32, general flips, cavity retriangulation, else
+ * clusterel decomposition (see facet.h). */
 #include "recover_facets/facet.h"
 
 #include <stdlib.h>
@@ -528,12 +528,18 @@ tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t
       done = by_flips = clear;
     }
   }
+  int by_cavity = 0;
+  if (st == TR_OK && !done && !(opt && (opt->no_swap || opt->no_cavity))) {
+    st = tr_facet_cavity(m, idx, e, f, g, cl, ncl, opt ? opt->guard : NULL,
+                         opt ? opt->guard_ud : NULL, d ? &d->cavity : NULL, &by_cavity);
+    done = by_cavity;
+  }
   if (st == TR_OK && done) {
-    *outcome = by_flips ? TR_FACET_BY_FLIPS : TR_FACET_BY_SWAP32;
-    if (d && by_flips)
-      d->by_flips++;
-    else if (d)
-      d->swap32++;
+    *outcome = by_cavity  ? TR_FACET_BY_CAVITY
+               : by_flips ? TR_FACET_BY_FLIPS
+                          : TR_FACET_BY_SWAP32;
+    if (d && !by_cavity) /* the cavity's are counted in d->cavity.recovered */
+      by_flips ? d->by_flips++ : d->swap32++;
   } else if (st == TR_OK) {
     ctx cx;
     memset(&cx, 0, sizeof cx);
@@ -554,6 +560,7 @@ tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t
     return tr_error(TR_ERR_INTERNAL, "facet %u (%u %u %u) still missing after %s", idx, e, f, g,
                     *outcome == TR_FACET_BY_SWAP32  ? "Swap32"
                     : *outcome == TR_FACET_BY_FLIPS ? "flips"
+                    : *outcome == TR_FACET_BY_CAVITY ? "cavity retriangulation"
                                                     : "clusterel decomposition");
   return TR_OK;
 }

@@ -15,7 +15,8 @@
  * Recovery: Swap32 (Table 10) when the only crossing tets are the three around one edge
  * AB whose ring is EFG; then general flips (flipfacet.h: edge removal of the crossing
  * edges, Swap23 on the cut faces, kept only while they lower the crossing count); what
- * still crosses after them: every crossing clusterel is decomposed (ONE_EDG: Table 5
+ * still crosses after them is retriangulated without Steiner points where cavity.h can
+ * (off with no_cavity); else every crossing clusterel is decomposed (ONE_EDG: Table 5
  * (pipel Case 1), TWO_EDG: Table 6 II-S/II-Z (pipel Case 2), THR_EDG: Table 11, FOU_EDG:
  * Table 12 + SZZS) with one exact Steiner point per crossed mesh edge (shared by every
  * clusterel around that edge) and the extra point H where the case needs it. The S/Z
@@ -30,13 +31,14 @@
 
 #include "mesh/mesh.h"
 #include "recover_facets/cluster_tables.h"
+#include "recover_facets/cavity.h"
 #include "recover_facets/flipfacet.h"
 
 /* Test hooks; zero-initialise for normal use (force_first = 0 means "off" only when
  * force_on is 0). */
 typedef struct tr_facet_opts {
-  int no_swap;   /* skip Swap32 and the flips, so the clusterel path runs on Swap32
-                    configurations */
+  int no_swap;   /* skip Swap32, the flips and the cavity retriangulation, so the
+                    clusterel path runs on Swap32 configurations */
   int force_on;  /* decompose the first clusterel of the highest type >= THR_EDG first,
                     imposing force_first on it */
   int force_first; /* bit k set: that clusterel's free two-cut face k (local code) gets
@@ -44,6 +46,7 @@ typedef struct tr_facet_opts {
   tr_flip_guard guard; /* what the flips must not delete (NULL: nothing protected) */
   void *guard_ud;
   int no_flips;  /* skip the general flips only (Swap32 still runs) */
+  int no_cavity; /* skip the cavity retriangulation (cavity.h) */
   const uint32_t *hint; /* NULL, or per facet index a tet that had the facet as a face
                            when the stage began (tr_mesh_find_faces; TR_NONE: it had
                            none). Checked before use: a later flip may have replaced it. */
@@ -60,10 +63,11 @@ typedef struct tr_facet_detail {
   uint64_t h_points;                  /* extra points H */
   uint64_t by_flips;                  /* facets recovered by general flips */
   tr_facet_flip_stats flips;          /* the flips themselves */
+  tr_cavity_stats cavity;             /* cavity retriangulation (cavity.h) */
 } tr_facet_detail;
 
 enum { TR_FACET_PRESENT = 0, TR_FACET_BY_SWAP32 = 1, TR_FACET_BY_CLUSTER = 2,
-       TR_FACET_BY_FLIPS = 3 };
+       TR_FACET_BY_FLIPS = 3, TR_FACET_BY_CAVITY = 4 };
 
 /* Recovers input triangle number idx = (e, f, g) (idx only names it in messages).
  * *outcome = TR_FACET_*. opt may be NULL. d is added to (may be NULL). If faces != NULL,

@@ -85,8 +85,17 @@ tr_status tr_recover_facets(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                             const tr_edge_chains *chains, tr_subfaces *sub,
                             tr_facet_recovery_stats *st)
 {
+  return tr_recover_facets_ex(m, tris, n, chains, NULL, sub, st);
+}
+
+tr_status tr_recover_facets_ex(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
+                               const tr_edge_chains *chains, const tr_facet_recovery_opts *fo,
+                               tr_subfaces *sub, tr_facet_recovery_stats *st)
+{
   tr_facet_detail d = {0};
   tr_facet_opts opt = {0};
+  opt.no_flips = opt.no_cavity = fo && fo->paper;
+  opt.no_flips |= fo && fo->no_flips;
   keep kp;
   memset(&kp, 0, sizeof kp);
   for (uint32_t c = 0; chains && c < chains->n; c++)
@@ -135,6 +144,8 @@ tr_status tr_recover_facets(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
       s.missing_facets++;
     if (outcome == TR_FACET_BY_SWAP32 || outcome == TR_FACET_BY_FLIPS)
       s.recovered_by_swap++;
+    else if (outcome == TR_FACET_BY_CAVITY)
+      s.recovered_by_cavity++;
     for (size_t k = before; k < v.n && r == TR_OK; k += 3) {
       r = tr_u32buf_push(&tri, i);
       if (r == TR_OK)
@@ -151,6 +162,8 @@ tr_status tr_recover_facets(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
   s.flip44 = d.flips.flip44;
   s.flipn = d.flips.flipn;
   s.flips_undone = d.flips.undone;
+  s.cavity_tried = d.cavity.tried;
+  s.cavity_expanded = d.cavity.expanded;
   if (st)
     *st = s;
   if (r != TR_OK || !sub) {

@@ -5,7 +5,9 @@
  * expected number of regions; an invalid one must fail with the expected status and a
  * message that names the culprits. With --exact the mesh keeps its exact Steiner points
  * and the doubles are not repaired (tetrec mesh --exact to a .node file); the validators
- * are exact either way. `test_hard --files DIR` writes every case with the
+ * are exact either way. --paper meshes with the paper's algorithm only
+ * (tr_options.recovery = 1), --no-facet-flips without the facet flips (2: missing facets
+ * go to the cavity retriangulation right after Swap32). `test_hard --files DIR` writes every case with the
  * generator's writer, reads it back and checks the doubles survive bit for bit. */
 #include <gmp.h>
 #include <stdio.h>
@@ -27,6 +29,8 @@
  * default). */
 static unsigned run_flags;
 static uint64_t run_budget;
+static int run_recovery; /* tr_options.recovery (--paper: 1, --no-facet-flips: 2) */
+static int expect_cavity; /* --expect-cavity: some facet must be recovered by the cavity */
 
 static void run_case(const hard_case *c)
 {
@@ -44,6 +48,7 @@ static void run_case(const hard_case *c)
   opt.verbose = 0;
   opt.allow_open = c->allow_open;
   opt.round_budget = run_budget;
+  opt.recovery = run_recovery;
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
   tr_stats st = {.size = sizeof st};
@@ -103,12 +108,23 @@ static void run_case(const hard_case *c)
   if (c->steiner)
     EXPECT(added > 0, "%s: no Steiner point, but the case has no tetrahedralization without",
            c->name);
+  /* the paper's algorithm has no cavity retriangulation */
+  if (expect_cavity)
+    EXPECT(st.facets_recovered_by_cavity > 0, "%s: no facet recovered by cavity "
+           "retriangulation", c->name);
+  if (run_recovery == 1)
+    EXPECT(st.facets_recovered_by_cavity == 0, "%s: %llu facets recovered by cavity "
+           "retriangulation with --paper", c->name,
+           (unsigned long long)st.facets_recovered_by_cavity);
   fprintf(stderr,
-          "%s: %u points, %u triangles -> %u vertices, %u tets, %u regions; missing edges "
-          "%llu, facets %llu; Steiner points %llu; %.3f s\n",
-          c->name, c->np, c->nt, tr_mesh_num_vertices(m), nt, maxr,
-          (unsigned long long)st.missing_edges, (unsigned long long)st.missing_facets,
-          (unsigned long long)added, st.total_seconds);
+          "%s%s: %u points, %u triangles -> %u vertices, %u tets, %u regions; missing edges "
+          "%llu, facets %llu (by swaps %llu, by cavity %llu); Steiner points %llu (on facets "
+          "%llu); %.3f s\n",
+          c->name, run_recovery == 1 ? " (paper)" : run_recovery == 2 ? " (no facet flips)" : "", c->np, c->nt, tr_mesh_num_vertices(m), nt,
+          maxr, (unsigned long long)st.missing_edges, (unsigned long long)st.missing_facets,
+          (unsigned long long)st.facets_recovered_by_swap,
+          (unsigned long long)st.facets_recovered_by_cavity, (unsigned long long)added,
+          (unsigned long long)st.points_added_for_facets, st.total_seconds);
   tr_mesh_destroy(m);
   tr_plc_destroy(used);
   tr_plc_destroy(plc);
@@ -156,6 +172,12 @@ int main(int argc, char **argv)
     for (; a + 1 < argc; a++) {
       if (!strcmp(argv[a], "--exact"))
         run_flags |= TR_PIPE_KEEP_EXACT;
+      else if (!strcmp(argv[a], "--paper"))
+        run_recovery = 1;
+      else if (!strcmp(argv[a], "--no-facet-flips"))
+        run_recovery = 2;
+      else if (!strcmp(argv[a], "--expect-cavity"))
+        expect_cavity = 1;
       else if (!strcmp(argv[a], "--round-budget") && a + 2 < argc)
         run_budget = strtoull(argv[++a], NULL, 10);
       else
@@ -175,7 +197,9 @@ int main(int argc, char **argv)
     }
     EXPECT(found, "no case named %s", argv[argc - 1]);
   } else {
-    fprintf(stderr, "usage: test_hard [--exact] [--round-budget N] CASE|all | "
+    fprintf(stderr, "usage: test_hard [--exact] [--paper | --no-facet-flips] [--expect-cavity] "
+                    "[--round-budget N] "
+                    "CASE|all | "
                     "test_hard --files DIR\n");
     return 1;
   }

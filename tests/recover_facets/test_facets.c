@@ -17,12 +17,16 @@
  *               every input triangle exactly covered by its listed sub-faces.
  *   lattice     the same on small integer coordinates: vertices exactly on facets and
  *               edges, coplanar faces.
+ *   cavity K F  cavity retriangulation (cavity.h) on random clouds of kind K (0 integer
+ *               grid, 1 grid moved by ulps, 2 nearly flat), after the flips (F = 1) or
+ *               right after Swap32 (F = 0): see test_cavity.
  *   degenerate  a collinear input triangle: TR_ERR_UNSUPPORTED naming the facet.
  *   determinism the whole edges + facets run twice on one input: identical tets and
  *               sub-faces.
  * TETREC_FACET_TEST_SCALE in (0,1] scales the random modes down (sanitizer builds).
  */
 #include <gmp.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -317,6 +321,7 @@ static int test_cases(void)
           tr_facet_opts o = {0};
           o.no_swap = p & 1; /* both paths on Swap32 configurations */
           o.no_flips = 1;    /* this mode covers the clusterel tables */
+          o.no_cavity = 1;
           o.force_on = npat == 16;
           o.force_first = p;
           char what[96];
@@ -345,6 +350,127 @@ static int test_cases(void)
     for (int i = 0; i < TR_NUM_FOU_EDG; i++)
       CHECK(d.fou_case[i] > 0, "cases: Table 12 %s never used on a mesh", tr_fou_edg_cases[i].name);
   }
+  return 0;
+}
+
+/* Random point clouds of three kinds: integer grid points (cospherical and coplanar
+ * ties everywhere), the same moved by 0-2 ulps per coordinate, and a nearly flat cloud
+ * (z = k * 2^-30, near-coplanar tets around every facet). */
+static void cloud(int kind, uint64_t *rs, double *xyz, int n)
+{
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < 3; j++) {
+      double x = (double)rng_range(rs, 0, 40);
+      if (kind == 2 && j == 2)
+        x = ldexp(x, -30);
+      if (kind == 1)
+        for (long k = rng_range(rs, 0, 2); k > 0; k--)
+          x = nextafter(x, rng_range(rs, 0, 1) ? 100.0 : -100.0);
+      xyz[3 * i + j] = x;
+    }
+}
+
+/* Cavity retriangulation (cavity.h): every triangle of mesh edges that is not a face is
+ * recovered alone on a fresh Delaunay mesh with the default path (Swap32, flips, cavity,
+ * clusterels; flips_first = 0: Swap32, cavity, clusterels). Each run goes through the
+ * checks of run_one. A facet the cavity recovered must have cost no vertex; recovered
+ * again with the cavity off, it must go to the clusterels (the flips really failed on it)
+ * and cost Steiner points. The cavity path must have been taken on every kind of cloud. */
+static int test_cavity(int kind, int flips)
+{
+  static const char *kinds[] = {"grid", "ulps", "flat"};
+  tr_facet_detail d = {0}, dc = {0};
+  long count[5] = {0}, saved = 0;
+  int nseeds = scaled(10);
+  for (int seed = 0; seed < nseeds; seed++) {
+    uint64_t rs = 0xca71f00dull + (uint64_t)seed * 0x9e3779b97f4a7c15ull + (uint64_t)kind;
+    enum { N = 36 };
+    double xyz[3 * N];
+    cloud(kind, &rs, xyz, N);
+    struct tr_mesh *m = NULL;
+    if (tr_delaunay_build(xyz, N, &m) != TR_OK) {
+      CHECK(0, "cavity %s: delaunay %d: %s", kinds[kind], seed, tr_last_error());
+      continue;
+    }
+    uint64_t *edges, *faces;
+    size_t ne, nf;
+    mesh_sets(m, &edges, &ne, &faces, &nf);
+    int tried = 0, maxtried = scaled(30);
+    for (size_t i = 0; i < ne && tried < maxtried; i++) {
+      if (i > 0 && edges[i] == edges[i - 1])
+        continue;
+      uint32_t a = (uint32_t)(edges[i] >> 32), b = (uint32_t)edges[i];
+      for (uint32_t c = b + 1; c < m->nv && tried < maxtried; c++) {
+        if (!has(edges, ne, key2(a, c)) || !has(edges, ne, key2(b, c)) ||
+            has(faces, nf, key3(a, b, c)) || axis_of(m, a, b, c) < 0)
+          continue;
+        tried++;
+        struct tr_mesh *w = NULL;
+        if (tr_delaunay_build(xyz, N, &w) != TR_OK)
+          continue;
+        tr_facet_opts o = {0};
+        o.no_flips = !flips;
+        char what[96];
+        snprintf(what, sizeof what, "cavity %s seed %d triangle %u %u %u", kinds[kind], seed, a,
+                 b, c);
+        int outcome = -1;
+        uint32_t nv0 = w->nv;
+        uint64_t rec0 = d.cavity.recovered;
+        run_one(w, a, b, c, &o, &d, what, &outcome);
+        if (outcome == TR_FACET_BY_CAVITY) {
+          /* deterministic: the same input gives the same tets, slot for slot */
+          struct tr_mesh *w2 = NULL;
+          int out3 = -1;
+          tr_facet_detail d3 = {0};
+          if (tr_delaunay_build(xyz, N, &w2) == TR_OK &&
+              tr_recover_facet(w2, 0, a, b, c, &o, &d3, &out3, NULL) == TR_OK)
+            CHECK(out3 == outcome && w2->nt == w->nt &&
+                  !memcmp(w2->tv, w->tv, 4 * sizeof *w->tv * (size_t)w->nt),
+                  "%s: a second run gave other tets", what);
+          else
+            CHECK(0, "%s: second run failed: %s", what, tr_last_error());
+          tr_mesh_destroy(w2);
+        }
+        tr_mesh_destroy(w);
+        if (outcome < 0 || outcome > 4)
+          continue;
+        count[outcome]++;
+        CHECK((outcome == TR_FACET_BY_CAVITY) == (d.cavity.recovered == rec0 + 1),
+              "%s: outcome %d but cavity count %lu -> %lu", what, outcome,
+              (unsigned long)rec0, (unsigned long)d.cavity.recovered);
+        if (outcome != TR_FACET_BY_CAVITY)
+          continue;
+        /* the same facet without the cavity path */
+        if (tr_delaunay_build(xyz, N, &w) != TR_OK)
+          continue;
+        CHECK(w->nv == nv0, "%s: vertices changed", what);
+        o.no_cavity = 1;
+        int out2 = -1;
+        uint64_t st0 = dc.steiner;
+        run_one(w, a, b, c, &o, &dc, what, &out2);
+        CHECK(out2 == TR_FACET_BY_CLUSTER && dc.steiner > st0,
+              "%s: without the cavity: outcome %d, %lu Steiner points", what, out2,
+              (unsigned long)(dc.steiner - st0));
+        saved += (long)(dc.steiner - st0 + dc.h_points);
+        tr_mesh_destroy(w);
+      }
+    }
+    free(edges);
+    free(faces);
+    tr_mesh_destroy(m);
+  }
+  printf("cavity %s (%s): outcomes: Swap32 %ld, flips %ld, cavity %ld, clusterels %ld; cavity "
+         "tried %lu, recovered %lu, tets added by expansion %lu, failed on a boundary face "
+         "%lu, otherwise %lu; the clusterels would have put %ld points on those facets\n",
+         kinds[kind], flips ? "after flips" : "flips off", count[TR_FACET_BY_SWAP32],
+         count[TR_FACET_BY_FLIPS], count[TR_FACET_BY_CAVITY], count[TR_FACET_BY_CLUSTER],
+         (unsigned long)d.cavity.tried, (unsigned long)d.cavity.recovered,
+         (unsigned long)d.cavity.expanded, (unsigned long)d.cavity.failed_boundary,
+         (unsigned long)d.cavity.failed_other, saved);
+  CHECK(count[TR_FACET_BY_CAVITY] > 0, "cavity %s: the cavity path was never taken",
+        kinds[kind]);
+  CHECK(d.steiner == (uint64_t)0 || count[TR_FACET_BY_CLUSTER] > 0,
+        "cavity %s: Steiner points without a clusterel outcome", kinds[kind]);
   return 0;
 }
 
@@ -584,6 +710,8 @@ int main(int argc, char **argv)
     test_e2e(0);
   else if (!strcmp(mode, "lattice"))
     test_e2e(1);
+  else if (!strcmp(mode, "cavity") && argc > 3)
+    test_cavity(atoi(argv[2]), atoi(argv[3]));
   else if (!strcmp(mode, "degenerate"))
     test_degenerate();
   else if (!strcmp(mode, "determinism"))
