@@ -8,6 +8,12 @@
  * which is -det[[x y z x^2+y^2+z^2 1]] of the raw rows a..e: positive iff e is inside
  * the sphere abcd when tr_orient3d(a,b,c,d) > 0 (checked on an example by the tests).
  *
+ * Order in tr_insphere_adapt: differences short enough for a plain floating evaluation
+ * to be exact; then differences that are short integers times one power of two, exact
+ * in fixed-width integers (intdet.c: near-cospherical points close together, the common
+ * hard case of a Delaunay build); then the range check (GMP outside), stage A against
+ * the permanent, and the expansion stages B, C, D.
+ *
  * A (TR_IS_FILTER in predicates.h): a monomial is x_a^2 times a monomial of M_a: five
  *    difference roundings, lift 3 (square, two additions), M 5 (product, subtraction,
  *    product, two additions), l*M 1, the final two-level sum 2: k = 16. With mx, my, mz
