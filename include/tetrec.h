@@ -77,6 +77,9 @@ typedef struct tr_options {
   int allow_open;  /* mesh the convex hull, keep facets as constraints (default 0) */
   int verbose;     /* 0 quiet, 1 normal, 2 chatty; messages go to stderr */
   uint64_t round_budget; /* star checks the rounding repair may spend (0: 2,000,000) */
+  int keep_surface;      /* no Steiner point on the surface: the output's boundary faces
+                            are exactly the input triangles, or the call fails naming the
+                            point (TetGen's -Y; implies no smoothing; default 0) */
 } tr_options;
 void tr_options_default(tr_options *opt);
 
@@ -90,6 +93,10 @@ typedef struct tr_stats {
   uint64_t rounding_flips; /* flips that took away tets flat in doubles (output/flatflip.h) */
   double total_seconds, recovery_seconds;
   uint64_t peak_memory_bytes;
+  /* Steiner points in the output by where they lie, and the boundary ones taken off the
+   * surface after recovery (src/suppress): removed, or relocated into the interior */
+  uint64_t steiner_on_edges, steiner_on_facets, steiner_interior;
+  uint64_t steiner_removed, steiner_relocated;
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported). */

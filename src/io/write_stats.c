@@ -18,7 +18,9 @@ tr_status tr_stats_write_json(const tr_stats *s, const char *path)
           "  \"facets_recovered_by_swap\": %llu,\n  \"points_added_for_facets\": %llu,\n"
           "  \"surface_swaps\": %llu,\n  \"rounding_repairs\": %llu,\n  \"rounding_flips\": %llu,\n"
           "  \"total_seconds\": %.6f,\n  \"recovery_seconds\": %.6f,\n"
-          "  \"peak_memory_bytes\": %llu\n}\n",
+          "  \"peak_memory_bytes\": %llu,\n  \"steiner_on_edges\": %llu,\n"
+          "  \"steiner_on_facets\": %llu,\n  \"steiner_interior\": %llu,\n"
+          "  \"steiner_removed\": %llu,\n  \"steiner_relocated\": %llu\n}\n",
           (unsigned long long)s->surface_nodes, (unsigned long long)s->surface_facets,
           (unsigned long long)s->volume_nodes, (unsigned long long)s->volume_elements,
           (unsigned long long)s->missing_edges, (unsigned long long)s->edges_recovered_by_swap,
@@ -27,7 +29,9 @@ tr_status tr_stats_write_json(const tr_stats *s, const char *path)
           (unsigned long long)s->points_added_for_facets, (unsigned long long)s->surface_swaps,
           (unsigned long long)s->rounding_repairs,
           (unsigned long long)s->rounding_flips, s->total_seconds, s->recovery_seconds,
-          (unsigned long long)s->peak_memory_bytes);
+          (unsigned long long)s->peak_memory_bytes, (unsigned long long)s->steiner_on_edges,
+          (unsigned long long)s->steiner_on_facets, (unsigned long long)s->steiner_interior,
+          (unsigned long long)s->steiner_removed, (unsigned long long)s->steiner_relocated);
   int bad = ferror(f);
   if (fclose(f) != 0 || bad)
     return tr_error(TR_ERR_IO, "%s: write failed", path);

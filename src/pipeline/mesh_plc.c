@@ -19,6 +19,7 @@
 #include "output/round.h"
 #include "pipeline.h"
 #include "smooth/smooth.h"
+#include "suppress/suppress.h"
 
 static tr_status copy_plc(const tr_plc *in, tr_plc **out)
 {
@@ -89,7 +90,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     stats->surface_nodes = p->npoints;
     stats->surface_facets = p->ntris;
   }
-  if (st == TR_OK && opt.smooth) {
+  if (st == TR_OK && opt.smooth && !opt.keep_surface) {
     st = tr_smooth_surface(p, &stats->surface_swaps);
     say(&opt, 2, "surface smoothing", tr_pipeline_now() - t1);
   }
@@ -123,6 +124,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = tr_outer_color(m, &sub, keep_hull, sides, &nreg);
   free(sides);
   sides = NULL;
+  if (st == TR_OK)
+    st = tr_pipeline_suppress(m, &sub, p, &opt, keep_hull, flags, stats);
   /* Before compaction: the flips need the sub-faces, which are in m's numbering. */
   if (st == TR_OK)
     st = tr_round_flip_flat(m, &sub, p, &stats->rounding_flips);
