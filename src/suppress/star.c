@@ -23,7 +23,7 @@ static void face_key(const uint32_t *tv, int k, uint32_t out[3])
  * point at its double (m->xyz); faces that contain apex are skipped, apex == TR_NONE:
  * the double point q. */
 static int sees_all(const struct tr_mesh *m, const uint32_t *f, size_t nf, uint32_t apex,
-                    const double *q)
+                    const double *q, int dbl)
 {
   tr_point pq = apex == TR_NONE ? tr_pt_d(q) : tr_mesh_point(m, apex);
   for (size_t i = 0; i < nf; i++) {
@@ -35,7 +35,11 @@ static int sees_all(const struct tr_mesh *m, const uint32_t *f, size_t nf, uint3
       return 0;
   }
   /* Positive with the Steiner points at their nearest doubles too: the rounding stage
-   * cannot repair a cone tet whose shape, not a vertex's rounding, makes it flat. */
+   * cannot repair a cone tet whose shape, not a vertex's rounding, makes it flat. Where
+   * that is asked too much (dbl = 0, --keep-surface's last try), the rounding repair
+   * gets its chance. */
+  if (!dbl)
+    return 1;
   tr_point dq = apex == TR_NONE ? tr_pt_d(q) : tr_pt_d(m->xyz + 3 * (size_t)apex);
   for (size_t i = 0; i < nf; i++) {
     const uint32_t *g = f + 3 * i;
@@ -254,13 +258,154 @@ static int relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const do
   return 0;
 }
 
+/* A double point that sees every face of bf strictly (sees_all): from p's double p0
+ * halfway towards g again and again, then projections into the kernel (relax), then the
+ * centroids of the region's tets. */
+static int find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
+                  const double *p0, const double g[3], const double dir[4], int dbl,
+                  double q[3])
+{
+  size_t nf = bf->n / 3;
+  /* p moved off the surface along the sum of the merged triangles' inner unit normals:
+   * for a small enough step this is inside the kernel (p sees every link face strictly,
+   * and the sum points into the inner side of each surface plane through p), so the
+   * steps go down to the resolution of p's coordinates */
+  double step = dir[3];
+  for (int j = 0; j < 80 && step > 0; j++, step *= 0.5) {
+    for (int k = 0; k < 3; k++)
+      q[k] = p0[k] + step * dir[k];
+    if (sees_all(m, bf->a, nf, TR_NONE, q, dbl))
+      return 1;
+  }
+  double s = 1.0;
+  for (int j = 0; j < 40; j++, s *= 0.5) {
+    for (int k = 0; k < 3; k++)
+      q[k] = p0[k] + (g[k] - p0[k]) * s;
+    if (sees_all(m, bf->a, nf, TR_NONE, q, dbl))
+      return 1;
+  }
+  /* a relaxed point that has not reached its margin may still see every face */
+  for (int pass = 0; pass < 6; pass++)
+    if (relax(m, bf->a, nf, g, q, pass) >= 0 && sees_all(m, bf->a, nf, TR_NONE, q, dbl))
+      return 1;
+  for (size_t i = 0; i < star->n; i++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)star->a[i];
+    for (int k = 0; k < 3; k++)
+      q[k] = 0.25 * (m->xyz[3 * (size_t)tv[0] + k] + m->xyz[3 * (size_t)tv[1] + k] +
+                     m->xyz[3 * (size_t)tv[2] + k] + m->xyz[3 * (size_t)tv[3] + k]);
+    if (sees_all(m, bf->a, nf, TR_NONE, q, dbl))
+      return 1;
+  }
+  return 0;
+}
+
+/* Full removal: the first boundary vertex (in id order) that sees every face not on it
+ * becomes the apex of the cone that replaces the star. */
+static tr_status try_remove(sup_ctx *c, uint32_t p, const tr_u32buf *star, const tr_u32buf *bf,
+                            const tr_u32buf *old, const tr_u32buf *merged, uint32_t region,
+                            int dbl, int *done)
+{
+  struct tr_mesh *m = c->m;
+  size_t nf = bf->n / 3;
+  tr_u32buf verts = {0}, nv = {0};
+  tr_status st = TR_OK;
+  for (size_t i = 0; i < bf->n && st == TR_OK; i++)
+    st = tr_u32buf_push(&verts, bf->a[i]);
+  if (st == TR_OK)
+    qsort(verts.a, verts.n, sizeof *verts.a, cmp_u32);
+  for (size_t i = 0; i < verts.n && st == TR_OK && !*done; i++) {
+    uint32_t v = verts.a[i];
+    if ((i && verts.a[i - 1] == v) || !sees_all(m, bf->a, nf, v, NULL, dbl))
+      continue;
+    for (size_t j = 0; j < nf && st == TR_OK; j++) {
+      const uint32_t *g = bf->a + 3 * j;
+      if (g[0] == v || g[1] == v || g[2] == v)
+        continue;
+      for (int k = 0; k < 3 && st == TR_OK; k++)
+        st = tr_u32buf_push(&nv, g[k]);
+      if (st == TR_OK)
+        st = tr_u32buf_push(&nv, v);
+    }
+    if (st == TR_OK)
+      st = commit(c, star, nv.a, (uint32_t)(nv.n / 4), old, merged, region);
+    if (st == TR_OK) {
+      m->v2t[p] = TR_NONE;
+      *done = 1;
+    }
+  }
+  tr_u32buf_free(&verts);
+  tr_u32buf_free(&nv);
+  return st;
+}
+
+/* Relocation: a double point q inside the star's kernel (find_q) replaces p, which keeps
+ * its id and becomes an interior point at q exactly. */
+static tr_status try_relocate(sup_ctx *c, uint32_t p, const tr_u32buf *star,
+                              const tr_u32buf *bf, const tr_u32buf *old,
+                              const tr_u32buf *merged, uint32_t region, int dbl, int *done)
+{
+  struct tr_mesh *m = c->m;
+  size_t nf = bf->n / 3;
+  double g[3] = {0, 0, 0}, q[3];
+  const double *p0 = m->xyz + 3 * (size_t)p;
+  /* g: the centroid of the link's vertices (the link faces come first in bf) */
+  for (size_t i = 0; i < star->n * 3; i++)
+    for (int k = 0; k < 3; k++)
+      g[k] += m->xyz[3 * (size_t)bf->a[i] + k];
+  for (int k = 0; k < 3; k++)
+    g[k] /= (double)(star->n * 3);
+  /* the inner direction (dir[0..2]: the merged triangles' unit normals, which bf lists
+   * pointing in) and the star's size (dir[3]) */
+  double dir[4] = {0, 0, 0, 0};
+  for (size_t i = star->n; i < nf; i++) {
+    const double *a = m->xyz + 3 * (size_t)bf->a[3 * i], *b = m->xyz + 3 * (size_t)bf->a[3 * i + 1],
+                 *cc = m->xyz + 3 * (size_t)bf->a[3 * i + 2];
+    double u[3], w[3], n[3];
+    for (int k = 0; k < 3; k++) {
+      u[k] = b[k] - a[k];
+      w[k] = cc[k] - a[k];
+    }
+    n[0] = u[1] * w[2] - u[2] * w[1];
+    n[1] = u[2] * w[0] - u[0] * w[2];
+    n[2] = u[0] * w[1] - u[1] * w[0];
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int k = 0; k < 3 && len > 0; k++)
+      dir[k] += n[k] / len;
+  }
+  for (size_t i = 0; i < 3 * nf; i++)
+    for (int k = 0; k < 3; k++) {
+      double d = fabs(m->xyz[3 * (size_t)bf->a[i] + k] - p0[k]);
+      dir[3] = d > dir[3] ? d : dir[3];
+    }
+  if (!find_q(m, bf, star, p0, g, dir, dbl, q))
+    return TR_OK;
+  tr_u32buf nv = {0};
+  tr_status st = TR_OK;
+  for (size_t j = 0; j < nf && st == TR_OK; j++) {
+    for (int k = 0; k < 3 && st == TR_OK; k++)
+      st = tr_u32buf_push(&nv, bf->a[3 * j + k]);
+    if (st == TR_OK)
+      st = tr_u32buf_push(&nv, p);
+  }
+  if (st == TR_OK) {
+    /* p's exact point becomes q: the cone is positive for q, so for p from now on */
+    tr_qpoint_set_d(m->vq[p], q);
+    memcpy(m->xyz + 3 * (size_t)p, q, sizeof q);
+    st = commit(c, star, nv.a, (uint32_t)(nv.n / 4), old, merged, region);
+    if (st == TR_OK)
+      *done = 2;
+  }
+  tr_u32buf_free(&nv);
+  return st;
+}
+
 tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
 {
   struct tr_mesh *m = c->m;
   *done = 0;
   if (p >= m->nv || m->v2t[p] == TR_NONE)
     return TR_OK;
-  tr_u32buf old = {0}, star = {0}, merged = {0}, bf = {0}, nv = {0}, verts = {0};
+  tr_u32buf old = {0}, star = {0}, merged = {0}, bf = {0};
   tr_status st = sup_faces_of(c, p, &old);
   uint32_t region = 0;
   int ok = 0, edge = 0;
@@ -284,90 +429,17 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
   }
   if (st != TR_OK)
     goto done;
-  size_t nf = bf.n / 3;
-  if (flags & TR_SUP_REMOVE) {
-    /* candidate apexes: the boundary's vertices in increasing id */
-    for (size_t i = 0; i < bf.n && st == TR_OK; i++)
-      st = tr_u32buf_push(&verts, bf.a[i]);
-    if (st != TR_OK)
-      goto done;
-    qsort(verts.a, verts.n, sizeof *verts.a, cmp_u32);
-    for (size_t i = 0; i < verts.n; i++) {
-      uint32_t v = verts.a[i];
-      if (i && verts.a[i - 1] == v)
-        continue;
-      if (!sees_all(m, bf.a, nf, v, NULL))
-        continue;
-      nv.n = 0;
-      for (size_t j = 0; j < nf && st == TR_OK; j++) {
-        const uint32_t *g = bf.a + 3 * j;
-        if (g[0] == v || g[1] == v || g[2] == v)
-          continue;
-        for (int k = 0; k < 3 && st == TR_OK; k++)
-          st = tr_u32buf_push(&nv, g[k]);
-        if (st == TR_OK)
-          st = tr_u32buf_push(&nv, v);
-      }
-      if (st == TR_OK)
-        st = commit(c, &star, nv.a, (uint32_t)(nv.n / 4), &old, &merged, region);
-      if (st == TR_OK) {
-        m->v2t[p] = TR_NONE;
-        *done = 1;
-      }
-      goto done;
-    }
-  }
-  if (flags & TR_SUP_RELOCATE) {
-    /* candidates: from the centroid g of the link's vertices halfway towards p's double
-     * again and again, then projections into the kernel (relax), then the centroids of
-     * the star's tets (all doubles) */
-    double g[3] = {0, 0, 0}, q[3];
-    const double *p0 = m->xyz + 3 * (size_t)p;
-    for (size_t i = 0; i < star.n * 3; i++)
-      for (int k = 0; k < 3; k++)
-        g[k] += m->xyz[3 * (size_t)bf.a[i] + k];
-    for (int k = 0; k < 3; k++)
-      g[k] /= (double)(star.n * 3);
-    int found = 0;
-    double s = 1.0;
-    for (int j = 0; j < 40 && !found; j++, s *= 0.5) {
-      for (int k = 0; k < 3; k++)
-        q[k] = p0[k] + (g[k] - p0[k]) * s;
-      found = sees_all(m, bf.a, nf, TR_NONE, q);
-    }
-    for (int pass = 0; pass < 4 && !found; pass++)
-      found = relax(m, bf.a, nf, g, q, pass) && sees_all(m, bf.a, nf, TR_NONE, q);
-    for (size_t i = 0; i < star.n && !found; i++) {
-      const uint32_t *tv = m->tv + 4 * (size_t)star.a[i];
-      for (int k = 0; k < 3; k++)
-        q[k] = 0.25 * (m->xyz[3 * (size_t)tv[0] + k] + m->xyz[3 * (size_t)tv[1] + k] +
-                       m->xyz[3 * (size_t)tv[2] + k] + m->xyz[3 * (size_t)tv[3] + k]);
-      found = sees_all(m, bf.a, nf, TR_NONE, q);
-    }
-    if (!found)
-      goto done;
-    nv.n = 0;
-    for (size_t j = 0; j < nf && st == TR_OK; j++) {
-      for (int k = 0; k < 3 && st == TR_OK; k++)
-        st = tr_u32buf_push(&nv, bf.a[3 * j + k]);
-      if (st == TR_OK)
-        st = tr_u32buf_push(&nv, p);
-    }
-    if (st != TR_OK)
-      goto done;
-    /* p's exact point becomes q: the cone is positive for q, so for p from now on */
-    tr_qpoint_set_d(m->vq[p], q);
-    memcpy(m->xyz + 3 * (size_t)p, q, sizeof q);
-    st = commit(c, &star, nv.a, (uint32_t)(nv.n / 4), &old, &merged, region);
-    if (st == TR_OK)
-      *done = 2;
+  /* exact and in doubles first; under --keep-surface, exact only as a last try */
+  for (int dbl = 1; dbl >= (flags & TR_SUP_REQUIRE ? 0 : 1) && !*done && st == TR_OK; dbl--) {
+    if (flags & TR_SUP_REMOVE)
+      st = try_remove(c, p, &star, &bf, &old, &merged, region, dbl, done);
+    if (st == TR_OK && !*done && (flags & TR_SUP_RELOCATE))
+      st = try_relocate(c, p, &star, &bf, &old, &merged, region, dbl, done);
   }
 done:
   tr_u32buf_free(&old);
   tr_u32buf_free(&star);
   tr_u32buf_free(&merged);
   tr_u32buf_free(&bf);
-  tr_u32buf_free(&nv);
-  tr_u32buf_free(&verts);
   return st;
 }

@@ -238,7 +238,7 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
           if (!steiner(m, p) || m->v2t[p] == TR_NONE)
             continue;
           int done = 0;
-          st = sup_point(&c, p, rounds[r], &done);
+          st = sup_point(&c, p, rounds[r] | (flags & TR_SUP_REQUIRE), &done);
           if (done == 1)
             out->removed++;
           else if (done == 2)

@@ -14,9 +14,16 @@
  *      incident to it strictly positively (exact orient3d of each new tet) replaces the
  *      star by its cone: p disappears.
  *   3. relocation (if allowed): a double point q that sees every boundary face strictly
- *      positively (candidates between p and the centroid of its link, and the star tets'
- *      centroids, each checked exactly) replaces p: p becomes an interior Steiner point
- *      whose coordinates are doubles, so rounding never moves it.
+ *      positively replaces p: p becomes an interior Steiner point whose coordinates are
+ *      doubles, so rounding never moves it. Candidates, each checked exactly: p moved
+ *      along the sum of the merged triangles' inner normals by steps halving down to
+ *      p's resolution (for a step small enough this is in the kernel, since p sees every
+ *      link face strictly and the sum points into each surface plane's inner side),
+ *      points between p and the centroid of its link, projections into the kernel
+ *      (relax), the star tets' centroids.
+ * New tets must also be positive with every Steiner point at its nearest double (what
+ * rounding can repair is the vertices' rounding, not the shape); under --keep-surface a
+ * last try asks only the exact test and leaves the rest to the rounding repair.
  * Otherwise p stays. No tolerance decides anything.
  *
  * The outer tets are taken out of the working mesh first (their faces on the domain side
