@@ -19,7 +19,6 @@
 #include "output/round.h"
 #include "pipeline.h"
 #include "smooth/smooth.h"
-#include "suppress/suppress.h"
 
 static tr_status copy_plc(const tr_plc *in, tr_plc **out)
 {
