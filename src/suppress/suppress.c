@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mesh/check.h"
+#include "mesh/conform.h"
 #include "suppress_int.h"
 
 tr_status sup_add(sup_ctx *c, uint32_t a, uint32_t b, uint32_t cc, uint32_t tri)
@@ -244,6 +246,17 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
           else if (done == 2)
             out->relocated++;
           changed |= done != 0;
+          if (st == TR_OK && done && (flags & TR_SUP_CHECK)) {
+            st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, NULL);
+            if (st == TR_OK)
+              st = tr_check_conformity(m, plc, NULL, 0);
+            if (st != TR_OK) {
+              char why[512]; /* tr_last_error's buffer is the one tr_error writes */
+              snprintf(why, sizeof why, "%s", tr_last_error());
+              st = tr_error(st, "after %s Steiner point %u: %s",
+                            done == 1 ? "removing" : "relocating", p, why);
+            }
+          }
         }
         if (rounds[r] != TR_SUP_REMOVE)
           break; /* a relocated point is off the boundary: one pass is enough */

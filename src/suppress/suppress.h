@@ -45,7 +45,9 @@
 enum {
   TR_SUP_REMOVE = 1u << 0,   /* try full removal */
   TR_SUP_RELOCATE = 1u << 1, /* try relocation into the interior */
-  TR_SUP_REQUIRE = 1u << 2   /* every boundary Steiner point must go (--keep-surface) */
+  TR_SUP_REQUIRE = 1u << 2,  /* every boundary Steiner point must go (--keep-surface) */
+  TR_SUP_CHECK = 1u << 3     /* tests: the mesh validator and the exact conformity
+                                validator after every change (closed PLCs only) */
 };
 /* What the default mode runs. On CGAL's 84 sample models recovery adds 4,434 Steiner
  * points, all on input edges; full removal alone leaves 1,797 (on edges); removal, then

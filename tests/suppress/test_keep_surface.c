@@ -5,6 +5,9 @@
  *            the Steiner counts by location add up to the Steiner points in the mesh;
  *   keep:    the same, and its boundary faces are exactly the input triangles with no
  *            Steiner point on them (tests/suppress/keepcheck.h);
+ *   steps:   the stages run one by one up to outer removal, then the suppression with
+ *            the validators after every removal or relocation (TR_SUP_CHECK), in the
+ *            --keep-surface mode;
  *   refused: keep_surface fails with TR_ERR_UNSUPPORTED and a message naming the point
  *            and the input edge or facet, and writes no mesh. */
 #include <gmp.h>
@@ -16,7 +19,10 @@
 #include "input/validate.h"
 #include "mesh/check.h"
 #include "mesh/conform.h"
+#include "delaunay/delaunay.h"
+#include "outer/color.h"
 #include "pipeline/pipeline.h"
+#include "suppress/suppress.h"
 
 #include "../hard/hard_cases.h"
 #include "../pipeline/texpect.h"
@@ -84,14 +90,53 @@ static void run(const char *name, tr_plc *plc, double vol6, int ball, const char
   tr_plc_destroy(used);
 }
 
+/* Delaunay, recovery and outer removal as tr_mesh_plc runs them (no smoothing), then the
+ * suppression with every change validated. */
+static void steps(const char *name, tr_plc *plc)
+{
+  tr_status s = tr_plc_validate(plc, NULL);
+  EXPECT(s == TR_OK, "%s: validate: %s", name, tr_last_error());
+  uint32_t *edges = NULL, ne = 0, nopen = 0, nmulti = 0, nreg = 0;
+  struct tr_mesh *m = NULL;
+  tr_subfaces sub;
+  memset(&sub, 0, sizeof sub);
+  tr_stats st;
+  memset(&st, 0, sizeof st);
+  double secs[2];
+  if (s == TR_OK)
+    s = tr_pipeline_edges(plc, &edges, &ne, &nopen, &nmulti);
+  EXPECT(s == TR_OK && nopen == 0 && nmulti == 0, "%s: not a closed manifold", name);
+  if (s == TR_OK)
+    s = tr_delaunay_build(plc->xyz, plc->npoints, &m);
+  if (s == TR_OK)
+    s = tr_pipeline_recover(m, plc, edges, ne, &sub, &st, secs);
+  if (s == TR_OK)
+    s = tr_outer_color(m, &sub, 0, NULL, &nreg);
+  EXPECT(s == TR_OK, "%s: stages: %s", name, tr_last_error());
+  tr_suppress_stats ss;
+  memset(&ss, 0, sizeof ss);
+  if (s == TR_OK) {
+    s = tr_suppress_steiner(m, &sub, plc, TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_REQUIRE |
+                                              TR_SUP_CHECK, &ss);
+    EXPECT(s == TR_OK, "%s: suppression: %s", name, tr_last_error());
+  }
+  EXPECT(ss.removed + ss.relocated > 0, "%s: nothing to suppress: a test of nothing", name);
+  fprintf(stderr, "%s (steps): %llu removed, %llu relocated, each change validated\n", name,
+          (unsigned long long)ss.removed, (unsigned long long)ss.relocated);
+  tr_pipeline_subfaces_free(&sub);
+  free(edges);
+  tr_mesh_destroy(m);
+}
+
 int main(int argc, char **argv)
 {
   if (argc != 3) {
-    fprintf(stderr, "usage: %s CASE|FILE.off default|keep|refused\n", argv[0]);
+    fprintf(stderr, "usage: %s CASE|FILE.off default|keep|refused|steps\n", argv[0]);
     return 2;
   }
   const char *name = argv[1], *mode = argv[2];
-  if (strcmp(mode, "default") && strcmp(mode, "keep") && strcmp(mode, "refused")) {
+  if (strcmp(mode, "default") && strcmp(mode, "keep") && strcmp(mode, "refused") &&
+      strcmp(mode, "steps")) {
     fprintf(stderr, "unknown mode '%s'\n", mode);
     return 2;
   }
@@ -100,7 +145,9 @@ int main(int argc, char **argv)
     tr_plc *p = NULL;
     tr_status s = tr_plc_read(name, &p);
     EXPECT(s == TR_OK, "%s: %s", name, tr_last_error());
-    if (s == TR_OK)
+    if (s == TR_OK && !strcmp(mode, "steps"))
+      steps(name, p);
+    else if (s == TR_OK)
       run(name, p, 0, 1, mode);
     tr_plc_destroy(p);
     return failures != 0;
@@ -117,7 +164,9 @@ int main(int argc, char **argv)
       s = tr_plc_set(p, c.xyz, c.np, c.tris, c.nt, NULL);
     EXPECT(s == TR_OK && c.status == TR_OK && !c.allow_open,
            "%s: not a valid closed case for this test", name);
-    if (s == TR_OK && c.status == TR_OK && !c.allow_open)
+    if (s == TR_OK && c.status == TR_OK && !c.allow_open && !strcmp(mode, "steps"))
+      steps(name, p);
+    else if (s == TR_OK && c.status == TR_OK && !c.allow_open)
       run(name, p, c.vol6, c.ball, mode);
     tr_plc_destroy(p);
     hard_case_free(&c);
