@@ -206,9 +206,9 @@ static tr_status star_of(sup_ctx *c, uint32_t p, const tr_u32buf *old, tr_u32buf
 
 /* A point inside the kernel of the faces by projections in doubles (Agmon-Motzkin): from
  * g, move onto the half-space d_i >= tau of the face the point violates most, until it
- * is at least tau inside every face, for margins tau shrinking from a fraction of the
- * star's size. Only a candidate: the caller checks it exactly. */
-static int relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const double g[3],
+ * is at least tau inside every face or 400 steps are taken, for margins tau shrinking
+ * from a fraction of the star's size. Only a candidate: the caller checks it exactly. */
+static void relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const double g[3],
                  double q[3], int pass)
 {
   double lo[3], hi[3], L = 0;
@@ -251,11 +251,10 @@ static int relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const do
       }
     }
     if (!found || worst >= tau)
-      return found;
+      return;
     for (int k = 0; k < 3; k++)
       q[k] += (tau - worst) * wn[k];
   }
-  return 0;
 }
 
 /* A double point that sees every face of bf strictly (sees_all): from p's double p0
@@ -285,9 +284,11 @@ static int find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf 
       return 1;
   }
   /* a relaxed point that has not reached its margin may still see every face */
-  for (int pass = 0; pass < 6; pass++)
-    if (relax(m, bf->a, nf, g, q, pass) >= 0 && sees_all(m, bf->a, nf, TR_NONE, q, dbl))
+  for (int pass = 0; pass < 6; pass++) {
+    relax(m, bf->a, nf, g, q, pass);
+    if (sees_all(m, bf->a, nf, TR_NONE, q, dbl))
       return 1;
+  }
   for (size_t i = 0; i < star->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)star->a[i];
     for (int k = 0; k < 3; k++)
@@ -409,9 +410,12 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
   tr_status st = sup_faces_of(c, p, &old);
   uint32_t region = 0;
   int ok = 0, edge = 0;
-  if (st == TR_OK && old.n)
+  /* an interior point (no sub-face on it) only with TR_SUP_INTERIOR, and not where it
+   * could lie on an input segment */
+  int inner = old.n == 0;
+  if (st == TR_OK && (!inner || ((flags & TR_SUP_INTERIOR) && c->plc->nsegs == 0)))
     st = star_of(c, p, &old, &star, &region, &ok);
-  if (st == TR_OK && ok)
+  if (st == TR_OK && ok && !inner)
     st = sup_unsplit(c, p, &old, &merged, &edge, &ok);
   if (st != TR_OK || !ok)
     goto done;
@@ -433,7 +437,7 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
   for (int dbl = 1; dbl >= (flags & TR_SUP_REQUIRE ? 0 : 1) && !*done && st == TR_OK; dbl--) {
     if (flags & TR_SUP_REMOVE)
       st = try_remove(c, p, &star, &bf, &old, &merged, region, dbl, done);
-    if (st == TR_OK && !*done && (flags & TR_SUP_RELOCATE))
+    if (st == TR_OK && !*done && !inner && (flags & TR_SUP_RELOCATE))
       st = try_relocate(c, p, &star, &bf, &old, &merged, region, dbl, done);
   }
 done:

@@ -223,13 +223,15 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
   int any = 0;
   for (uint32_t p = 0; p < m->nv && st == TR_OK && !any && m->vq; p++)
     if (steiner(m, p) && (st = sup_faces_of(&c, p, &f)) == TR_OK)
-      any = f.n > 0;
+      any = f.n > 0 || (flags & TR_SUP_INTERIOR);
   unsigned act = flags & (TR_SUP_REMOVE | TR_SUP_RELOCATE);
+  /* the interior points are counted among those to look at only when asked */
   if (st == TR_OK && any && act) {
     detach_outer(m);
     /* removal first, to a fixed point (a removal can free a neighbour on the same edge);
-     * then relocation of what is left; then removal again */
-    unsigned rounds[3] = {TR_SUP_REMOVE, act, TR_SUP_REMOVE};
+     * then relocation of what is left; then removal again, of interior points too if
+     * asked */
+    unsigned rounds[3] = {TR_SUP_REMOVE, act, TR_SUP_REMOVE | (flags & TR_SUP_INTERIOR)};
     for (int r = 0; r < 3 && st == TR_OK; r++) {
       if (!(rounds[r] & act))
         continue;

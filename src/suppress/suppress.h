@@ -46,14 +46,16 @@ enum {
   TR_SUP_REMOVE = 1u << 0,   /* try full removal */
   TR_SUP_RELOCATE = 1u << 1, /* try relocation into the interior */
   TR_SUP_REQUIRE = 1u << 2,  /* every boundary Steiner point must go (--keep-surface) */
-  TR_SUP_CHECK = 1u << 3     /* tests: the mesh validator and the exact conformity
+  TR_SUP_CHECK = 1u << 3,    /* tests: the mesh validator and the exact conformity
                                 validator after every change (closed PLCs only) */
+  TR_SUP_INTERIOR = 1u << 4  /* full removal of interior Steiner points too (those the
+                                recovery put inside and those relocated), last round */
 };
 /* What the default mode runs. On CGAL's 84 sample models recovery adds 4,434 Steiner
  * points, all on input edges; full removal alone leaves 1,797 (on edges); removal, then
  * relocation of the rest, then removal again leaves 1,355, of which 19 on the surface:
  * fewer points in all and far fewer on the surface, so the default does both. */
-#define TR_SUP_DEFAULT (TR_SUP_REMOVE | TR_SUP_RELOCATE)
+#define TR_SUP_DEFAULT (TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_INTERIOR)
 
 typedef struct tr_suppress_stats {
   uint64_t on_edges, on_facets, interior; /* Steiner points left, by where they lie */

@@ -116,8 +116,9 @@ static void steps(const char *name, tr_plc *plc)
   tr_suppress_stats ss;
   memset(&ss, 0, sizeof ss);
   if (s == TR_OK) {
-    s = tr_suppress_steiner(m, &sub, plc, TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_REQUIRE |
-                                              TR_SUP_CHECK, &ss);
+    unsigned flags = TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_INTERIOR | TR_SUP_REQUIRE |
+                     TR_SUP_CHECK;
+    s = tr_suppress_steiner(m, &sub, plc, flags, &ss);
     EXPECT(s == TR_OK, "%s: suppression: %s", name, tr_last_error());
   }
   EXPECT(ss.removed + ss.relocated > 0, "%s: nothing to suppress: a test of nothing", name);
