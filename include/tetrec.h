@@ -178,6 +178,9 @@ typedef struct tr_options {
                       splits, Lawson flips, hub splits or cavity retriangulation); 2 the
                       default without the general flips for facets, so missing facets go
                       from Swap32 straight to cavity retriangulation (for comparisons) */
+  int keep_surface;      /* no Steiner point on the surface: the output's boundary faces
+                            are exactly the input triangles, or the call fails naming the
+                            point (TetGen's -Y; implies no smoothing; default 0) */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
@@ -196,6 +199,10 @@ typedef struct tr_stats {
   double stage_seconds[TR_STAGE_COUNT]; /* wall-clock time of each stage (enum tr_stage) */
   uint64_t facets_recovered_by_cavity; /* missing facets recovered by cavity
                                           retriangulation, without Steiner points */
+  /* Steiner points in the output by where they lie, and the boundary ones taken off the
+   * surface after recovery (src/suppress): removed, or relocated into the interior */
+  uint64_t steiner_on_edges, steiner_on_facets, steiner_interior;
+  uint64_t steiner_removed, steiner_relocated;
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

@@ -50,6 +50,10 @@
 #                 not even the enclosed volume, so the validator rejects such meshes;
 #                 -p181Q makes every input edge a segment, i.e. the problem tetrec solves.
 #                 Results of other flags go to BUILD/bench-peer<FLAGS>/.
+#   TETGEN=path   the tetgen binary (default: tetgen on PATH), e.g. a TetGen 1.6 build;
+#                 its version line in machine.txt is then the binary's path
+#   TR_FLAGS=...  extra tetrec switches (e.g. --keep-surface, to compare with -pQY);
+#                 results go to BUILD/bench-peer<TG_FLAGS><TR_FLAGS>/
 # Output: stdout, BUILD/bench-peer/table.txt and BUILD/bench-peer/results.csv; logs of
 # every process under BUILD/bench-peer/work/MODEL/.
 set -euo pipefail
@@ -60,6 +64,7 @@ TIMEOUT=${TIMEOUT:-120}
 MEM_MB=${MEM_MB:-8192}
 ONLY=${ONLY:-}
 TG_FLAGS=${TG_FLAGS:--pQ}
+TR_FLAGS=${TR_FLAGS:-}
 KEEP=${KEEP:-0}
 
 if [ ! -f "$BUILD/build.ninja" ]; then
@@ -71,11 +76,13 @@ if [ "${NOBUILD:-0}" != 1 ]; then
 fi
 TR=$BUILD/src/cli/tetrec
 RUN=$BUILD/bench/peer/peer_run
-TG=$(command -v tetgen || true)
-[ -n "$TG" ] || { echo "tetgen not found (apt-get install tetgen; see scripts/setup.sh)"; exit 1; }
+TG=${TETGEN:-$(command -v tetgen || true)}
+[ -n "$TG" ] && [ -x "$TG" ] || { echo "tetgen not found (apt-get install tetgen; see scripts/setup.sh, or TETGEN=path)"; exit 1; }
+TG_VERSION=$(dpkg-query -W -f='${Version}' tetgen 2>/dev/null || echo '(version unknown)')
+[ -z "${TETGEN:-}" ] || TG_VERSION="at $TG"
 
 OUT=$BUILD/bench-peer
-[ "$TG_FLAGS" = -pQ ] || OUT=$BUILD/bench-peer$TG_FLAGS
+[ "$TG_FLAGS" = -pQ ] && [ -z "$TR_FLAGS" ] || OUT=$BUILD/bench-peer$TG_FLAGS${TR_FLAGS// /}
 [ -z "$ONLY" ] || OUT=$OUT-only # a subset never overwrites the whole run's results
 WORK=$OUT/work
 mkdir -p "$OUT" "$WORK"
@@ -127,7 +134,7 @@ for n in "${notes[@]}"; do echo "$n" >>"$NOTES"; done
 run_tetrec() {
   local line
   line=$("$RUN" "$TIMEOUT" "$MEM_MB" "$w/tetrec.out" "$w/tetrec.err" \
-         "$TR" mesh "$model" -o "$w/tetrec.node" --stats "$w/tetrec.json")
+         "$TR" mesh "$model" -o "$w/tetrec.node" --stats "$w/tetrec.json" $TR_FLAGS)
   tr_status=$(rec status "$line"); tr_wall=$(rec wall "$line"); tr_rss=$(rec rss_kb "$line")
   tr_cpu=$(awk -v u="$(rec user "$line")" -v s="$(rec sys "$line")" 'BEGIN{printf "%.3f", u+s}')
 }
@@ -178,7 +185,7 @@ polygons() {
        END { print p + 0 }' "$1"
 }
 
-echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); timeout ${TIMEOUT}s, limit ${MEM_MB} MB; tetgen $(dpkg-query -W -f='${Version}' tetgen 2>/dev/null || echo '(version unknown)') $TG_FLAGS; tetrec $("$TR" --version | cut -d' ' -f2)" >"$OUT/machine.txt"
+echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); timeout ${TIMEOUT}s, limit ${MEM_MB} MB; tetgen $TG_VERSION $TG_FLAGS; tetrec $("$TR" --version | cut -d' ' -f2) $TR_FLAGS" >"$OUT/machine.txt"
 idx=0
 for m in "${models[@]}"; do
   src=${m%%:*}

@@ -40,6 +40,12 @@ static const char usage[] =
     "  --allow-open      accept open or non-manifold surfaces\n"
     "  --check-only      only read and validate the input (mesh)\n"
     "  --no-smooth       no surface diagonal swaps before recovery\n"
+    "  --keep-surface, -Y  no Steiner point on the surface: the boundary faces of the\n"
+    "                    output are exactly the input triangles (no smoothing either);\n"
+    "                    fails naming the point where this cannot be done\n"
+    "  --keep-steiner    leave the recovery's Steiner points where they are (by default\n"
+    "                    the ones on the surface are removed or moved inside where\n"
+    "                    that can be done exactly)\n"
     "  --round-budget N  star checks the rounding repair may spend before it gives up\n"
     "                    (exit 9; default 2000000)\n"
     "  --recovery MODE   default: every recovery step; paper: the published algorithm\n"
@@ -57,7 +63,7 @@ static const char usage[] =
 
 typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
-  int quiet, verbose, exact, allow_open, check_only, no_smooth;
+  int quiet, verbose, exact, allow_open, check_only, no_smooth, keep_surface, keep_steiner;
   uint64_t round_budget; /* 0: the default */
   int recovery;          /* tr_options.recovery */
 } args;
@@ -128,6 +134,10 @@ static int parse_args(int argc, char **argv, args *a)
       a->check_only = 1;
     else if (!strcmp(s, "--no-smooth"))
       a->no_smooth = 1;
+    else if (!strcmp(s, "--keep-surface") || !strcmp(s, "-Y"))
+      a->keep_surface = 1;
+    else if (!strcmp(s, "--keep-steiner"))
+      a->keep_steiner = 1;
     else if (!strcmp(s, "--round-budget")) {
       /* digits only, 1 .. 10^15: strtoull alone would take "-1", "+5" and " 7" */
       const char *v = i + 1 < argc ? argv[++i] : "";
@@ -204,6 +214,7 @@ static int cmd_mesh(const args *a)
   opt.verbose = a->quiet ? 0 : a->verbose ? 2 : 1;
   opt.round_budget = a->round_budget;
   opt.recovery = a->recovery;
+  opt.keep_surface = a->keep_surface;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();
@@ -247,6 +258,8 @@ static int cmd_mesh(const args *a)
                                             tr_io_has_ext(dest, ".mesh")))
                        ? TR_PIPE_KEEP_EXACT
                        : 0;
+  if (a->keep_steiner)
+    flags |= TR_PIPE_KEEP_STEINER;
   s = tr_mesh_plc_flags(plc, &opt, &mesh, &stats, NULL, flags);
   tr_plc_destroy(plc);
   if (s != TR_OK)
@@ -265,7 +278,17 @@ static int cmd_mesh(const args *a)
   if (s == TR_OK && !a->quiet)
     fprintf(stderr, "tetrec: %s: %u vertices, %u tetrahedra, %llu Steiner points\n", path,
             tr_mesh_num_vertices(mesh), tr_mesh_num_tets(mesh),
-            (unsigned long long)(stats.points_added_for_edges + stats.points_added_for_facets));
+            (unsigned long long)(stats.steiner_on_edges + stats.steiner_on_facets +
+                                 stats.steiner_interior));
+  if (s == TR_OK && !a->quiet && a->verbose)
+    fprintf(stderr,
+            "tetrec: Steiner points: %llu on input edges, %llu on input facets, %llu inside; "
+            "%llu removed and %llu moved inside after recovery\n",
+            (unsigned long long)stats.steiner_on_edges,
+            (unsigned long long)stats.steiner_on_facets,
+            (unsigned long long)stats.steiner_interior,
+            (unsigned long long)stats.steiner_removed,
+            (unsigned long long)stats.steiner_relocated);
   tr_mesh_destroy(mesh);
   free(out);
   if (s != TR_OK)

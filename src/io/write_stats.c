@@ -32,8 +32,14 @@ tr_status tr_stats_write_json(const tr_stats *s, const char *path)
   /* one key per stage, named as `tetrec -v` prints them (tr_stage_name) */
   for (int k = 0; k < TR_STAGE_COUNT; k++)
     fprintf(f, "%s\n    \"%s\": %.6f", k ? "," : "", tr_stage_name(k), s->stage_seconds[k]);
-  fprintf(f, "\n  },\n  \"facets_recovered_by_cavity\": %llu\n}\n",
-          (unsigned long long)s->facets_recovered_by_cavity);
+  fprintf(f, "\n  },\n  \"facets_recovered_by_cavity\": %llu,\n"
+          "  \"steiner_on_edges\": %llu,\n  \"steiner_on_facets\": %llu,\n"
+          "  \"steiner_interior\": %llu,\n  \"steiner_removed\": %llu,\n"
+          "  \"steiner_relocated\": %llu\n}\n",
+          (unsigned long long)s->facets_recovered_by_cavity,
+          (unsigned long long)s->steiner_on_edges, (unsigned long long)s->steiner_on_facets,
+          (unsigned long long)s->steiner_interior, (unsigned long long)s->steiner_removed,
+          (unsigned long long)s->steiner_relocated);
   int bad = ferror(f);
   if (fclose(f) != 0 || bad)
     return tr_error(TR_ERR_IO, "%s: write failed", path);

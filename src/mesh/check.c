@@ -160,7 +160,9 @@ static tr_status check_incidence(const struct tr_mesh *m, unsigned what)
                    m->v2t[v], e - b);
       break;
     }
-    if ((what & TR_CHK_V2T) && m->dup_map) {
+    /* input points only: a Steiner point removed after recovery (src/suppress) is in no
+     * tet and keeps its slot */
+    if ((what & TR_CHK_V2T) && m->dup_map && !(m->vq && m->vq[v])) {
       int kept = m->dup_map[v] == v;
       if (kept != (e > b)) {
         s = tr_error(TR_ERR_INVALID_MESH,

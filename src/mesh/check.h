@@ -20,7 +20,7 @@ enum {
   /* every real tet strictly positive (exact); ghosts have TR_GHOST only in slot 3 */
   TR_CHK_ORIENT = 1u << 1,
   /* v2t[v] is a live tet containing v for every used vertex; with a dup_map, every kept
-   * vertex is used and every dropped one is unused; each face in at most two tets */
+   * input point is used and every dropped one is unused; each face in at most two tets */
   TR_CHK_V2T = 1u << 2,
   /* V - E + F - T == 1 over the real tets (a triangulated ball) */
   TR_CHK_EULER = 1u << 3,

@@ -26,10 +26,11 @@ static tr_status attach(struct tr_mesh *o, const struct tr_mesh *m, const uint32
   tr_status st = n ? tr_mesh_find_faces(m, sub->v, n, tet) : TR_OK;
   for (uint32_t f = 0; f < n && st == TR_OK; f++) {
     uint32_t t = tet[f];
+    /* In no tet: the suppression stage (src/suppress) frees the outer tets, so a facet
+     * between two cavities is no mesh face at all; it is written by no kept tet either. */
     if (t == TR_NONE) {
-      st = tr_error(TR_ERR_INTERNAL, "sub-face %u of input triangle %u is not a mesh face",
-                    f, sub->tri[f]);
-      break;
+      tet[f] = 0;
+      continue;
     }
     int k = tr_fcode(m, t, sub->v[3 * (size_t)f], sub->v[3 * (size_t)f + 1],
                      sub->v[3 * (size_t)f + 2]);

@@ -68,6 +68,32 @@ static void read_options(const tr_options *in, tr_options *opt)
       st = tr_pipeline_progress(&opt, (stage), (fraction));       \
   } while (0)
 
+/* tr_pipeline_suppress, and the origins (vkind, from the recovery) of the boundary Steiner
+ * points it relocated set to interior. A point on an input edge or triangle is a vertex of
+ * that triangle's sub-faces (they tile it); a relocated point is a vertex of none after
+ * (removed ones are in no tet and compaction drops them). */
+static tr_status suppress(struct tr_mesh *m, tr_subfaces *sub, const tr_plc *p,
+                          const tr_options *opt, int keep_hull, unsigned flags,
+                          tr_stats *stats, uint8_t *vkind)
+{
+  uint32_t nv = m->nv;
+  uint8_t *on = vkind ? calloc(nv ? nv : 1, 1) : NULL;
+  if (vkind && !on)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u vertex marks", nv);
+  for (size_t i = 0; on && i < 3 * (size_t)sub->n; i++)
+    on[sub->v[i]] = 1;
+  tr_status st = tr_pipeline_suppress(m, sub, p, opt, keep_hull, flags, stats);
+  if (st == TR_OK && on) {
+    for (size_t i = 0; i < 3 * (size_t)sub->n; i++)
+      on[sub->v[i]] |= 2;
+    for (uint32_t v = p->npoints; v < nv; v++)
+      if (on[v] == 1)
+        vkind[v] = TR_VERTEX_INTERIOR;
+  }
+  free(on);
+  return st;
+}
+
 tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh **out,
                             tr_stats *statsout, tr_plc **used, unsigned flags)
 {
@@ -120,7 +146,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     stats->surface_facets = p->ntris;
   }
   double t1 = tr_pipeline_now();
-  if (opt.smooth) {
+  /* --keep-surface: the input triangles are the output's faces, so no diagonal swaps */
+  if (opt.smooth && !opt.keep_surface) {
     PROGRESS(TR_STAGE_SMOOTH, 0);
     if (st == TR_OK)
       st = tr_smooth_surface(p, &stats->surface_swaps);
@@ -164,6 +191,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = tr_outer_color(m, &sub, keep_hull, sides, &nreg);
   free(sides);
   sides = NULL;
+  if (st == TR_OK)
+    st = suppress(m, &sub, p, &opt, keep_hull, flags, stats, vkind);
   PROGRESS(TR_STAGE_COLOR, 1);
   double t5 = tr_pipeline_now();
   stage[TR_STAGE_COLOR] = t5 - t4;

@@ -31,7 +31,9 @@ tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *opt, tr_mesh **out
  * there is no repair: the doubles are the nearest ones, and when that leaves a tet flat
  * or inverted a warning is printed (the exact points are valid). */
 enum {
-  TR_PIPE_KEEP_EXACT = 1u << 0 /* the caller writes exact coordinates (--exact .node) */
+  TR_PIPE_KEEP_EXACT = 1u << 0, /* the caller writes exact coordinates (--exact .node) */
+  TR_PIPE_KEEP_STEINER = 1u << 1 /* the recovery's Steiner points as they are, no
+                                    suppression (src/suppress; --keep-steiner) */
 };
 tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *opt, tr_mesh **out,
                             tr_stats *stats, tr_plc **used, unsigned flags);
@@ -82,6 +84,13 @@ typedef struct tr_compact_in {
  * points are moved out of m. */
 tr_status tr_pipeline_compact(struct tr_mesh *m, const tr_compact_in *in,
                               struct tr_mesh **out);
+
+/* Boundary Steiner points taken off the surface after outer removal (src/suppress) unless
+ * flags has TR_PIPE_KEEP_STEINER, the Steiner counts by location into stats; under
+ * opt->keep_surface every one must go. */
+tr_status tr_pipeline_suppress(struct tr_mesh *m, tr_subfaces *sub, const struct tr_plc *plc,
+                               const tr_options *opt, int keep_hull, unsigned flags,
+                               tr_stats *stats);
 
 /* Monotonic clock in seconds. */
 double tr_pipeline_now(void);

@@ -1,0 +1,39 @@
+/* Internals shared by the files of the suppression stage (suppress.h). */
+#ifndef TR_SUPPRESS_INT_H
+#define TR_SUPPRESS_INT_H
+
+#include "suppress.h"
+
+/* The working copy of the sub-faces with, for each vertex, the list of sub-faces on it
+ * (linked nodes, so merged triangles can be added as points go). A dead sub-face has
+ * tri == TR_NONE. */
+typedef struct sup_ctx {
+  struct tr_mesh *m;
+  const tr_plc *plc;
+  uint32_t n, cap;
+  uint32_t *v, *tri;           /* 3 * cap, cap */
+  uint32_t nv;                 /* vertices covered by head */
+  uint32_t *head;              /* nv: first node of the vertex's list, TR_NONE */
+  uint32_t nl, capl;
+  uint32_t *lnext, *lsub;      /* nodes: next node, sub-face */
+} sup_ctx;
+
+/* Appends sub-face (a,b,c) of input triangle tri and links it to its vertices. */
+tr_status sup_add(sup_ctx *c, uint32_t a, uint32_t b, uint32_t cc, uint32_t tri);
+/* The live sub-faces on vertex p (reset first). */
+tr_status sup_faces_of(const sup_ctx *c, uint32_t p, tr_u32buf *out);
+
+/* The un-split of p: for each input triangle, its fan around p retriangulated without p.
+ * old: the sub-faces on p (ids in c); merged: 4 per triangle (a,b,c,input triangle),
+ * oriented like the input triangle; *edge = 1 if p lies on an input edge (some fan is
+ * open), else p is inside one triangle. Returns 0 and leaves everything unchanged if p's
+ * fans are not simple (several triangles with closed fans, a fan that is not one chain,
+ * more than TR_SUP_MAX_POLY vertices): such points are left alone. */
+tr_status sup_unsplit(sup_ctx *c, uint32_t p, const tr_u32buf *old, tr_u32buf *merged,
+                      int *edge, int *ok);
+
+/* Tries to take p off the boundary: full removal (TR_SUP_REMOVE), then relocation
+ * (TR_SUP_RELOCATE). *done = 0 (p stays), 1 (removed) or 2 (relocated). */
+tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done);
+
+#endif
