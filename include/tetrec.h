@@ -63,6 +63,23 @@ uint32_t tr_plc_num_points(const tr_plc *plc);
 uint32_t tr_plc_num_triangles(const tr_plc *plc);
 const double *tr_plc_points(const tr_plc *plc);
 const uint32_t *tr_plc_triangles(const tr_plc *plc);
+/* Input segments: edges (pairs of point indices, 2*nsegs) that must appear in the mesh
+ * (appended to those already given; tr_plc_set drops them with the points). */
+tr_status tr_plc_add_segments(tr_plc *plc, const uint32_t *segs, uint32_t nsegs);
+/* A hole point: the cell of the domain that contains it (the space enclosed by the
+ * facets around it) is not meshed. It must lie strictly inside the domain, on no facet
+ * (else tr_mesh_plc fails naming it). A closed shell nested in another with a hole point
+ * inside it is a cavity even when it faces outward (see tr_plc_validate). */
+tr_status tr_plc_add_hole(tr_plc *plc, double x, double y, double z);
+/* A region point: every tet of the cell that contains it gets region id `attribute` in
+ * the output (cells without a region point keep tetrec's numbering 1..k by smallest
+ * tet). max_volume > 0 is a volume bound for refinement, which tetrec does not do yet:
+ * it is stored and warned about. A region point outside the domain or on a facet is an
+ * error. Hole and region points are kept by tr_plc_set. */
+tr_status tr_plc_add_region(tr_plc *plc, double x, double y, double z, int32_t attribute,
+                            double max_volume);
+uint32_t tr_plc_num_holes(const tr_plc *plc);
+uint32_t tr_plc_num_regions(const tr_plc *plc);
 
 /* ---- output: a tetrahedral mesh ---- */
 typedef struct tr_mesh tr_mesh;

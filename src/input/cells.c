@@ -18,9 +18,11 @@
  * replaced by another direction.
  *
  * Domain. The unbounded cell has depth 0; a cell's depth is the fewest triangles
- * crossed to reach it from infinity. Odd depth is inside the domain, even depth is
- * outside (a cavity is at depth 2), as tr_input_shell_cavities decides for closed
- * shells. A triangle between an inside and an outside cell is turned to face the
+ * crossed to reach it from infinity. Depth 1 is inside the domain. A deeper cell is
+ * inside iff most of the triangles between it and shallower cells face out of it (an
+ * inclusion, a region of its own, or a body inside a cavity) and outside iff most face
+ * into it (a cavity), as tr_input_shell_cavities decides for closed shells; on a tie,
+ * odd depth is inside and even depth outside (a cavity is at depth 2). A triangle between an inside and an outside cell is turned to face the
  * outside cell; a triangle with the domain (or the outside) on both sides, an internal
  * facet or a crack, keeps its orientation. A triangle with a free edge whose cell is
  * outside the domain is an open surface: an error unless allow_open. */
@@ -309,6 +311,7 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
   uint32_t nt = plc->ntris, ne = 3 * nt;
   uint32_t *e = malloc(sizeof *e * (ne ? ne : 1)), *uf = malloc(sizeof *uf * (2 * (size_t)nt + 1));
   uint32_t *ord = malloc(sizeof *ord * (nt ? nt : 1)), *depth = NULL, *roots = NULL;
+  int32_t *vote = NULL; /* per cell: triangles saying it is in the domain minus out */
   int *hv = malloc(sizeof *hv * (nt ? nt : 1));
   char *free_edge = calloc(nt ? nt : 1, 1);
   caster c;
@@ -411,6 +414,14 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
         depth[p] = depth[m] + 1, changed = 1;
     }
   }
+  /* Nested cells (depth 2 and more) by the orientation of the triangles between them and
+   * the cell around them, as nesting.c decides for closed shells: facing out of the cell
+   * (an inclusion, or a body in a cavity) votes it in, facing into it (a cavity) votes
+   * it out; a tie keeps parity. On a surface oriented by parity this is parity. */
+  if (!(vote = calloc(2 * (size_t)nt + 1, sizeof *vote))) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory orienting the surface");
+    goto done;
+  }
   for (uint32_t t = 0; t < nt; t++) {
     uint32_t p = find(uf, 2 * t), m = find(uf, 2 * t + 1);
     if (depth[p] == UINT32_MAX || depth[m] == UINT32_MAX) {
@@ -418,7 +429,15 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
                     PRE(plc), tnum ? tnum[t] : t);
       goto done;
     }
-    int in_p = depth[p] & 1, in_m = depth[m] & 1;
+    if (depth[p] == depth[m] + 1 && depth[p] >= 2)
+      vote[p]--; /* the normal points into p, the inner cell */
+    else if (depth[m] == depth[p] + 1 && depth[m] >= 2)
+      vote[m]++;
+  }
+  for (uint32_t t = 0; t < nt; t++) {
+    uint32_t p = find(uf, 2 * t), m = find(uf, 2 * t + 1);
+    int in_p = vote[p] ? vote[p] > 0 : (int)(depth[p] & 1);
+    int in_m = vote[m] ? vote[m] > 0 : (int)(depth[m] & 1);
     if (free_edge[t] && !in_p && !allow_open) {
       const uint32_t *v = plc->tris + 3 * (size_t)t;
       uint32_t a = 0, b = 0;
@@ -466,6 +485,7 @@ done:
   free(free_edge);
   free(depth);
   free(roots);
+  free(vote);
   return st;
 }
 
