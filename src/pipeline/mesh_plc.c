@@ -91,6 +91,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK) {
     stats->surface_nodes = p->npoints;
     stats->surface_facets = p->ntris;
+    stats->hole_points = p->nholes, stats->region_points = p->nregions;
+    stats->cavities = p->ncavities, stats->inclusions = p->ninclusions;
   }
   if (st == TR_OK && opt.smooth) {
     st = tr_smooth_surface(p, &stats->surface_swaps);
