@@ -118,7 +118,10 @@ tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out);
 /* ---- I/O, input validation and CLI support (owner: io/input engineer) ---- */
 /* Checks and repairs the input in place: exact duplicate vertices are merged and
  * duplicate triangles removed, inconsistent orientation is repaired (each closed shell
- * oriented outward). Edges of three or more triangles (internal facets between regions)
+ * oriented outward, cavities into themselves). A closed shell nested in the domain is a
+ * cavity if, as given, most of its triangles face into it (a tie: a cavity too) or a
+ * hole point lies in it; otherwise it is an inclusion, meshed as a region of its own.
+ * Each nested shell's kind is in tr_plc_report. Edges of three or more triangles (internal facets between regions)
  * and free edges inside the domain (cracks, internal fins) are valid. Zero-area
  * triangles (TR_ERR_INPUT), free edges outside the domain, i.e. an open surface
  * (TR_ERR_OPEN unless opt->allow_open), and improperly intersecting triangles

@@ -32,8 +32,9 @@ struct tr_plc {
   int32_t *region_attr;  /* nregions */
   double *region_maxvol; /* nregions, <= 0: no constraint */
   uint32_t ncavities, ninclusions; /* nested shells by kind, from tr_plc_validate */
-  uint8_t *hole_cavity;  /* NULL or nholes: 1 = the hole point made a nested shell a
-                            cavity (tr_plc_validate), so it lies outside by design */
+  uint8_t *hole_cavity;  /* NULL or nholes: 1 = the hole point emptied a cell of the
+                            domain in tr_plc_validate (a nested shell made a cavity, or a
+                            cell of the cell analysis), so it lies outside by design */
   char *source;          /* file name for messages, or NULL */
   char *report;          /* repairs made by tr_plc_validate, one per line, or NULL */
   uint8_t validated;     /* 1 + allow_open of the last successful tr_plc_validate, 0 if

@@ -2,7 +2,8 @@
  * assumptions true for the next: merge duplicate vertices -> reject zero-area triangles
  * -> remove duplicate triangles -> edge census -> orientation repair -> self-intersection.
  * A union of closed 2-manifold shells (every edge in two triangles) is oriented shell by
- * shell (outward, cavities inward: nesting.c). Any other surface (internal facets:
+ * shell (outward; cavities, told from inclusions by their given orientation and the hole
+ * points, into themselves: nesting.c). Any other surface (internal facets:
  * edges in 3+ triangles; cracks and open surfaces: edges in 1) is checked for
  * self-intersections first and then oriented by its cells (cells.c), which also decides
  * whether its free edges lie inside the domain. Messages name input triangle numbers

@@ -114,7 +114,7 @@ tr_status tr_outer_points(struct tr_mesh *m, const struct tr_plc *plc, int verbo
       }
       if (plc->hole_cavity && plc->hole_cavity[j]) {
         if (verbose >= 2)
-          fprintf(stderr, "tetrec: hole point %u: its shell is a cavity\n", j);
+          fprintf(stderr, "tetrec: hole point %u: its cell was made empty by validation\n", j);
       } else if (verbose >= 1)
         fprintf(stderr,
                 "tetrec: warning: hole point %u (%.17g, %.17g, %.17g) lies outside the "
