@@ -339,6 +339,25 @@ static void t_many(void)
   tr_plc_destroy(p);
 }
 
+/* An input segment inside a box (tr_plc_add_segments) is a chain of mesh edges; bad
+ * segments are refused. */
+static void t_segments(void)
+{
+  static builder b;
+  memset(&b, 0, sizeof b);
+  cube(&b, 0, 0, 0, 4, 0);
+  uint32_t s[2] = {pt(&b, 1, 1, 1), pt(&b, 3, 2.5, 2)};
+  tr_plc *p = make(&b);
+  uint32_t bad[2] = {0, 99}, same[2] = {3, 3};
+  EXPECT(tr_plc_add_segments(p, bad, 1) == TR_ERR_INPUT, "segment out of range accepted");
+  EXPECT(tr_plc_add_segments(p, same, 1) == TR_ERR_INPUT, "segment with one vertex accepted");
+  EXPECT(tr_plc_add_segments(p, s, 1) == TR_OK && p->nsegs == 1, "segment refused: %s",
+         tr_last_error());
+  tr_mesh *m = mesh("segment_inside_a_box", p, 6 * 64, NULL);
+  tr_mesh_destroy(m);
+  tr_plc_destroy(p);
+}
+
 /* The hole and region sections of a .poly file reach the PLC and the mesh. */
 static void t_poly(const char *dir)
 {
@@ -380,6 +399,25 @@ static void t_poly(const char *dir)
   }
   tr_mesh_destroy(m);
   tr_plc_destroy(p);
+  /* .smesh: the same sections after its facets */
+  snprintf(path, sizeof path, "%s/tet_region.smesh", dir);
+  if (!(f = fopen(path, "w"))) {
+    EXPECT(0, "cannot write %s", path);
+    return;
+  }
+  fprintf(f, "4 3 0 0\n0 0 0 0\n1 6 0 0\n2 0 6 0\n3 0 0 6\n4 0\n3 0 2 1\n3 0 1 3\n"
+             "3 0 3 2\n3 1 2 3\n0\n1\n1 1 1 1 -3\n");
+  fclose(f);
+  if ((s = tr_plc_read(path, &p)) != TR_OK) {
+    EXPECT(0, "read %s: %s", path, tr_last_error());
+    return;
+  }
+  m = mesh("smesh_region", p, 216, NULL);
+  if (m)
+    for (uint32_t t = 0; t < m->nt; t++)
+      EXPECT((int32_t)m->region[t] == -3, "smesh: tet %u has region %d", t, (int32_t)m->region[t]);
+  tr_mesh_destroy(m);
+  tr_plc_destroy(p);
 }
 
 int main(int argc, char **argv)
@@ -396,6 +434,8 @@ int main(int argc, char **argv)
     t_errors();
   if (all || !strcmp(w, "many"))
     t_many();
+  if (all || !strcmp(w, "segments"))
+    t_segments();
   if (all || !strcmp(w, "poly"))
     t_poly(argc > 2 ? argv[2] : ".");
   if (failures)
