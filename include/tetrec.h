@@ -96,6 +96,23 @@ uint32_t tr_plc_num_points(const tr_plc *plc);
 uint32_t tr_plc_num_triangles(const tr_plc *plc);
 const double *tr_plc_points(const tr_plc *plc);
 const uint32_t *tr_plc_triangles(const tr_plc *plc);
+/* Input segments: edges (pairs of point indices, 2*nsegs) that must appear in the mesh
+ * (appended to those already given; tr_plc_set drops them with the points). */
+tr_status tr_plc_add_segments(tr_plc *plc, const uint32_t *segs, uint32_t nsegs);
+/* A hole point: the cell of the domain that contains it (the space enclosed by the
+ * facets around it) is not meshed. It must lie strictly inside the domain, on no facet
+ * (else tr_mesh_plc fails naming it). A closed shell nested in another with a hole point
+ * inside it is a cavity even when it faces outward (see tr_plc_validate). */
+tr_status tr_plc_add_hole(tr_plc *plc, double x, double y, double z);
+/* A region point: every tet of the cell that contains it gets region id `attribute` in
+ * the output (cells without a region point keep tetrec's numbering 1..k by smallest
+ * tet). max_volume > 0 is a volume bound for refinement, which tetrec does not do yet:
+ * it is stored and warned about. A region point outside the domain or on a facet is an
+ * error. Hole and region points are kept by tr_plc_set. */
+tr_status tr_plc_add_region(tr_plc *plc, double x, double y, double z, int32_t attribute,
+                            double max_volume);
+uint32_t tr_plc_num_holes(const tr_plc *plc);
+uint32_t tr_plc_num_regions(const tr_plc *plc);
 
 /* ---- output: a tetrahedral mesh ---- */
 typedef struct tr_mesh tr_mesh;
@@ -194,6 +211,9 @@ typedef struct tr_stats {
   uint64_t missing_facets, facets_recovered_by_swap, points_added_for_facets;
   uint64_t surface_swaps, rounding_repairs;
   uint64_t rounding_flips; /* flips that took away tets flat in doubles (output/flatflip.h) */
+  /* input semantics: hole and region points given, nested shells made cavities (given
+   * facing into themselves, or holding a hole point) and inclusions (regions of their own) */
+  uint64_t hole_points, region_points, cavities, inclusions;
   double total_seconds, recovery_seconds;
   uint64_t peak_memory_bytes;
   double stage_seconds[TR_STAGE_COUNT]; /* wall-clock time of each stage (enum tr_stage) */
@@ -213,7 +233,10 @@ tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out);
  * Thread-safe on distinct objects; the writers also on one mesh or PLC. */
 /* Checks and repairs the input in place: exact duplicate vertices are merged and
  * duplicate triangles removed, inconsistent orientation is repaired (each closed shell
- * oriented outward). Edges of three or more triangles (internal facets between regions)
+ * oriented outward, cavities into themselves). A closed shell nested in the domain is a
+ * cavity if, as given, most of its triangles face into it (a tie: a cavity too) or a
+ * hole point lies in it; otherwise it is an inclusion, meshed as a region of its own.
+ * Each nested shell's kind is in tr_plc_report. Edges of three or more triangles (internal facets between regions)
  * and free edges inside the domain (cracks, internal fins) are valid. Zero-area
  * triangles (TR_ERR_INPUT), free edges outside the domain, i.e. an open surface
  * (TR_ERR_OPEN unless opt->allow_open), and improperly intersecting triangles

@@ -20,6 +20,21 @@ struct tr_plc {
   uint32_t *segs;        /* 2 * nsegs, input segments not on any triangle (may be 0) */
   uint32_t ntets;        /* only Medit/TetGen volume inputs: tets read (for `check`) */
   uint32_t *tets;        /* 4 * ntets */
+  /* Volume hole points and region points (tr_plc_add_hole / tr_plc_add_region, the hole
+   * and region sections of .poly / .smesh). They are coordinates, not point indices, so
+   * tr_plc_set keeps them. A hole point empties the cell of the domain it lies in; a
+   * region point gives its cell an attribute (src/outer/points.c) and a maximum tet
+   * volume, stored for refinement (not implemented: a positive one is warned about). */
+  uint32_t nholes;
+  double *holes;         /* 3 * nholes */
+  uint32_t nregions;
+  double *region_xyz;    /* 3 * nregions */
+  int32_t *region_attr;  /* nregions */
+  double *region_maxvol; /* nregions, <= 0: no constraint */
+  uint32_t ncavities, ninclusions; /* nested shells by kind, from tr_plc_validate */
+  uint8_t *hole_cavity;  /* NULL or nholes: 1 = the hole point emptied a cell of the
+                            domain in tr_plc_validate (a nested shell made a cavity, or a
+                            cell of the cell analysis), so it lies outside by design */
   char *source;          /* file name for messages, or NULL */
   char *report;          /* repairs made by tr_plc_validate, one per line, or NULL */
   double validate_seconds[3]; /* the last tr_plc_validate: whole, of which
@@ -32,5 +47,8 @@ struct tr_plc {
 
 /* Frees the arrays and zeroes the struct (not the struct itself). */
 void tr_plc_clear(struct tr_plc *plc);
+
+/* Appends src's hole and region points to dst's; copies its counts of nested shells. */
+tr_status tr_plc_copy_points(struct tr_plc *dst, const struct tr_plc *src);
 
 #endif

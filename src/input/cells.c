@@ -18,12 +18,16 @@
  * replaced by another direction.
  *
  * Domain. The unbounded cell has depth 0; a cell's depth is the fewest triangles
- * crossed to reach it from infinity. Odd depth is inside the domain, even depth is
- * outside (a cavity is at depth 2), as tr_input_shell_cavities decides for closed
- * shells. A triangle between an inside and an outside cell is turned to face the
+ * crossed to reach it from infinity. Depth 1 is inside the domain. A deeper cell is
+ * inside iff most of the triangles between it and shallower cells face out of it (an
+ * inclusion, a region of its own, or a body inside a cavity) and outside iff most face
+ * into it (a cavity), as tr_input_shell_cavities decides for closed shells; on a tie,
+ * odd depth is inside and even depth outside (a cavity is at depth 2). The cell of a
+ * hole point (located by a ray: the side of the first triangle crossed) is outside. A triangle between an inside and an outside cell is turned to face the
  * outside cell; a triangle with the domain (or the outside) on both sides, an internal
  * facet or a crack, keeps its orientation. A triangle with a free edge whose cell is
  * outside the domain is an open surface: an error unless allow_open. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -147,6 +151,10 @@ static void wedges(const struct tr_plc *plc, const uint32_t *ids, uint32_t k, ui
 }
 
 enum { NDIR = 11 };
+static const double dir[NDIR][3] = {{0, 0, 1},        {1, 0, 0},         {0, 1, 0},
+                                    {0.31, 0.17, 1},  {1, -0.23, 0.41},  {0.57, 1, -0.29},
+                                    {-0.61, -0.37, 1}, {1, 0.13, 0.71},  {0.83, 1, 0.47},
+                                    {-0.47, 0.89, 1}, {1, 1, -0.53}};
 
 typedef struct {
   const struct tr_plc *plc;
@@ -157,7 +165,119 @@ typedef struct {
   uint32_t *hu, nh, cap;
   uint8_t *hs;
   mpq_t *key;
+  /* The triangles by the xy cells of a uniform grid that their boxes meet: a vertical
+   * ray (the first direction tried) classifies only those of its column's cells, so
+   * the rays of all side classes cost near-linear time instead of classes x triangles. */
+  int gx, gy;
+  double gcell[2];
+  uint32_t *gstart, *gids, *stamp, epoch;
 } caster;
+
+static int gcell_of(const caster *c, double x, int a)
+{
+  double k = floor((x - c->lo[a]) / c->gcell[a]);
+  int n = a ? c->gy : c->gx;
+  return k < 0 ? 0 : k >= n ? n - 1 : (int)k;
+}
+
+static tr_status build_grid(caster *c)
+{
+  uint32_t nt = c->plc->ntris;
+  int g = 1;
+  while (g < 4096 && (uint64_t)g * (uint64_t)g < nt)
+    g++;
+  c->gx = c->gy = g;
+  for (int a = 0; a < 2; a++) {
+    c->gcell[a] = (c->hi[a] - c->lo[a]) / g;
+    if (!(c->gcell[a] > 0) || !isfinite(c->gcell[a]))
+      c->gcell[a] = 1;
+  }
+  size_t ncell = (size_t)g * (size_t)g;
+  c->gstart = calloc(ncell + 1, sizeof *c->gstart);
+  c->stamp = calloc(nt ? nt : 1, sizeof *c->stamp);
+  if (!c->gstart || !c->stamp)
+    return tr_error(TR_ERR_NOMEM, "out of memory indexing the triangles");
+  for (int pass = 0; pass < 2; pass++) {
+    for (uint32_t t = 0; t < nt; t++) {
+      const double *b = c->box + 6 * (size_t)t;
+      int x0 = gcell_of(c, b[0], 0), x1 = gcell_of(c, b[3], 0);
+      int y0 = gcell_of(c, b[1], 1), y1 = gcell_of(c, b[4], 1);
+      for (int x = x0; x <= x1; x++)
+        for (int y = y0; y <= y1; y++) {
+          size_t k = (size_t)x * (size_t)g + (size_t)y;
+          if (pass == 0)
+            c->gstart[k + 1]++;
+          else
+            c->gids[c->gstart[k]++] = t;
+        }
+    }
+    if (pass == 0) {
+      for (size_t i = 0; i < ncell; i++)
+        c->gstart[i + 1] += c->gstart[i];
+      if (c->gstart[ncell] > UINT32_MAX / 2)
+        return tr_error(TR_ERR_NOMEM, "too many triangles to index");
+      if (!(c->gids = malloc(sizeof *c->gids * (c->gstart[ncell] ? c->gstart[ncell] : 1))))
+        return tr_error(TR_ERR_NOMEM, "out of memory indexing the triangles");
+    } else {
+      for (size_t i = ncell; i > 0; i--)
+        c->gstart[i] = c->gstart[i - 1];
+      c->gstart[0] = 0;
+    }
+  }
+  return TR_OK;
+}
+
+/* The triangles a ray with box [slo, shi] may cross: for a vertical ray (column) those
+ * of the grid cells of its column, each once; else all. The set of triangles classified,
+ * and so every result, is the same either way. */
+typedef struct {
+  int column, x0, x1, y0, y1, x, y;
+  uint32_t i, iend;
+} cand_iter;
+
+static void cand_begin(caster *c, cand_iter *it, int column, const double slo[3],
+                       const double shi[3])
+{
+  memset(it, 0, sizeof *it);
+  it->column = column;
+  it->iend = c->plc->ntris;
+  if (!column)
+    return;
+  it->x0 = it->x = gcell_of(c, slo[0], 0), it->x1 = gcell_of(c, shi[0], 0);
+  it->y0 = it->y = gcell_of(c, slo[1], 1), it->y1 = gcell_of(c, shi[1], 1);
+  size_t k = (size_t)it->x * (size_t)c->gy + (size_t)it->y;
+  it->i = c->gstart[k];
+  it->iend = c->gstart[k + 1];
+  c->epoch++;
+}
+
+static int cand_next(caster *c, cand_iter *it, uint32_t *u)
+{
+  for (;;) {
+    if (it->i == it->iend) {
+      if (!it->column || (it->x == it->x1 && it->y == it->y1))
+        return 0;
+      if (it->y < it->y1)
+        it->y++;
+      else
+        it->y = it->y0, it->x++;
+      size_t k = (size_t)it->x * (size_t)c->gy + (size_t)it->y;
+      it->i = c->gstart[k];
+      it->iend = c->gstart[k + 1];
+      continue;
+    }
+    if (!it->column) {
+      *u = it->i++;
+      return 1;
+    }
+    uint32_t x = c->gids[it->i++];
+    if (c->stamp[x] != c->epoch) {
+      c->stamp[x] = c->epoch;
+      *u = x;
+      return 1;
+    }
+  }
+}
 
 static int add_hit(caster *c, uint32_t u, int side, const mpq_t key)
 {
@@ -194,10 +314,6 @@ static int cast_dir(caster *c, uint32_t t, int s, int d, uint32_t *uf, uint32_t 
   /* Axis rays first: their bounding box is a thin column, so few triangles are
    * classified; generic directions when they graze (an axis ray from a triangle in an
    * axis plane is parallel to it, from a grid cell it may run along a diagonal). */
-  static const double dir[NDIR][3] = {{0, 0, 1},        {1, 0, 0},         {0, 1, 0},
-                                      {0.31, 0.17, 1},  {1, -0.23, 0.41},  {0.57, 1, -0.29},
-                                      {-0.61, -0.37, 1}, {1, 0.13, 0.71},  {0.83, 1, 0.47},
-                                      {-0.47, 0.89, 1}, {1, 1, -0.53}};
   const struct tr_plc *plc = c->plc;
   const uint32_t *v = plc->tris + 3 * (size_t)t;
   tr_point Q = tr_pt_q(&c->q), T[3] = {tr_pt_d(P(plc, v[0])), tr_pt_d(P(plc, v[1])),
@@ -226,7 +342,9 @@ static int cast_dir(caster *c, uint32_t t, int s, int d, uint32_t *uf, uint32_t 
     shi[i] = c->q.hi[i] > far[i] ? c->q.hi[i] : far[i];
   }
   c->nh = 0;
-  for (uint32_t u = 0; u < plc->ntris; u++) {
+  cand_iter it;
+  cand_begin(c, &it, dir[d][0] == 0 && dir[d][1] == 0, slo, shi);
+  for (uint32_t u; cand_next(c, &it, &u);) {
     const double *bx = c->box + 6 * (size_t)u;
     if (u == t || bx[0] > shi[0] || bx[1] > shi[1] || bx[2] > shi[2] || bx[3] < slo[0] ||
         bx[4] < slo[1] || bx[5] < slo[2])
@@ -289,6 +407,65 @@ void tr_input_tri_centroid(const struct tr_plc *plc, uint32_t t, tr_qpoint *q)
   tr_qpoint_update(q);
 }
 
+/* The cell (a class of sides, as a uf root) holding point p, which lies on no triangle:
+ * the side facing p of the first triangle a ray from p crosses, or the outside (inf).
+ * 1 done, 0 every direction grazes. */
+static int locate(caster *c, const double *p, uint32_t *uf, uint32_t inf, uint32_t *cell)
+{
+  const struct tr_plc *plc = c->plc;
+  tr_point S = tr_pt_d(p);
+  mpq_t best;
+  mpq_init(best);
+  int done = 0;
+  for (int d = 0; d < NDIR && !done; d++) {
+    double far[3], slo[3], shi[3];
+    int ax = 0;
+    for (int i = 0; i < 3; i++) {
+      far[i] = p[i] + c->len * dir[d][i];
+      slo[i] = p[i] < far[i] ? p[i] : far[i];
+      shi[i] = p[i] > far[i] ? p[i] : far[i];
+      if (dir[d][i] * dir[d][i] > dir[d][ax] * dir[d][ax])
+        ax = i;
+    }
+    tr_point F = tr_pt_d(far);
+    uint32_t first = inf;
+    int clean = 1;
+    cand_iter it;
+    cand_begin(c, &it, dir[d][0] == 0 && dir[d][1] == 0, slo, shi);
+    for (uint32_t u; clean && cand_next(c, &it, &u);) {
+      const double *bx = c->box + 6 * (size_t)u;
+      if (bx[0] > shi[0] || bx[1] > shi[1] || bx[2] > shi[2] || bx[3] < slo[0] ||
+          bx[4] < slo[1] || bx[5] < slo[2])
+        continue;
+      const uint32_t *w = plc->tris + 3 * (size_t)u;
+      tr_point U[3] = {tr_pt_d(P(plc, w[0])), tr_pt_d(P(plc, w[1])), tr_pt_d(P(plc, w[2]))};
+      tr_isect r = tr_classify_segment_triangle(&S, &F, &U[0], &U[1], &U[2]);
+      if (r.n == 0)
+        continue;
+      if (r.n != 1 || r.end[0].type != TR_FAC || r.end[0].on_seg != TR_SEG_IN ||
+          tr_construct_line_plane(&S, &F, &U[0], &U[1], &U[2], &c->x) != 0) {
+        clean = 0;
+        break;
+      }
+      if (dir[d][ax] < 0)
+        mpq_neg(c->x.c[ax], c->x.c[ax]);
+      int cmp = first == inf ? -1 : mpq_cmp(c->x.c[ax], best);
+      if (cmp == 0)
+        clean = 0; /* two crossings at one point: an edge or a vertex */
+      else if (cmp < 0) {
+        mpq_set(best, c->x.c[ax]);
+        first = 2 * u + (tr_orient3d_p(&U[0], &U[1], &U[2], &S) > 0 ? 0 : 1);
+      }
+    }
+    if (clean) {
+      *cell = find(uf, first);
+      done = 1;
+    }
+  }
+  mpq_clear(best);
+  return done;
+}
+
 /* A ray from side s of triangle t: 1 done, 0 every direction grazes, -1 out of memory. */
 static int cast(caster *c, uint32_t t, int s, uint32_t *uf, uint32_t inf)
 {
@@ -302,13 +479,16 @@ static int cast(caster *c, uint32_t t, int s, uint32_t *uf, uint32_t inf)
 }
 
 /* The analysis; sides (may be NULL) receives per triangle, after orientation, bit 0 =
- * the + side is in the domain, bit 1 = the - side is; tnum / orig may be NULL. */
+ * the + side is in the domain, bit 1 = the - side is; tnum / orig may be NULL;
+ * hole_used (may be NULL) marks the hole points whose cell would be in the domain
+ * without them. */
 static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t *orig,
-                       int allow_open, char *flipped, uint8_t *sides)
+                       int allow_open, char *flipped, uint8_t *sides, uint8_t *hole_used)
 {
   uint32_t nt = plc->ntris, ne = 3 * nt;
   uint32_t *e = malloc(sizeof *e * (ne ? ne : 1)), *uf = malloc(sizeof *uf * (2 * (size_t)nt + 1));
   uint32_t *ord = malloc(sizeof *ord * (nt ? nt : 1)), *depth = NULL, *roots = NULL;
+  int32_t *vote = NULL; /* per cell: triangles saying it is in the domain minus out */
   int *hv = malloc(sizeof *hv * (nt ? nt : 1));
   char *free_edge = calloc(nt ? nt : 1, 1);
   caster c;
@@ -361,6 +541,8 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
       st = tr_error(TR_ERR_UNSUPPORTED, "coordinates too large to orient a non-manifold surface");
       goto done;
     }
+  if ((st = build_grid(&c)) != TR_OK)
+    goto done;
   /* One ray per side class, from the classes as the wedges left them (uf[2nt] is the
    * outside); a class whose triangles all graze tries up to 16 of them. */
   uf[2 * nt] = 2 * nt;
@@ -411,6 +593,14 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
         depth[p] = depth[m] + 1, changed = 1;
     }
   }
+  /* Nested cells (depth 2 and more) by the orientation of the triangles between them and
+   * the cell around them, as nesting.c decides for closed shells: facing out of the cell
+   * (an inclusion, or a body in a cavity) votes it in, facing into it (a cavity) votes
+   * it out; a tie keeps parity. On a surface oriented by parity this is parity. */
+  if (!(vote = calloc(2 * (size_t)nt + 1, sizeof *vote))) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory orienting the surface");
+    goto done;
+  }
   for (uint32_t t = 0; t < nt; t++) {
     uint32_t p = find(uf, 2 * t), m = find(uf, 2 * t + 1);
     if (depth[p] == UINT32_MAX || depth[m] == UINT32_MAX) {
@@ -418,7 +608,46 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
                     PRE(plc), tnum ? tnum[t] : t);
       goto done;
     }
-    int in_p = depth[p] & 1, in_m = depth[m] & 1;
+    if (depth[p] == depth[m] + 1 && depth[p] >= 2)
+      vote[p]--; /* the normal points into p, the inner cell */
+    else if (depth[m] == depth[p] + 1 && depth[m] >= 2)
+      vote[m]++;
+  }
+  /* A hole point's cell is outside the domain (vote INT32_MIN marks it). */
+  for (uint32_t h = 0; h < plc->nholes; h++) {
+    const double *hp = plc->holes + 3 * (size_t)h;
+    tr_point H = tr_pt_d(hp);
+    for (uint32_t t = 0; t < nt; t++) {
+      const double *bx = c.box + 6 * (size_t)t;
+      if (hp[0] < bx[0] || hp[1] < bx[1] || hp[2] < bx[2] || hp[0] > bx[3] || hp[1] > bx[4] ||
+          hp[2] > bx[5])
+        continue;
+      const uint32_t *v = plc->tris + 3 * (size_t)t;
+      tr_point A = tr_pt_d(P(plc, v[0])), B = tr_pt_d(P(plc, v[1])), C = tr_pt_d(P(plc, v[2]));
+      if (tr_classify_segment_triangle(&H, &H, &A, &B, &C).n) {
+        st = tr_error(TR_ERR_INPUT,
+                      "%s%shole point %u (%.17g, %.17g, %.17g) lies on triangle %u: it must "
+                      "lie strictly inside a cell", PRE(plc), h, hp[0], hp[1], hp[2],
+                      tnum ? tnum[t] : t);
+        goto done;
+      }
+    }
+    uint32_t cell;
+    if (!locate(&c, hp, uf, 2 * nt, &cell)) {
+      st = tr_error(TR_ERR_UNSUPPORTED,
+                    "cannot decide which cell hole point %u lies in (every ray tried grazes "
+                    "an edge)", h);
+      goto done;
+    }
+    if (hole_used) /* a second hole point in an emptied cell counts as used too */
+      hole_used[h] = vote[cell] == INT32_MIN ||
+                     (vote[cell] ? vote[cell] > 0 : (int)(depth[cell] & 1));
+    vote[cell] = INT32_MIN;
+  }
+  for (uint32_t t = 0; t < nt; t++) {
+    uint32_t p = find(uf, 2 * t), m = find(uf, 2 * t + 1);
+    int in_p = vote[p] == INT32_MIN ? 0 : vote[p] ? vote[p] > 0 : (int)(depth[p] & 1);
+    int in_m = vote[m] == INT32_MIN ? 0 : vote[m] ? vote[m] > 0 : (int)(depth[m] & 1);
     if (free_edge[t] && !in_p && !allow_open) {
       const uint32_t *v = plc->tris + 3 * (size_t)t;
       uint32_t a = 0, b = 0;
@@ -459,6 +688,9 @@ done:
   free(c.hu);
   free(c.hs);
   free(c.box);
+  free(c.gstart);
+  free(c.gids);
+  free(c.stamp);
   free(e);
   free(uf);
   free(ord);
@@ -466,13 +698,16 @@ done:
   free(free_edge);
   free(depth);
   free(roots);
+  free(vote);
   return st;
 }
 
 tr_status tr_input_orient_cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t *orig,
                                 int allow_open, char *flipped)
 {
-  return cells(plc, tnum, orig, allow_open, flipped, NULL);
+  if (plc->nholes && !plc->hole_cavity && !(plc->hole_cavity = calloc(plc->nholes, 1)))
+    return tr_error(TR_ERR_NOMEM, "out of memory orienting the surface");
+  return cells(plc, tnum, orig, allow_open, flipped, NULL, plc->hole_cavity);
 }
 
 tr_status tr_input_side_domains(const struct tr_plc *plc, uint8_t *sides)
@@ -483,7 +718,7 @@ tr_status tr_input_side_domains(const struct tr_plc *plc, uint8_t *sides)
   if (!copy.tris)
     return tr_error(TR_ERR_NOMEM, "out of memory classifying the triangles' sides");
   memcpy(copy.tris, plc->tris, sizeof *copy.tris * 3 * (size_t)n);
-  tr_status st = cells(&copy, NULL, NULL, 1, NULL, sides);
+  tr_status st = cells(&copy, NULL, NULL, 1, NULL, sides, NULL);
   /* report the sides of the caller's orientation */
   for (uint32_t t = 0; st == TR_OK && t < n; t++)
     if (copy.tris[3 * (size_t)t + 1] != plc->tris[3 * (size_t)t + 1])

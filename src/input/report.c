@@ -44,7 +44,7 @@ void tr_report_add(tr_report *r, int kind, const char *fmt, ...)
 char *tr_report_finish(tr_report *r)
 {
   static const char *what[] = {"duplicate vertices", "duplicate triangles", "flipped triangles",
-                               "reversed shells"};
+                               "nested shells"};
   for (int k = 0; k < 4; k++)
     if (r->dropped[k]) {
       char buf[128];

@@ -2,7 +2,8 @@
  * assumptions true for the next: merge duplicate vertices -> reject zero-area triangles
  * -> remove duplicate triangles -> edge census -> orientation repair -> self-intersection.
  * A union of closed 2-manifold shells (every edge in two triangles) is oriented shell by
- * shell (outward, cavities inward: nesting.c). Any other surface (internal facets:
+ * shell (outward; cavities, told from inclusions by their given orientation and the hole
+ * points, into themselves: nesting.c). Any other surface (internal facets:
  * edges in 3+ triangles; cracks and open surfaces: edges in 1) is checked for
  * self-intersections first and then oriented by its cells (cells.c), which also decides
  * whether its free edges lie inside the domain. Messages name input triangle numbers
@@ -404,32 +405,43 @@ static tr_status manifold_and_orient(struct tr_plc *plc, const uint32_t *orig,
       queue[c] = start[c]; /* fill pointers; ncomp <= nt */
     for (uint32_t t = 0; t < nt; t++)
       order[queue[comp[t]]++] = t;
-    /* A cavity (inside an odd number of shells) faces inward: negative volume. The
-     * nesting test needs consistently oriented shells, which they are by now. */
+    /* Each closed shell's enclosed volume as given (the majority of its triangles as
+     * read), then the nesting decides cavities (facing inward: negative volume) and
+     * inclusions (outward). The nesting test needs consistently oriented shells, which
+     * they are by now. */
     char *cavity = malloc(ncomp ? ncomp : 1);
-    double c0 = vclock();
-    if (!cavity)
+    int8_t *given = calloc(ncomp ? ncomp : 1, 1), *sign = calloc(ncomp ? ncomp : 1, 1);
+    if (!cavity || !given || !sign)
       st = tr_error(TR_ERR_NOMEM, "out of memory");
-    else
-      st = tr_input_shell_cavities(plc, order, start, closed, ncomp, cavity);
-    plc->validate_seconds[2] += vclock() - c0;
     for (uint32_t c = 0; c < ncomp && st == TR_OK; c++) {
       if (!closed[c])
         continue;
-      uint32_t n = start[c + 1] - start[c];
-      int sg = shell_volume_sign(plc, order + start[c], n);
-      if (sg == 0)
+      uint32_t n = start[c + 1] - start[c], nflip = 0;
+      sign[c] = (int8_t)shell_volume_sign(plc, order + start[c], n);
+      for (uint32_t i = start[c]; i < start[c + 1]; i++)
+        nflip += flipme[order[i]] != 0;
+      given[c] = (int8_t)(2 * nflip < n ? sign[c] : 2 * nflip > n ? -sign[c] : 0);
+      if (sign[c] == 0)
         st = tr_error(TR_ERR_INPUT,
                       "%s%sthe closed shell containing triangle %u encloses zero volume",
                       PRE(plc),
                       tnum[order[start[c]]]);
-      else if (sg != (cavity[c] ? -1 : 1)) {
+    }
+    double c0 = vclock();
+    if (st == TR_OK)
+      st = tr_input_shell_cavities(plc, order, start, closed, ncomp, given, tnum, rep, cavity,
+                                   &plc->ncavities, &plc->ninclusions);
+    plc->validate_seconds[2] += vclock() - c0;
+    for (uint32_t c = 0; c < ncomp && st == TR_OK; c++) {
+      if (closed[c] && sign[c] != (cavity[c] ? -1 : 1)) {
         for (uint32_t i = start[c]; i < start[c + 1]; i++) {
           flip(plc, order[i]);
           flipme[order[i]] ^= 1;
         }
       }
     }
+    free(given);
+    free(sign);
     free(cavity);
     free(start);
   }
@@ -457,6 +469,9 @@ tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt)
   double c0 = vclock();
   plc->validated = 0;
   memset(plc->validate_seconds, 0, sizeof plc->validate_seconds);
+  plc->ncavities = plc->ninclusions = 0;
+  free(plc->hole_cavity);
+  plc->hole_cavity = NULL;
   tr_options def;
   if (!opt) {
     tr_options_default(&def);

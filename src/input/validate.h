@@ -64,11 +64,20 @@ tr_status tr_input_side_domains(const struct tr_plc *plc, uint8_t *sides);
 struct tr_qpoint;
 void tr_input_tri_centroid(const struct tr_plc *plc, uint32_t t, struct tr_qpoint *q);
 
-/* cavity[c] = 1 iff closed shell c lies inside an odd number of other closed shells.
- * Shell c's triangles are order[start[c] .. start[c+1]). */
-tr_status tr_input_shell_cavities(const struct tr_plc *plc, const uint32_t *order,
+/* Nesting of the closed shells (nesting.c). cavity[c] = 1 iff closed shell c is a cavity:
+ * it lies directly inside a shell whose inside is in the domain, and either given[c] <= 0
+ * (as read, the majority of its triangles faced into it: -1; a tie: 0, the rule before
+ * inclusions existed) or a hole point of plc lies in it (and in none of the shells
+ * nested in it). Any other shell nested in a domain is an inclusion: its inside is a
+ * region of its own (plc->hole_cavity marks the hole points that made a cavity). A shell at top level or directly inside a cavity bounds a body.
+ * Shell c's triangles are order[start[c] .. start[c+1]), consistently oriented; given[c]
+ * is the sign of its enclosed volume as given. Each nested shell's kind is reported in
+ * rep (tnum: triangle numbers for messages); *ncav / *nincl count them. Near-linear:
+ * points are tested only against the shells whose box holds them. */
+tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
                                   const uint32_t *start, const char *closed, uint32_t ncomp,
-                                  char *cavity);
+                                  const int8_t *given, const uint32_t *tnum, tr_report *rep,
+                                  char *cavity, uint32_t *ncav, uint32_t *nincl);
 
 /* Orients a surface with free edges (1 triangle) or edges of 3+ triangles by its cells
  * (cells.c): each triangle between the domain and the outside faces the outside;

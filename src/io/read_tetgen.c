@@ -1,5 +1,7 @@
 /* TetGen files: .node (points), .poly (facets = polygons with hole points), .smesh
- * (facets = single polygons), .ele (tetrahedra, for `tetrec check`).
+ * (facets = single polygons), .ele (tetrahedra, for `tetrec check`). The volume hole
+ * and region lists after the facets of .poly and .smesh go to tr_plc_add_hole /
+ * tr_plc_add_region.
  *
  * Indices may start at 0 or 1: the first point's number decides, as in TetGen.
  * Coordinates may be written as exact rationals "num/den" (tetrec's --exact output);
@@ -229,11 +231,82 @@ static tr_status facets(tr_lex *lx, tr_soup *s, int64_t base, int smesh)
       TR_CHECK(tr_soup_add_hole(s, q));
     }
   }
-  /* Volume holes and regions follow; they do not change the surface. */
   return TR_OK;
 }
 
-static tr_status parse(enum tr_tetgen_kind kind, tr_lex *lx, tr_lex *nodes, tr_soup *s)
+/* The hole and region points that follow the facets of a .poly or .smesh file; both
+ * sections are optional at the end of the file. */
+typedef struct {
+  uint32_t nholes, nregions;
+  double *holes;   /* 3 per hole */
+  double *regions; /* 5 per region: x y z attribute max_volume */
+} volume_points;
+
+static int more_tokens(const tr_lex *lx)
+{
+  tr_lex peek = *lx;
+  return tr_lex_next(&peek);
+}
+
+static tr_status point_section(tr_lex *lx, const char *what, int per, uint32_t *n, double **out)
+{
+  int64_t count;
+  TR_CHECK(tr_lex_i64(lx, what, &count));
+  unsigned long hline = lx->tokline;
+  if (count < 0)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: negative %s", lx->name, hline, what);
+  TR_CHECK(tr_check_room(lx->name, hline, (uint64_t)count, per == 3 ? "hole points" :
+                         "region points", tr_lex_left(lx), 8, TR_IO_MAX_COUNT / 8));
+  double *a = malloc(sizeof *a * (size_t)per * (size_t)(count ? count : 1));
+  if (!a)
+    return tr_error(TR_ERR_NOMEM, "out of memory reading %s", lx->name);
+  tr_status st = TR_OK;
+  for (int64_t i = 0; i < count && st == TR_OK; i++) {
+    int64_t id;
+    double *p = a + (size_t)per * (size_t)i;
+    st = tr_lex_i64(lx, per == 3 ? "a hole number" : "a region number", &id);
+    for (int k = 0; k < 3 && st == TR_OK; k++)
+      st = coord(lx, &p[k]);
+    if (st == TR_OK && per == 5) {
+      /* TetGen's regional attribute is a number; tetrec's region ids are int32 */
+      st = tr_lex_double(lx, "a region attribute", &p[3]);
+      if (st == TR_OK && !(p[3] == floor(p[3]) && p[3] >= INT32_MIN && p[3] <= INT32_MAX))
+        st = tr_error(TR_ERR_UNSUPPORTED,
+                      "%s:%lu: region attribute %.17g is not a 32-bit integer (region ids are "
+                      "integers)", lx->name, lx->tokline, p[3]);
+      p[4] = 0;
+      if (st == TR_OK && !tr_lex_at_eol(lx))
+        st = tr_lex_double(lx, "a region's maximum volume", &p[4]);
+    }
+    if (st == TR_OK && !tr_lex_at_eol(lx))
+      st = tr_error(TR_ERR_PARSE, "%s:%lu: unexpected text after %s %lld", lx->name, lx->line,
+                    per == 3 ? "hole point" : "region point", (long long)id);
+  }
+  if (st != TR_OK) {
+    free(a);
+    return st;
+  }
+  *n = (uint32_t)count;
+  *out = a;
+  return TR_OK;
+}
+
+static tr_status volume_sections(tr_lex *lx, volume_points *vp)
+{
+  if (!more_tokens(lx))
+    return TR_OK;
+  TR_CHECK(point_section(lx, "the hole count", 3, &vp->nholes, &vp->holes));
+  if (!more_tokens(lx))
+    return TR_OK;
+  TR_CHECK(point_section(lx, "the region count", 5, &vp->nregions, &vp->regions));
+  if (more_tokens(lx))
+    return tr_error(TR_ERR_PARSE, "%s:%lu: unexpected text after the region list", lx->name,
+                    lx->line);
+  return TR_OK;
+}
+
+static tr_status parse(enum tr_tetgen_kind kind, tr_lex *lx, tr_lex *nodes, tr_soup *s,
+                       volume_points *vp)
 {
   int64_t base = 0;
   TR_CHECK(node_list(lx, s, &base));
@@ -245,7 +318,8 @@ static tr_status parse(enum tr_tetgen_kind kind, tr_lex *lx, tr_lex *nodes, tr_s
                       lx->name);
     TR_CHECK(node_list(nodes, s, &base));
   }
-  return facets(lx, s, base, kind == TR_TETGEN_SMESH);
+  TR_CHECK(facets(lx, s, base, kind == TR_TETGEN_SMESH));
+  return volume_sections(lx, vp);
 }
 
 tr_status tr_read_tetgen_buf(enum tr_tetgen_kind kind, const char *buf, size_t len,
@@ -260,9 +334,20 @@ tr_status tr_read_tetgen_buf(enum tr_tetgen_kind kind, const char *buf, size_t l
   if (node_buf)
     tr_lex_init(&nl, node_buf, node_len, node_name, '#');
   tr_soup_init(&s, lx.name);
-  tr_status st = parse(kind, &lx, node_buf ? &nl : NULL, &s);
+  volume_points vp = {0, 0, NULL, NULL};
+  tr_status st = parse(kind, &lx, node_buf ? &nl : NULL, &s, &vp);
   if (st == TR_OK)
     st = tr_soup_to_plc(&s, plc);
+  for (uint32_t i = 0; st == TR_OK && i < vp.nholes; i++) {
+    const double *h = vp.holes + 3 * (size_t)i;
+    st = tr_plc_add_hole(plc, h[0], h[1], h[2]);
+  }
+  for (uint32_t i = 0; st == TR_OK && i < vp.nregions; i++) {
+    const double *r = vp.regions + 5 * (size_t)i;
+    st = tr_plc_add_region(plc, r[0], r[1], r[2], (int32_t)r[3], r[4]);
+  }
+  free(vp.holes);
+  free(vp.regions);
   tr_soup_free(&s);
   return st;
 }

@@ -18,6 +18,8 @@ tr_status tr_stats_write_json(const tr_stats *s, const char *path)
           "  \"points_added_for_edges\": %llu,\n  \"missing_facets\": %llu,\n"
           "  \"facets_recovered_by_swap\": %llu,\n  \"points_added_for_facets\": %llu,\n"
           "  \"surface_swaps\": %llu,\n  \"rounding_repairs\": %llu,\n  \"rounding_flips\": %llu,\n"
+          "  \"hole_points\": %llu,\n  \"region_points\": %llu,\n  \"cavities\": %llu,\n"
+          "  \"inclusions\": %llu,\n"
           "  \"total_seconds\": %.6f,\n  \"recovery_seconds\": %.6f,\n"
           "  \"peak_memory_bytes\": %llu,\n  \"stage_seconds\": {",
           (unsigned long long)s->surface_nodes, (unsigned long long)s->surface_facets,
@@ -27,7 +29,9 @@ tr_status tr_stats_write_json(const tr_stats *s, const char *path)
           (unsigned long long)s->facets_recovered_by_swap,
           (unsigned long long)s->points_added_for_facets, (unsigned long long)s->surface_swaps,
           (unsigned long long)s->rounding_repairs,
-          (unsigned long long)s->rounding_flips, s->total_seconds, s->recovery_seconds,
+          (unsigned long long)s->rounding_flips, (unsigned long long)s->hole_points,
+          (unsigned long long)s->region_points, (unsigned long long)s->cavities,
+          (unsigned long long)s->inclusions, s->total_seconds, s->recovery_seconds,
           (unsigned long long)s->peak_memory_bytes);
   /* one key per stage, named as `tetrec -v` prints them (tr_stage_name) */
   for (int k = 0; k < TR_STAGE_COUNT; k++)

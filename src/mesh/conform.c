@@ -542,8 +542,9 @@ static tr_status census(const struct tr_plc *plc, int *closed)
   return TR_OK;
 }
 
-/* A triangle with the outside on both of its sides (a facet between two cavities) bounds
- * no tet of the domain: its vertices, edges and area are not in the mesh. The checks
+/* A triangle with the outside on both of its sides (a facet between two cavities, or a
+ * shell a hole point empties) bounds no tet of the domain: its vertices, edges and area
+ * are not in the mesh. The checks
  * then run on the other triangles, with the whole input's domain volume. */
 tr_status tr_check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
                               mpq_srcptr volume6, unsigned flags)
@@ -552,7 +553,7 @@ tr_status tr_check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
   if (flags & TR_CONF_OPEN)
     return check_conformity(m, plc, volume6, flags);
   TR_CHECK(census(plc, &closed));
-  if (closed)
+  if (closed && plc->nholes == 0) /* a hole point can empty a whole shell */
     return check_conformity(m, plc, volume6, flags);
   uint8_t *sides = malloc(plc->ntris ? plc->ntris : 1);
   uint32_t *tris = malloc(sizeof *tris * 3 * ((size_t)plc->ntris + 1));

@@ -12,8 +12,9 @@
  * sub-face votes OUTER (e.g. the inside of a shell oriented inward, i.e. a cavity) is a
  * hole. Limits: a component enclosed only by internal facets that all happen to be
  * oriented away from it is classified OUTER (the input gives no outward direction for
- * it); tr_plc_validate orients every closed shell outward, so nested closed shells make
- * nested regions, not cavities.
+ * it); tr_plc_validate orients a nested closed shell outward when it is an inclusion
+ * (nested regions) and into itself when it is a cavity (src/input/nesting.c). Hole and
+ * region points are applied afterwards (points.h).
  *
  * Regions: the INNER components get ids 1..k ordered by their lexicographically
  * smallest tet (sorted vertex ids), which does not depend on slot layout. */

@@ -15,6 +15,7 @@
 #include "delaunay/delaunay.h"
 #include "input/validate.h"
 #include "outer/color.h"
+#include "outer/points.h"
 #include "output/flatflip.h"
 #include "output/round.h"
 #include "pipeline.h"
@@ -25,6 +26,8 @@ static tr_status copy_plc(const tr_plc *in, tr_plc **out)
   TR_CHECK(tr_plc_create(out));
   tr_plc *p = *out;
   tr_status st = tr_plc_set(p, in->xyz, in->npoints, in->tris, in->ntris, in->tri_marker);
+  if (st == TR_OK)
+    st = tr_plc_copy_points(p, in);
   if (st == TR_OK && in->nsegs) {
     p->segs = malloc(sizeof *p->segs * 2 * (size_t)in->nsegs);
     if (!p->segs)
@@ -144,6 +147,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK) {
     stats->surface_nodes = p->npoints;
     stats->surface_facets = p->ntris;
+    stats->hole_points = p->nholes, stats->region_points = p->nregions;
+    stats->cavities = p->ncavities, stats->inclusions = p->ninclusions;
   }
   double t1 = tr_pipeline_now();
   /* --keep-surface: the input triangles are the output's faces, so no diagonal swaps */
@@ -189,6 +194,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   }
   if (st == TR_OK)
     st = tr_outer_color(m, &sub, keep_hull, sides, &nreg);
+  if (st == TR_OK) /* hole and region points: their cells emptied or named */
+    st = tr_outer_points(m, p, opt.verbose, &nreg);
   free(sides);
   sides = NULL;
   if (st == TR_OK)

@@ -232,6 +232,17 @@ static void box(builder *b, const double lo[3], const double hi[3], int n, int d
   }
 }
 
+/* Reverses the triangles from `first` on: a cavity is given facing into itself (a nested
+ * shell given facing outward is an inclusion, a region of its own). */
+static void inward(builder *b, uint32_t first)
+{
+  for (uint32_t t = first; t < b->nt; t++) {
+    uint32_t x = b->t[3 * (size_t)t + 1];
+    b->t[3 * (size_t)t + 1] = b->t[3 * (size_t)t + 2];
+    b->t[3 * (size_t)t + 2] = x;
+  }
+}
+
 /* Two parallel point chains L and R (same direction) joined by triangles. */
 static void zip(builder *b, const uint32_t *L, int nl, const uint32_t *R, int nr, const double n[3])
 {
@@ -517,7 +528,9 @@ int hard_case_build(int i, hard_case *c)
     c->why = "16x16 outer faces, 5x5 inner faces, the inner box a cavity";
     c->ball = 0;
     box(&b, z, hi, 16, 2, 0);
+    uint32_t first = b.nt;
     box(&b, lo2, hi2, 5, 0, 0);
+    inward(&b, first);
     c->vol6 = 6.0 * (16 * 16 * 16 - 5 * 5 * 5);
     break;
   }
@@ -592,7 +605,9 @@ int hard_case_build(int i, hard_case *c)
     const double hi[3] = {8, 8, 8}, lo2[3] = {2, 2, 2}, hi2[3] = {4, 4, 4};
     const double o[3] = {3, 3, 6}, u[3] = {2, 0, 0}, v[3] = {0, 2, 0}, up[3] = {0, 0, 1};
     box(&b, z, hi, 8, 2, 0);
+    uint32_t first = b.nt;
     box(&b, lo2, hi2, 2, 0, 0);
+    inward(&b, first);
     grid(&b, o, u, v, 2, 2, 0, up);
     c->property = "cavity_and_crack_in_one_box_give_one_region";
     c->why = "a crack sends the input to the cell analysis, which must find the cavity too";
@@ -619,8 +634,10 @@ int hard_case_build(int i, hard_case *c)
     const double hi[3] = {8, 8, 8}, lo1[3] = {2, 2, 2}, hi1[3] = {4, 4, 4}, lo2[3] = {4, 2, 2},
                  hi2[3] = {6, 4, 4};
     box(&b, z, hi, 8, 2, 0);
+    uint32_t first = b.nt;
     box(&b, lo1, hi1, 2, 0, 0);
     box(&b, lo2, hi2, 2, 0, 1); /* the shared square once */
+    inward(&b, first);
     c->property = "two_cavities_sharing_a_face_stay_empty";
     c->why = "an internal facet between two holes: neither side is in the domain";
     c->ball = 0;

@@ -38,6 +38,8 @@ static void run(const char *name, tr_plc *plc, double vol6, int ball, const char
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
   tr_stats st;
+  memset(&st, 0, sizeof st);
+  st.size = sizeof st;
   tr_status s = tr_mesh_plc_ex(plc, &opt, &m, &st, &used);
   if (refused) {
     const char *msg = tr_last_error();
