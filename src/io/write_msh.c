@@ -166,10 +166,12 @@ static void write22(FILE *f, const struct tr_mesh_view *m, const struct tr_edge_
     const uint32_t *cv = dim == 1 ? ev->edges : dim == 2 ? m->tris : m->tets;
     for (uint32_t e = 0; e < g->nval; e++)
       for (uint32_t j = g->first[e]; j < g->first[e + 1]; j++) {
-        int64_t row[9] = {(int64_t)tag++, type_of[dim], 2, g->vals[e], (int64_t)e + 1};
+        int64_t row[5];
         for (int k = 0; k < per; k++)
-          row[k + 5] = (int64_t)cv[(size_t)per * g->order[j] + k] + 1;
-        tr_io_put_ints(f, row, per + 5);
+          row[k] = (int64_t)cv[(size_t)per * g->order[j] + k] + 1;
+        fprintf(f, "%llu %d 2 %d %u ", (unsigned long long)tag++, type_of[dim], (int)g->vals[e],
+                e + 1);
+        tr_io_put_ints(f, row, per);
       }
   }
   fprintf(f, "$EndElements\n");
