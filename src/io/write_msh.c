@@ -4,7 +4,9 @@
  * Physical tags: each distinct region value becomes one volume entity, each distinct
  * triangle marker one surface entity and each distinct edge marker (check-surface's open
  * edges) one curve entity, numbered 1, 2, ... in increasing value, whose
- * physical tag is the value (none for 0, the value of "no marker"). Format 2.2 writes the
+ * physical tag is the value (none for 0, the value of "no marker"); tets without regions
+ * (a Delaunay mesh) are region 1, so that readers which want every entity tagged once any
+ * is (meshio, dolfinx) take them. Format 2.2 writes the
  * same two tags per element (physical, entity). All nodes form one block of the first
  * volume entity (or surface or curve entity when there are no tets); node and element
  * tags are 1-based and contiguous, edges first, then triangles. Doubles in %.17g read back bitwise. */
@@ -49,7 +51,7 @@ static void groups_free(struct groups *g)
   free(g->first);
 }
 
-static tr_status group(const int32_t *val, uint32_t n, struct groups *g)
+static tr_status group(const int32_t *val, uint32_t n, int32_t dflt, struct groups *g)
 {
   memset(g, 0, sizeof *g);
   g->vals = malloc(sizeof *g->vals * (n ? n : 1));
@@ -60,14 +62,14 @@ static tr_status group(const int32_t *val, uint32_t n, struct groups *g)
     return tr_error(TR_ERR_NOMEM, "out of memory writing .msh");
   }
   for (uint32_t i = 0; i < n; i++)
-    g->vals[i] = val ? val[i] : 0;
+    g->vals[i] = val ? val[i] : dflt;
   qsort(g->vals, n, sizeof *g->vals, cmp_i32);
   for (uint32_t i = 0; i < n; i++)
     if (i == 0 || g->vals[i] != g->vals[g->nval - 1])
       g->vals[g->nval++] = g->vals[i];
   /* counting sort by entity keeps index order inside each entity */
   for (uint32_t i = 0; i < n; i++)
-    g->first[entity_of(g, val ? val[i] : 0) + 1]++;
+    g->first[entity_of(g, val ? val[i] : dflt) + 1]++;
   for (uint32_t e = 0; e < g->nval; e++)
     g->first[e + 1] += g->first[e];
   uint32_t *at = malloc(sizeof *at * (g->nval ? g->nval : 1));
@@ -77,7 +79,7 @@ static tr_status group(const int32_t *val, uint32_t n, struct groups *g)
   }
   memcpy(at, g->first, sizeof *at * g->nval);
   for (uint32_t i = 0; i < n; i++)
-    g->order[at[entity_of(g, val ? val[i] : 0)]++] = i;
+    g->order[at[entity_of(g, val ? val[i] : dflt)]++] = i;
   free(at);
   return TR_OK;
 }
@@ -192,11 +194,11 @@ tr_status tr_write_msh_edges(const struct tr_mesh_view *m, const struct tr_edge_
                     version / 10, version % 10);
   struct groups g3[3];
   memset(g3, 0, sizeof g3);
-  tr_status s = group(ev->edge_marker, ev->nedges, &g3[0]);
+  tr_status s = group(ev->edge_marker, ev->nedges, 0, &g3[0]);
   if (s == TR_OK)
-    s = group(m->tri_marker, m->ntris, &g3[1]);
+    s = group(m->tri_marker, m->ntris, 0, &g3[1]);
   if (s == TR_OK)
-    s = group(m->region, m->ntets, &g3[2]);
+    s = group(m->region, m->ntets, 1, &g3[2]);
   if (s != TR_OK) {
     for (int d = 0; d < 3; d++)
       groups_free(&g3[d]);

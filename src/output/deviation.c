@@ -207,13 +207,17 @@ static int grid_build(tgrid *g, const struct tr_plc *plc, const double lo[3], co
   return 0;
 }
 
-tr_status tr_mesh_double_deviation(const struct tr_mesh *m, const struct tr_plc *plc,
-                                   double *dev, uint32_t *vertex)
+/* The input's bounding box diagonal and the triangle grid (or the list of every
+ * triangle when the grid would be too large). */
+typedef struct {
+  double diag;
+  tgrid g;
+  uint32_t *every;
+} finder;
+
+static tr_status finder_init(finder *f, const struct tr_plc *plc)
 {
-  *dev = 0;
-  *vertex = TR_NONE;
-  if (!m->vq || !plc->npoints)
-    return TR_OK;
+  memset(f, 0, sizeof *f);
   double lo[3], hi[3];
   for (int k = 0; k < 3; k++) {
     lo[k] = hi[k] = plc->xyz[k];
@@ -223,22 +227,52 @@ tr_status tr_mesh_double_deviation(const struct tr_mesh *m, const struct tr_plc 
       hi[k] = x > hi[k] ? x : hi[k];
     }
   }
-  double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                     (hi[2] - lo[2]) * (hi[2] - lo[2]));
-  tgrid g;
-  memset(&g, 0, sizeof g);
-  uint32_t *every = NULL;
-  int linear = grid_build(&g, plc, lo, hi);
-  if (linear) {
-    every = malloc(sizeof *every * (plc->ntris ? plc->ntris : 1));
-    if (!every) {
-      free(g.start);
-      free(g.list);
+  f->diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                 (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  if (grid_build(&f->g, plc, lo, hi)) {
+    free(f->g.start);
+    free(f->g.list);
+    f->g.start = f->g.list = NULL;
+    f->every = malloc(sizeof *f->every * (plc->ntris ? plc->ntris : 1));
+    if (!f->every)
       return tr_error(TR_ERR_NOMEM, "out of memory measuring the written doubles");
-    }
     for (uint32_t t = 0; t < plc->ntris; t++)
-      every[t] = t;
+      f->every[t] = t;
   }
+  return TR_OK;
+}
+
+static void finder_free(finder *f)
+{
+  free(f->g.start);
+  free(f->g.list);
+  free(f->every);
+}
+
+/* The candidate triangles of a point: those of its cell, or all. */
+static const uint32_t *candidates(const finder *f, const struct tr_plc *plc, const double *x,
+                                  uint32_t *n)
+{
+  if (f->every) {
+    *n = plc->ntris;
+    return f->every;
+  }
+  const tgrid *g = &f->g;
+  uint64_t c = ((uint64_t)cell(g, 2, x[2]) * g->dim[1] + cell(g, 1, x[1])) * g->dim[0] +
+               cell(g, 0, x[0]);
+  *n = g->start[c + 1] - g->start[c];
+  return g->list + g->start[c];
+}
+
+tr_status tr_mesh_double_deviation(const struct tr_mesh *m, const struct tr_plc *plc,
+                                   double *dev, uint32_t *vertex)
+{
+  *dev = 0;
+  *vertex = TR_NONE;
+  if (!m->vq || !plc->npoints)
+    return TR_OK;
+  finder f;
+  TR_CHECK(finder_init(&f, plc));
   double best = 0;
   for (uint32_t v = 0; v < m->nv; v++) {
     const tr_qpoint *q = m->vq[v];
@@ -246,23 +280,84 @@ tr_status tr_mesh_double_deviation(const struct tr_mesh *m, const struct tr_plc 
     if (!q || (q->err[0] == 0 && q->err[1] == 0 && q->err[2] == 0 && p[0] == q->near[0] &&
                p[1] == q->near[1] && p[2] == q->near[2]))
       continue; /* written exactly */
-    const uint32_t *cand = every;
-    uint32_t ncand = plc->ntris;
-    if (!linear) {
-      uint64_t c = ((uint64_t)cell(&g, 2, q->near[2]) * g.dim[1] + cell(&g, 1, q->near[1])) *
-                       g.dim[0] + cell(&g, 0, q->near[0]);
-      cand = g.list + g.start[c];
-      ncand = g.start[c + 1] - g.start[c];
-    }
+    uint32_t ncand;
+    const uint32_t *cand = candidates(&f, plc, q->near, &ncand);
     double d2 = from_constraint(plc, cand, ncand, q, p);
     if (d2 > best) {
       best = d2;
       *vertex = v;
     }
   }
-  free(g.start);
-  free(g.list);
-  free(every);
-  *dev = diag > 0 ? sqrt(best) / diag : 0;
+  *dev = f.diag > 0 ? sqrt(best) / f.diag : 0;
+  finder_free(&f);
+  return TR_OK;
+}
+
+/* Squared distance from p to the closed triangle abc, in doubles (a measure): the nearest
+ * point is in the face, on an edge or at a corner, by the signs of barycentric terms. */
+static double tri_dist2(const double *p, const double *a, const double *b, const double *c)
+{
+  double ab[3], ac[3], ap[3], r[3];
+  for (int k = 0; k < 3; k++) {
+    ab[k] = b[k] - a[k];
+    ac[k] = c[k] - a[k];
+    ap[k] = p[k] - a[k];
+  }
+#define DOT(u, v) ((u)[0] * (v)[0] + (u)[1] * (v)[1] + (u)[2] * (v)[2])
+  double d1 = DOT(ab, ap), d2 = DOT(ac, ap), s = 0, t = 0;
+  double bp[3] = {p[0] - b[0], p[1] - b[1], p[2] - b[2]};
+  double cp[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+  double d3 = DOT(ab, bp), d4 = DOT(ac, bp), d5 = DOT(ab, cp), d6 = DOT(ac, cp);
+  double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+#undef DOT
+  if (d1 <= 0 && d2 <= 0)
+    s = t = 0;
+  else if (d3 >= 0 && d4 <= d3)
+    s = 1, t = 0;
+  else if (d6 >= 0 && d5 <= d6)
+    s = 0, t = 1;
+  else if (vc <= 0 && d1 >= 0 && d3 <= 0)
+    s = d1 / (d1 - d3), t = 0;
+  else if (vb <= 0 && d2 >= 0 && d6 <= 0)
+    s = 0, t = d2 / (d2 - d6);
+  else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+    double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    s = 1 - w, t = w;
+  } else {
+    double den = 1 / (va + vb + vc);
+    s = vb * den, t = vc * den;
+  }
+  for (int k = 0; k < 3; k++)
+    r[k] = ap[k] - s * ab[k] - t * ac[k];
+  return r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+}
+
+tr_status tr_plc_points_distance(const struct tr_plc *plc, const double *xyz, uint32_t first,
+                                 uint32_t n, double *dev, uint32_t *vertex)
+{
+  *dev = 0;
+  *vertex = TR_NONE;
+  if (!plc->npoints || !plc->ntris || first >= n)
+    return TR_OK;
+  finder f;
+  TR_CHECK(finder_init(&f, plc));
+  double best = 0;
+  for (uint32_t v = first; v < n; v++) {
+    const double *p = xyz + 3 * (size_t)v;
+    uint32_t ncand;
+    const uint32_t *cand = candidates(&f, plc, p, &ncand);
+    double near = INFINITY;
+    for (uint32_t i = 0; i < ncand; i++) {
+      const uint32_t *t = plc->tris + 3 * (size_t)cand[i];
+      double d2 = tri_dist2(p, X(plc, t[0]), X(plc, t[1]), X(plc, t[2]));
+      near = d2 < near ? d2 : near;
+    }
+    if (near < INFINITY && near > best) { /* a point far from every triangle: not measured */
+      best = near;
+      *vertex = v;
+    }
+  }
+  *dev = f.diag > 0 ? sqrt(best) / f.diag : 0;
+  finder_free(&f);
   return TR_OK;
 }

@@ -215,6 +215,12 @@ with tempfile.TemporaryDirectory() as d:
         worst = max(worst, math.sqrt(float(d2)) / diag) if d2 is not None else worst
     expect(worst > 2.0 ** -40 and abs(st["double_deviation"] - worst) <= 1e-12 * worst,
            f"double_deviation {st['double_deviation']!r}, exact oracle {worst!r}")
+    # `check` on the rounded doubles: the distance from the surface, a lower bound of it
+    rc, _, err = run(["check", "far.off", "far.node"], d)
+    got = [l for l in err.split("\n") if "lie at most" in l]
+    val = float(got[0].split("lie at most ")[1].split()[0]) if got else -1
+    expect(rc == 0 and 2.0 ** -40 < val <= st["double_deviation"] * (1 + 1e-3) and "above 2^-40" in got[0],
+           f"check reports the distance of the rounded Steiner points: {rc} {err}")
     rc, _, err = run(["mesh", "far.off", "-o", "far2.mesh", "--strict-doubles", "--stats", "s9.json"], d)
     st = json.load(open(os.path.join(d, "s9.json")))
     expect(rc == 9 and "--strict-doubles" in err and st["status"] == "TR_ERR_INVALID_MESH",

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Interop: meshio reads our .mesh and .vtu output with the counts we wrote.
+"""Interop: meshio reads our .mesh, .vtu, .vtk and .msh (4.1, 2.2) output with the counts we
+wrote.
 Skipped (77) when meshio is not installed."""
 import os
 import subprocess
@@ -23,10 +24,11 @@ except ImportError:
 tetrec, data = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 fails = 0
 with tempfile.TemporaryDirectory() as d:
-    for ext in (".mesh", ".vtu"):
+    for ext in (".mesh", ".vtu", ".vtk", ".msh", "22.msh"):
         out = os.path.join(d, "cube" + ext)
         p = subprocess.run([tetrec, "delaunay", "-q", os.path.join(data, "../../examples/data/cube.off"),
-                            "-o", out], capture_output=True, text=True)
+                            "-o", out] + (["--msh-version", "2.2"] if ext == "22.msh" else []),
+                           capture_output=True, text=True)
         if p.returncode != 0:
             print("tetrec failed:", p.stderr)
             sys.exit(1)
@@ -35,4 +37,11 @@ with tempfile.TemporaryDirectory() as d:
         if len(m.points) != 8 or ntet != 6:
             print(f"FAILED {ext}: {len(m.points)} points, {ntet} tets (8, 6 expected)")
             fails += 1
+        if ext.endswith(".msh"):
+            # the physical tags of the tets are their regions, of the triangles their markers
+            phys = m.cell_data.get("gmsh:physical")
+            ntri = sum(len(c.data) for c in m.cells if c.type == "triangle")
+            if phys is None or ntri != 12:
+                print(f"FAILED {ext}: {ntri} boundary triangles (12), physical tags {phys is not None}")
+                fails += 1
 sys.exit(1 if fails else 0)
