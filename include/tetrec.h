@@ -79,7 +79,9 @@ typedef struct tr_options {
   uint64_t round_budget; /* star checks the rounding repair may spend (0: 2,000,000) */
   int strict_doubles; /* a written double farther than 2^-40 of the bounding box diagonal
                          from the constraint its exact point lies on is TR_ERR_INVALID_MESH
-                         (tr_mesh_double_deviation; default 0: a warning) */
+                         (default 0: a warning). Applied by the tetrec command after
+                         tr_mesh_plc with tr_mesh_double_deviation; tr_mesh_plc itself does
+                         not read it yet */
 } tr_options;
 void tr_options_default(tr_options *opt);
 

@@ -2,6 +2,7 @@
  * tr_plc_validate stops at the first. Exact duplicate vertices are merged first (as the
  * validator does), so that coincident copies are not read as open edges or intersections;
  * then the list: triangles of zero area (exact, they are left out of the other tests),
+ * duplicate triangles (the same three vertices; only the first copy goes on),
  * open edges (one triangle) and non-manifold edges (three or more: valid for `tetrec mesh`
  * as internal facets between regions, listed because they are often a modelling slip),
  * every self-intersecting pair (selfint.c, collect-all variant), every non-planar input
@@ -19,7 +20,7 @@
 #include "predicates.h"
 
 enum { ISSUE_SELFINT = 1, ISSUE_OPEN = 2, ISSUE_NONMANIFOLD = 3, ISSUE_NONPLANAR = 4,
-       ISSUE_ZERO_AREA = 5 };
+       ISSUE_ZERO_AREA = 5, ISSUE_DUPLICATE = 6 };
 
 static int cmp_xyz(const void *ctx, uint32_t a, uint32_t b)
 {
@@ -27,6 +28,16 @@ static int cmp_xyz(const void *ctx, uint32_t a, uint32_t b)
   for (int k = 0; k < 3; k++)
     if (p[k] != q[k])
       return p[k] < q[k] ? -1 : 1;
+  return 0;
+}
+
+/* Triangles by their sorted vertex triple (ids after merging). */
+static int cmp_tri(const void *ctx, uint32_t a, uint32_t b)
+{
+  const uint32_t *k = ctx;
+  for (int i = 0; i < 3; i++)
+    if (k[3 * (size_t)a + i] != k[3 * (size_t)b + i])
+      return k[3 * (size_t)a + i] < k[3 * (size_t)b + i] ? -1 : 1;
   return 0;
 }
 
@@ -65,7 +76,7 @@ static tr_status add(struct list *l, const uint32_t *v, int32_t mark)
 
 struct counts {
   size_t selfint;
-  uint32_t open, nonmanifold, nonplanar, zero;
+  uint32_t open, nonmanifold, nonplanar, zero, duplicate;
 };
 
 static tr_status analyse(const struct tr_plc *plc, struct list *tris, struct list *edges,
@@ -105,6 +116,53 @@ static tr_status analyse(const struct tr_plc *plc, struct list *tris, struct lis
     memcpy(w.tris + 3 * (size_t)w.ntris, v, sizeof v);
     keep[w.ntris++] = t;
   }
+  /* duplicates (the same three vertices, either orientation): listed, and only the first
+   * copy goes on, so that a repeated triangle is not also read as non-manifold edges */
+  uint32_t *key = st == TR_OK ? malloc(sizeof *key * 3 * (size_t)(w.ntris ? w.ntris : 1)) : NULL;
+  uint32_t *tord = st == TR_OK ? malloc(sizeof *tord * (w.ntris ? w.ntris : 1)) : NULL;
+  if (st == TR_OK && (!key || !tord))
+    st = tr_error(TR_ERR_NOMEM, "out of memory");
+  for (uint32_t t = 0; st == TR_OK && t < w.ntris; t++) {
+    uint32_t *k = key + 3 * (size_t)t;
+    memcpy(k, w.tris + 3 * (size_t)t, 3 * sizeof *k);
+    for (int i = 0; i < 2; i++)
+      for (int j = 0; j < 2 - i; j++)
+        if (k[j] > k[j + 1]) {
+          uint32_t x = k[j];
+          k[j] = k[j + 1];
+          k[j + 1] = x;
+        }
+    tord[t] = t;
+  }
+  if (st == TR_OK)
+    st = tr_sort_ids(tord, w.ntris, cmp_tri, key);
+  if (st == TR_OK) {
+    char *dup = calloc(w.ntris ? w.ntris : 1, 1);
+    if (!dup)
+      st = tr_error(TR_ERR_NOMEM, "out of memory");
+    for (uint32_t i = 1; st == TR_OK && i < w.ntris; i++)
+      if (cmp_tri(key, tord[i - 1], tord[i]) == 0)
+        dup[tord[i]] = 1; /* the stable sort keeps the first copy first */
+    uint32_t n = 0;
+    for (uint32_t i = 0, j = 1; st == TR_OK && i < w.ntris; i = j) {
+      for (j = i + 1; j < w.ntris && cmp_tri(key, tord[i], tord[j]) == 0; j++) {
+        printf("duplicate triangle %u (input face %u): the vertices of triangle %u\n",
+               keep[tord[j]], src ? src[keep[tord[j]]] : keep[tord[j]], keep[tord[i]]);
+        st = add(tris, plc->tris + 3 * (size_t)keep[tord[j]], ISSUE_DUPLICATE);
+        c->duplicate++;
+      }
+    }
+    for (uint32_t t = 0; st == TR_OK && t < w.ntris; t++)
+      if (!dup[t]) {
+        memmove(w.tris + 3 * (size_t)n, w.tris + 3 * (size_t)t, 3 * sizeof *w.tris);
+        keep[n++] = keep[t];
+      }
+    if (st == TR_OK)
+      w.ntris = n;
+    free(dup);
+  }
+  free(key);
+  free(tord);
   /* edge census on the merged triangles */
   if (st == TR_OK)
     st = tr_edge_slots_sorted(w.tris, w.ntris, nv, slots);
@@ -175,7 +233,7 @@ tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version,
   tr_plc *plc = NULL;
   TR_CHECK(tr_plc_read(in, &plc));
   struct list tris = {NULL, NULL, 0, 0, 3}, edges = {NULL, NULL, 0, 0, 2};
-  struct counts c = {0, 0, 0, 0, 0};
+  struct counts c = {0, 0, 0, 0, 0, 0};
   tr_status st = analyse(plc, &tris, &edges, &c);
   if (st == TR_OK && out) {
     struct tr_mesh_view v = {plc->npoints, plc->xyz, NULL, 0, NULL, NULL, tris.n, tris.a,
@@ -185,7 +243,7 @@ tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version,
                                              : tr_write_msh_edges(&v, &e, out, msh_version);
   }
   if (st == TR_OK) {
-    int any = c.selfint || c.open || c.nonmanifold || c.nonplanar || c.zero;
+    int any = c.selfint || c.open || c.nonmanifold || c.nonplanar || c.zero || c.duplicate;
     if (!quiet && !any)
       fprintf(stderr, "tetrec: %s: %u vertices, %u triangles: no defect found\n", in,
               plc->npoints, plc->ntris);
@@ -193,8 +251,8 @@ tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version,
       st = tr_error(c.selfint ? TR_ERR_SELF_INTERSECT
                     : c.open || c.nonmanifold ? TR_ERR_OPEN : TR_ERR_INPUT,
                     "%s: %zu self-intersecting pairs, %u open edges, %u non-manifold edges, "
-                    "%u non-planar polygons, %u zero-area triangles", in, c.selfint, c.open,
-                    c.nonmanifold, c.nonplanar, c.zero);
+                    "%u non-planar polygons, %u zero-area triangles, %u duplicate triangles",
+                    in, c.selfint, c.open, c.nonmanifold, c.nonplanar, c.zero, c.duplicate);
   }
   free(tris.a);
   free(tris.mark);

@@ -56,9 +56,10 @@ static const struct command {
     {"check-surface", C_CHECK_SURFACE, 1, "check-surface IN [-o FILE] [options]",
      "List every self-intersecting pair of triangles, every open or non-manifold edge and\n"
      "every non-planar input polygon (with its deviation) of the surface IN; exit non-zero\n"
-     "when there is any. -o FILE (.vtk or .msh) writes the offending triangles and edges,\n"
-     "with cell data / physical tag 1 intersecting triangle, 2 open edge, 3 non-manifold\n"
-     "edge, 4 triangle of a non-planar polygon, for ParaView or Gmsh.\n"},
+     "when there is any (also zero-area and duplicate triangles). -o FILE (.vtk or .msh)\n"
+     "writes the offending triangles and edges, with cell data / physical tag 1\n"
+     "intersecting triangle, 2 open edge, 3 non-manifold edge, 4 triangle of a non-planar\n"
+     "polygon, 5 zero-area, 6 duplicate triangle, for ParaView or Gmsh.\n"},
     {"convert", C_CONVERT, 2, "convert IN OUT [options]",
      "Convert a surface or mesh between formats (OUT: .off .mesh .vtu .vtk .msh or TetGen).\n"},
 };

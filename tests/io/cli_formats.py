@@ -188,6 +188,10 @@ with tempfile.TemporaryDirectory() as d:
            "check-surface -o .msh: the same listing")
     rc, _, err = run(["check-surface", "bad.off", "-o", "bad.mesh"], d)
     expect(rc == 1, f"check-surface -o .mesh -> 1: {rc} {err}")
+    rc, out, err = run(["check-surface", os.path.join(data, "bad", "dup_tri.off")], d)
+    dups = [l for l in out.split("\n") if l.startswith("duplicate triangle")]
+    expect(rc == 4 and len(dups) == 1 and "non-manifold" not in out,
+           f"a duplicate triangle is listed as such, not as non-manifold edges: {rc} {out}")
     rc, out, err = run(["check-surface", "c.off"], d)
     expect(rc == 0 and out == "" and "no defect" in err, f"check-surface of a valid surface: {rc} {err}")
     rc, _, err = run(["mesh", "-q", "bad.off", "--check-only"], d)
