@@ -2,8 +2,8 @@
  *
  * Surface input: triangles (type 2) and quadrangles (type 3, as polygons) with their
  * physical tag as marker: in 4.1 the first physical tag of the element's entity (from
- * $Entities; 0 when it has none or the file has no $Entities), in 2.2 the element's first
- * tag. Tetrahedra (type 4) go to plc->tets for `tetrec check`. Points (15) and lines (1)
+ * $Entities; 0 when it has none, is not declared there, or the file has no $Entities), in
+ * 2.2 the element's first tag. Tetrahedra (type 4) go to plc->tets for `tetrec check`. Points (15) and lines (1)
  * are skipped: in a surface mesh they are corners and edges of the triangles. Any other
  * element type (higher order, hexahedra, ...) is an error naming it, as are binary files,
  * format 4.0 (a different node layout), parametric nodes and partitioned entities.
@@ -279,11 +279,10 @@ static tr_status elements(tr_lex *lx, struct msh *g, tr_soup *s)
       TR_CHECK(count(lx, "elements in the block", 4, &n));
       int32_t marker = 0;
       if (g->ents_sorted && dim >= 0 && dim <= 3 && ent >= 0 && ent <= INT32_MAX) {
+        /* An entity missing from $Entities has no physical tag to give: meshio writes such
+         * files (blocks of an entity it does not declare), and Gmsh reads them. */
         const struct tagidx *e = find(g->ents, g->nents, ((uint64_t)dim << 32) | (uint64_t)ent);
-        if (!e)
-          return tr_error(TR_ERR_INPUT, "%s:%lu: entity (%lld, %lld) is not in $Entities",
-                          lx->name, lx->tokline, (long long)dim, (long long)ent);
-        marker = (int32_t)e->idx;
+        marker = e ? (int32_t)e->idx : 0;
       }
       for (uint64_t i = 0; i < n; i++) {
         TR_CHECK(tr_lex_i64(lx, "an element tag", &tag));

@@ -155,6 +155,15 @@ static void t_msh_reader(void)
     EXPECT(p->xyz[3 * 2] == 1 && p->xyz[3 * 2 + 1] == 1, "tag 10^12 is the third node");
   }
   tr_plc_destroy(p);
+  /* as meshio writes it: an element block of an entity $Entities does not declare */
+  static const char undeclared[] =
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n1 0 0 0 1 1 1 1 3 0\n"
+      "$EndEntities\n$Nodes\n1 3 1 3\n3 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n"
+      "$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n$EndElements\n";
+  p = read_buf(tr_read_msh_buf, undeclared, sizeof undeclared - 1, &s);
+  EXPECT(s == TR_OK && p->ntris == 1 && p->tri_marker[0] == 0,
+         "undeclared entity: no physical tag (%s)", tr_last_error());
+  tr_plc_destroy(p);
   static const char v22[] = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n"
                             "1 0 0 0\n2 1 0 0\n3 0 1 0\n7 0 0 1\n$EndNodes\n"
                             "$Elements\n3\n1 2 2 5 1 1 3 2\n2 1 2 5 1 1 2\n"
@@ -193,9 +202,9 @@ static void t_msh_reader(void)
        TR_ERR_PARSE},
       {"$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n2 1 1 1\n1\n0 0 0 0 0\n"
        "$EndNodes\n", "t:6: parametric nodes not supported", TR_ERR_UNSUPPORTED},
-      {"$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 0\n$EndEntities\n$Nodes\n"
-       "1 1 1 1\n2 1 0 1\n1\n0 0 0\n$EndNodes\n$Elements\n1 1 1 1\n2 1 2 1\n1 1 1 1\n"
-       "$EndElements\n", "t:15: entity (2, 1) is not in $Entities", TR_ERR_INPUT},
+      {"$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n2 1 0 1\n1\n0 0 0\n"
+       "$EndNodes\n$Elements\n1 1 1 1\n2 1 2 1\n1 1 1 1\n", "end of file while reading $EndElements",
+       TR_ERR_PARSE},
   };
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
     p = read_buf(tr_read_msh_buf, bad[i].text, strlen(bad[i].text), &s);
