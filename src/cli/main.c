@@ -374,6 +374,9 @@ static int cmd_mesh(const args *a)
     progress("validating", a->in);
     s = tr_plc_validate(plc, &opt);
     print_report(a, plc);
+    /* the validator stops at the first defect */
+    if ((s == TR_ERR_SELF_INTERSECT || s == TR_ERR_OPEN) && !a->quiet)
+      fprintf(stderr, "tetrec: note: `tetrec check-surface %s` lists every defect\n", a->in);
   }
   if (s == TR_OK) {
     stats.surface_nodes = tr_plc_num_points(plc);
@@ -507,8 +510,10 @@ static int cmd_check(const args *a)
   tr_options_default(&opt);
   opt.allow_open = a->allow_open;
   tr_status s = tr_plc_read(a->in, &surf);
-  if (s == TR_OK)
+  if (s == TR_OK) {
+    warn_nonplanar(a, surf);
     s = tr_plc_validate(surf, &opt);
+  }
   if (s == TR_OK) {
     /* MESH.node alone has no tets: read its .ele. */
     if (tr_io_has_ext(a->in2, ".node")) {
