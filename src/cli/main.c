@@ -49,8 +49,8 @@ static const struct command {
     {"delaunay", C_DELAUNAY, 1, "delaunay IN [-o OUT] [options]",
      "Delaunay tetrahedralization of the points of IN (its triangles are ignored).\n"},
     {"check", C_CHECK, 2, "check IN MESH [options]",
-     "Validate the tetrahedral mesh MESH (.mesh, .msh, .vtu is not read; .node/.ele) against\n"
-     "the surface IN: links, exact orientation, and, when every vertex is known exactly\n"
+     "Validate the tetrahedral mesh MESH (.mesh, .msh or .node/.ele) against the surface\n"
+     "IN: links, exact orientation, and, when every vertex is known exactly\n"
      "(an --exact .node, or no Steiner points), exact conformity and volume; also the\n"
      "largest distance of a rounded Steiner point from the input surface.\n"},
     {"check-surface", C_CHECK_SURFACE, 1, "check-surface IN [-o FILE] [options]",
