@@ -462,7 +462,8 @@ tr_status tr_input_self_intersection_pairs(const struct tr_plc *plc, int method,
     return st;
   }
   /* the broad phases meet pairs in different orders: sort for one answer */
-  qsort(s.pairs, s.npairs, 2 * sizeof *s.pairs, cmp_pair);
+  if (s.npairs)
+    qsort(s.pairs, s.npairs, 2 * sizeof *s.pairs, cmp_pair);
   *pairs = s.pairs;
   *npairs = s.npairs;
   return TR_OK;

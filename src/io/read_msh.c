@@ -71,7 +71,8 @@ static const struct tagidx *find(const struct tagidx *a, uint32_t n, uint64_t ta
 /* Sorts a tag table and rejects a tag given twice. */
 static tr_status seal(tr_lex *lx, struct tagidx *a, uint32_t n, const char *what)
 {
-  qsort(a, n, sizeof *a, cmp_tag);
+  if (n > 1)
+    qsort(a, n, sizeof *a, cmp_tag);
   for (uint32_t i = 1; i < n; i++)
     if (a[i].tag == a[i - 1].tag)
       return tr_error(TR_ERR_INPUT, "%s: %s tag %llu defined twice", lx->name, what,
