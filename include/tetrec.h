@@ -89,7 +89,7 @@ void tr_plc_destroy(tr_plc *plc);
 /* Copies the arrays. xyz: 3*npoints doubles; tris: 3*ntris indices; markers may be NULL. */
 tr_status tr_plc_set(tr_plc *plc, const double *xyz, uint32_t npoints, const uint32_t *tris,
                      uint32_t ntris, const int32_t *markers);
-/* Reads a surface; the format is chosen from the extension (.off .stl .obj .ply .mesh
+/* Reads a surface; the format is chosen from the extension (.off .stl .obj .ply .mesh .msh
  * .node .poly .smesh). Polygons are triangulated exactly in their plane. */
 tr_status tr_plc_read(const char *path, tr_plc **out);
 uint32_t tr_plc_num_points(const tr_plc *plc);
@@ -198,6 +198,11 @@ typedef struct tr_options {
   int keep_surface;      /* no Steiner point on the surface: the output's boundary faces
                             are exactly the input triangles, or the call fails naming the
                             point (TetGen's -Y; implies no smoothing; default 0) */
+  int strict_doubles; /* a written double farther than 2^-40 of the bounding box diagonal
+                         from the constraint its exact point lies on is TR_ERR_INVALID_MESH
+                         (default 0: a warning). Applied by the tetrec command after
+                         tr_mesh_plc with tr_mesh_double_deviation; tr_mesh_plc itself does
+                         not read it yet */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
@@ -223,6 +228,7 @@ typedef struct tr_stats {
    * surface after recovery (src/suppress): removed, or relocated into the interior */
   uint64_t steiner_on_edges, steiner_on_facets, steiner_interior;
   uint64_t steiner_removed, steiner_relocated;
+  double double_deviation; /* tr_mesh_double_deviation of the written doubles */
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).
@@ -244,21 +250,36 @@ tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out);
 tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt);
 /* What the last tr_plc_validate repaired, one line per item ("" if nothing). */
 const char *tr_plc_report(const tr_plc *plc);
-/* Writes the surface (points + triangles + markers) as .mesh, .vtu, .off or TetGen
- * .node/.face (any other name is a TetGen base name). */
+/* Writes the surface (points + triangles + markers) as .mesh, .vtu, .vtk, .msh, .off or
+ * TetGen .node/.face; a name whose extension has no letter ("out", "cube.1") is a TetGen
+ * base name; any other extension is TR_ERR_USAGE. */
 tr_status tr_plc_write(const tr_plc *plc, const char *path);
-/* Writes a mesh: .mesh (Medit), .vtu (VTK XML), .node/.ele/.face or a TetGen base name
- * (writes base.node, base.ele, base.face). exact != 0: Steiner points as exact
+/* Writes a mesh: .mesh (Medit), .vtu (VTK XML), .vtk (legacy VTK), .msh (Gmsh 4.1),
+ * .node/.ele/.face or a TetGen base name as above (writes base.node, base.ele,
+ * base.face); any other extension is TR_ERR_USAGE. exact != 0: Steiner points as exact
  * rationals num/den in the .node file. Tets carry their region (Medit reference, .ele
- * attribute, VTU "region" cell data). The faces written are those of
- * tr_mesh_boundary_faces with their markers (Medit triangle references, .face markers,
- * VTU triangle cells after the tets with "marker" cell data), plus, for an open input
- * meshed within its convex hull, the hull faces with marker 0; a tr_delaunay mesh writes
- * its hull faces with marker 1. */
+ * attribute, VTU/VTK "region" cell data, Gmsh physical tag). The faces written are those
+ * of tr_mesh_boundary_faces with their markers (Medit triangle references, .face
+ * markers, VTU triangle cells after the tets with "marker" cell data, Gmsh physical
+ * tags), plus, for an open input meshed within its convex hull, the hull faces with
+ * marker 0; a tr_delaunay mesh writes its hull faces with marker 1. */
 tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact);
-/* Writes the statistics as one JSON object (stage_seconds as "stage_seconds": {"reading":
- * ..., one key per tr_stage_name}). */
+/* The same with the Gmsh format version of a .msh output: 41 (4.1) or 22 (2.2). */
+tr_status tr_mesh_write_ex(const tr_mesh *mesh, const char *path, int exact, int msh_version);
+tr_status tr_plc_write_ex(const tr_plc *plc, const char *path, int msh_version);
+/* The largest distance of a written (double) Steiner point of mesh from the input edge or
+ * facet of plc (the validated input it was meshed from) that its exact point lies on,
+ * divided by the diagonal of plc's bounding box; *vertex = that point (UINT32_MAX if every
+ * Steiner point is written exactly). Above 2^-40 the CLI warns, or fails with
+ * --strict-doubles (tr_options.strict_doubles). */
+tr_status tr_mesh_double_deviation(const tr_mesh *mesh, const tr_plc *plc, double *dev,
+                                   uint32_t *vertex);
+/* Writes the statistics as one JSON object ("status": "TR_OK", then one key per field,
+ * stage_seconds as {"reading": ..., one key per tr_stage_name}). */
 tr_status tr_stats_write_json(const tr_stats *stats, const char *path);
+/* The same for a run that ended with `status` (its tr_status_name) and `message`. */
+tr_status tr_stats_write_json_status(const tr_stats *stats, tr_status status,
+                                     const char *message, const char *path);
 /* The whole pipeline (validation -> smoothing -> Delaunay -> edge and facet recovery ->
  * outer removal by coloring -> rounding). opt and stats may be NULL. Thread-safe: runs on
  * several threads at once give the same meshes as one after the other. */

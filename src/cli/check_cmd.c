@@ -13,6 +13,7 @@
 #include "mesh/check.h"
 #include "mesh/conform.h"
 #include "mesh/mesh.h"
+#include "output/deviation.h"
 #include "smooth/smooth.h"
 
 typedef struct {
@@ -182,6 +183,15 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
             "conformity and the exact volume cannot be verified on them (write the mesh with "
             "--exact for that); links and orientation checked exactly on the doubles\n",
             nsteiner);
+  double dev = 0;
+  uint32_t far = 0;
+  if (st == TR_OK && rounded)
+    st = tr_plc_points_distance(surface, vol->xyz, surface->npoints, vol->npoints, &dev, &far);
+  if (st == TR_OK && rounded && verbose)
+    fprintf(stderr, "tetrec: check: the rounded Steiner points lie at most %.3g of the bounding "
+            "box diagonal from the surface%s\n", dev,
+            dev > 0x1p-40 ? " (above 2^-40: write the mesh with --exact to have them exactly)"
+                          : "");
   if (st == TR_OK && verbose) {
     if (rounded)
       fprintf(stderr, "tetrec: check: %u tets, links and orientation are valid\n", vol->ntets);

@@ -18,5 +18,11 @@
 tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, tr_qpoint **exact,
                        int exact_file, int allow_open, int verbose);
 
+/* `check-surface`: prints every defect of the surface in to stdout (check_surface.c),
+ * writes them to out (.vtk or .msh; may be NULL), and fails with the status of the worst
+ * kind (7 self-intersection, 6 open or non-manifold edge, 4 non-planar polygon,
+ * zero-area or duplicate triangle) when there is any. */
+tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version, int quiet);
+
 
 #endif

@@ -13,47 +13,20 @@
 #include "tetrec.h"
 
 static const char usage[] =
-    "usage: tetrec COMMAND [options] FILES\n"
+    "usage: tetrec COMMAND [options] FILES   (tetrec COMMAND --help: that command's options)\n"
     "\n"
     "commands:\n"
-    "  mesh IN [-o OUT]      tetrahedralize the volume bounded by the surface IN\n"
-    "  delaunay IN [-o OUT]  Delaunay tetrahedralization of the points of IN\n"
-    "  check IN MESH         validate MESH (.mesh, or .ele/.node) against the surface IN\n"
-    "  convert IN OUT        convert a surface or mesh between formats\n"
+    "  mesh IN [-o OUT]        tetrahedralize the volume bounded by the surface IN\n"
+    "  delaunay IN [-o OUT]    Delaunay tetrahedralization of the points of IN\n"
+    "  check IN MESH           validate MESH (.mesh, .msh, or .ele/.node) against IN\n"
+    "  check-surface IN [-o F] list every defect of the surface IN\n"
+    "  convert IN OUT          convert a surface or mesh between formats\n"
     "\n"
-    "input formats (by extension): .off .stl .obj .ply .mesh .node .poly .smesh\n"
-    "output: .mesh (Medit), .vtu (VTK), .node/.ele/.face or a TetGen base name;\n"
-    "  without -o, IN's name with '.1' (cube.off -> cube.1.node/.ele/.face), like TetGen\n"
-    "\n"
-    "options:\n"
-    "  -o OUT            output file or base name\n"
-    "  -q                quiet: errors only\n"
-    "  -v                verbose\n"
-    "  --stats FILE      write statistics as JSON\n"
-    "  --exact           write Steiner points as exact rationals num/den in .node\n"
-    "                    (exactly on their edges and facets). Without it every output\n"
-    "                    coordinate is a double: a Steiner point is its nearest double,\n"
-    "                    moved by a few ulps where that is needed to keep every tet\n"
-    "                    strictly positive, so it may lie a hair off its facet. `check`\n"
-    "                    verifies exact conformity and volume on an --exact .node, and\n"
-    "                    only links and orientation on rounded Steiner points\n"
-    "  --allow-open      accept open or non-manifold surfaces\n"
-    "  --check-only      only read and validate the input (mesh)\n"
-    "  --no-smooth       no surface diagonal swaps before recovery\n"
-    "  --keep-surface, -Y  no Steiner point on the surface: the boundary faces of the\n"
-    "                    output are exactly the input triangles (no smoothing either);\n"
-    "                    fails naming the point where this cannot be done\n"
-    "  --keep-steiner    leave the recovery's Steiner points where they are (by default\n"
-    "                    the ones on the surface are removed or moved inside where\n"
-    "                    that can be done exactly)\n"
-    "  --round-budget N  star checks the rounding repair may spend before it gives up\n"
-    "                    (exit 9; default 2000000)\n"
-    "  --recovery MODE   default: every recovery step; paper: the published algorithm\n"
-    "                    only (Swap23/Swap44 and pipels for edges, Swap32 and\n"
-    "                    clusterels for facets), to reproduce the paper's Table 14;\n"
-    "                    no-facet-flips: the default without the general flips for\n"
-    "                    facets (cavity retriangulation right after Swap32)\n"
-    "  --help, --version\n"
+    "input formats (by extension): .off .stl .obj .ply .mesh .msh .node .poly .smesh\n"
+    "output: .mesh (Medit), .vtu (VTK XML), .vtk (legacy VTK), .msh (Gmsh),\n"
+    "  .node/.ele/.face or a TetGen base name (a name whose extension has no letter,\n"
+    "  like out or cube.1); any other extension is an error. Without -o, IN's name with\n"
+    "  '.1' (cube.off -> cube.1.node/.ele/.face), like TetGen\n"
     "\n"
     "exit status (= tr_status):\n"
     "  0 ok, 1 usage, 2 I/O error, 3 parse error, 4 invalid input (NaN, bad index,\n"
@@ -61,9 +34,91 @@ static const char usage[] =
     "  7 self-intersecting input, 8 out of memory, 9 invalid mesh, 10 internal error,\n"
     "  11 not implemented\n";
 
+enum { C_MESH = 1, C_DELAUNAY = 2, C_CHECK = 4, C_CONVERT = 8, C_CHECK_SURFACE = 16, C_ALL = 31 };
+
+static const struct command {
+  const char *name;
+  unsigned bit;
+  int nfiles;
+  const char *synopsis, *help;
+} commands[] = {
+    {"mesh", C_MESH, 1, "mesh IN [-o OUT] [options]",
+     "Tetrahedralize the volume bounded by the closed surface IN: a mesh that contains\n"
+     "every input vertex, edge and facet, every geometric decision exact. OUT's\n"
+     "extension picks the format; every output path is checked writable before meshing.\n"},
+    {"delaunay", C_DELAUNAY, 1, "delaunay IN [-o OUT] [options]",
+     "Delaunay tetrahedralization of the points of IN (its triangles are ignored).\n"},
+    {"check", C_CHECK, 2, "check IN MESH [options]",
+     "Validate the tetrahedral mesh MESH (.mesh, .msh or .node/.ele) against the surface\n"
+     "IN: links, exact orientation, and, when every vertex is known exactly\n"
+     "(an --exact .node, or no Steiner points), exact conformity and volume; also the\n"
+     "largest distance of a rounded Steiner point from the input surface.\n"},
+    {"check-surface", C_CHECK_SURFACE, 1, "check-surface IN [-o FILE] [options]",
+     "List every self-intersecting pair of triangles, every open or non-manifold edge and\n"
+     "every non-planar input polygon (with its deviation) of the surface IN; exit non-zero\n"
+     "when there is any (also zero-area and duplicate triangles). -o FILE (.vtk or .msh)\n"
+     "writes the offending triangles and edges, with cell data / physical tag 1\n"
+     "intersecting triangle, 2 open edge, 3 non-manifold edge, 4 triangle of a non-planar\n"
+     "polygon, 5 zero-area, 6 duplicate triangle, for ParaView or Gmsh.\n"},
+    {"convert", C_CONVERT, 2, "convert IN OUT [options]",
+     "Convert a surface or mesh between formats (OUT: .off .mesh .vtu .vtk .msh or TetGen).\n"},
+};
+
+static const struct option {
+  const char *name, *arg;
+  unsigned cmds;
+  const char *help;
+} options[] = {
+    {"-o", "OUT", C_MESH | C_DELAUNAY | C_CHECK_SURFACE, "output file or TetGen base name"},
+    {"-q", NULL, C_ALL, "quiet: errors only"},
+    {"-v", NULL, C_ALL, "verbose"},
+    {"--stats", "FILE", C_MESH | C_DELAUNAY,
+     "write statistics as JSON, also when the run fails (with\n"
+     "\"status\" and \"message\")"},
+    {"--exact", NULL, C_MESH | C_DELAUNAY,
+     "write Steiner points as exact rationals num/den in the\n"
+     "TetGen .node (exactly on their edges and facets). Without it\n"
+     "every output coordinate is a double: a Steiner point is its\n"
+     "nearest double, moved by a few ulps where that is needed to\n"
+     "keep every tet strictly positive, so it may lie a hair off\n"
+     "its facet (see --strict-doubles)"},
+    {"--msh-version", "V", C_MESH | C_DELAUNAY | C_CONVERT | C_CHECK_SURFACE,
+     ".msh output format: 4.1 (default) or 2.2"},
+    {"--allow-open", NULL, C_MESH | C_CHECK, "accept open or non-manifold surfaces"},
+    {"--check-only", NULL, C_MESH, "only read and validate the input"},
+    {"--no-smooth", NULL, C_MESH, "no surface diagonal swaps before recovery"},
+    {"--keep-surface", NULL, C_MESH,
+     "no Steiner point on the surface: the boundary faces of the\n"
+     "output are exactly the input triangles (no smoothing either);\n"
+     "fails naming the point where this cannot be done"},
+    {"-Y", NULL, C_MESH, "the same as --keep-surface (TetGen's switch)"},
+    {"--keep-steiner", NULL, C_MESH,
+     "leave the recovery's Steiner points where they are (by\n"
+     "default the ones on the surface are removed or moved inside\n"
+     "where that can be done exactly)"},
+    {"--recovery", "MODE", C_MESH,
+     "default: every recovery step; paper: the published\n"
+     "algorithm only (Swap23/Swap44 and pipels for edges, Swap32\n"
+     "and clusterels for facets), to reproduce the paper's Table\n"
+     "14; no-facet-flips: the default without the general flips\n"
+     "for facets (cavity retriangulation right after Swap32)"},
+    {"--round-budget", "N", C_MESH,
+     "star checks the rounding repair may spend before it gives\n"
+     "up (exit 9; default 2000000)"},
+    {"--strict-doubles", NULL, C_MESH,
+     "fail (exit 9) when a written double lies farther than\n"
+     "2^-40 of the bounding box diagonal from the edge or facet\n"
+     "its exact point lies on (a warning otherwise)"},
+};
+#define NOPTIONS (sizeof options / sizeof options[0])
+#define NCOMMANDS (sizeof commands / sizeof commands[0])
+
 typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
-  int quiet, verbose, exact, allow_open, check_only, no_smooth, keep_surface, keep_steiner;
+  unsigned cmd_bit;
+  int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
+  int keep_surface, keep_steiner;
+  int msh_version; /* 41 or 22 */
   uint64_t round_budget; /* 0: the default */
   int recovery;          /* tr_options.recovery */
 } args;
@@ -102,84 +157,150 @@ static char *default_out(const char *in)
   return s;
 }
 
+static void print_help(const struct command *c)
+{
+  if (!c) {
+    fputs(usage, stdout);
+    printf("\noptions (each command's --help says which apply):\n");
+  } else
+    printf("usage: tetrec %s\n\n%s\noptions:\n", c->synopsis, c->help);
+  for (size_t i = 0; i < NOPTIONS; i++) {
+    if (c && !(options[i].cmds & c->bit))
+      continue;
+    char head[40];
+    snprintf(head, sizeof head, "%s%s%s", options[i].name, options[i].arg ? " " : "",
+             options[i].arg ? options[i].arg : "");
+    printf("  %-18s", head);
+    for (const char *h = options[i].help; *h;) {
+      const char *nl = strchr(h, '\n');
+      int n = nl ? (int)(nl - h) : (int)strlen(h);
+      printf("%.*s\n", n, h);
+      h += n + (nl ? 1 : 0);
+      if (*h)
+        printf("  %-18s", "");
+    }
+  }
+  printf("  --help, --version\n");
+}
+
+/* One option with its value (NULL for flags); the table above already checked that it
+ * applies to the command. */
+static tr_status set_option(args *a, const char *name, const char *v)
+{
+  if (!strcmp(name, "-o"))
+    a->out = v;
+  else if (!strcmp(name, "--stats"))
+    a->stats = v;
+  else if (!strcmp(name, "-q"))
+    a->quiet = 1;
+  else if (!strcmp(name, "-v"))
+    a->verbose = 1;
+  else if (!strcmp(name, "--exact"))
+    a->exact = 1;
+  else if (!strcmp(name, "--allow-open"))
+    a->allow_open = 1;
+  else if (!strcmp(name, "--check-only"))
+    a->check_only = 1;
+  else if (!strcmp(name, "--no-smooth"))
+    a->no_smooth = 1;
+  else if (!strcmp(name, "--strict-doubles"))
+    a->strict_doubles = 1;
+  else if (!strcmp(name, "--keep-surface") || !strcmp(name, "-Y"))
+    a->keep_surface = 1;
+  else if (!strcmp(name, "--keep-steiner"))
+    a->keep_steiner = 1;
+  else if (!strcmp(name, "--recovery")) {
+    if (!strcmp(v, "paper"))
+      a->recovery = 1;
+    else if (!strcmp(v, "default"))
+      a->recovery = 0;
+    else if (!strcmp(v, "no-facet-flips"))
+      a->recovery = 2;
+    else
+      return tr_error(TR_ERR_USAGE, "--recovery needs 'default', 'paper' or "
+                      "'no-facet-flips', not '%s'", v);
+  }
+  else if (!strcmp(name, "--msh-version")) {
+    if (!strcmp(v, "4.1") || !strcmp(v, "4"))
+      a->msh_version = 41;
+    else if (!strcmp(v, "2.2") || !strcmp(v, "2"))
+      a->msh_version = 22;
+    else
+      return tr_error(TR_ERR_USAGE, "--msh-version is 4.1 or 2.2, not '%s'", v);
+  } else if (!strcmp(name, "--round-budget")) {
+    /* digits only, 1 .. 10^15: strtoull alone would take "-1", "+5" and " 7" */
+    size_t len = strlen(v);
+    int ok = len > 0 && len <= 16 && strspn(v, "0123456789") == len;
+    unsigned long long n = ok ? strtoull(v, NULL, 10) : 0;
+    if (!ok || n == 0 || n > 1000000000000000ull)
+      return tr_error(TR_ERR_USAGE, "--round-budget needs a whole number from 1 to 10^15, "
+                      "not '%s'", v);
+    a->round_budget = n;
+  } else
+    return tr_error(TR_ERR_INTERNAL, "option %s in the table but not handled", name);
+  return TR_OK;
+}
+
 static int parse_args(int argc, char **argv, args *a)
 {
   memset(a, 0, sizeof *a);
+  a->msh_version = 41;
   const char *pos[3] = {0};
-  int npos = 0;
+  int npos = 0, help = 0;
+  unsigned char given[NOPTIONS] = {0};
   for (int i = 1; i < argc; i++) {
     const char *s = argv[i];
     if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
-      fputs(usage, stdout);
-      exit(0);
-    } else if (!strcmp(s, "--version")) {
+      help = 1;
+      continue;
+    }
+    if (!strcmp(s, "--version")) {
       printf("tetrec %s\n", TETREC_VERSION_STRING);
       exit(0);
-    } else if (!strcmp(s, "-o") || !strcmp(s, "--stats")) {
+    }
+    if (!(s[0] == '-' && s[1])) {
+      if (npos == 3)
+        return tr_error(TR_ERR_USAGE, "too many arguments (see tetrec --help)");
+      pos[npos++] = s;
+      continue;
+    }
+    size_t k = 0;
+    while (k < NOPTIONS && strcmp(s, options[k].name))
+      k++;
+    if (k == NOPTIONS)
+      return tr_error(TR_ERR_USAGE, "unknown option '%s' (see tetrec --help)", s);
+    const char *v = NULL;
+    if (options[k].arg) {
       if (i + 1 >= argc)
         return tr_error(TR_ERR_USAGE, "%s needs an argument", s);
-      if (s[1] == 'o')
-        a->out = argv[++i];
-      else
-        a->stats = argv[++i];
-    } else if (!strcmp(s, "-q"))
-      a->quiet = 1;
-    else if (!strcmp(s, "-v"))
-      a->verbose = 1;
-    else if (!strcmp(s, "--exact"))
-      a->exact = 1;
-    else if (!strcmp(s, "--allow-open"))
-      a->allow_open = 1;
-    else if (!strcmp(s, "--check-only"))
-      a->check_only = 1;
-    else if (!strcmp(s, "--no-smooth"))
-      a->no_smooth = 1;
-    else if (!strcmp(s, "--keep-surface") || !strcmp(s, "-Y"))
-      a->keep_surface = 1;
-    else if (!strcmp(s, "--keep-steiner"))
-      a->keep_steiner = 1;
-    else if (!strcmp(s, "--round-budget")) {
-      /* digits only, 1 .. 10^15: strtoull alone would take "-1", "+5" and " 7" */
-      const char *v = i + 1 < argc ? argv[++i] : "";
-      size_t len = strlen(v);
-      int ok = len > 0 && len <= 16 && strspn(v, "0123456789") == len;
-      unsigned long long n = ok ? strtoull(v, NULL, 10) : 0;
-      if (!ok || n == 0 || n > 1000000000000000ull)
-        return tr_error(TR_ERR_USAGE, "--round-budget needs a whole number from 1 to 10^15, "
-                        "not '%s'", v);
-      a->round_budget = n;
+      v = argv[++i];
     }
-    else if (!strcmp(s, "--recovery")) {
-      const char *v = i + 1 < argc ? argv[++i] : "";
-      if (!strcmp(v, "paper"))
-        a->recovery = 1;
-      else if (!strcmp(v, "default"))
-        a->recovery = 0;
-      else if (!strcmp(v, "no-facet-flips"))
-        a->recovery = 2;
-      else
-        return tr_error(TR_ERR_USAGE, "--recovery needs 'default', 'paper' or "
-                        "'no-facet-flips', not '%s'", v);
-    }
-    else if (s[0] == '-' && s[1])
-      return tr_error(TR_ERR_USAGE, "unknown option '%s' (see tetrec --help)", s);
-    else if (npos < 3)
-      pos[npos++] = s;
-    else
-      return tr_error(TR_ERR_USAGE, "too many arguments (see tetrec --help)");
+    given[k] = 1;
+    TR_CHECK(set_option(a, s, v));
+  }
+  const struct command *c = NULL;
+  for (size_t k = 0; npos && k < NCOMMANDS; k++)
+    if (!strcmp(pos[0], commands[k].name))
+      c = &commands[k];
+  for (size_t k = 0; c && k < NOPTIONS; k++)
+    if (given[k] && !(options[k].cmds & c->bit))
+      return tr_error(TR_ERR_USAGE, "option %s does not apply to '%s' (see tetrec %s --help)",
+                      options[k].name, c->name, c->name);
+  if (help) {
+    print_help(c);
+    exit(0);
   }
   if (npos == 0)
     return tr_error(TR_ERR_USAGE, "no command (see tetrec --help)");
-  a->cmd = pos[0];
+  if (!c)
+    return tr_error(TR_ERR_USAGE, "unknown command '%s' (see tetrec --help)", pos[0]);
+  a->cmd = c->name;
+  a->cmd_bit = c->bit;
   a->in = pos[1];
   a->in2 = pos[2];
-  int want = (!strcmp(a->cmd, "check") || !strcmp(a->cmd, "convert")) ? 3 : 2;
-  if (strcmp(a->cmd, "mesh") && strcmp(a->cmd, "delaunay") && strcmp(a->cmd, "check") &&
-      strcmp(a->cmd, "convert"))
-    return tr_error(TR_ERR_USAGE, "unknown command '%s' (see tetrec --help)", a->cmd);
-  if (npos != want)
-    return tr_error(TR_ERR_USAGE, "'%s' takes %d file argument%s (see tetrec --help)", a->cmd,
-                    want - 1, want == 3 ? "s" : "");
+  if (npos != c->nfiles + 1)
+    return tr_error(TR_ERR_USAGE, "'%s' takes %d file argument%s (see tetrec %s --help)",
+                    c->name, c->nfiles, c->nfiles > 1 ? "s" : "", c->name);
   return TR_OK;
 }
 
@@ -197,12 +318,62 @@ static void print_report(const args *a, const tr_plc *plc)
   }
 }
 
-static int write_stats(const args *a, const tr_stats *st)
+/* The end of mesh and delaunay: the error (if any) on stderr, and the statistics, written
+ * on failure too with the status and its message. */
+static int finish(const args *a, tr_stats *st, double t0, tr_status s)
 {
-  if (!a->stats)
-    return 0;
-  tr_status s = tr_stats_write_json(st, a->stats);
-  return s == TR_OK ? 0 : fail(s);
+  st->total_seconds = now() - t0;
+  char *msg = NULL;
+  int rc = 0;
+  if (s != TR_OK) {
+    const char *e = tr_last_error();
+    msg = malloc(strlen(e) + 1);
+    if (msg)
+      strcpy(msg, e);
+    rc = fail(s);
+  }
+  if (a->stats) {
+    tr_status w = tr_stats_write_json_status(st, s, msg ? msg : "", a->stats);
+    if (w != TR_OK)
+      rc = rc ? (fail(w), rc) : fail(w);
+  }
+  free(msg);
+  return rc;
+}
+
+/* What the output names say before any work: the format, and that --exact has a .node to
+ * go to. */
+static tr_status check_names(const args *a, const char *path)
+{
+  TR_CHECK(tr_io_check_out_name(path, 0));
+  if (a->exact && tr_io_out_format(path) != TR_OUT_TETGEN)
+    return tr_error(TR_ERR_USAGE, "--exact writes exact rationals only to a TetGen .node file, "
+                    "not to %s", path);
+  return TR_OK;
+}
+
+/* Every output file can be created: checked once the input is read (a missing input is the
+ * better message), before the work that takes time. */
+static tr_status check_writable(const args *a, const char *path)
+{
+  if (a->stats)
+    TR_CHECK(tr_io_check_file_writable(a->stats));
+  return tr_io_check_writable(path);
+}
+
+/* A warning per non-planar input polygon (they are triangulated as given). */
+static void warn_nonplanar(const args *a, const tr_plc *plc)
+{
+  tr_nonplanar *np = NULL;
+  uint32_t n = 0;
+  if (a->quiet || tr_plc_nonplanar(plc, &np, &n) != TR_OK)
+    return;
+  for (uint32_t i = 0; i < n; i++)
+    fprintf(stderr, "tetrec: warning: %s: polygon %u (triangles %u..%u) is not planar: a vertex "
+            "lies %.3g from the plane of its largest triangle (%.3g of its bounding box diagonal); "
+            "triangulated as given\n", a->in, np[i].facet, np[i].first_tri,
+            np[i].first_tri + np[i].ntris - 1, np[i].deviation, np[i].relative);
+  free(np);
 }
 
 static int cmd_mesh(const args *a)
@@ -213,68 +384,90 @@ static int cmd_mesh(const args *a)
   opt.smooth = !a->no_smooth;
   opt.verbose = a->quiet ? 0 : a->verbose ? 2 : 1;
   opt.round_budget = a->round_budget;
+  opt.strict_doubles = a->strict_doubles;
   opt.recovery = a->recovery;
   opt.keep_surface = a->keep_surface;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();
+  char *out = a->out ? NULL : default_out(a->in);
+  const char *path = a->out ? a->out : out;
+  if (!path)
+    return finish(a, &stats, t0, tr_error(TR_ERR_NOMEM, "out of memory"));
+  tr_status s = a->check_only ? TR_OK : check_names(a, path);
   tr_plc *plc = NULL;
-  progress("reading", a->in);
-  tr_status s = tr_plc_read(a->in, &plc);
-  double t_read = now() - t0;
-  if (s != TR_OK)
-    return fail(s);
-  if (a->verbose)
-    fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(TR_STAGE_READ), t_read);
-  progress("validating", a->in);
-  s = tr_plc_validate(plc, &opt);
-  print_report(a, plc);
-  if (s != TR_OK) {
-    tr_plc_destroy(plc);
-    return fail(s);
+  if (s == TR_OK) {
+    progress("reading", a->in);
+    s = tr_plc_read(a->in, &plc);
   }
-  stats.surface_nodes = tr_plc_num_points(plc);
-  stats.surface_facets = tr_plc_num_triangles(plc);
-  if (!a->quiet)
-    fprintf(stderr, "tetrec: %s: %u vertices, %u triangles: valid\n", a->in,
-            tr_plc_num_points(plc), tr_plc_num_triangles(plc));
-  stats.total_seconds = now() - t0;
-  stats.stage_seconds[TR_STAGE_READ] = t_read;
-  if (a->check_only) {
+  stats.stage_seconds[TR_STAGE_READ] = now() - t0;
+  if (s == TR_OK && a->verbose)
+    fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(TR_STAGE_READ),
+            stats.stage_seconds[TR_STAGE_READ]);
+  if (s == TR_OK)
+    s = a->check_only ? (a->stats ? tr_io_check_file_writable(a->stats) : TR_OK)
+                      : check_writable(a, path);
+  if (s == TR_OK) {
+    warn_nonplanar(a, plc);
+    progress("validating", a->in);
+    s = tr_plc_validate(plc, &opt);
+    print_report(a, plc);
+    /* the validator stops at the first defect */
+    if ((s == TR_ERR_SELF_INTERSECT || s == TR_ERR_OPEN) && !a->quiet)
+      fprintf(stderr, "tetrec: note: `tetrec check-surface %s` lists every defect\n", a->in);
+  }
+  if (s == TR_OK) {
+    stats.surface_nodes = tr_plc_num_points(plc);
+    stats.surface_facets = tr_plc_num_triangles(plc);
+    if (!a->quiet)
+      fprintf(stderr, "tetrec: %s: %u vertices, %u triangles: valid\n", a->in,
+              tr_plc_num_points(plc), tr_plc_num_triangles(plc));
+  }
+  if (s == TR_OK && a->check_only) {
     stats.stage_seconds[TR_STAGE_SELFINT] = plc->validate_seconds[1];
     stats.stage_seconds[TR_STAGE_NESTING] = plc->validate_seconds[2];
     stats.stage_seconds[TR_STAGE_VALIDATE] =
         plc->validate_seconds[0] - plc->validate_seconds[1] - plc->validate_seconds[2];
-    tr_plc_destroy(plc);
-    return write_stats(a, &stats);
   }
-  /* The pipeline (src/pipeline): Delaunay, edge and facet recovery, outer removal. */
+  if (s != TR_OK || a->check_only) {
+    tr_plc_destroy(plc);
+    free(out);
+    return finish(a, &stats, t0, s);
+  }
+  /* The pipeline (src/pipeline): Delaunay, edge and facet recovery, outer removal. With
+   * --exact (checked above to go to a .node), a rounding that cannot be repaired is a
+   * warning, not a failure: the exact points are written. */
   tr_mesh *mesh = NULL;
   progress("meshing", a->in);
-  /* With --exact, a .node output carries the exact points: a rounding that cannot be
-   * repaired is then a warning, not a failure (the .vtu and .mesh writers print doubles). */
-  const char *dest = a->out ? a->out : a->in;
-  unsigned flags = a->exact && !(a->out && (tr_io_has_ext(dest, ".vtu") ||
-                                            tr_io_has_ext(dest, ".mesh")))
-                       ? TR_PIPE_KEEP_EXACT
-                       : 0;
-  if (a->keep_steiner)
-    flags |= TR_PIPE_KEEP_STEINER;
+  unsigned flags = (a->exact ? TR_PIPE_KEEP_EXACT : 0) |
+                   (a->keep_steiner ? TR_PIPE_KEEP_STEINER : 0);
+  double t_read = stats.stage_seconds[TR_STAGE_READ];
   s = tr_mesh_plc_flags(plc, &opt, &mesh, &stats, NULL, flags);
-  tr_plc_destroy(plc);
-  if (s != TR_OK)
-    return fail(s);
-  char *out = a->out ? NULL : default_out(a->in);
-  const char *path = a->out ? a->out : out;
-  progress("writing", path);
-  double t_write = now();
-  s = path ? tr_mesh_write(mesh, path, a->exact) : TR_ERR_NOMEM;
   stats.stage_seconds[TR_STAGE_READ] = t_read; /* the pipeline filled the others */
-  stats.stage_seconds[TR_STAGE_WRITE] = now() - t_write;
-  stats.total_seconds = now() - t0;
-  if (s == TR_OK && a->verbose)
-    fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(TR_STAGE_WRITE),
-            stats.stage_seconds[TR_STAGE_WRITE]);
+  if (s == TR_OK && !a->exact) {
+    uint32_t v;
+    s = tr_mesh_double_deviation(mesh, plc, &stats.double_deviation, &v);
+    if (s == TR_OK && stats.double_deviation > 0x1p-40) {
+      if (opt.strict_doubles)
+        s = tr_error(TR_ERR_INVALID_MESH, "vertex %u is written %.3g of the bounding box "
+                     "diagonal off the edge or facet it lies on (above 2^-40; "
+                     "--strict-doubles)", v, stats.double_deviation);
+      else if (!a->quiet)
+        fprintf(stderr, "tetrec: warning: vertex %u is written %.3g of the bounding box "
+                "diagonal off the edge or facet it lies on exactly (above 2^-40; --exact "
+                "writes it exactly)\n", v, stats.double_deviation);
+    }
+  }
+  tr_plc_destroy(plc);
+  if (s == TR_OK) {
+    progress("writing", path);
+    double t_write = now();
+    s = tr_mesh_write_ex(mesh, path, a->exact, a->msh_version);
+    stats.stage_seconds[TR_STAGE_WRITE] = now() - t_write;
+    if (s == TR_OK && a->verbose)
+      fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(TR_STAGE_WRITE),
+              stats.stage_seconds[TR_STAGE_WRITE]);
+  }
   if (s == TR_OK && !a->quiet)
     fprintf(stderr, "tetrec: %s: %u vertices, %u tetrahedra, %llu Steiner points\n", path,
             tr_mesh_num_vertices(mesh), tr_mesh_num_tets(mesh),
@@ -291,9 +484,7 @@ static int cmd_mesh(const args *a)
             (unsigned long long)stats.steiner_relocated);
   tr_mesh_destroy(mesh);
   free(out);
-  if (s != TR_OK)
-    return fail(s);
-  return write_stats(a, &stats);
+  return finish(a, &stats, t0, s);
 }
 
 static int cmd_delaunay(const args *a)
@@ -301,34 +492,38 @@ static int cmd_delaunay(const args *a)
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();
-  tr_plc *plc = NULL;
-  progress("reading", a->in);
-  tr_status s = tr_plc_read(a->in, &plc);
-  if (s != TR_OK)
-    return fail(s);
-  tr_mesh *mesh = NULL;
-  progress("tetrahedralizing", a->in);
-  s = tr_delaunay(tr_plc_points(plc), tr_plc_num_points(plc), &mesh);
-  stats.surface_nodes = tr_plc_num_points(plc);
-  stats.surface_facets = tr_plc_num_triangles(plc);
-  tr_plc_destroy(plc);
-  if (s != TR_OK)
-    return fail(s);
   char *out = a->out ? NULL : default_out(a->in);
   const char *path = a->out ? a->out : out;
-  progress("writing", path);
-  s = path ? tr_mesh_write(mesh, path, a->exact) : TR_ERR_NOMEM;
-  stats.volume_nodes = tr_mesh_num_vertices(mesh);
-  stats.volume_elements = tr_mesh_num_tets(mesh);
-  stats.total_seconds = now() - t0;
+  if (!path)
+    return finish(a, &stats, t0, tr_error(TR_ERR_NOMEM, "out of memory"));
+  tr_status s = check_names(a, path);
+  tr_plc *plc = NULL;
+  if (s == TR_OK) {
+    progress("reading", a->in);
+    s = tr_plc_read(a->in, &plc);
+  }
+  if (s == TR_OK)
+    s = check_writable(a, path);
+  tr_mesh *mesh = NULL;
+  if (s == TR_OK) {
+    progress("tetrahedralizing", a->in);
+    s = tr_delaunay(tr_plc_points(plc), tr_plc_num_points(plc), &mesh);
+    stats.surface_nodes = tr_plc_num_points(plc);
+    stats.surface_facets = tr_plc_num_triangles(plc);
+  }
+  tr_plc_destroy(plc);
+  if (s == TR_OK) {
+    progress("writing", path);
+    s = tr_mesh_write_ex(mesh, path, a->exact, a->msh_version);
+    stats.volume_nodes = tr_mesh_num_vertices(mesh);
+    stats.volume_elements = tr_mesh_num_tets(mesh);
+  }
   if (s == TR_OK && !a->quiet)
     fprintf(stderr, "tetrec: %s: %u vertices, %u tetrahedra\n", path,
             tr_mesh_num_vertices(mesh), tr_mesh_num_tets(mesh));
   tr_mesh_destroy(mesh);
   free(out);
-  if (s != TR_OK)
-    return fail(s);
-  return write_stats(a, &stats);
+  return finish(a, &stats, t0, s);
 }
 
 /* The .node file of a TetGen mesh name (.node or .ele), read exactly; nothing for other
@@ -378,8 +573,10 @@ static int cmd_check(const args *a)
   tr_options_default(&opt);
   opt.allow_open = a->allow_open;
   tr_status s = tr_plc_read(a->in, &surf);
-  if (s == TR_OK)
+  if (s == TR_OK) {
+    warn_nonplanar(a, surf);
     s = tr_plc_validate(surf, &opt);
+  }
   if (s == TR_OK) {
     /* MESH.node alone has no tets: read its .ele. */
     if (tr_io_has_ext(a->in2, ".node")) {
@@ -414,9 +611,15 @@ static int cmd_check(const args *a)
 static int cmd_convert(const args *a)
 {
   tr_plc *plc = NULL;
-  tr_status s = tr_plc_read(a->in, &plc);
+  tr_status s = tr_io_check_out_name(a->in2, 1);
   if (s == TR_OK)
-    s = tr_plc_write(plc, a->in2);
+    s = tr_plc_read(a->in, &plc);
+  if (s == TR_OK)
+    s = tr_io_check_writable(a->in2);
+  if (s == TR_OK) {
+    warn_nonplanar(a, plc);
+    s = tr_plc_write_ex(plc, a->in2, a->msh_version);
+  }
   if (s == TR_OK && !a->quiet && a->verbose)
     fprintf(stderr, "tetrec: %s -> %s: %u vertices, %u triangles\n", a->in, a->in2,
             tr_plc_num_points(plc), tr_plc_num_triangles(plc));
@@ -433,11 +636,14 @@ int main(int argc, char **argv)
     return (int)s;
   }
   progress_on = !a.quiet && isatty(2);
-  if (!strcmp(a.cmd, "mesh"))
-    return cmd_mesh(&a);
-  if (!strcmp(a.cmd, "delaunay"))
-    return cmd_delaunay(&a);
-  if (!strcmp(a.cmd, "check"))
-    return cmd_check(&a);
-  return cmd_convert(&a);
+  switch (a.cmd_bit) {
+  case C_MESH: return cmd_mesh(&a);
+  case C_DELAUNAY: return cmd_delaunay(&a);
+  case C_CHECK: return cmd_check(&a);
+  case C_CHECK_SURFACE: {
+    s = tr_cli_check_surface(a.in, a.out, a.msh_version, a.quiet);
+    return s == TR_OK ? 0 : fail(s);
+  }
+  default: return cmd_convert(&a);
+  }
 }

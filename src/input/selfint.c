@@ -27,6 +27,10 @@ typedef struct {
   double *lo, *hi; /* 3 per triangle */
   int axis;        /* sweep axis: the longest extent of the input, fewest overlaps */
   uint32_t bx, by; /* the improper pair found first in (x, y) order, x < y; bx = n: none */
+  /* collect mode (tr_input_self_intersection_pairs): every improper pair, 2 per pair */
+  int collect, oom;
+  uint32_t *pairs;
+  size_t npairs, cap;
 } sweep;
 
 static int cmp_lox(const void *ctx, uint32_t a, uint32_t b)
@@ -196,6 +200,23 @@ static int improper(const struct tr_plc *plc, uint32_t i, uint32_t j);
 static void consider(sweep *s, uint32_t i, uint32_t j)
 {
   uint32_t x = i < j ? i : j, y = i < j ? j : i;
+  if (s->collect) {
+    if (s->oom || !improper(s->plc, x, y))
+      return;
+    if (s->npairs == s->cap) {
+      size_t nc = s->cap ? 2 * s->cap : 64;
+      uint32_t *np = realloc(s->pairs, sizeof *np * 2 * nc);
+      if (!np) {
+        s->oom = 1;
+        return;
+      }
+      s->pairs = np;
+      s->cap = nc;
+    }
+    s->pairs[2 * s->npairs] = x;
+    s->pairs[2 * s->npairs++ + 1] = y;
+    return;
+  }
   if (x > s->bx || (x == s->bx && y >= s->by))
     return;
   if (improper(s->plc, x, y)) {
@@ -371,11 +392,13 @@ tr_status tr_input_self_intersections(const struct tr_plc *plc, const uint32_t *
   return tr_input_self_intersections_by(plc, tri_orig, TR_SELFINT_AUTO);
 }
 
-tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_t *tri_orig,
-                                         int method)
+/* The broad phase chosen by method, calling consider() on every pair whose boxes meet. */
+static tr_status run(sweep *sw, int method)
 {
+  const struct tr_plc *plc = sw->plc;
+  sweep s = *sw;
   uint32_t n = plc->ntris;
-  sweep s = {plc, malloc(sizeof(double) * 6 * (size_t)(n ? n : 1)), NULL, 0, n, n};
+  s.lo = malloc(sizeof(double) * 6 * (size_t)(n ? n : 1));
   tr_status st = TR_OK;
   if (!s.lo)
     return tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
@@ -410,6 +433,48 @@ tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_
     st = by_grid(&s, n, ext, method == TR_SELFINT_GRID, &fallback);
   if (st == TR_OK && fallback)
     st = by_sweep(&s, n);
+  free(s.lo);
+  s.lo = s.hi = NULL;
+  *sw = s;
+  return st;
+}
+
+static int cmp_pair(const void *a, const void *b)
+{
+  const uint32_t *p = a, *q = b;
+  if (p[0] != q[0])
+    return p[0] < q[0] ? -1 : 1;
+  return (p[1] > q[1]) - (p[1] < q[1]);
+}
+
+tr_status tr_input_self_intersection_pairs(const struct tr_plc *plc, int method,
+                                           uint32_t **pairs, size_t *npairs)
+{
+  uint32_t n = plc->ntris;
+  sweep s = {plc, NULL, NULL, 0, n, n, 1, 0, NULL, 0, 0};
+  *pairs = NULL;
+  *npairs = 0;
+  tr_status st = run(&s, method);
+  if (st == TR_OK && s.oom)
+    st = tr_error(TR_ERR_NOMEM, "out of memory listing self-intersections");
+  if (st != TR_OK) {
+    free(s.pairs);
+    return st;
+  }
+  /* the broad phases meet pairs in different orders: sort for one answer */
+  if (s.npairs)
+    qsort(s.pairs, s.npairs, 2 * sizeof *s.pairs, cmp_pair);
+  *pairs = s.pairs;
+  *npairs = s.npairs;
+  return TR_OK;
+}
+
+tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_t *tri_orig,
+                                         int method)
+{
+  uint32_t n = plc->ntris;
+  sweep s = {plc, NULL, NULL, 0, n, n, 0, 0, NULL, 0, 0};
+  tr_status st = run(&s, method);
   if (st == TR_OK && s.bx < n) {
     uint32_t x = s.bx, y = s.by;
     st = tr_error(TR_ERR_SELF_INTERSECT,
@@ -419,6 +484,5 @@ tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_
                   plc->tri_source ? plc->tri_source[x] : x,
                   plc->tri_source ? plc->tri_source[y] : y);
   }
-  free(s.lo);
   return st;
 }

@@ -37,6 +37,11 @@ tr_status tr_input_self_intersections(const struct tr_plc *plc, const uint32_t *
 enum { TR_SELFINT_AUTO, TR_SELFINT_GRID, TR_SELFINT_SWEEP, TR_SELFINT_ALL_PAIRS };
 tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_t *tri_orig,
                                          int method);
+/* Collect-all variant (tetrec check-surface): every improper pair (x, y), x < y, as
+ * (*pairs)[2i], (*pairs)[2i+1], *npairs pairs in increasing (x, y) order (free *pairs).
+ * The same pairs for every method; TR_OK whether there are any or not. */
+tr_status tr_input_self_intersection_pairs(const struct tr_plc *plc, int method,
+                                           uint32_t **pairs, size_t *npairs);
 
 /* out = 6 * the signed volume enclosed by the triangles (sum of det[a; b; c]), exact. */
 tr_status tr_input_volume6(const struct tr_plc *plc, mpq_t out);

@@ -23,6 +23,11 @@ tr_status tr_read_ply_buf(const char *buf, size_t len, const char *name, struct 
 /* Medit .mesh: Vertices, Triangles (the surface input, with their refs as markers),
  * Tetrahedra (kept in plc->tets for `tetrec check`). */
 tr_status tr_read_medit_buf(const char *buf, size_t len, const char *name, struct tr_plc *plc);
+/* Gmsh .msh 4.1 or 2.2, ASCII (binary is refused): triangles (and quadrangles, as
+ * polygons) with the physical tag of their entity (4.1) or their first tag (2.2) as
+ * marker, tetrahedra into plc->tets; points and lines are skipped (triangle edges and
+ * corners carry no more geometry), any other element type is an error (read_msh.c). */
+tr_status tr_read_msh_buf(const char *buf, size_t len, const char *name, struct tr_plc *plc);
 
 /* Exact reading of a TetGen .node buffer: *out = *npoints entries (free each with
  * tr_qpoint_clear + free, then the array), NULL for a point whose three coordinates are doubles, else its exact point;
@@ -59,6 +64,13 @@ struct tr_mesh_view {
   const uint32_t *tris;
   const int32_t *tri_marker;
 };
+/* Edges beside a view (check-surface's offending edges), written as lines by the .vtk and
+ * .msh writers. */
+struct tr_edge_view {
+  uint32_t nedges;
+  const uint32_t *edges;     /* 2 per edge */
+  const int32_t *edge_marker;
+};
 
 /* OFF of the triangles (surface output for `tetrec convert`). */
 tr_status tr_write_off(const struct tr_mesh_view *m, const char *path);
@@ -67,8 +79,51 @@ tr_status tr_write_vtu(const struct tr_mesh_view *m, const char *path);
 /* base = path without extension; writes base.node, base.ele, base.face. exact: write
  * exact rationals for vertices that have them. */
 tr_status tr_write_tetgen(const struct tr_mesh_view *m, const char *base, int exact);
-/* Chooses by extension: .mesh, .vtu, .node/.ele/.face (base taken from the name), or no
- * extension = TetGen files with that base. */
+/* Legacy VTK (.vtk), ASCII unstructured grid: the tets with cell data "region", or the
+ * triangles with their markers when there are no tets. */
+tr_status tr_write_vtk(const struct tr_mesh_view *m, const char *path);
+/* The same with edges (cells of VTK type 3 after the triangles; e may be NULL). */
+tr_status tr_write_vtk_edges(const struct tr_mesh_view *m, const struct tr_edge_view *e,
+                             const char *path);
+/* Gmsh .msh, ASCII, version 41 (4.1) or 22 (2.2): tets with their region as physical tag,
+ * triangles with their marker as physical tag (write_msh.c). */
+tr_status tr_write_msh(const struct tr_mesh_view *m, const char *path, int version);
+/* The same with edges (elements of type 1, one curve entity per marker; e may be NULL). */
+tr_status tr_write_msh_edges(const struct tr_mesh_view *m, const struct tr_edge_view *e,
+                             const char *path, int version);
+
+/* Output format of a name (format.c): the extension after the last dot of the last path
+ * component when it has a letter, else a TetGen base name ("out", "cube.1"). */
+enum tr_out_format {
+  TR_OUT_UNKNOWN, TR_OUT_MEDIT, TR_OUT_VTU, TR_OUT_VTK, TR_OUT_MSH, TR_OUT_TETGEN, TR_OUT_OFF
+};
+enum tr_out_format tr_io_out_format(const char *path);
+/* TR_ERR_USAGE naming the supported extensions unless path names a format tetrec writes
+ * (surface != 0: .off too). */
+tr_status tr_io_check_out_name(const char *path, int surface);
+/* TR_ERR_IO unless every file that writing path creates (three for a TetGen name) can be
+ * created; leaves no new file behind. */
+tr_status tr_io_check_writable(const char *path);
+/* The same for one file of any name. */
+tr_status tr_io_check_file_writable(const char *file);
+
+/* A polygon of the input that is not planar (polytri.c): plc triangles first_tri ..
+ * first_tri + ntris - 1 came from input facet `facet`; deviation = the largest distance
+ * of one of its vertices from the plane of its largest triangle, relative = deviation /
+ * the diagonal of its bounding box. */
+typedef struct tr_nonplanar {
+  uint32_t facet, first_tri, ntris;
+  double deviation, relative;
+} tr_nonplanar;
+/* Every non-planar polygon of a plc as read (before tr_plc_validate, which may reorder
+ * triangles): the triangles of one input facet (plc->tri_source) not all in one plane,
+ * decided exactly (orient3d). *out (free) has *n entries, in facet order. */
+tr_status tr_plc_nonplanar(const struct tr_plc *plc, tr_nonplanar **out, uint32_t *n);
+/* Chooses by tr_io_out_format: .mesh, .vtu, .vtk, .msh (msh_version 41 or 22), .off,
+ * .node/.ele/.face (base taken from the name), or a TetGen base name. */
+tr_status tr_write_mesh_view_as(const struct tr_mesh_view *m, const char *path, int exact,
+                                int msh_version);
+/* tr_write_mesh_view_as with .msh version 4.1. */
 tr_status tr_write_mesh_view(const struct tr_mesh_view *m, const char *path, int exact);
 
 /* One line of n integers in decimal, separated by single spaces, then '\n': what

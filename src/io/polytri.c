@@ -14,6 +14,7 @@
  * vertex. If no ear exists the polygon self-overlaps or is degenerate: that is an error,
  * never a guess. */
 #include "soup.h"
+#include "io.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -420,4 +421,90 @@ done:
   free(lidx);
   free(is_hole);
   return st;
+}
+
+/* Distance of p from the plane of triangle abc, and twice the triangle's area, in doubles:
+ * a measure for a warning, never a decision. */
+static double plane_dist(const double *a, const double *b, const double *c, const double *p,
+                         double *area2)
+{
+  double u[3], v[3], w[3], n[3];
+  for (int k = 0; k < 3; k++) {
+    u[k] = b[k] - a[k];
+    v[k] = c[k] - a[k];
+    w[k] = p[k] - a[k];
+  }
+  n[0] = u[1] * v[2] - u[2] * v[1];
+  n[1] = u[2] * v[0] - u[0] * v[2];
+  n[2] = u[0] * v[1] - u[1] * v[0];
+  double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  *area2 = len;
+  return len > 0 ? fabs(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]) / len : 0;
+}
+
+tr_status tr_plc_nonplanar(const struct tr_plc *plc, tr_nonplanar **out, uint32_t *n)
+{
+  *out = NULL;
+  *n = 0;
+  uint32_t cap = 0;
+  if (!plc->tri_source)
+    return TR_OK; /* one triangle per input facet: nothing to be non-planar */
+  const double *x = plc->xyz;
+  for (uint32_t t0 = 0, t1; t0 < plc->ntris; t0 = t1) {
+    for (t1 = t0 + 1; t1 < plc->ntris && plc->tri_source[t1] == plc->tri_source[t0]; t1++)
+      ;
+    if (t1 - t0 < 2)
+      continue;
+    const uint32_t *r = plc->tris + 3 * (size_t)t0;
+    int flat = 1;
+    for (uint32_t i = 3 * t0; i < 3 * t1 && flat; i++)
+      flat = tr_orient3d(x + 3 * (size_t)r[0], x + 3 * (size_t)r[1], x + 3 * (size_t)r[2],
+                         x + 3 * (size_t)plc->tris[i]) == 0;
+    if (flat)
+      continue;
+    /* the largest triangle's plane, then the farthest vertex from it */
+    uint32_t big = t0;
+    double best = -1, a2, dev = 0, size = 0;
+    for (uint32_t t = t0; t < t1; t++) {
+      const uint32_t *v = plc->tris + 3 * (size_t)t;
+      plane_dist(x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2],
+                 x + 3 * (size_t)v[0], &a2);
+      if (a2 > best) {
+        best = a2;
+        big = t;
+      }
+    }
+    const uint32_t *b = plc->tris + 3 * (size_t)big;
+    double lo[3], hi[3];
+    for (uint32_t i = 3 * t0; i < 3 * t1; i++) {
+      const double *p = x + 3 * (size_t)plc->tris[i];
+      double d = plane_dist(x + 3 * (size_t)b[0], x + 3 * (size_t)b[1], x + 3 * (size_t)b[2], p,
+                            &a2);
+      dev = d > dev ? d : dev;
+      for (int k = 0; k < 3; k++) {
+        lo[k] = i == 3 * t0 || p[k] < lo[k] ? p[k] : lo[k];
+        hi[k] = i == 3 * t0 || p[k] > hi[k] ? p[k] : hi[k];
+      }
+    }
+    size = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    if (*n == cap) {
+      cap = cap ? 2 * cap : 16;
+      tr_nonplanar *g = realloc(*out, sizeof *g * cap);
+      if (!g) {
+        free(*out);
+        *out = NULL;
+        *n = 0;
+        return tr_error(TR_ERR_NOMEM, "out of memory");
+      }
+      *out = g;
+    }
+    tr_nonplanar *e = *out + (*n)++;
+    e->facet = plc->tri_source[t0];
+    e->first_tri = t0;
+    e->ntris = t1 - t0;
+    e->deviation = dev;
+    e->relative = size > 0 ? dev / size : 0;
+  }
+  return TR_OK;
 }

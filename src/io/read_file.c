@@ -74,14 +74,14 @@ tr_status tr_io_read_file(const char *path, struct tr_plc *plc)
   tr_status st;
   int kind = -1;
   static const char *exts[] = {".off", ".stl", ".obj", ".ply", ".mesh",
-                               ".node", ".poly", ".smesh", ".ele"};
-  for (int i = 0; i < 9; i++)
+                               ".node", ".poly", ".smesh", ".ele", ".msh"};
+  for (int i = 0; i < 10; i++)
     if (tr_io_has_ext(path, exts[i]))
       kind = i;
   if (kind < 0)
     return tr_error(TR_ERR_USAGE,
-                    "%s: unknown file extension (supported: .off .stl .obj .ply .mesh .node "
-                    ".poly .smesh .ele)", path);
+                    "%s: unknown file extension (supported: .off .stl .obj .ply .mesh .msh "
+                    ".node .poly .smesh .ele)", path);
   if (kind == 8) {
     /* .ele: the points come from the .node next to it. */
     npath = sibling(path, ".node");
@@ -104,6 +104,7 @@ tr_status tr_io_read_file(const char *path, struct tr_plc *plc)
   case 2: st = tr_read_obj_buf(buf, len, path, plc); break;
   case 3: st = tr_read_ply_buf(buf, len, path, plc); break;
   case 4: st = tr_read_medit_buf(buf, len, path, plc); break;
+  case 9: st = tr_read_msh_buf(buf, len, path, plc); break;
   case 5: st = tr_read_tetgen_buf(TR_TETGEN_NODE, buf, len, path, NULL, 0, NULL, plc); break;
   default: {
     /* A .poly/.smesh may leave its points to the .node of the same name. */

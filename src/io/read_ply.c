@@ -1,7 +1,11 @@
 /* PLY (Stanford polygon format): ascii, binary_little_endian and binary_big_endian.
- * The header lists elements and their properties; we read x, y, z of `vertex` and the
- * index list of `face` (vertex_indices or vertex_index), and skip every other property
- * and element, so their types must be understood even when unused. */
+ * The header lists elements and their properties; we read x, y, z of `vertex`, the index
+ * list of `face` (vertex_indices or vertex_index) and of `tristrips` (triangle strips, as
+ * in the Stanford and Cyberware scans: -1 ends a strip and starts the next; triangle k of
+ * a strip v0 v1 v2 ... is (vk, vk+1, vk+2) for even k and (vk+1, vk, vk+2) for odd k, so
+ * the strip keeps one orientation; triangles with a repeated vertex are the joins that
+ * stitch strips and are not triangles of the surface), and skip every other property and
+ * element, so their types must be understood even when unused. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,7 +20,7 @@ static const int tsize[] = {0, 1, 1, 2, 2, 4, 4, 4, 8};
 typedef struct {
   int type;       /* value type, or the item type of a list */
   int count_type; /* T_NONE for a scalar property */
-  int role;       /* 0 skip, 1..3 = x,y,z, 4 = face index list */
+  int role;       /* 0 skip, 1..3 = x,y,z, 4 = face index list, 5 = strip index list */
 } prop;
 
 #define MAX_PROPS 64
@@ -180,6 +184,9 @@ static tr_status read_header(tr_lex *lx, elem *el, int *nel, int *format)
       if (strcmp(e->name, "face") == 0 && p->count_type &&
           (tr_lex_is(lx, "vertex_indices") || tr_lex_is(lx, "vertex_index")))
         p->role = 4;
+      if (strcmp(e->name, "tristrips") == 0 && p->count_type &&
+          (tr_lex_is(lx, "vertex_indices") || tr_lex_is(lx, "vertex_index")))
+        p->role = 5;
     } else {
       return tr_error(TR_ERR_PARSE, "%s:%lu: unexpected '%.*s' in the PLY header", lx->name,
                       lx->tokline, (int)(lx->toklen > 40 ? 40 : lx->toklen), lx->tok);
@@ -189,6 +196,39 @@ static tr_status read_header(tr_lex *lx, elem *el, int *nel, int *format)
     return tr_error(TR_ERR_PARSE, "%s: PLY header has no format line", lx->name);
   /* The body starts after the end_header line. */
   tr_lex_skip_line(lx);
+  return TR_OK;
+}
+
+/* One tristrips list of n indices (see the top of the file). */
+static tr_status strip(reader *r, tr_soup *s, int type, uint64_t n, uint64_t nv, uint64_t item)
+{
+  uint32_t w[2] = {0, 0};
+  uint64_t run = 0; /* vertices of the current strip so far */
+  for (uint64_t j = 0; j < n; j++) {
+    double v;
+    unsigned long line = r->lx.line;
+    TR_CHECK(get(r, type, &v, "tristrips"));
+    if (v == -1) {
+      run = 0;
+      continue;
+    }
+    if (v < 0 || v >= (double)nv || v != floor(v))
+      return tr_error(TR_ERR_INPUT, "%s: tristrips %llu: vertex index %.0f out of range "
+                      "(0..%llu, or -1 to restart)", r->name, (unsigned long long)item, v,
+                      (unsigned long long)nv - 1);
+    uint32_t x = (uint32_t)v;
+    if (run >= 2 && w[0] != w[1] && w[1] != x && w[0] != x) {
+      uint32_t a = run % 2 ? w[1] : w[0], b = run % 2 ? w[0] : w[1];
+      TR_CHECK(tr_soup_begin_facet(s, 0, r->binary ? (unsigned long)item : line));
+      TR_CHECK(tr_soup_begin_loop(s));
+      TR_CHECK(tr_soup_add_index(s, a));
+      TR_CHECK(tr_soup_add_index(s, b));
+      TR_CHECK(tr_soup_add_index(s, x));
+    }
+    w[0] = w[1];
+    w[1] = x;
+    run++;
+  }
   return TR_OK;
 }
 
@@ -212,12 +252,13 @@ static tr_status parse(reader *r, const char *buf, size_t len, tr_soup *s)
                                                                 : E->props[k].type]
                        : 2;
       has_xyz |= 1 << E->props[k].role;
-      has_face |= E->props[k].role == 4;
+      has_face |= E->props[k].role == 4 || E->props[k].role == 5;
     }
     size_t left = r->binary ? (size_t)(r->b.end - r->b.p) : tr_lex_left(&r->lx);
     TR_CHECK(tr_check_room(r->name, E->line, E->count, E->name, left, min ? min : 1,
                            TR_IO_MAX_COUNT / 3));
     int is_vertex = strcmp(E->name, "vertex") == 0, is_face = strcmp(E->name, "face") == 0;
+    int is_strip = strcmp(E->name, "tristrips") == 0;
     if (is_vertex) {
       if ((has_xyz & 0xe) != 0xe)
         return tr_error(TR_ERR_PARSE, "%s:%lu: vertex element lacks x, y or z", r->name, E->line);
@@ -225,12 +266,12 @@ static tr_status parse(reader *r, const char *buf, size_t len, tr_soup *s)
       seen_vertex = 1;
       TR_CHECK(tr_soup_reserve_points(s, (uint32_t)nv));
     }
-    if (is_face && !seen_vertex)
-      return tr_error(TR_ERR_PARSE, "%s:%lu: face element before vertex element", r->name,
-                      E->line);
-    if (is_face && !has_face)
-      return tr_error(TR_ERR_PARSE, "%s:%lu: face element has no vertex_indices list", r->name,
-                      E->line);
+    if ((is_face || is_strip) && !seen_vertex)
+      return tr_error(TR_ERR_PARSE, "%s:%lu: %s element before vertex element", r->name,
+                      E->line, E->name);
+    if ((is_face || is_strip) && !has_face)
+      return tr_error(TR_ERR_PARSE, "%s:%lu: %s element has no vertex_indices list", r->name,
+                      E->line, E->name);
     for (uint64_t i = 0; i < E->count; i++) {
       double p[3] = {0, 0, 0};
       r->item = i;
@@ -256,6 +297,10 @@ static tr_status parse(reader *r, const char *buf, size_t len, tr_soup *s)
             return tr_error(TR_ERR_INPUT, "%s: face %llu has %.0f vertices (at least 3 needed)",
                             r->name, (unsigned long long)i, c);
           TR_CHECK(tr_soup_begin_loop(s));
+        }
+        if (is_strip && P->role == 5) {
+          TR_CHECK(strip(r, s, P->type, (uint64_t)c, nv, i));
+          continue;
         }
         for (uint64_t j = 0; j < (uint64_t)c; j++) {
           TR_CHECK(get(r, P->type, &v, E->name));

@@ -99,15 +99,21 @@ static tr_status input_faces(const struct tr_mesh *m, uint32_t **tris, int32_t *
 
 tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
 {
+  return tr_mesh_write_ex(mesh, path, exact, 41);
+}
+
+tr_status tr_mesh_write_ex(const tr_mesh *mesh, const char *path, int exact, int msh_version)
+{
   tr_error_clear();
   const struct tr_mesh *m = mesh;
   if (!m)
     return tr_error(TR_ERR_USAGE, "tr_mesh_write: no mesh");
+  TR_CHECK(tr_io_check_out_name(path, 0));
   /* A mesh that tr_mesh_plc returned under TR_PIPE_KEEP_EXACT may have tets that are flat
    * or inverted on the doubles: only its exact TetGen output is a valid mesh. */
   uint32_t bad;
-  if (!(exact && (tr_io_has_ext(path, ".node") || tr_io_has_ext(path, ".ele") ||
-                  tr_io_has_ext(path, ".face"))) && tr_round_count_nonpositive(m, &bad) > 0)
+  if (!(exact && tr_io_out_format(path) == TR_OUT_TETGEN) &&
+      tr_round_count_nonpositive(m, &bad) > 0)
     return tr_error(TR_ERR_INVALID_MESH,
                     "%s: tet %u is flat or inverted once its Steiner points are written as "
                     "doubles; only the exact output (--exact, .node) is valid for this mesh",
@@ -163,7 +169,7 @@ tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
   }
   struct tr_mesh_view v = {m->nv, m->xyz, (const tr_qpoint *const *)m->vq, nt, tets, reg,
                            nf, tris, mark};
-  st = tr_write_mesh_view(&v, path, exact);
+  st = tr_write_mesh_view_as(&v, path, exact, msh_version);
   free(tets);
   free(reg);
   free(tris);
@@ -173,10 +179,14 @@ tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact)
 
 tr_status tr_plc_write(const tr_plc *plc, const char *path)
 {
+  return tr_plc_write_ex(plc, path, 41);
+}
+
+tr_status tr_plc_write_ex(const tr_plc *plc, const char *path, int msh_version)
+{
   tr_error_clear();
+  TR_CHECK(tr_io_check_out_name(path, 1));
   struct tr_mesh_view v = {plc->npoints, plc->xyz, NULL, plc->ntets, plc->tets, NULL,
                            plc->ntris, plc->tris, plc->tri_marker};
-  if (tr_io_has_ext(path, ".off"))
-    return tr_write_off(&v, path);
-  return tr_write_mesh_view(&v, path, 0);
+  return tr_write_mesh_view_as(&v, path, 0, msh_version);
 }

@@ -1,49 +1,78 @@
-/* tr_stats as one JSON object (keys = the field names of tr_stats; stage_seconds as an
- * object keyed by tr_stage_name). */
+/* tr_stats as one JSON object: the status of the run and its message ("" on success),
+ * then one key per field of tr_stats, named as the field (stage_seconds as an object
+ * keyed by tr_stage_name). The fields are listed once, in the tables below, so a new
+ * field is one line. */
 #include <errno.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "io.h"
 
+typedef struct {
+  const char *name;
+  size_t off;
+} field;
+
+#define FIELD(f) {#f, offsetof(tr_stats, f)}
+/* uint64_t fields */
+static const field counts[] = {
+    FIELD(surface_nodes), FIELD(surface_facets), FIELD(volume_nodes), FIELD(volume_elements),
+    FIELD(missing_edges), FIELD(edges_recovered_by_swap), FIELD(points_added_for_edges),
+    FIELD(missing_facets), FIELD(facets_recovered_by_swap), FIELD(points_added_for_facets),
+    FIELD(facets_recovered_by_cavity), FIELD(surface_swaps), FIELD(rounding_repairs),
+    FIELD(rounding_flips), FIELD(hole_points), FIELD(region_points), FIELD(cavities),
+    FIELD(inclusions), FIELD(steiner_on_edges), FIELD(steiner_on_facets), FIELD(steiner_interior),
+    FIELD(steiner_removed), FIELD(steiner_relocated), FIELD(peak_memory_bytes)};
+/* double fields */
+static const field reals[] = {FIELD(total_seconds), FIELD(recovery_seconds),
+                              FIELD(double_deviation)};
+#undef FIELD
+
+/* The message as a JSON string: quotes, backslashes and control bytes escaped. */
+static void put_string(FILE *f, const char *text)
+{
+  fputc('"', f);
+  for (const unsigned char *c = (const unsigned char *)(text ? text : ""); *c; c++)
+    if (*c == '"' || *c == '\\')
+      fprintf(f, "\\%c", *c);
+    else if (*c < 0x20)
+      fprintf(f, "\\u%04x", *c);
+    else
+      fputc(*c, f);
+  fputc('"', f);
+}
+
 tr_status tr_stats_write_json(const tr_stats *s, const char *path)
+{
+  return tr_stats_write_json_status(s, TR_OK, "", path);
+}
+
+tr_status tr_stats_write_json_status(const tr_stats *s, tr_status status, const char *message,
+                                     const char *path)
 {
   FILE *f = fopen(path, "w");
   if (!f)
     return tr_error(TR_ERR_IO, "%s: cannot create: %s", path, strerror(errno));
-  fprintf(f,
-          "{\n  \"surface_nodes\": %llu,\n  \"surface_facets\": %llu,\n"
-          "  \"volume_nodes\": %llu,\n  \"volume_elements\": %llu,\n"
-          "  \"missing_edges\": %llu,\n  \"edges_recovered_by_swap\": %llu,\n"
-          "  \"points_added_for_edges\": %llu,\n  \"missing_facets\": %llu,\n"
-          "  \"facets_recovered_by_swap\": %llu,\n  \"points_added_for_facets\": %llu,\n"
-          "  \"surface_swaps\": %llu,\n  \"rounding_repairs\": %llu,\n  \"rounding_flips\": %llu,\n"
-          "  \"hole_points\": %llu,\n  \"region_points\": %llu,\n  \"cavities\": %llu,\n"
-          "  \"inclusions\": %llu,\n"
-          "  \"total_seconds\": %.6f,\n  \"recovery_seconds\": %.6f,\n"
-          "  \"peak_memory_bytes\": %llu,\n  \"stage_seconds\": {",
-          (unsigned long long)s->surface_nodes, (unsigned long long)s->surface_facets,
-          (unsigned long long)s->volume_nodes, (unsigned long long)s->volume_elements,
-          (unsigned long long)s->missing_edges, (unsigned long long)s->edges_recovered_by_swap,
-          (unsigned long long)s->points_added_for_edges, (unsigned long long)s->missing_facets,
-          (unsigned long long)s->facets_recovered_by_swap,
-          (unsigned long long)s->points_added_for_facets, (unsigned long long)s->surface_swaps,
-          (unsigned long long)s->rounding_repairs,
-          (unsigned long long)s->rounding_flips, (unsigned long long)s->hole_points,
-          (unsigned long long)s->region_points, (unsigned long long)s->cavities,
-          (unsigned long long)s->inclusions, s->total_seconds, s->recovery_seconds,
-          (unsigned long long)s->peak_memory_bytes);
+  fprintf(f, "{\n  \"status\": \"%s\",\n  \"message\": ", tr_status_name(status));
+  put_string(f, message);
+  const char *base = (const char *)s;
+  for (size_t i = 0; i < sizeof counts / sizeof *counts; i++) {
+    uint64_t v;
+    memcpy(&v, base + counts[i].off, sizeof v);
+    fprintf(f, ",\n  \"%s\": %llu", counts[i].name, (unsigned long long)v);
+  }
+  /* %.17g: doubles read back exactly */
+  for (size_t i = 0; i < sizeof reals / sizeof *reals; i++) {
+    double v;
+    memcpy(&v, base + reals[i].off, sizeof v);
+    fprintf(f, ",\n  \"%s\": %.17g", reals[i].name, v);
+  }
   /* one key per stage, named as `tetrec -v` prints them (tr_stage_name) */
+  fprintf(f, ",\n  \"stage_seconds\": {");
   for (int k = 0; k < TR_STAGE_COUNT; k++)
     fprintf(f, "%s\n    \"%s\": %.6f", k ? "," : "", tr_stage_name(k), s->stage_seconds[k]);
-  fprintf(f, "\n  },\n  \"facets_recovered_by_cavity\": %llu,\n"
-          "  \"steiner_on_edges\": %llu,\n  \"steiner_on_facets\": %llu,\n"
-          "  \"steiner_interior\": %llu,\n  \"steiner_removed\": %llu,\n"
-          "  \"steiner_relocated\": %llu\n}\n",
-          (unsigned long long)s->facets_recovered_by_cavity,
-          (unsigned long long)s->steiner_on_edges, (unsigned long long)s->steiner_on_facets,
-          (unsigned long long)s->steiner_interior, (unsigned long long)s->steiner_removed,
-          (unsigned long long)s->steiner_relocated);
+  fprintf(f, "\n  }\n}\n");
   int bad = ferror(f);
   if (fclose(f) != 0 || bad)
     return tr_error(TR_ERR_IO, "%s: write failed", path);

@@ -81,25 +81,3 @@ tr_status tr_write_tetgen(const struct tr_mesh_view *m, const char *base, int ex
   }
   return done(f, base, ".face");
 }
-
-tr_status tr_write_mesh_view(const struct tr_mesh_view *m, const char *path, int exact)
-{
-  if (tr_io_has_ext(path, ".mesh"))
-    return tr_write_medit(m, path);
-  if (tr_io_has_ext(path, ".vtu"))
-    return tr_write_vtu(m, path);
-  size_t n = strlen(path);
-  if (tr_io_has_ext(path, ".node") || tr_io_has_ext(path, ".ele") ||
-      tr_io_has_ext(path, ".face")) {
-    char *base = malloc(n + 1);
-    if (!base)
-      return tr_error(TR_ERR_NOMEM, "out of memory");
-    memcpy(base, path, n + 1);
-    *strrchr(base, '.') = '\0';
-    tr_status st = tr_write_tetgen(m, base, exact);
-    free(base);
-    return st;
-  }
-  /* Anything else is a TetGen base name such as "cube.1". */
-  return tr_write_tetgen(m, path, exact);
-}

@@ -25,7 +25,7 @@ for in in "$@"; do
     grep -q '"facets_recovered_by_cavity": ' "$out.json" ||
       say "$b --recovery $mode: --stats has no facets_recovered_by_cavity"
     if [ "$mode" = paper ]; then
-      grep -q '"facets_recovered_by_cavity": 0$' "$out.json" ||
+      grep -Eq '"facets_recovered_by_cavity": 0,?$' "$out.json" ||
         say "$b --recovery paper: facets recovered by the cavity: $(grep cavity "$out.json")"
     fi
     echo "$b --recovery $mode: $(grep -E 'points_added|recovered' "$out.json" | tr -d ' \n')"

@@ -1,0 +1,386 @@
+/* Gmsh .msh input, ASCII formats 4.1 and 2.2 (what Gmsh, meshio and most FE tools write).
+ *
+ * Surface input: triangles (type 2) and quadrangles (type 3, as polygons) with their
+ * physical tag as marker: in 4.1 the first physical tag of the element's entity (from
+ * $Entities; 0 when it has none, is not declared there, or the file has no $Entities), in
+ * 2.2 the element's first tag. Tetrahedra (type 4) go to plc->tets for `tetrec check`. Points (15) and lines (1)
+ * are skipped: in a surface mesh they are corners and edges of the triangles. Any other
+ * element type (higher order, hexahedra, ...) is an error naming it, as are binary files,
+ * format 4.0 (a different node layout), parametric nodes and partitioned entities.
+ * Sections that carry no geometry ($PhysicalNames, $NodeData, ...) are skipped to their
+ * $End line.
+ *
+ * Node tags are arbitrary positive integers (sparse in general): they are mapped to
+ * indices through a sorted table of the tags read, never an array sized by a declared
+ * maximum tag. Every declared count is checked against the bytes left before allocation. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "io.h"
+#include "lex.h"
+#include "soup.h"
+
+struct tagidx {
+  uint64_t tag;
+  uint32_t idx;
+};
+
+struct msh {
+  int version; /* 41 or 22, 0 before $MeshFormat */
+  struct tagidx *nodes, *ents;
+  uint32_t nnodes, cap_nodes, nents, cap_ents;
+  int nodes_sorted, ents_sorted;
+};
+
+static int cmp_tag(const void *a, const void *b)
+{
+  uint64_t x = ((const struct tagidx *)a)->tag, y = ((const struct tagidx *)b)->tag;
+  return (x > y) - (x < y);
+}
+
+static tr_status push(struct tagidx **a, uint32_t *n, uint32_t *cap, uint64_t tag, uint32_t idx)
+{
+  if (*n == *cap) {
+    uint32_t nc = *cap ? 2 * *cap : 64;
+    if (nc > TR_IO_MAX_COUNT)
+      return tr_error(TR_ERR_NOMEM, "too many tags");
+    struct tagidx *na = realloc(*a, sizeof *na * nc);
+    if (!na)
+      return tr_error(TR_ERR_NOMEM, "out of memory reading .msh");
+    *a = na;
+    *cap = nc;
+  }
+  (*a)[*n].tag = tag;
+  (*a)[(*n)++].idx = idx;
+  return TR_OK;
+}
+
+static const struct tagidx *find(const struct tagidx *a, uint32_t n, uint64_t tag)
+{
+  uint32_t lo = 0, hi = n;
+  while (lo < hi) {
+    uint32_t mid = lo + (hi - lo) / 2;
+    if (a[mid].tag < tag)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo < n && a[lo].tag == tag ? a + lo : NULL;
+}
+
+/* Sorts a tag table and rejects a tag given twice. */
+static tr_status seal(tr_lex *lx, struct tagidx *a, uint32_t n, const char *what)
+{
+  if (n > 1)
+    qsort(a, n, sizeof *a, cmp_tag);
+  for (uint32_t i = 1; i < n; i++)
+    if (a[i].tag == a[i - 1].tag)
+      return tr_error(TR_ERR_INPUT, "%s: %s tag %llu defined twice", lx->name, what,
+                      (unsigned long long)a[i].tag);
+  return TR_OK;
+}
+
+static tr_status need(tr_lex *lx, const char *word)
+{
+  if (!tr_lex_next(lx))
+    return tr_lex_eof(lx, word);
+  if (!tr_lex_is(lx, word))
+    return tr_error(TR_ERR_PARSE, "%s:%lu: expected %s, found '%.*s'", lx->name, lx->tokline,
+                    word, (int)(lx->toklen > 40 ? 40 : lx->toklen), lx->tok);
+  return TR_OK;
+}
+
+static tr_status count(tr_lex *lx, const char *what, size_t min_bytes, uint64_t *n)
+{
+  TR_CHECK(tr_lex_u64(lx, what, n));
+  return tr_check_room(lx->name, lx->tokline, *n, what, tr_lex_left(lx), min_bytes,
+                       TR_IO_MAX_COUNT / 4);
+}
+
+static tr_status mesh_format(tr_lex *lx, struct msh *g)
+{
+  if (!tr_lex_next(lx))
+    return tr_lex_eof(lx, "the format version");
+  unsigned long line = lx->tokline;
+  if (tr_lex_is(lx, "4.1"))
+    g->version = 41;
+  else if (lx->toklen >= 2 && lx->tok[0] == '2' && lx->tok[1] == '.')
+    g->version = 22; /* 2.0 .. 2.2 share the layout read here */
+  else
+    return tr_error(TR_ERR_UNSUPPORTED, "%s:%lu: .msh format %.*s not supported (4.1 or 2.2; "
+                    "gmsh -save -format msh41)", lx->name, line,
+                    (int)(lx->toklen > 20 ? 20 : lx->toklen), lx->tok);
+  int64_t type, size;
+  TR_CHECK(tr_lex_i64(lx, "the file type", &type));
+  TR_CHECK(tr_lex_i64(lx, "the data size", &size));
+  if (type != 0)
+    return tr_error(TR_ERR_UNSUPPORTED, "%s:%lu: binary .msh not supported: save it as ASCII "
+                    "(Gmsh option Mesh.Binary = 0)", lx->name, line);
+  return need(lx, "$EndMeshFormat");
+}
+
+static tr_status entities(tr_lex *lx, struct msh *g)
+{
+  uint64_t n[4];
+  for (int d = 0; d < 4; d++)
+    TR_CHECK(count(lx, "entities", 16, &n[d]));
+  for (int d = 0; d < 4; d++)
+    for (uint64_t i = 0; i < n[d]; i++) {
+      int64_t tag, np, nb, phys = 0, x;
+      double c;
+      TR_CHECK(tr_lex_i64(lx, "an entity tag", &tag));
+      for (int k = 0; k < (d ? 6 : 3); k++)
+        TR_CHECK(tr_lex_double(lx, "an entity bounding box", &c));
+      TR_CHECK(tr_lex_i64(lx, "a number of physical tags", &np));
+      if (np < 0)
+        return tr_error(TR_ERR_PARSE, "%s:%lu: negative number of physical tags", lx->name,
+                        lx->tokline);
+      for (int64_t k = 0; k < np; k++) {
+        TR_CHECK(tr_lex_i64(lx, "a physical tag", &x));
+        if (k == 0)
+          phys = x;
+      }
+      if (d > 0) {
+        TR_CHECK(tr_lex_i64(lx, "a number of bounding entities", &nb));
+        if (nb < 0)
+          return tr_error(TR_ERR_PARSE, "%s:%lu: negative number of bounding entities",
+                          lx->name, lx->tokline);
+        for (int64_t k = 0; k < nb; k++)
+          TR_CHECK(tr_lex_i64(lx, "a bounding entity tag", &x));
+      }
+      if (tag < 0 || tag > INT32_MAX || phys < INT32_MIN || phys > INT32_MAX)
+        return tr_error(TR_ERR_INPUT, "%s:%lu: entity tag %lld or physical tag %lld out of range",
+                        lx->name, lx->tokline, (long long)tag, (long long)phys);
+      /* key: dimension and tag; value: the physical tag as int32 bits */
+      TR_CHECK(push(&g->ents, &g->nents, &g->cap_ents, ((uint64_t)d << 32) | (uint64_t)tag,
+                    (uint32_t)(int32_t)phys));
+    }
+  TR_CHECK(seal(lx, g->ents, g->nents, "entity"));
+  g->ents_sorted = 1;
+  return need(lx, "$EndEntities");
+}
+
+static tr_status node(tr_lex *lx, struct msh *g, tr_soup *s, uint64_t tag)
+{
+  if (tag == 0)
+    return tr_error(TR_ERR_INPUT, "%s:%lu: node tag 0 (tags start at 1)", lx->name, lx->tokline);
+  return push(&g->nodes, &g->nnodes, &g->cap_nodes, tag, s->npoints);
+}
+
+static tr_status point(tr_lex *lx, tr_soup *s)
+{
+  double p[3];
+  for (int k = 0; k < 3; k++)
+    TR_CHECK(tr_lex_double(lx, "a node coordinate", &p[k]));
+  return tr_soup_add_point(s, p);
+}
+
+static tr_status nodes(tr_lex *lx, struct msh *g, tr_soup *s)
+{
+  if (g->nnodes)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: a second $Nodes section", lx->name, lx->tokline);
+  uint64_t nblocks = 1, total, x;
+  if (g->version == 41) {
+    TR_CHECK(count(lx, "node blocks", 8, &nblocks));
+    TR_CHECK(count(lx, "nodes", 8, &total));
+    TR_CHECK(tr_lex_u64(lx, "the smallest node tag", &x));
+    TR_CHECK(tr_lex_u64(lx, "the largest node tag", &x));
+  } else
+    TR_CHECK(count(lx, "nodes", 8, &total));
+  TR_CHECK(tr_soup_reserve_points(s, (uint32_t)total));
+  for (uint64_t b = 0; b < nblocks; b++) {
+    uint64_t n = total;
+    if (g->version == 41) {
+      int64_t dim, ent, param;
+      TR_CHECK(tr_lex_i64(lx, "the entity dimension", &dim));
+      TR_CHECK(tr_lex_i64(lx, "the entity tag", &ent));
+      TR_CHECK(tr_lex_i64(lx, "the parametric flag", &param));
+      if (param != 0)
+        return tr_error(TR_ERR_UNSUPPORTED, "%s:%lu: parametric nodes not supported", lx->name,
+                        lx->tokline);
+      TR_CHECK(count(lx, "nodes in the block", 8, &n));
+      uint32_t first = s->npoints;
+      for (uint64_t i = 0; i < n; i++) {
+        TR_CHECK(tr_lex_u64(lx, "a node tag", &x));
+        TR_CHECK(node(lx, g, s, x));
+        g->nodes[g->nnodes - 1].idx = first + (uint32_t)i;
+      }
+      for (uint64_t i = 0; i < n; i++)
+        TR_CHECK(point(lx, s));
+    } else
+      for (uint64_t i = 0; i < n; i++) {
+        TR_CHECK(tr_lex_u64(lx, "a node tag", &x));
+        TR_CHECK(node(lx, g, s, x));
+        TR_CHECK(point(lx, s));
+      }
+  }
+  if (g->nnodes != total)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: %u nodes in the blocks, %llu declared", lx->name,
+                    lx->tokline, g->nnodes, (unsigned long long)total);
+  TR_CHECK(seal(lx, g->nodes, g->nnodes, "node"));
+  g->nodes_sorted = 1;
+  return need(lx, "$EndNodes");
+}
+
+/* Nodes per element of the types Gmsh numbers 1..15 (0: unknown to this reader). */
+static int nodes_of_type(int64_t t)
+{
+  static const int n[16] = {0, 2, 3, 4, 4, 8, 6, 5, 3, 6, 9, 10, 27, 18, 14, 1};
+  return t >= 1 && t <= 15 ? n[t] : 0;
+}
+
+static tr_status element(tr_lex *lx, struct msh *g, tr_soup *s, int64_t type, int32_t marker)
+{
+  int nn = nodes_of_type(type);
+  if (type != 1 && type != 2 && type != 3 && type != 4 && type != 15)
+    return tr_error(TR_ERR_UNSUPPORTED, "%s:%lu: element type %lld not supported (points, "
+                    "lines, triangles, quadrangles and tetrahedra of order 1 are)",
+                    lx->name, lx->tokline, (long long)type);
+  uint32_t v[4];
+  unsigned long line = lx->tokline;
+  for (int k = 0; k < nn; k++) {
+    uint64_t tag;
+    TR_CHECK(tr_lex_u64(lx, "an element node tag", &tag));
+    const struct tagidx *t = find(g->nodes, g->nnodes, tag);
+    if (!t)
+      return tr_error(TR_ERR_INPUT, "%s:%lu: node tag %llu is not defined in $Nodes", lx->name,
+                      lx->tokline, (unsigned long long)tag);
+    if (k < 4)
+      v[k] = t->idx;
+  }
+  if (type == 2 || type == 3) {
+    TR_CHECK(tr_soup_begin_facet(s, marker, line));
+    TR_CHECK(tr_soup_begin_loop(s));
+    for (int k = 0; k < nn; k++)
+      TR_CHECK(tr_soup_add_index(s, v[k]));
+  } else if (type == 4)
+    for (int k = 0; k < 4; k++)
+      TR_CHECK(tr_u32vec_push(&s->tets, v[k]));
+  return TR_OK;
+}
+
+static tr_status elements(tr_lex *lx, struct msh *g, tr_soup *s)
+{
+  if (!g->nodes_sorted)
+    return tr_error(TR_ERR_PARSE, "%s:%lu: $Elements before $Nodes", lx->name, lx->tokline);
+  uint64_t nblocks, total, x;
+  int64_t tag;
+  if (g->version == 41) {
+    TR_CHECK(count(lx, "element blocks", 8, &nblocks));
+    TR_CHECK(count(lx, "elements", 4, &total));
+    TR_CHECK(tr_lex_u64(lx, "the smallest element tag", &x));
+    TR_CHECK(tr_lex_u64(lx, "the largest element tag", &x));
+    uint64_t seen = 0;
+    for (uint64_t b = 0; b < nblocks; b++) {
+      int64_t dim, ent, type;
+      uint64_t n;
+      TR_CHECK(tr_lex_i64(lx, "the entity dimension", &dim));
+      TR_CHECK(tr_lex_i64(lx, "the entity tag", &ent));
+      TR_CHECK(tr_lex_i64(lx, "the element type", &type));
+      TR_CHECK(count(lx, "elements in the block", 4, &n));
+      int32_t marker = 0;
+      if (g->ents_sorted && dim >= 0 && dim <= 3 && ent >= 0 && ent <= INT32_MAX) {
+        /* An entity missing from $Entities has no physical tag to give: meshio writes such
+         * files (blocks of an entity it does not declare), and Gmsh reads them. */
+        const struct tagidx *e = find(g->ents, g->nents, ((uint64_t)dim << 32) | (uint64_t)ent);
+        marker = e ? (int32_t)e->idx : 0;
+      }
+      for (uint64_t i = 0; i < n; i++) {
+        TR_CHECK(tr_lex_i64(lx, "an element tag", &tag));
+        TR_CHECK(element(lx, g, s, type, marker));
+      }
+      seen += n;
+    }
+    if (seen != total)
+      return tr_error(TR_ERR_PARSE, "%s:%lu: %llu elements in the blocks, %llu declared",
+                      lx->name, lx->tokline, (unsigned long long)seen, (unsigned long long)total);
+  } else {
+    TR_CHECK(count(lx, "elements", 8, &total));
+    for (uint64_t i = 0; i < total; i++) {
+      int64_t type, ntags, t, marker = 0;
+      TR_CHECK(tr_lex_i64(lx, "an element tag", &tag));
+      TR_CHECK(tr_lex_i64(lx, "an element type", &type));
+      TR_CHECK(tr_lex_i64(lx, "a number of tags", &ntags));
+      if (ntags < 0)
+        return tr_error(TR_ERR_PARSE, "%s:%lu: negative number of tags", lx->name, lx->tokline);
+      for (int64_t k = 0; k < ntags; k++) {
+        TR_CHECK(tr_lex_i64(lx, "an element tag", &t));
+        if (k == 0)
+          marker = t;
+      }
+      if (marker < INT32_MIN || marker > INT32_MAX)
+        return tr_error(TR_ERR_INPUT, "%s:%lu: physical tag %lld out of range", lx->name,
+                        lx->tokline, (long long)marker);
+      TR_CHECK(element(lx, g, s, type, (int32_t)marker));
+    }
+  }
+  return need(lx, "$EndElements");
+}
+
+/* Skips a section we do not read, up to its $End line. */
+static tr_status skip_section(tr_lex *lx)
+{
+  char end[72] = "$End";
+  size_t n = lx->toklen - 1;
+  if (n > sizeof end - 5)
+    n = sizeof end - 5;
+  memcpy(end + 4, lx->tok + 1, n);
+  end[4 + n] = '\0';
+  unsigned long line = lx->tokline;
+  while (tr_lex_next(lx))
+    if (tr_lex_is(lx, end))
+      return TR_OK;
+  return tr_error(TR_ERR_PARSE, "%s:%lu: section $%s has no %s line", lx->name, line, end + 4,
+                  end);
+}
+
+static tr_status parse(tr_lex *lx, tr_soup *s, struct msh *g)
+{
+  while (tr_lex_next(lx)) {
+    if (lx->tok[0] != '$')
+      return tr_error(TR_ERR_PARSE, "%s:%lu: expected a section ($Name), found '%.*s'", lx->name,
+                      lx->tokline, (int)(lx->toklen > 40 ? 40 : lx->toklen), lx->tok);
+    if (tr_lex_is(lx, "$MeshFormat")) {
+      TR_CHECK(mesh_format(lx, g));
+      continue;
+    }
+    if (!g->version)
+      return tr_error(TR_ERR_PARSE, "%s:%lu: no $MeshFormat section first", lx->name,
+                      lx->tokline);
+    if (tr_lex_is(lx, "$Entities") && g->version == 41)
+      TR_CHECK(entities(lx, g));
+    else if (tr_lex_is(lx, "$PartitionedEntities"))
+      return tr_error(TR_ERR_UNSUPPORTED, "%s:%lu: partitioned meshes not supported", lx->name,
+                      lx->tokline);
+    else if (tr_lex_is(lx, "$Nodes"))
+      TR_CHECK(nodes(lx, g, s));
+    else if (tr_lex_is(lx, "$Elements"))
+      TR_CHECK(elements(lx, g, s));
+    else
+      TR_CHECK(skip_section(lx));
+  }
+  if (!g->version)
+    return tr_error(TR_ERR_PARSE, "%s: not a Gmsh file (no $MeshFormat)", lx->name);
+  if (!g->nodes_sorted)
+    return tr_error(TR_ERR_PARSE, "%s: no $Nodes section", lx->name);
+  return TR_OK;
+}
+
+tr_status tr_read_msh_buf(const char *buf, size_t len, const char *name, struct tr_plc *plc)
+{
+  tr_lex lx;
+  tr_soup s;
+  struct msh g;
+  memset(&g, 0, sizeof g);
+  tr_lex_init(&lx, buf, len, name, 0);
+  tr_soup_init(&s, lx.name);
+  tr_status st = parse(&lx, &s, &g);
+  free(g.nodes);
+  free(g.ents);
+  if (st == TR_OK)
+    st = tr_soup_to_plc(&s, plc);
+  tr_soup_free(&s);
+  if (st != TR_OK)
+    tr_plc_clear(plc);
+  return st;
+}
