@@ -9,6 +9,6 @@ out=$(mktemp -d)
 "$dir/src/cli/tetrec" mesh examples/data/cube.off -o "$out/cube.mesh" --stats "$out/cube.json"
 "$dir/src/cli/tetrec" check examples/data/cube.off "$out/cube.mesh"
 # the same mesh with exact Steiner coordinates: check then verifies exact conformity and volume
-"$dir/src/cli/tetrec" mesh examples/data/cube.off -o "$out/cube.node" --exact -q
+"$dir/src/cli/tetrec" mesh examples/data/cube.off -o "$out/cube.node" --exact -Q
 "$dir/src/cli/tetrec" check examples/data/cube.off "$out/cube.node"
 echo "wrote $out/cube.mesh"

@@ -13,6 +13,7 @@
 #include "mesh/check.h"
 #include "mesh/conform.h"
 #include "mesh/mesh.h"
+#include "refine/quality.h"
 #include "smooth/smooth.h"
 
 typedef struct {
@@ -191,6 +192,9 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
               nsteiner ? " (Steiner points read exactly)" : "",
               smoothed ? " with its coplanar diagonals swapped" : "",
               with_volume ? ", volume equals the enclosed volume" : "");
+    tr_quality q; /* on the doubles of the file (the nearest ones for exact points) */
+    tr_quality_measure(m, &q);
+    tr_quality_print(stderr, "tetrec: check: ", &q);
   }
   mpq_clear(v6);
   tr_mesh_destroy(m);

@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, isatty */
 /* The tetrec command. Exit status = the tr_status of the first failure (0 on success),
  * so scripts can tell a bad file from a bad surface from a bug. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,7 @@
 #include "cli.h"
 #include "io/io.h"
 #include "pipeline/pipeline.h"
+#include "refine/refine_stage.h"
 #include "tetrec.h"
 
 static const char usage[] =
@@ -27,7 +29,7 @@ static const char usage[] =
     "\n"
     "options:\n"
     "  -o OUT            output file or base name\n"
-    "  -q                quiet: errors only\n"
+    "  -Q, --quiet       quiet: errors only\n"
     "  -v                verbose\n"
     "  --stats FILE      write statistics as JSON\n"
     "  --exact           write Steiner points as exact rationals num/den in .node\n"
@@ -42,6 +44,12 @@ static const char usage[] =
     "  --no-smooth       no surface diagonal swaps before recovery\n"
     "  --round-budget N  star checks the rounding repair may spend before it gives up\n"
     "                    (exit 9; default 2000000)\n"
+    "  -q, --quality [R[/D]]  refine (constrained Delaunay refinement) until every tet's\n"
+    "                    radius-edge ratio is at most R (default 1.414, R >= 1); a minimum\n"
+    "                    dihedral target D is not supported yet (refused)\n"
+    "  -a, --max-volume V  refine until every tet's volume is at most V\n"
+    "  --refine-budget N points refinement may add before it stops with exit 8 (default\n"
+    "                    100 per input point + 100000, + 20 per V in the domain's volume)\n"
     "  --help, --version\n"
     "\n"
     "exit status (= tr_status):\n"
@@ -54,7 +62,37 @@ typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
   int quiet, verbose, exact, allow_open, check_only, no_smooth;
   uint64_t round_budget; /* 0: the default */
+  double quality, quality_dih, max_volume; /* 0: off */
+  uint64_t refine_budget;                  /* 0: the default */
 } args;
+
+/* "R" or "R/D", both finite numbers, nothing else: 1 and the values, else 0. */
+static int parse_quality(const char *v, double *r, double *d)
+{
+  char *end;
+  if (!v || !*v || !(v[0] == '.' || (v[0] >= '0' && v[0] <= '9')))
+    return 0;
+  *r = strtod(v, &end);
+  *d = 0;
+  if (*end == '/') {
+    const char *w = end + 1;
+    if (!(*w == '.' || (*w >= '0' && *w <= '9')))
+      return 0;
+    *d = strtod(w, &end);
+  }
+  return *end == 0 && isfinite(*r) && isfinite(*d);
+}
+
+/* digits only, 1 .. 10^15: strtoull alone would take "-1", "+5" and " 7" */
+static int parse_count(const char *v, uint64_t *n)
+{
+  size_t len = strlen(v);
+  if (!(len > 0 && len <= 16 && strspn(v, "0123456789") == len))
+    return 0;
+  unsigned long long x = strtoull(v, NULL, 10);
+  *n = x;
+  return x > 0 && x <= 1000000000000000ull;
+}
 
 static int fail(tr_status s)
 {
@@ -110,8 +148,36 @@ static int parse_args(int argc, char **argv, args *a)
         a->out = argv[++i];
       else
         a->stats = argv[++i];
-    } else if (!strcmp(s, "-q"))
+    } else if (!strcmp(s, "-Q") || !strcmp(s, "--quiet"))
       a->quiet = 1;
+    else if (!strcmp(s, "-q") || !strcmp(s, "--quality") || !strncmp(s, "--quality=", 10) ||
+             (s[1] == 'q' && s[0] == '-' && s[2])) {
+      /* the value is optional: attached (-q1.2, --quality=1.2) or the next argument when
+       * it reads as R or R/D in full */
+      const char *v = s[1] == 'q' ? (s[2] ? s + 2 : NULL) : (s[9] == '=' ? s + 10 : NULL);
+      double r = 1.414, d = 0;
+      if (v) {
+        if (!parse_quality(v, &r, &d))
+          return tr_error(TR_ERR_USAGE, "%s: the quality bound must read R or R/D (numbers)", s);
+      } else if (i + 1 < argc && parse_quality(argv[i + 1], &r, &d))
+        i++;
+      else
+        r = 1.414, d = 0;
+      a->quality = r;
+      a->quality_dih = d;
+    } else if (!strcmp(s, "-a") || !strcmp(s, "--max-volume") || (s[1] == 'a' && s[0] == '-' && s[2])) {
+      const char *v = s[1] == 'a' && s[2] ? s + 2 : i + 1 < argc ? argv[++i] : "";
+      char *end;
+      double x = strtod(v, &end);
+      if (!*v || *end || !(x > 0) || !isfinite(x))
+        return tr_error(TR_ERR_USAGE, "%s needs a positive volume, not '%s'", s, v);
+      a->max_volume = x;
+    } else if (!strcmp(s, "--refine-budget")) {
+      const char *v = i + 1 < argc ? argv[++i] : "";
+      if (!parse_count(v, &a->refine_budget))
+        return tr_error(TR_ERR_USAGE, "--refine-budget needs a whole number from 1 to 10^15, "
+                        "not '%s'", v);
+    }
     else if (!strcmp(s, "-v"))
       a->verbose = 1;
     else if (!strcmp(s, "--exact"))
@@ -149,6 +215,9 @@ static int parse_args(int argc, char **argv, args *a)
   if (strcmp(a->cmd, "mesh") && strcmp(a->cmd, "delaunay") && strcmp(a->cmd, "check") &&
       strcmp(a->cmd, "convert"))
     return tr_error(TR_ERR_USAGE, "unknown command '%s' (see tetrec --help)", a->cmd);
+  if (strcmp(a->cmd, "mesh") && (a->quality != 0 || a->max_volume != 0 || a->refine_budget))
+    return tr_error(TR_ERR_USAGE, "-q/--quality, -a/--max-volume and --refine-budget apply to "
+                    "'mesh' only, not '%s'", a->cmd);
   if (npos != want)
     return tr_error(TR_ERR_USAGE, "'%s' takes %d file argument%s (see tetrec --help)", a->cmd,
                     want - 1, want == 3 ? "s" : "");
@@ -185,12 +254,19 @@ static int cmd_mesh(const args *a)
   opt.smooth = !a->no_smooth;
   opt.verbose = a->quiet ? 0 : a->verbose ? 2 : 1;
   opt.round_budget = a->round_budget;
+  opt.quality_ratio = a->quality;
+  opt.quality_min_dihedral = a->quality_dih;
+  opt.max_volume = a->max_volume;
+  opt.refine_budget = a->refine_budget;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();
   tr_plc *plc = NULL;
+  tr_status s = tr_refine_check_options(&opt); /* before the work, not after recovery */
+  if (s != TR_OK)
+    return fail(s);
   progress("reading", a->in);
-  tr_status s = tr_plc_read(a->in, &plc);
+  s = tr_plc_read(a->in, &plc);
   if (s != TR_OK)
     return fail(s);
   progress("validating", a->in);

@@ -18,6 +18,7 @@
 #include "output/flatflip.h"
 #include "output/round.h"
 #include "pipeline.h"
+#include "refine/refine_stage.h"
 #include "smooth/smooth.h"
 
 static tr_status copy_plc(const tr_plc *in, tr_plc **out)
@@ -123,6 +124,9 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = tr_outer_color(m, &sub, keep_hull, sides, &nreg);
   free(sides);
   sides = NULL;
+  /* Quality refinement (off by default): inner tets only, before the flips and rounding. */
+  if (st == TR_OK && (opt.quality_ratio != 0 || opt.max_volume != 0 || opt.quality_min_dihedral != 0))
+    st = tr_refine_stage(m, p, &sub, &opt, keep_hull, &stats->points_added_for_quality);
   /* Before compaction: the flips need the sub-faces, which are in m's numbering. */
   if (st == TR_OK)
     st = tr_round_flip_flat(m, &sub, p, &stats->rounding_flips);
@@ -155,6 +159,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK) {
     stats->volume_nodes = res->nv;
     stats->volume_elements = tr_mesh_num_tets(res);
+    tr_quality_stats(res, stats);
     if (opt.verbose >= 2)
       fprintf(stderr, "tetrec: %u regions\n", nreg);
   }

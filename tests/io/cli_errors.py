@@ -57,7 +57,7 @@ expect(rc == 1 and "unknown file extension" in err, f"unknown extension -> 1: {r
 with tempfile.TemporaryDirectory() as d:
     src = os.path.join(data, "tet.off")
     shutil.copy(src, os.path.join(d, "t.off"))
-    rc, _, err = run(["mesh", "-q", "t.off", "-o", "m.mesh"], cwd=d)
+    rc, _, err = run(["mesh", "-Q", "t.off", "-o", "m.mesh"], cwd=d)
     if rc == 11:  # the pipeline is not wired in this build
         expect("not implemented" in err, f"mesh -> 11 names what is missing: {err}")
     else:
@@ -68,14 +68,14 @@ with tempfile.TemporaryDirectory() as d:
     expect(rc == 0, f"--check-only: {rc} {err}")
     st = json.load(open(os.path.join(d, "s.json")))
     expect(st["surface_nodes"] == 4 and st["surface_facets"] == 4, f"stats json {st}")
-    rc, _, err = run(["delaunay", "-q", "t.off"], cwd=d)
-    expect(rc == 0 and err == "", f"delaunay -q: {rc} {err}")
+    rc, _, err = run(["delaunay", "-Q", "t.off"], cwd=d)
+    expect(rc == 0 and err == "", f"delaunay -Q: {rc} {err}")
     for ext in (".node", ".ele", ".face"):
         expect(os.path.exists(os.path.join(d, "t.1" + ext)), "default output t.1" + ext)
     rc, _, err = run(["check", "t.off", "t.1.node"], cwd=d)
     expect(rc == 0, f"check of the Delaunay mesh of a tetrahedron: {rc} {err}")
-    rc, _, err = run(["delaunay", "-q", "t.off", "-o", "a.mesh"], cwd=d)
-    rc2, _, _ = run(["delaunay", "-q", "t.off", "-o", "b.mesh"], cwd=d)
+    rc, _, err = run(["delaunay", "-Q", "t.off", "-o", "a.mesh"], cwd=d)
+    rc2, _, _ = run(["delaunay", "-Q", "t.off", "-o", "b.mesh"], cwd=d)
     expect(rc == 0 and rc2 == 0 and open(os.path.join(d, "a.mesh")).read() == open(os.path.join(d, "b.mesh")).read(),
            "same input, same output byte for byte")
     rc, _, err = run(["convert", os.path.join(data, "forms.obj"), "c.off"], cwd=d)

@@ -25,7 +25,7 @@ fails = 0
 with tempfile.TemporaryDirectory() as d:
     for ext in (".mesh", ".vtu"):
         out = os.path.join(d, "cube" + ext)
-        p = subprocess.run([tetrec, "delaunay", "-q", os.path.join(data, "../../examples/data/cube.off"),
+        p = subprocess.run([tetrec, "delaunay", "-Q", os.path.join(data, "../../examples/data/cube.off"),
                             "-o", out], capture_output=True, text=True)
         if p.returncode != 0:
             print("tetrec failed:", p.stderr)
