@@ -192,7 +192,11 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
               nsteiner ? " (Steiner points read exactly)" : "",
               smoothed ? " with its coplanar diagonals swapped" : "",
               with_volume ? ", volume equals the enclosed volume" : "");
-    tr_quality q; /* on the doubles of the file (the nearest ones for exact points) */
+  }
+  if (verbose) {
+    /* the shape of the tets, on the file's doubles (the nearest ones for exact points);
+     * also when a check failed, so that a benchmark can compare meshes tetrec rejects */
+    tr_quality q;
     tr_quality_measure(m, &q);
     tr_quality_print(stderr, "tetrec: check: ", &q);
   }
