@@ -335,6 +335,22 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t)
     }
     return push_tet(c, t);
   }
+  /* a cavity shrunk to be star-shaped can leave a face the point sees almost edge-on:
+   * the cone would hold a tet far worse than the one being refined; leave that one */
+  for (size_t i = 0; i < c->bfaces.n; i++) {
+    uint32_t u = c->bfaces.a[i] >> 2;
+    int k = (int)(c->bfaces.a[i] & 3);
+    const double *x[3];
+    for (int j = 0; j < 3; j++)
+      x[j] = m->xyz + 3 * (size_t)m->tv[4 * (size_t)u + tr_face_vtx[k][j]];
+    double r2, v2;
+    tr_tet_shape(x[0], x[1], x[2], cc, &r2, &v2, NULL, NULL);
+    if (!(r2 <= 1000) || !(r2 <= 100 * ratio)) {
+      rf_cavity_release(c);
+      c->st->skipped_other++;
+      return TR_OK;
+    }
+  }
   uint32_t pid;
   TR_CHECK(tr_mesh_add_vertex(m, cc, &pid));
   TR_CHECK(rf_insert(c, pid, &ok));
