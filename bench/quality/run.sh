@@ -8,7 +8,8 @@
 # doubles), which also validates the output (links and exact orientation; for tetrec's
 # --exact output also exact conformity and volume); a row marked (invalid) failed that
 # check (its figures are shown and counted all the same), "fail" is a failed run or a
-# timeout. Totals are over the models both meshed.
+# timeout (tetrec's: fail:rejected input, fail:budget, fail:timeout). Totals are over the
+# models both meshed.
 #
 # usage: TETGEN=/path/to/tetgen-1.6 bench/quality/run.sh [BUILD_DIR]
 #   BUILD_DIR  a build of tetrec (default build; set up with meson if missing)
@@ -69,10 +70,16 @@ for model in "$DATA"/data/meshes/*.off; do
   mkdir -p "$w/tg"
   # tetrec
   ra=ok
-  if ! timeout "$TIMEOUT" /usr/bin/time -o "$w/tetrec.time" -f "%U %S" \
-      "$TETREC" mesh "$model" -q "$R" -o "$w/tetrec.node" --exact -Q >"$w/tetrec.log" 2>&1; then
-    ra=fail
-  fi
+  rc=0
+  timeout "$TIMEOUT" /usr/bin/time -o "$w/tetrec.time" -f "%U %S" \
+    "$TETREC" mesh "$model" -q "$R" -o "$w/tetrec.node" --exact -Q >"$w/tetrec.log" 2>&1 || rc=$?
+  case $rc in
+    0) ;;
+    2|3|4|5|6|7) ra=fail why=rejected ;; # the input (self-intersecting, open, ...)
+    8) ra=fail why=budget ;;
+    124) ra=fail why=timeout ;;
+    *) ra=fail why=exit$rc ;;
+  esac
   a="- - - - - -"
   if [ $ra = ok ]; then
     "$TETREC" check "$model" "$w/tetrec.node" >"$w/tetrec.check" 2>&1 || ra=invalid
@@ -94,14 +101,15 @@ for model in "$DATA"/data/meshes/*.off; do
   else
     rb=fail
   fi
-  [ $ra != fail ] || a="$ra"
+  [ $ra != fail ] || a="fail:$why"
   [ $rb != fail ] || b="$rb"
   [ $ra != invalid ] || a="$a (invalid)"
   [ $rb != invalid ] || b="$b (invalid)"
   printf "%-28s | %-44s | %-44s\n" "$name" "$a" "$b" | tee -a "$table"
-  if [ $ra != fail ] && [ $rb != fail ]; then
-    read -r ca ta da pa10 pa5 xa <<<"$a"
-    read -r cb tb db pb10 pb5 xb <<<"$b"
+  # both meshed and both measured (a mesh `check` could not even read has "-" figures)
+  if [ $ra != fail ] && [ $rb != fail ] && ! echo "$a $b" | grep -q ' - - '; then
+    read -r ca ta da pa10 pa5 xa _ <<<"${a% (invalid)}"
+    read -r cb tb db pb10 pb5 xb _ <<<"${b% (invalid)}"
     both=$((both + 1))
     eval "$(awk -v ca="$ca" -v cb="$cb" -v ta="$ta" -v tb="$tb" -v da="$da" -v db="$db" \
         -v pa10="$pa10" -v pb10="$pb10" -v pa5="$pa5" -v pb5="$pb5" -v xa="$xa" -v xb="$xb" \
