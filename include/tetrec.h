@@ -203,6 +203,13 @@ typedef struct tr_options {
                          (default 0: a warning). Applied by the tetrec command after
                          tr_mesh_plc with tr_mesh_double_deviation; tr_mesh_plc itself does
                          not read it yet */
+  /* quality refinement (src/refine/refine.h), off unless quality_ratio or max_volume > 0 */
+  double quality_ratio;        /* radius-edge bound R (e.g. 1.414), 0: off */
+  double quality_min_dihedral; /* minimum dihedral target in degrees: not supported yet,
+                                  must be 0 (a nonzero value is refused, never ignored) */
+  double max_volume;           /* bound on every tet's volume, 0: none */
+  uint64_t refine_budget;      /* points refinement may add (0: 100 per input point +
+                                  100,000, + 20 per max_volume in the domain's volume) */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
@@ -229,6 +236,13 @@ typedef struct tr_stats {
   uint64_t steiner_on_edges, steiner_on_facets, steiner_interior;
   uint64_t steiner_removed, steiner_relocated;
   double double_deviation; /* tr_mesh_double_deviation of the written doubles */
+  /* shape of the output tets on the written doubles (src/refine/quality.h) and the points
+   * quality refinement added */
+  uint64_t points_added_for_quality;
+  double min_dihedral, max_dihedral, max_radius_edge; /* degrees, ratio */
+  uint64_t tets_dihedral_below_5, tets_dihedral_below_10;
+  uint64_t dihedral_histogram[18];   /* all six angles of every tet, 10-degree bins */
+  uint64_t radius_edge_histogram[7]; /* <1, <1.414, <2, <4, <10, <100, >=100 */
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

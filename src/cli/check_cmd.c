@@ -14,6 +14,7 @@
 #include "mesh/conform.h"
 #include "mesh/mesh.h"
 #include "output/deviation.h"
+#include "refine/quality.h"
 #include "smooth/smooth.h"
 
 typedef struct {
@@ -201,6 +202,13 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
               nsteiner ? " (Steiner points read exactly)" : "",
               smoothed ? " with its coplanar diagonals swapped" : "",
               with_volume ? ", volume equals the enclosed volume" : "");
+  }
+  if (verbose) {
+    /* the shape of the tets, on the file's doubles (the nearest ones for exact points);
+     * also when a check failed, so that a benchmark can compare meshes tetrec rejects */
+    tr_quality q;
+    tr_quality_measure(m, &q);
+    tr_quality_print(stderr, "tetrec: check: ", &q);
   }
   mpq_clear(v6);
   tr_mesh_destroy(m);

@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, isatty */
 /* The tetrec command. Exit status = the tr_status of the first failure (0 on success),
  * so scripts can tell a bad file from a bad surface from a bug. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,7 @@
 #include "cli.h"
 #include "io/io.h"
 #include "pipeline/pipeline.h"
+#include "refine/refine_stage.h"
 #include "tetrec.h"
 
 static const char usage[] =
@@ -105,6 +107,16 @@ static const struct option {
     {"--round-budget", "N", C_MESH,
      "star checks the rounding repair may spend before it gives\n"
      "up (exit 9; default 2000000)"},
+    {"--quality", "R[/D]", C_MESH,
+     "constrained Delaunay refinement until every tet's radius-\n"
+     "edge ratio is at most R (>= 1; 1.414 is TetGen's default);\n"
+     "a minimum dihedral D is not supported yet (exit 11)"},
+    {"--max-volume", "V", C_MESH, "refinement until every tet's volume is at most V"},
+    {"-a", "V", C_MESH, "the same as --max-volume (TetGen's switch)"},
+    {"--refine-budget", "N", C_MESH,
+     "points refinement may add before it stops with exit 8\n"
+     "(default: 100 per input point + 100,000, + 20 per V of the\n"
+     "domain's volume with --max-volume)"},
     {"--strict-doubles", NULL, C_MESH,
      "fail (exit 9) when a written double lies farther than\n"
      "2^-40 of the bounding box diagonal from the edge or facet\n"
@@ -119,6 +131,8 @@ typedef struct {
   int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
   int keep_surface, keep_steiner;
   int msh_version; /* 41 or 22 */
+  double quality, quality_dih, max_volume; /* 0: off */
+  uint64_t refine_budget;                  /* 0: the default */
   uint64_t round_budget; /* 0: the default */
   int recovery;          /* tr_options.recovery */
 } args;
@@ -205,6 +219,27 @@ static tr_status set_option(args *a, const char *name, const char *v)
     a->no_smooth = 1;
   else if (!strcmp(name, "--strict-doubles"))
     a->strict_doubles = 1;
+  else if (!strcmp(name, "--quality")) {
+    /* "R" or "R/D", finite numbers and nothing else */
+    char *end;
+    int ok = (v[0] == '.' || (v[0] >= '0' && v[0] <= '9'));
+    double r = ok ? strtod(v, &end) : 0, d = 0;
+    if (ok && *end == '/') {
+      const char *w = end + 1;
+      ok = *w == '.' || (*w >= '0' && *w <= '9');
+      d = ok ? strtod(w, &end) : 0;
+    }
+    if (!ok || *end || !isfinite(r) || !isfinite(d))
+      return tr_error(TR_ERR_USAGE, "--quality reads R or R/D (numbers), not '%s'", v);
+    a->quality = r;
+    a->quality_dih = d;
+  } else if (!strcmp(name, "--max-volume") || !strcmp(name, "-a")) {
+    char *end;
+    double x = strtod(v, &end);
+    if (!*v || *end || !(x > 0) || !isfinite(x))
+      return tr_error(TR_ERR_USAGE, "%s needs a positive volume, not '%s'", name, v);
+    a->max_volume = x;
+  }
   else if (!strcmp(name, "--keep-surface") || !strcmp(name, "-Y"))
     a->keep_surface = 1;
   else if (!strcmp(name, "--keep-steiner"))
@@ -227,15 +262,18 @@ static tr_status set_option(args *a, const char *name, const char *v)
       a->msh_version = 22;
     else
       return tr_error(TR_ERR_USAGE, "--msh-version is 4.1 or 2.2, not '%s'", v);
-  } else if (!strcmp(name, "--round-budget")) {
+  } else if (!strcmp(name, "--round-budget") || !strcmp(name, "--refine-budget")) {
     /* digits only, 1 .. 10^15: strtoull alone would take "-1", "+5" and " 7" */
     size_t len = strlen(v);
     int ok = len > 0 && len <= 16 && strspn(v, "0123456789") == len;
     unsigned long long n = ok ? strtoull(v, NULL, 10) : 0;
     if (!ok || n == 0 || n > 1000000000000000ull)
-      return tr_error(TR_ERR_USAGE, "--round-budget needs a whole number from 1 to 10^15, "
-                      "not '%s'", v);
-    a->round_budget = n;
+      return tr_error(TR_ERR_USAGE, "%s needs a whole number from 1 to 10^15, not '%s'", name,
+                      v);
+    if (!strcmp(name, "--round-budget"))
+      a->round_budget = n;
+    else
+      a->refine_budget = n;
   } else
     return tr_error(TR_ERR_INTERNAL, "option %s in the table but not handled", name);
   return TR_OK;
@@ -387,6 +425,10 @@ static int cmd_mesh(const args *a)
   opt.strict_doubles = a->strict_doubles;
   opt.recovery = a->recovery;
   opt.keep_surface = a->keep_surface;
+  opt.quality_ratio = a->quality;
+  opt.quality_min_dihedral = a->quality_dih;
+  opt.max_volume = a->max_volume;
+  opt.refine_budget = a->refine_budget;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();
@@ -394,7 +436,10 @@ static int cmd_mesh(const args *a)
   const char *path = a->out ? a->out : out;
   if (!path)
     return finish(a, &stats, t0, tr_error(TR_ERR_NOMEM, "out of memory"));
-  tr_status s = a->check_only ? TR_OK : check_names(a, path);
+  /* refinement options are checked before any work, not after the recovery */
+  tr_status s = tr_refine_check_options(&opt);
+  if (s == TR_OK && !a->check_only)
+    s = check_names(a, path);
   tr_plc *plc = NULL;
   if (s == TR_OK) {
     progress("reading", a->in);

@@ -3,6 +3,7 @@
  * keyed by tr_stage_name). The fields are listed once, in the tables below, so a new
  * field is one line. */
 #include <errno.h>
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
@@ -23,10 +24,12 @@ static const field counts[] = {
     FIELD(facets_recovered_by_cavity), FIELD(surface_swaps), FIELD(rounding_repairs),
     FIELD(rounding_flips), FIELD(hole_points), FIELD(region_points), FIELD(cavities),
     FIELD(inclusions), FIELD(steiner_on_edges), FIELD(steiner_on_facets), FIELD(steiner_interior),
-    FIELD(steiner_removed), FIELD(steiner_relocated), FIELD(peak_memory_bytes)};
+    FIELD(steiner_removed), FIELD(steiner_relocated), FIELD(peak_memory_bytes),
+    FIELD(points_added_for_quality), FIELD(tets_dihedral_below_5), FIELD(tets_dihedral_below_10)};
 /* double fields */
 static const field reals[] = {FIELD(total_seconds), FIELD(recovery_seconds),
-                              FIELD(double_deviation)};
+                              FIELD(double_deviation), FIELD(min_dihedral),
+                              FIELD(max_dihedral), FIELD(max_radius_edge)};
 #undef FIELD
 
 /* The message as a JSON string: quotes, backslashes and control bytes escaped. */
@@ -66,8 +69,17 @@ tr_status tr_stats_write_json_status(const tr_stats *s, tr_status status, const 
   for (size_t i = 0; i < sizeof reals / sizeof *reals; i++) {
     double v;
     memcpy(&v, base + reals[i].off, sizeof v);
-    fprintf(f, ",\n  \"%s\": %.17g", reals[i].name, v);
+    /* JSON has no infinity: a flat tet's radius-edge ratio is written as 1e308 */
+    fprintf(f, ",\n  \"%s\": %.17g", reals[i].name, isfinite(v) ? v : 1e308);
   }
+  /* the quality histograms (src/refine/quality.h) */
+  fprintf(f, ",\n  \"dihedral_histogram\": [");
+  for (size_t i = 0; i < sizeof s->dihedral_histogram / sizeof *s->dihedral_histogram; i++)
+    fprintf(f, "%s%llu", i ? ", " : "", (unsigned long long)s->dihedral_histogram[i]);
+  fprintf(f, "],\n  \"radius_edge_histogram\": [");
+  for (size_t i = 0; i < sizeof s->radius_edge_histogram / sizeof *s->radius_edge_histogram; i++)
+    fprintf(f, "%s%llu", i ? ", " : "", (unsigned long long)s->radius_edge_histogram[i]);
+  fprintf(f, "]");
   /* one key per stage, named as `tetrec -v` prints them (tr_stage_name) */
   fprintf(f, ",\n  \"stage_seconds\": {");
   for (int k = 0; k < TR_STAGE_COUNT; k++)

@@ -19,6 +19,7 @@
 #include "output/flatflip.h"
 #include "output/round.h"
 #include "pipeline.h"
+#include "refine/refine_stage.h"
 #include "smooth/smooth.h"
 
 static tr_status copy_plc(const tr_plc *in, tr_plc **out)
@@ -200,6 +201,14 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   sides = NULL;
   if (st == TR_OK)
     st = suppress(m, &sub, p, &opt, keep_hull, flags, stats, vkind);
+  /* Quality refinement (off by default): inner tets only, before the flips and rounding. */
+  if (st == TR_OK && (opt.quality_ratio != 0 || opt.max_volume != 0 ||
+                      opt.quality_min_dihedral != 0)) {
+    uint32_t nv0 = m->nv;
+    st = tr_refine_stage(m, p, &sub, &opt, keep_hull, &stats->points_added_for_quality);
+    if (st == TR_OK)
+      st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv0, &vkind, &vindex);
+  }
   PROGRESS(TR_STAGE_COLOR, 1);
   double t5 = tr_pipeline_now();
   stage[TR_STAGE_COLOR] = t5 - t4;
@@ -241,6 +250,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK) {
     stats->volume_nodes = res->nv;
     stats->volume_elements = tr_mesh_num_tets(res);
+    tr_quality_stats(res, stats);
     if (opt.verbose >= 2)
       fprintf(stderr, "tetrec: %u regions\n", nreg);
   }

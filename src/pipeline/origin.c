@@ -7,6 +7,7 @@
  * around it. tests/api checks every label exactly against the geometry. */
 #include <stdlib.h>
 
+#include "classify.h"
 #include "pipeline.h"
 
 tr_status tr_pipeline_origins(const struct tr_mesh *m, uint32_t npoints,
@@ -45,5 +46,71 @@ tr_status tr_pipeline_origins(const struct tr_mesh *m, uint32_t npoints,
     }
   *kind = k;
   *index = x;
+  return TR_OK;
+}
+
+/* Binary search of the sorted unique edges (2 per edge, a < b). */
+static uint32_t edge_index(const uint32_t *edges, uint32_t ne, uint32_t a, uint32_t b)
+{
+  if (a > b) {
+    uint32_t t = a;
+    a = b;
+    b = t;
+  }
+  uint32_t lo = 0, hi = ne;
+  while (lo < hi) {
+    uint32_t mid = lo + (hi - lo) / 2;
+    const uint32_t *e = edges + 2 * (size_t)mid;
+    if (e[0] < a || (e[0] == a && e[1] < b))
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo < ne && edges[2 * (size_t)lo] == a && edges[2 * (size_t)lo + 1] == b ? lo : UINT32_MAX;
+}
+
+tr_status tr_pipeline_origins_extend(const struct tr_mesh *m, const struct tr_plc *plc,
+                                     const tr_subfaces *sub, const uint32_t *edges,
+                                     uint32_t ne, uint32_t nv0, uint8_t **kind,
+                                     uint32_t **index)
+{
+  uint32_t nv = m->nv;
+  if (!*kind || nv <= nv0)
+    return TR_OK;
+  uint8_t *k = realloc(*kind, nv);
+  if (k)
+    *kind = k;
+  uint32_t *x = realloc(*index, sizeof *x * nv);
+  if (x)
+    *index = x;
+  if (!k || !x)
+    return tr_error(TR_ERR_NOMEM, "out of memory for the origins of %u vertices", nv);
+  for (uint32_t v = nv0; v < nv; v++) {
+    k[v] = TR_VERTEX_INTERIOR;
+    x[v] = v;
+  }
+  /* A new point on a sub-face lies in that sub-face's input triangle: on one of its
+   * edges (decided exactly) or inside it. */
+  for (uint32_t f = 0; sub && f < sub->n; f++)
+    for (int j = 0; j < 3; j++) {
+      uint32_t v = sub->v[3 * (size_t)f + (size_t)j];
+      if (v < nv0 || v >= nv || k[v] != TR_VERTEX_INTERIOR)
+        continue;
+      uint32_t t = sub->tri[f];
+      const uint32_t *T = plc->tris + 3 * (size_t)t;
+      tr_point p = tr_mesh_point(m, v);
+      k[v] = TR_VERTEX_ON_TRIANGLE;
+      x[v] = t;
+      for (int e = 0; e < 3; e++) {
+        tr_point a = tr_pt_d(plc->xyz + 3 * (size_t)T[e]);
+        tr_point b = tr_pt_d(plc->xyz + 3 * (size_t)T[(e + 1) % 3]);
+        uint32_t ei = edge_index(edges, ne, T[e], T[(e + 1) % 3]);
+        if (ei != UINT32_MAX && tr_classify_point_segment(&p, &a, &b).type == TR_EDG) {
+          k[v] = TR_VERTEX_ON_EDGE;
+          x[v] = ei;
+          break;
+        }
+      }
+    }
   return TR_OK;
 }

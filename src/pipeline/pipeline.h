@@ -64,6 +64,14 @@ tr_status tr_pipeline_progress(const tr_options *opt, int stage, double fraction
 tr_status tr_pipeline_origins(const struct tr_mesh *m, uint32_t npoints,
                               const tr_edge_chains *chains, const tr_subfaces *sub,
                               uint8_t **kind, uint32_t **index);
+/* The origins of the vertices nv0.. that a stage after the recovery added (quality
+ * refinement): on a sub-face, on an edge of its input triangle (decided exactly; the
+ * index into edges, ne sorted unique pairs) or inside it; else interior. *kind and
+ * *index grow to m->nv entries; nothing when *kind is NULL. */
+tr_status tr_pipeline_origins_extend(const struct tr_mesh *m, const struct tr_plc *plc,
+                                     const tr_subfaces *sub, const uint32_t *edges,
+                                     uint32_t ne, uint32_t nv0, uint8_t **kind,
+                                     uint32_t **index);
 /* Frees sub's arrays (works whether or not the facet stage is built). */
 void tr_pipeline_subfaces_free(tr_subfaces *sub);
 

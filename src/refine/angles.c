@@ -1,0 +1,243 @@
+/* Small input angles (refine.h, termination). Delaunay refinement ends when the input's
+ * segments and facets meet at no less than 90 degrees (Shewchuk 1998); where two of them
+ * meet at an input vertex V under a small angle, a point on one encroaches pieces of the
+ * other near V, whose split points encroach the first again, one level closer to V each
+ * time, without end. The rules here stop that descent: a piece near V is not split for a
+ * vertex on a constraint that meets the piece's constraint at V under less than 60
+ * degrees, and a bad tet whose shortest edge joins two such constraints is left as it is.
+ *
+ * Angles are measured in doubles on the input's vertices: they choose which points are
+ * inserted, never how the mesh is connected, so they need no exactness (and doubles are
+ * deterministic). */
+#include <math.h>
+
+#include "refine/refine_impl.h"
+
+#define RF_SMALL_COS 0.5 /* cos 60 degrees */
+#define RF_SHARP_COS 0.8660254037844386 /* cos 30 degrees: a triangle's own corner */
+
+typedef struct {
+  int kind;     /* RF_SEG or RF_FACET, 0: none */
+  uint32_t v[3]; /* input vertex ids: 2 for a segment, 3 for a triangle */
+} element;
+
+static element elem_of(const rf_ctx *c, int kind, uint32_t own)
+{
+  element e = {0, {0, 0, 0}};
+  if (kind == RF_SEG) {
+    e.kind = RF_SEG;
+    e.v[0] = c->ssab[2 * (size_t)own];
+    e.v[1] = c->ssab[2 * (size_t)own + 1];
+  } else if (kind == RF_FACET) {
+    e.kind = RF_FACET;
+    for (int i = 0; i < 3; i++)
+      e.v[i] = c->plc->tris[3 * (size_t)own + i];
+  }
+  return e;
+}
+
+static element elem_of_vertex(const rf_ctx *c, uint32_t x)
+{
+  return elem_of(c, c->vkind[x], c->vown[x]);
+}
+
+static const double *X(const rf_ctx *c, uint32_t v)
+{
+  return c->plc->xyz + 3 * (size_t)v;
+}
+
+static double cos_between(const double *o, const double *p, const double *q)
+{
+  double a[3], b[3];
+  for (int i = 0; i < 3; i++) {
+    a[i] = p[i] - o[i];
+    b[i] = q[i] - o[i];
+  }
+  double n = sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
+  return n > 0 ? (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / n : 1;
+}
+
+static int nverts(const element *e)
+{
+  return e->kind == RF_SEG ? 2 : 3;
+}
+
+static int has(const element *e, uint32_t v)
+{
+  for (int i = 0; i < nverts(e); i++)
+    if (e->v[i] == v)
+      return 1;
+  return 0;
+}
+
+/* Segment V-P against triangle T at its vertex V: small if P's direction is close to one
+ * of T's edges at V other than VP itself, or (seen over T's corner) to T's plane. */
+static int seg_facet_small(const rf_ctx *c, uint32_t V, uint32_t P, const element *t)
+{
+  uint32_t o[2];
+  int k = 0;
+  for (int i = 0; i < 3; i++)
+    if (t->v[i] != V)
+      o[k++] = t->v[i];
+  if (P == o[0] || P == o[1]) /* an edge of T: T's own corner, where concentric shells
+                                 * end the descent unless the corner is sharp */
+    return cos_between(X(c, V), X(c, o[0]), X(c, o[1])) > RF_SHARP_COS;
+  if (cos_between(X(c, V), X(c, P), X(c, o[0])) > RF_SMALL_COS ||
+      cos_between(X(c, V), X(c, P), X(c, o[1])) > RF_SMALL_COS)
+    return 1;
+  /* elevation of VP over T's plane, when VP lies over T's corner */
+  double u[3], w[3], p[3], n[3];
+  for (int i = 0; i < 3; i++) {
+    u[i] = X(c, o[0])[i] - X(c, V)[i];
+    w[i] = X(c, o[1])[i] - X(c, V)[i];
+    p[i] = X(c, P)[i] - X(c, V)[i];
+  }
+  for (int i = 0; i < 3; i++)
+    n[i] = u[(i + 1) % 3] * w[(i + 2) % 3] - u[(i + 2) % 3] * w[(i + 1) % 3];
+  double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  double pp = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+  if (!(nn > 0 && pp > 0))
+    return 0;
+  double s = fabs(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / (nn * pp); /* sin elevation */
+  /* the projection of P lies over the corner iff it is on the inner side of both edges */
+  double q[3];
+  for (int i = 0; i < 3; i++)
+    q[i] = p[i] - n[i] * (n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / (nn * nn);
+  double c1[3], c2[3];
+  for (int i = 0; i < 3; i++) {
+    c1[i] = u[(i + 1) % 3] * q[(i + 2) % 3] - u[(i + 2) % 3] * q[(i + 1) % 3];
+    c2[i] = q[(i + 1) % 3] * w[(i + 2) % 3] - q[(i + 2) % 3] * w[(i + 1) % 3];
+  }
+  int over = c1[0] * n[0] + c1[1] * n[1] + c1[2] * n[2] > 0 && c2[0] * n[0] + c2[1] * n[1] + c2[2] * n[2] > 0;
+  return over && s < 0.8660254037844386; /* elevation under 60 degrees */
+}
+
+/* Two triangles sharing edge V-W: the wedge between them (angle of their third vertices
+ * seen along the edge). */
+static int facet_facet_small(const rf_ctx *c, uint32_t V, uint32_t W, uint32_t A, uint32_t B)
+{
+  double e[3], a[3], b[3];
+  for (int i = 0; i < 3; i++) {
+    e[i] = X(c, W)[i] - X(c, V)[i];
+    a[i] = X(c, A)[i] - X(c, V)[i];
+    b[i] = X(c, B)[i] - X(c, V)[i];
+  }
+  double ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+  if (!(ee > 0))
+    return 0;
+  double ta = (a[0] * e[0] + a[1] * e[1] + a[2] * e[2]) / ee, tb = (b[0] * e[0] + b[1] * e[1] + b[2] * e[2]) / ee;
+  double zero[3] = {0, 0, 0};
+  for (int i = 0; i < 3; i++) {
+    a[i] -= ta * e[i];
+    b[i] -= tb * e[i];
+  }
+  return cos_between(zero, a, b) > RF_SMALL_COS;
+}
+
+/* Do the constraints of e and f meet at input vertex V under a small angle? */
+static int small_at(const rf_ctx *c, uint32_t V, const element *e, const element *f)
+{
+  if (e->kind == RF_SEG && f->kind == RF_SEG) {
+    uint32_t P = e->v[0] == V ? e->v[1] : e->v[0], Q = f->v[0] == V ? f->v[1] : f->v[0];
+    /* two edges of one input triangle: its own corner (see seg_facet_small) */
+    double lim = rf_facemap_get(&c->trimap, V, P, Q) != TR_NONE ? RF_SHARP_COS : RF_SMALL_COS;
+    return P != Q && cos_between(X(c, V), X(c, P), X(c, Q)) > lim;
+  }
+  if (e->kind == RF_SEG || f->kind == RF_SEG) {
+    const element *s = e->kind == RF_SEG ? e : f, *t = e->kind == RF_SEG ? f : e;
+    uint32_t P = s->v[0] == V ? s->v[1] : s->v[0];
+    return seg_facet_small(c, V, P, t);
+  }
+  /* two triangles */
+  int shared = 0;
+  uint32_t W = TR_NONE;
+  for (int i = 0; i < 3; i++)
+    if (has(f, e->v[i])) {
+      shared++;
+      if (e->v[i] != V)
+        W = e->v[i];
+    }
+  if (shared == 3)
+    return 0; /* the same triangle */
+  if (shared == 2 && W != TR_NONE) {
+    uint32_t A = TR_NONE, B = TR_NONE;
+    for (int i = 0; i < 3; i++) {
+      if (!has(f, e->v[i]))
+        A = e->v[i];
+      if (!has(e, f->v[i]))
+        B = f->v[i];
+    }
+    return facet_facet_small(c, V, W, A, B);
+  }
+  /* only V in common: small if an edge of one is close to the other */
+  for (int i = 0; i < 3; i++)
+    if (e->v[i] != V && seg_facet_small(c, V, e->v[i], f))
+      return 1;
+  return 0;
+}
+
+static int small_between(const rf_ctx *c, const element *e, const element *f, uint32_t *at)
+{
+  if (!e->kind || !f->kind)
+    return 0;
+  for (int i = 0; i < nverts(e); i++)
+    if (has(f, e->v[i]) && small_at(c, e->v[i], e, f)) {
+      if (at)
+        *at = e->v[i];
+      return 1;
+    }
+  return 0;
+}
+
+int rf_small_angle_edge(const rf_ctx *c, uint32_t x, uint32_t y)
+{
+  element e = elem_of_vertex(c, x), f = elem_of_vertex(c, y);
+  return small_between(c, &e, &f, NULL);
+}
+
+/* Is the piece (sub-segment when seg, else sub-face `id`) protected from a split caused
+ * by vertex v? Its constraint and v's meet at an input vertex V under a small angle, and
+ * the piece lies within twice v's distance from V. */
+int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t own,
+                    const double *pw)
+{
+  element f = elem_of(c, kind, own), e;
+  if (!f.kind)
+    return 0;
+  const uint32_t *pv;
+  int np;
+  if (seg) {
+    e.kind = RF_SEG;
+    e.v[0] = c->ssab[2 * (size_t)id];
+    e.v[1] = c->ssab[2 * (size_t)id + 1];
+    pv = c->ssv + 2 * (size_t)id;
+    np = 2;
+  } else {
+    e.kind = RF_FACET;
+    for (int i = 0; i < 3; i++)
+      e.v[i] = c->plc->tris[3 * (size_t)c->sftri[id] + i];
+    pv = c->sfv + 3 * (size_t)id;
+    np = 3;
+  }
+  uint32_t V;
+  if (!small_between(c, &e, &f, &V))
+    return 0;
+  const double *pV = X(c, V);
+  double r = 0;
+  for (int i = 0; i < 3; i++)
+    r += (pw[i] - pV[i]) * (pw[i] - pV[i]);
+  for (int k = 0; k < np; k++) {
+    const double *q = c->m->xyz + 3 * (size_t)pv[k];
+    double d = 0;
+    for (int i = 0; i < 3; i++)
+      d += (q[i] - pV[i]) * (q[i] - pV[i]);
+    if (d > 4 * r)
+      return 0;
+  }
+  return 1;
+}
+
+int rf_protected(const rf_ctx *c, int seg, uint32_t id, uint32_t v)
+{
+  return rf_protected_at(c, seg, id, c->vkind[v], c->vown[v], c->m->xyz + 3 * (size_t)v);
+}

@@ -1,0 +1,329 @@
+/* Constrained Bowyer-Watson insertion for the refinement stage (refine.h).
+ *
+ * The recovered mesh is constrained, not Delaunay, so the usual cavity (every tet whose
+ * circumsphere holds the point, connected) need not be star-shaped. The cavity is grown
+ * by the exact insphere test through non-constraint faces, then shrunk: a tet leaves it
+ * while one of its faces on the cavity's boundary is not strictly visible from the
+ * point (TetGen's "cavity expansion then reduction" idea, Si 2015), while the cavity
+ * would swallow a vertex or a sub-segment, or would hold a sub-face on both sides that
+ * the point may not split. The tets that hold the point itself are never taken out: if
+ * one has to be, the insertion is refused. What remains is star-shaped from the point,
+ * so coning its boundary gives positive tets, exactly. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "predicates/predicates.h"
+#include "refine/refine_impl.h"
+
+static tr_point face_pt(const rf_ctx *c, uint32_t t, int k, int i)
+{
+  return tr_mesh_point(c->m, c->m->tv[4 * (size_t)t + tr_face_vtx[k][i]]);
+}
+
+/* Sign of orient3d(face k of t, p): > 0 on t's side. */
+static int face_side(const rf_ctx *c, uint32_t t, int k, const tr_point *p)
+{
+  tr_point a = face_pt(c, t, k, 0), b = face_pt(c, t, k, 1), d = face_pt(c, t, k, 2);
+  return tr_orient3d_p(&a, &b, &d, p);
+}
+
+static uint32_t face_subface(const rf_ctx *c, uint32_t t, int k)
+{
+  const uint32_t *v = c->m->tv + 4 * (size_t)t;
+  return rf_subface_of(c, v[tr_face_vtx[k][0]], v[tr_face_vtx[k][1]], v[tr_face_vtx[k][2]]);
+}
+
+tr_status rf_locate(rf_ctx *c, uint32_t t, const tr_point *p, uint32_t *found,
+                    uint32_t *blocker)
+{
+  struct tr_mesh *m = c->m;
+  *found = TR_NONE;
+  *blocker = TR_NONE;
+  uint64_t max = 4 * (uint64_t)m->nt + 64;
+  for (uint64_t step = 0; step < max; step++) {
+    /* the first face to try rotates with the step: a fixed order can cycle in a mesh
+     * that is not Delaunay; this is deterministic all the same */
+    int start = (int)(step % 4), next = -1;
+    uint32_t wall = TR_NONE;
+    int walled = 0;
+    for (int j = 0; j < 4; j++) {
+      int k = (start + j) % 4;
+      if (face_side(c, t, k, p) >= 0)
+        continue;
+      uint32_t sf = face_subface(c, t, k);
+      if (sf != TR_NONE || m->tn[4 * (size_t)t + k] == TR_NONE) {
+        if (!walled) {
+          wall = sf;
+          walled = 1;
+        }
+        continue;
+      }
+      next = k;
+      break;
+    }
+    if (next < 0) {
+      if (!walled)
+        *found = t;
+      else
+        *blocker = wall;
+      return TR_OK;
+    }
+    t = TR_NEIG(m, t, next);
+  }
+  return TR_OK; /* a walk that does not end: the caller skips the point */
+}
+
+/* 1 iff p is strictly inside the circumsphere of tet t (exact; perturbed when every
+ * point is a double). */
+static int conflicts(const rf_ctx *c, uint32_t t, const tr_point *p, uint32_t pid)
+{
+  const uint32_t *v = c->m->tv + 4 * (size_t)t;
+  tr_point q[4];
+  int dbl = !p->q;
+  for (int i = 0; i < 4; i++) {
+    q[i] = tr_mesh_point(c->m, v[i]);
+    dbl &= !q[i].q;
+  }
+  if (dbl)
+    return tr_insphere_sos(q[0].d, q[1].d, q[2].d, q[3].d, p->d, v[0], v[1], v[2], v[3], pid) > 0;
+  return tr_insphere_p(&q[0], &q[1], &q[2], &q[3], p) > 0;
+}
+
+enum { ST_IN = 1, ST_INIT = 2, ST_KEEP = 4 };
+
+static int in_cav(const rf_ctx *c, uint32_t t)
+{
+  return t != TR_NONE && (c->tstate[t] & ST_IN);
+}
+
+static void clear_state(rf_ctx *c)
+{
+  for (size_t i = 0; i < c->cav.n; i++)
+    c->tstate[c->cav.a[i]] = 0;
+}
+
+static tr_status add_tet(rf_ctx *c, uint32_t t)
+{
+  c->tstate[t] |= ST_IN;
+  TR_CHECK(tr_u32buf_push(&c->cav, t));
+  return tr_u32buf_push(&c->stack, t);
+}
+
+/* May p split sub-face sf? p must lie in its closed input triangle and strictly inside
+ * its circumcircle (for p in the plane, its equatorial sphere): the sub-faces of a facet
+ * that p removes are then those of a 2D Bowyer-Watson cavity in the facet, which keeps
+ * the facet's triangulation free of the needle-like sub-faces that a cavity taken from
+ * the 3D tets alone leaves there (their huge circumcircles are encroached from afar, and
+ * their splits pile up). */
+static int crossable(const rf_ctx *c, uint32_t sf, const tr_point *p, int allow_split)
+{
+  if (!allow_split || !rf_in_input_triangle(c, c->sftri[sf], p))
+    return 0;
+  const uint32_t *v = c->sfv + 3 * (size_t)sf;
+  tr_point a = tr_mesh_point(c->m, v[0]), b = tr_mesh_point(c->m, v[1]),
+           d = tr_mesh_point(c->m, v[2]);
+  return rf_in_equatorial(&a, &b, &d, p);
+}
+
+/* The cavity becomes the tets flagged KEEP that are reachable from the initial ones. */
+static tr_status reconnect(rf_ctx *c)
+{
+  struct tr_mesh *m = c->m;
+  c->tmp.n = 0;
+  for (size_t i = 0; i < c->cav.n; i++)
+    TR_CHECK(tr_u32buf_push(&c->tmp, c->cav.a[i]));
+  for (size_t i = 0; i < c->tmp.n; i++)
+    c->tstate[c->tmp.a[i]] &= (uint8_t)~ST_IN;
+  c->cav.n = c->stack.n = 0;
+  for (size_t i = 0; i < c->init.n; i++)
+    TR_CHECK(add_tet(c, c->init.a[i]));
+  while (c->stack.n) {
+    uint32_t t = c->stack.a[--c->stack.n];
+    for (int k = 0; k < 4; k++) {
+      uint32_t n = TR_NEIG(m, t, k);
+      if (n != TR_NONE && !(c->tstate[n] & ST_IN) && (c->tstate[n] & ST_KEEP))
+        TR_CHECK(add_tet(c, n));
+    }
+  }
+  for (size_t i = 0; i < c->tmp.n; i++)
+    if (!(c->tstate[c->tmp.a[i]] & ST_IN))
+      c->tstate[c->tmp.a[i]] = 0;
+  return TR_OK;
+}
+
+/* Is vertex a (b == TR_NONE) / edge {a,b} on a coned face? A linear scan: cavities hold
+ * a few dozen tets. */
+static int on_coned(const rf_ctx *c, uint32_t a, uint32_t b)
+{
+  for (size_t i = 0; i < c->bfaces.n; i++) {
+    uint32_t t = c->bfaces.a[i] >> 2;
+    int k = (int)(c->bfaces.a[i] & 3), ha = 0, hb = b == TR_NONE;
+    for (int j = 0; j < 3; j++) {
+      uint32_t w = c->m->tv[4 * (size_t)t + tr_face_vtx[k][j]];
+      ha |= w == a;
+      hb |= w == b;
+    }
+    if (ha && hb)
+      return 1;
+  }
+  return 0;
+}
+
+/* Takes t out of the cavity (it stays flagged IN until reconnect); 0 if t holds p. */
+static int drop_tet(rf_ctx *c, uint32_t t)
+{
+  if (c->tstate[t] & ST_INIT)
+    return 0;
+  c->tstate[t] &= (uint8_t)~ST_KEEP;
+  return 1;
+}
+
+static tr_status tstate_room(rf_ctx *c)
+{
+  if (c->m->cap_t <= c->captstate)
+    return TR_OK;
+  uint8_t *s = realloc(c->tstate, c->m->cap_t);
+  if (!s)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u tet states", c->m->cap_t);
+  memset(s + c->captstate, 0, c->m->cap_t - c->captstate);
+  c->tstate = s;
+  c->captstate = c->m->cap_t;
+  return TR_OK;
+}
+
+/* One pass of the reduction: 1 if some tet was taken out, -1 if a tet holding p would
+ * have to be; fills c->bfaces. */
+static tr_status reduce_once(rf_ctx *c, const tr_point *p, int allow_split, int *res)
+{
+  struct tr_mesh *m = c->m;
+  int drop = 0;
+  c->bfaces.n = 0;
+  for (size_t i = 0; i < c->cav.n; i++)
+    c->tstate[c->cav.a[i]] |= ST_KEEP;
+  for (size_t i = 0; i < c->cav.n; i++) {
+    uint32_t t = c->cav.a[i];
+    for (int k = 0; k < 4; k++) {
+      uint32_t n = TR_NEIG(m, t, k);
+      uint32_t sf = face_subface(c, t, k);
+      if (in_cav(c, n)) {
+        /* a sub-face inside the cavity that p may not split */
+        if (sf != TR_NONE && !crossable(c, sf, p, allow_split)) {
+          if (!drop_tet(c, n) && !drop_tet(c, t)) {
+            *res = -1;
+            return TR_OK;
+          }
+          drop = 1;
+        }
+        continue;
+      }
+      int s = face_side(c, t, k, p);
+      if (s > 0) {
+        TR_CHECK(tr_u32buf_push(&c->bfaces, 4 * t + (uint32_t)k));
+        continue;
+      }
+      if (s == 0 && n == TR_NONE && sf != TR_NONE && crossable(c, sf, p, allow_split))
+        continue; /* a domain-boundary sub-face that p splits: nothing beyond it */
+      if (!drop_tet(c, t)) {
+        *res = -1;
+        return TR_OK;
+      }
+      drop = 1;
+    }
+  }
+  if (!drop) {
+    /* a vertex or a sub-segment (other than the one p splits) the cone would lose */
+    for (size_t i = 0; i < c->cav.n; i++) {
+      uint32_t t = c->cav.a[i];
+      const uint32_t *v = m->tv + 4 * (size_t)t;
+      int lose = 0;
+      for (int j = 0; j < 4 && !lose; j++)
+        lose = !on_coned(c, v[j], TR_NONE);
+      for (int e = 0; e < 6 && !lose; e++) {
+        uint32_t a = v[tr_edge_vtx[e][0]], b = v[tr_edge_vtx[e][1]];
+        uint32_t g = rf_subseg_of(c, a, b);
+        lose = g != TR_NONE && g != c->split_seg && !on_coned(c, a, b);
+      }
+      if (lose) {
+        if (!drop_tet(c, t)) {
+          *res = -1;
+          return TR_OK;
+        }
+        drop = 1;
+      }
+    }
+  }
+  *res = drop;
+  return TR_OK;
+}
+
+tr_status rf_cavity(rf_ctx *c, uint32_t t0, const tr_point *p, uint32_t pid, int allow_split,
+                    int *ok)
+{
+  struct tr_mesh *m = c->m;
+  *ok = 0;
+  c->cav.n = c->init.n = c->stack.n = c->bfaces.n = 0;
+  TR_CHECK(tstate_room(c));
+  /* 1. the tets whose closure holds p: across the faces whose plane holds p */
+  TR_CHECK(add_tet(c, t0));
+  tr_status st = TR_OK;
+  int fail = 0;
+  while (c->stack.n && !fail && st == TR_OK) {
+    uint32_t t = c->stack.a[--c->stack.n];
+    int zeros = 0;
+    for (int k = 0; k < 4 && !fail && st == TR_OK; k++) {
+      if (face_side(c, t, k, p) != 0)
+        continue;
+      zeros++;
+      uint32_t n = TR_NEIG(m, t, k);
+      uint32_t sf = face_subface(c, t, k);
+      if (sf != TR_NONE && !crossable(c, sf, p, allow_split))
+        fail = 1; /* p lies on a constraint it may not split */
+      else if (n != TR_NONE && !in_cav(c, n))
+        st = add_tet(c, n);
+    }
+    if (zeros >= 3)
+      fail = 1; /* p is a vertex of t */
+  }
+  for (size_t i = 0; st == TR_OK && !fail && i < c->cav.n; i++) {
+    st = tr_u32buf_push(&c->init, c->cav.a[i]);
+    c->tstate[c->cav.a[i]] |= ST_INIT;
+  }
+  /* 2. growth through non-constraint faces by the insphere test, and across sub-faces
+   * that p splits */
+  c->stack.n = 0;
+  for (size_t i = 0; st == TR_OK && !fail && i < c->cav.n; i++)
+    st = tr_u32buf_push(&c->stack, c->cav.a[i]);
+  while (st == TR_OK && !fail && c->stack.n) {
+    uint32_t t = c->stack.a[--c->stack.n];
+    for (int k = 0; k < 4 && st == TR_OK; k++) {
+      uint32_t n = TR_NEIG(m, t, k);
+      if (n == TR_NONE || in_cav(c, n))
+        continue;
+      uint32_t sf = face_subface(c, t, k);
+      if (sf != TR_NONE ? crossable(c, sf, p, allow_split) : conflicts(c, n, p, pid))
+        st = add_tet(c, n);
+    }
+  }
+  /* 3. reduction */
+  while (st == TR_OK && !fail) {
+    int res = 0;
+    st = reduce_once(c, p, allow_split, &res);
+    if (st != TR_OK || res == 0)
+      break;
+    if (res < 0)
+      fail = 1;
+    else
+      st = reconnect(c);
+  }
+  if (st != TR_OK || fail) {
+    clear_state(c);
+    return st;
+  }
+  *ok = 1;
+  return TR_OK;
+}
+
+void rf_cavity_release(rf_ctx *c)
+{
+  clear_state(c);
+}

@@ -1,0 +1,186 @@
+/* The cone of a cavity (cavity.c) from the new vertex, and the constraint bookkeeping that
+ * goes with it: the sub-faces inside the cavity (the ones the point splits) are replaced
+ * by the fan from the point over the boundary edges of their region in each input
+ * triangle, and a split sub-segment by its two halves. Everything is checked before the
+ * mesh is touched: each new face through the point must be shared by exactly two new
+ * tets, or by one when it is a new sub-face on the domain boundary. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "refine/refine_impl.h"
+
+typedef struct {
+  uint32_t a, b; /* edge key, a < b */
+  uint32_t tet;  /* index into the new tets */
+  int slot;      /* face of the new tet */
+} prec;
+
+static int cmp_prec(const void *pa, const void *pb)
+{
+  const prec *x = pa, *y = pb;
+  if (x->a != y->a)
+    return x->a < y->a ? -1 : 1;
+  if (x->b != y->b)
+    return x->b < y->b ? -1 : 1;
+  return x->tet < y->tet ? -1 : x->tet > y->tet;
+}
+
+static int same_edge(uint32_t a, uint32_t b, uint32_t u, uint32_t v)
+{
+  return (a == u && b == v) || (a == v && b == u);
+}
+
+/* Is {a,b} the edge of one of the new sub-faces (4 entries each in ns: a, b, p, tri)? */
+static int new_sub_edge(const tr_u32buf *ns, uint32_t a, uint32_t b)
+{
+  for (size_t i = 0; i < ns->n; i += 4)
+    if (same_edge(a, b, ns->a[i], ns->a[i + 1]))
+      return 1;
+  return 0;
+}
+
+tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
+{
+  struct tr_mesh *m = c->m;
+  *ok = 0;
+  tr_u32buf *rem = &c->tmp, *ns = &c->newsf;
+  rem->n = ns->n = 0;
+  /* 1. the sub-faces the cavity removes: faces of its tets that are not coned */
+  for (size_t i = 0; i < c->bfaces.n; i++)
+    c->tstate[c->bfaces.a[i] >> 2] |= (uint8_t)(0x10u << (c->bfaces.a[i] & 3));
+  tr_status st = TR_OK;
+  for (size_t i = 0; i < c->cav.n && st == TR_OK; i++) {
+    uint32_t t = c->cav.a[i];
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    for (int k = 0; k < 4 && st == TR_OK; k++) {
+      if (c->tstate[t] & (0x10u << k))
+        continue;
+      uint32_t sf = rf_subface_of(c, v[tr_face_vtx[k][0]], v[tr_face_vtx[k][1]],
+                                  v[tr_face_vtx[k][2]]);
+      if (sf == TR_NONE || c->sfdead[sf])
+        continue;
+      c->sfdead[sf] = 2; /* listed; undone below if the insertion is refused */
+      st = tr_u32buf_push(rem, sf);
+    }
+  }
+  /* 2. the new sub-faces: the point and each boundary edge of the removed region of each
+   * input triangle, oriented like the removed sub-face it bounded */
+  for (size_t i = 0; i < rem->n && st == TR_OK; i++) {
+    uint32_t f = rem->a[i];
+    const uint32_t *v = c->sfv + 3 * (size_t)f;
+    for (int e = 0; e < 3 && st == TR_OK; e++) {
+      uint32_t a = v[e], b = v[(e + 1) % 3];
+      if (c->split_seg != TR_NONE &&
+          same_edge(a, b, c->ssv[2 * (size_t)c->split_seg], c->ssv[2 * (size_t)c->split_seg + 1]))
+        continue;
+      int inner = 0;
+      for (size_t j = 0; j < rem->n && !inner; j++) {
+        uint32_t g = rem->a[j];
+        if (g == f || c->sftri[g] != c->sftri[f])
+          continue;
+        const uint32_t *w = c->sfv + 3 * (size_t)g;
+        for (int d = 0; d < 3; d++)
+          inner |= same_edge(a, b, w[d], w[(d + 1) % 3]);
+      }
+      if (inner)
+        continue;
+      uint32_t rec[4] = {a, b, pid, c->sftri[f]};
+      for (int d = 0; d < 4 && st == TR_OK; d++)
+        st = tr_u32buf_push(ns, rec[d]);
+    }
+  }
+  /* 3. the new tets (a, b, d, p) over each coned face (a, b, d), and their faces through
+   * p paired by edge */
+  size_t nnew = c->bfaces.n;
+  prec *pr = st == TR_OK ? malloc(sizeof *pr * 3 * (nnew ? nnew : 1)) : NULL;
+  uint32_t *nv = st == TR_OK ? malloc(sizeof *nv * 6 * (nnew ? nnew : 1)) : NULL;
+  if (st == TR_OK && (!pr || !nv))
+    st = tr_error(TR_ERR_NOMEM, "out of memory for a cavity of %zu faces", nnew);
+  int good = st == TR_OK;
+  for (size_t i = 0; good && i < nnew; i++) {
+    uint32_t t = c->bfaces.a[i] >> 2;
+    int k = (int)(c->bfaces.a[i] & 3);
+    for (int j = 0; j < 3; j++)
+      nv[6 * i + j] = m->tv[4 * (size_t)t + tr_face_vtx[k][j]];
+    nv[6 * i + 3] = m->tn[4 * (size_t)t + k];
+    nv[6 * i + 4] = m->region ? m->region[t] : 0;
+    /* faces 0, 1, 2 of (a, b, d, p) hold p and the edges bd, ad, ab */
+    static const int ev[3][2] = {{1, 2}, {0, 2}, {0, 1}};
+    for (int j = 0; j < 3; j++) {
+      uint32_t x = nv[6 * i + ev[j][0]], y = nv[6 * i + ev[j][1]];
+      pr[3 * i + j] = (prec){x < y ? x : y, x < y ? y : x, (uint32_t)i, j};
+    }
+  }
+  if (good)
+    qsort(pr, 3 * nnew, sizeof *pr, cmp_prec);
+  size_t npr = good ? 3 * nnew : 0;
+  for (size_t i = 0; good && i < npr;) {
+    size_t j = i + 1;
+    while (j < npr && pr[j].a == pr[i].a && pr[j].b == pr[i].b)
+      j++;
+    if (j - i > 2 || (j - i == 1 && !new_sub_edge(ns, pr[i].a, pr[i].b)))
+      good = 0;
+    i = j;
+  }
+  for (size_t i = 0; good && i < ns->n; i += 4) {
+    prec key = {ns->a[i] < ns->a[i + 1] ? ns->a[i] : ns->a[i + 1],
+                ns->a[i] < ns->a[i + 1] ? ns->a[i + 1] : ns->a[i], 0, 0};
+    size_t lo = 0, hi = npr;
+    while (lo < hi) {
+      size_t mid = (lo + hi) / 2;
+      if (pr[mid].a < key.a || (pr[mid].a == key.a && pr[mid].b < key.b))
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    if (lo == npr || pr[lo].a != key.a || pr[lo].b != key.b)
+      good = 0;
+  }
+  if (!good || st != TR_OK) {
+    for (size_t i = 0; i < rem->n; i++)
+      c->sfdead[rem->a[i]] = 0;
+    rf_cavity_release(c);
+    free(pr);
+    free(nv);
+    return st;
+  }
+  /* 4. the mesh: free the cavity, build and glue the cone */
+  rf_cavity_release(c);
+  for (size_t i = 0; i < c->cav.n; i++)
+    tr_tet_free(m, c->cav.a[i]);
+  c->newtets.n = 0;
+  for (size_t i = 0; i < nnew && st == TR_OK; i++) {
+    uint32_t id;
+    st = tr_tet_new(m, nv[6 * i], nv[6 * i + 1], nv[6 * i + 2], pid, &id);
+    if (st != TR_OK)
+      break;
+    st = tr_u32buf_push(&c->newtets, id);
+    if (nv[6 * i + 3] != TR_NONE)
+      tr_glue(m, id, 3, nv[6 * i + 3] >> 2, (int)(nv[6 * i + 3] & 3));
+    if (m->region)
+      m->region[id] = nv[6 * i + 4];
+  }
+  for (size_t i = 0; i + 1 < npr && st == TR_OK; i++)
+    if (pr[i].a == pr[i + 1].a && pr[i].b == pr[i + 1].b) {
+      tr_glue(m, c->newtets.a[pr[i].tet], pr[i].slot, c->newtets.a[pr[i + 1].tet], pr[i + 1].slot);
+      i++;
+    }
+  free(pr);
+  free(nv);
+  TR_CHECK(st);
+  /* 5. the constraints */
+  for (size_t i = 0; i < rem->n; i++)
+    c->sfdead[rem->a[i]] = 1;
+  for (size_t i = 0; i < ns->n; i += 4)
+    TR_CHECK(rf_subface_add(c, ns->a[i], ns->a[i + 1], ns->a[i + 2], ns->a[i + 3], NULL));
+  if (c->split_seg != TR_NONE) {
+    uint32_t g = c->split_seg;
+    uint32_t u = c->ssv[2 * (size_t)g], v = c->ssv[2 * (size_t)g + 1];
+    uint32_t A = c->ssab[2 * (size_t)g], B = c->ssab[2 * (size_t)g + 1];
+    c->ssdead[g] = 1;
+    TR_CHECK(rf_subseg_add(c, u, pid, A, B, NULL));
+    TR_CHECK(rf_subseg_add(c, pid, v, A, B, NULL));
+  }
+  *ok = 1;
+  return TR_OK;
+}

@@ -1,0 +1,130 @@
+/* Tet shape measures and the mesh quality summary (quality.h). */
+#include "refine/quality.h"
+
+#include <math.h>
+#include <string.h>
+
+static void sub3(const double *a, const double *b, double *o)
+{
+  o[0] = a[0] - b[0];
+  o[1] = a[1] - b[1];
+  o[2] = a[2] - b[2];
+}
+static double dot3(const double *a, const double *b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+static void cross3(const double *a, const double *b, double *o)
+{
+  o[0] = a[1] * b[2] - a[2] * b[1];
+  o[1] = a[2] * b[0] - a[0] * b[2];
+  o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+int tr_tet_shape(const double *a, const double *b, const double *c, const double *d,
+                 double *ratio, double *volume, double dih[6], double cc[3])
+{
+  const double *p[4] = {a, b, c, d};
+  double u[3], v[3], w[3];
+  sub3(b, a, u);
+  sub3(c, a, v);
+  sub3(d, a, w);
+  double vw[3], wu[3], uv[3];
+  cross3(v, w, vw);
+  cross3(w, u, wu);
+  cross3(u, v, uv);
+  double det = dot3(u, vw);
+  *volume = det / 6;
+  /* circumcentre: a + (|u|^2 v x w + |v|^2 w x u + |w|^2 u x v) / (2 det) */
+  double uu = dot3(u, u), vv = dot3(v, v), ww = dot3(w, w), o[3];
+  for (int i = 0; i < 3; i++)
+    o[i] = (uu * vw[i] + vv * wu[i] + ww * uv[i]) / (2 * det);
+  double R = sqrt(dot3(o, o)), emin = INFINITY;
+  for (int e = 0; e < 6; e++) {
+    double x[3];
+    sub3(p[tr_edge_vtx[e][1]], p[tr_edge_vtx[e][0]], x);
+    emin = fmin(emin, dot3(x, x));
+  }
+  *ratio = det != 0 ? R / sqrt(emin) : INFINITY;
+  if (cc)
+    for (int i = 0; i < 3; i++)
+      cc[i] = a[i] + o[i];
+  /* dihedral at edge (i,j): the angle between the faces opposite the other two
+   * vertices k, l, from their inward normals n_k, n_l: pi - angle(n_k, n_l) */
+  double n[4][3];
+  for (int k = 0; k < 4; k++) {
+    const double *x = p[tr_face_vtx[k][0]], *y = p[tr_face_vtx[k][1]], *z = p[tr_face_vtx[k][2]];
+    double e1[3], e2[3];
+    sub3(y, x, e1);
+    sub3(z, x, e2);
+    cross3(e1, e2, n[k]);
+  }
+  for (int e = 0; e < 6 && dih; e++) {
+    int i = tr_edge_vtx[e][0], j = tr_edge_vtx[e][1], k = -1, l = -1;
+    for (int s = 0; s < 4; s++)
+      if (s != i && s != j) {
+        if (k < 0)
+          k = s;
+        else
+          l = s;
+      }
+    double nk = sqrt(dot3(n[k], n[k])), nl = sqrt(dot3(n[l], n[l]));
+    double cs = nk > 0 && nl > 0 ? dot3(n[k], n[l]) / (nk * nl) : 1;
+    cs = fmax(-1.0, fmin(1.0, cs));
+    dih[e] = 180.0 - acos(cs) * (180.0 / 3.14159265358979323846);
+  }
+  return isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]);
+}
+
+void tr_quality_measure(const struct tr_mesh *m, tr_quality *q)
+{
+  memset(q, 0, sizeof *q);
+  q->min_dihedral = 180;
+  static const double rb[TR_QUALITY_RATIO_BINS - 1] = {1, 1.414, 2, 4, 10, 100};
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t) || (m->flags[t] & TR_TF_OUTER))
+      continue;
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    double ratio, vol, dih[6];
+    tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1], m->xyz + 3 * (size_t)v[2],
+                 m->xyz + 3 * (size_t)v[3], &ratio, &vol, dih, NULL);
+    q->ntets++;
+    double lo = 180, hi = 0;
+    for (int e = 0; e < 6; e++) {
+      lo = fmin(lo, dih[e]);
+      hi = fmax(hi, dih[e]);
+      int b = (int)(dih[e] / 10);
+      q->dihedral_hist[b < 0 ? 0 : b >= TR_QUALITY_DIH_BINS ? TR_QUALITY_DIH_BINS - 1 : b]++;
+    }
+    q->min_dihedral = fmin(q->min_dihedral, lo);
+    q->max_dihedral = fmax(q->max_dihedral, hi);
+    q->below5 += lo < 5;
+    q->below10 += lo < 10;
+    if (!(ratio <= q->max_radius_edge))
+      q->max_radius_edge = ratio;
+    int b = 0;
+    while (b < TR_QUALITY_RATIO_BINS - 1 && !(ratio < rb[b]))
+      b++;
+    q->ratio_hist[b]++;
+  }
+  if (!q->ntets)
+    q->min_dihedral = 0;
+}
+
+void tr_quality_print(FILE *f, const char *prefix, const tr_quality *q)
+{
+  fprintf(f,
+          "%squality: %llu tets, dihedral min %.3f max %.3f deg, %llu (%.2f%%) under 5 deg, "
+          "%llu (%.2f%%) under 10 deg, max radius-edge %.4g\n",
+          prefix, (unsigned long long)q->ntets, q->min_dihedral, q->max_dihedral,
+          (unsigned long long)q->below5, q->ntets ? 100.0 * (double)q->below5 / (double)q->ntets : 0,
+          (unsigned long long)q->below10,
+          q->ntets ? 100.0 * (double)q->below10 / (double)q->ntets : 0, q->max_radius_edge);
+  fprintf(f, "%s  dihedral histogram (10 deg bins):", prefix);
+  for (int i = 0; i < TR_QUALITY_DIH_BINS; i++)
+    fprintf(f, " %llu", (unsigned long long)q->dihedral_hist[i]);
+  fprintf(f, "\n%s  radius-edge histogram (<1 <1.414 <2 <4 <10 <100 >=100):", prefix);
+  for (int i = 0; i < TR_QUALITY_RATIO_BINS; i++)
+    fprintf(f, " %llu", (unsigned long long)q->ratio_hist[i]);
+  fprintf(f, "\n");
+}

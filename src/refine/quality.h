@@ -1,0 +1,34 @@
+/* Shape measures of tets, in doubles: the radius-edge ratio (circumradius / shortest
+ * edge; sqrt(6)/4 = 0.612 for the regular tet), the volume and the six dihedral angles.
+ * They are measurements (statistics, the refinement's "bad tet" policy), not geometric
+ * decisions: no topology depends on their rounding, and doubles are deterministic. */
+#ifndef TR_REFINE_QUALITY_H
+#define TR_REFINE_QUALITY_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "mesh/mesh.h"
+
+/* ratio = circumradius / shortest edge (inf for a flat tet), volume = signed volume
+ * (positive for a positive tet), dih[6] = dihedral angles in degrees at the edges in
+ * ECode order. Returns the circumcentre in cc (may be NULL); 0 if it is not finite. */
+int tr_tet_shape(const double *a, const double *b, const double *c, const double *d,
+                 double *ratio, double *volume, double dih[6], double cc[3]);
+
+#define TR_QUALITY_DIH_BINS 18   /* dihedral angles, 10 degrees each */
+#define TR_QUALITY_RATIO_BINS 7  /* radius-edge: <1, <1.414, <2, <4, <10, <100, >=100 */
+typedef struct tr_quality {
+  uint64_t ntets;
+  double min_dihedral, max_dihedral, max_radius_edge; /* degrees, ratio */
+  uint64_t below5, below10;   /* tets with a dihedral angle under 5 / 10 degrees */
+  uint64_t dihedral_hist[TR_QUALITY_DIH_BINS]; /* all six angles of every tet */
+  uint64_t ratio_hist[TR_QUALITY_RATIO_BINS];
+} tr_quality;
+
+/* Over the live, real, non-outer tets of m, on m->xyz (the doubles written). */
+void tr_quality_measure(const struct tr_mesh *m, tr_quality *q);
+/* A short human-readable summary: three lines, each starting with prefix. */
+void tr_quality_print(FILE *f, const char *prefix, const tr_quality *q);
+
+#endif

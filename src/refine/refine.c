@@ -1,0 +1,508 @@
+/* The refinement loop (refine.h): queues of encroached sub-segments, encroached sub-faces
+ * and bad tets, served in that order (Shewchuk 1998: constraints are split before the
+ * tets they would otherwise spoil). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "refine/quality.h"
+#include "refine/refine_impl.h"
+
+uint64_t tr_refine_default_budget(uint32_t npoints, double domain_volume, double max_volume)
+{
+  double b = 100.0 * npoints + 100000;
+  if (max_volume > 0 && domain_volume > 0)
+    b += 20.0 * domain_volume / max_volume;
+  return b > 4e9 ? (uint64_t)4e9 : (uint64_t)b;
+}
+
+/* Radius-edge ratio in doubles (a measure: it only decides which tets get a point); the
+ * volume bound exactly, so that "every tet's volume is at most V" holds as stated. */
+static int too_big(const rf_ctx *c, uint32_t t)
+{
+  const struct tr_mesh *m = c->m;
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  if (!(c->par.max_volume > 0))
+    return 0;
+  tr_point p[4];
+  for (int i = 0; i < 4; i++)
+    p[i] = tr_mesh_point(m, v[i]);
+  return rf_volume_above(&p[0], &p[1], &p[2], &p[3], c->par.max_volume);
+}
+
+static int tet_bad(const rf_ctx *c, uint32_t t)
+{
+  const struct tr_mesh *m = c->m;
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  double ratio, vol;
+  tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1], m->xyz + 3 * (size_t)v[2],
+               m->xyz + 3 * (size_t)v[3], &ratio, &vol, NULL, NULL);
+  return (c->par.ratio > 0 && ratio > c->par.ratio) || too_big(c, t);
+}
+
+static tr_status push_tet(rf_ctx *c, uint32_t t)
+{
+  if (!tet_bad(c, t))
+    return TR_OK;
+  TR_CHECK(tr_u32buf_push(&c->qtet, t));
+  for (int i = 0; i < 4; i++)
+    TR_CHECK(tr_u32buf_push(&c->qtet, c->m->tv[4 * (size_t)t + i]));
+  return TR_OK;
+}
+
+/* Encroachment of the constraints of tet t by its own vertices: each sub-face by the
+ * vertex opposite it, each sub-segment by the two vertices off it. */
+static tr_status check_tet(rf_ctx *c, uint32_t t)
+{
+  const uint32_t *v = c->m->tv + 4 * (size_t)t;
+  for (int k = 0; k < 4; k++) {
+    uint32_t f = rf_subface_of(c, v[tr_face_vtx[k][0]], v[tr_face_vtx[k][1]], v[tr_face_vtx[k][2]]);
+    if (f == TR_NONE || c->sfnosplit[f])
+      continue;
+    tr_point a = tr_mesh_point(c->m, c->sfv[3 * (size_t)f]),
+             b = tr_mesh_point(c->m, c->sfv[3 * (size_t)f + 1]),
+             d = tr_mesh_point(c->m, c->sfv[3 * (size_t)f + 2]), p = tr_mesh_point(c->m, v[k]);
+    if (rf_in_equatorial(&a, &b, &d, &p) && !rf_protected(c, 0, f, v[k]))
+      TR_CHECK(tr_u32buf_push(&c->qface, f));
+  }
+  for (int e = 0; e < 6; e++) {
+    uint32_t g = rf_subseg_of(c, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]]);
+    if (g == TR_NONE || c->ssnosplit[g])
+      continue;
+    tr_point a = tr_mesh_point(c->m, c->ssv[2 * (size_t)g]),
+             b = tr_mesh_point(c->m, c->ssv[2 * (size_t)g + 1]);
+    for (int k = 0; k < 4; k++) {
+      if (k == tr_edge_vtx[e][0] || k == tr_edge_vtx[e][1])
+        continue;
+      tr_point p = tr_mesh_point(c->m, v[k]);
+      if (rf_in_diametral(&a, &b, &p) && !rf_protected(c, 1, g, v[k])) {
+        TR_CHECK(tr_u32buf_push(&c->qseg, g));
+        break;
+      }
+    }
+  }
+  return TR_OK;
+}
+
+static tr_status after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own)
+{
+  TR_CHECK(rf_vertex_room(c, pid + 1));
+  c->vkind[pid] = (uint8_t)kind;
+  c->vown[pid] = own;
+  c->st->points++;
+  for (size_t i = 0; i < c->newtets.n; i++) {
+    TR_CHECK(push_tet(c, c->newtets.a[i]));
+    TR_CHECK(check_tet(c, c->newtets.a[i]));
+  }
+  return TR_OK;
+}
+
+static tr_status split_segment(rf_ctx *c, uint32_t g)
+{
+  struct tr_mesh *m = c->m;
+  uint32_t u = c->ssv[2 * (size_t)g], w = c->ssv[2 * (size_t)g + 1], t;
+  TR_CHECK(tr_ball_find(m, u, w, TR_NONE, &t));
+  if (t == TR_NONE)
+    return tr_error(TR_ERR_INTERNAL, "refinement: sub-segment %u-%u is not a mesh edge", u, w);
+  tr_qpoint *q = NULL;
+  TR_CHECK(rf_segment_split_point(c, g, &q));
+  tr_point p = tr_pt_q(q);
+  int ok = 0;
+  c->split_seg = g;
+  tr_status st = rf_cavity(c, t, &p, m->nv, 1, &ok);
+  uint32_t pid = TR_NONE;
+  if (st == TR_OK && ok) {
+    st = tr_mesh_add_constructed(m, q, &pid);
+    if (st == TR_OK) {
+      q = NULL;
+      st = rf_insert(c, pid, &ok);
+    } else if (st == TR_ERR_UNSUPPORTED) {
+      rf_cavity_release(c); /* past the bit-size guard: leave this piece as it is */
+      st = TR_OK;
+      ok = 0;
+    }
+  }
+  c->split_seg = TR_NONE;
+  if (q) {
+    tr_qpoint_clear(q);
+    free(q);
+  }
+  TR_CHECK(st);
+  if (!ok) {
+    c->ssnosplit[g] = 1;
+    return TR_OK;
+  }
+  c->st->on_segments++;
+  return after_insert(c, pid, RF_SEG, g);
+}
+
+static tr_status split_facet(rf_ctx *c, uint32_t f)
+{
+  struct tr_mesh *m = c->m;
+  tr_qpoint *q = NULL;
+  uint32_t where, encseg, t;
+  TR_CHECK(rf_facet_split_point(c, f, &q, &where, &encseg));
+  if (q && encseg != TR_NONE) {
+    /* the circumcentre lies beyond a sub-segment: split that one, unless it cannot be or
+     * is protected near a small angle; then f is left as it is */
+    tr_point p = tr_pt_q(q), a = tr_mesh_point(m, c->ssv[2 * (size_t)encseg]),
+             b = tr_mesh_point(m, c->ssv[2 * (size_t)encseg + 1]);
+    int split = !c->ssnosplit[encseg] && rf_in_diametral(&a, &b, &p) &&
+                !rf_protected_at(c, 1, encseg, RF_FACET, c->sftri[f], q->near);
+    tr_qpoint_clear(q);
+    free(q);
+    if (split) {
+      TR_CHECK(tr_u32buf_push(&c->qseg, encseg));
+      return tr_u32buf_push(&c->qface, f);
+    }
+    c->sfnosplit[f] = 1;
+    return TR_OK;
+  }
+  if (!q) {
+    c->sfnosplit[f] = 1;
+    return TR_OK;
+  }
+  const uint32_t *S = c->sfv + 3 * (size_t)where;
+  tr_status st0 = tr_ball_find(m, S[0], S[1], S[2], &t);
+  if (st0 == TR_OK && t == TR_NONE)
+    st0 = tr_error(TR_ERR_INTERNAL, "refinement: sub-face %u-%u-%u is not a mesh face", S[0],
+                   S[1], S[2]);
+  if (st0 != TR_OK) {
+    tr_qpoint_clear(q);
+    free(q);
+    return st0;
+  }
+  tr_point p = tr_pt_q(q);
+  int ok = 0;
+  tr_status st = rf_cavity(c, t, &p, m->nv, 1, &ok);
+  /* a split point inside a sub-segment's diametral sphere is not inserted: the
+   * sub-segment is split first (the sub-face stays queued) */
+  /* ... unless that sub-segment is protected (angles.c) or cannot be split: then the
+   * sub-face is left as it is, else its pieces would be split towards the sub-segment
+   * without end */
+  int pushed = 0, blocked = 0;
+  for (size_t i = 0; st == TR_OK && ok && i < c->cav.n && !blocked; i++) {
+    const uint32_t *v = m->tv + 4 * (size_t)c->cav.a[i];
+    for (int e = 0; e < 6 && st == TR_OK && !blocked; e++) {
+      uint32_t g = rf_subseg_of(c, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]]);
+      if (g == TR_NONE)
+        continue;
+      tr_point a = tr_mesh_point(m, c->ssv[2 * (size_t)g]), b = tr_mesh_point(m, c->ssv[2 * (size_t)g + 1]);
+      if (!rf_in_diametral(&a, &b, &p))
+        continue;
+      if (c->ssnosplit[g] || rf_protected_at(c, 1, g, RF_FACET, c->sftri[f], p.d))
+        blocked = 1;
+      else {
+        st = tr_u32buf_push(&c->qseg, g);
+        pushed = 1;
+      }
+    }
+  }
+  uint32_t pid = TR_NONE;
+  if (st == TR_OK && ok && blocked) {
+    rf_cavity_release(c);
+    ok = 0;
+  } else if (st == TR_OK && ok && pushed) {
+    rf_cavity_release(c);
+    st = tr_u32buf_push(&c->qface, f);
+    ok = -1;
+  } else if (st == TR_OK && ok) {
+    st = tr_mesh_add_constructed(m, q, &pid);
+    if (st == TR_OK) {
+      q = NULL;
+      st = rf_insert(c, pid, &ok);
+    } else if (st == TR_ERR_UNSUPPORTED) {
+      rf_cavity_release(c);
+      st = TR_OK;
+      ok = 0;
+    }
+  }
+  if (q) {
+    tr_qpoint_clear(q);
+    free(q);
+  }
+  TR_CHECK(st);
+  if (ok == 0)
+    c->sfnosplit[f] = 1;
+  if (ok != 1)
+    return TR_OK;
+  c->st->on_facets++;
+  return after_insert(c, pid, RF_FACET, c->sftri[f]);
+}
+
+/* A tet whose shortest edge joins points on two constraints that meet at an input vertex
+ * under a small angle (angles.c): its quality is forced by that angle, it is left as is. */
+static int forced_by_angle(const rf_ctx *c, uint32_t t)
+{
+  const struct tr_mesh *m = c->m;
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  int best = 0;
+  double lmin = INFINITY;
+  for (int e = 0; e < 6; e++) {
+    const double *x = m->xyz + 3 * (size_t)v[tr_edge_vtx[e][0]],
+                 *y = m->xyz + 3 * (size_t)v[tr_edge_vtx[e][1]];
+    double l = (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
+               (x[2] - y[2]) * (x[2] - y[2]);
+    if (l < lmin) {
+      lmin = l;
+      best = e;
+    }
+  }
+  return rf_small_angle_edge(c, v[tr_edge_vtx[best][0]], v[tr_edge_vtx[best][1]]);
+}
+
+static tr_status refine_tet(rf_ctx *c, uint32_t t)
+{
+  struct tr_mesh *m = c->m;
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  double ratio, vol, cc[3];
+  if (!tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1], m->xyz + 3 * (size_t)v[2],
+                    m->xyz + 3 * (size_t)v[3], &ratio, &vol, NULL, cc)) {
+    c->st->skipped_other++;
+    return TR_OK;
+  }
+  if (!too_big(c, t) && forced_by_angle(c, t)) {
+    c->st->skipped_small_angle++;
+    return TR_OK;
+  }
+  tr_point p = tr_pt_d(cc);
+  uint32_t found, blocker;
+  TR_CHECK(rf_locate(c, t, &p, &found, &blocker));
+  if (found == TR_NONE) {
+    /* beyond a sub-face: split it if the circumcentre encroaches it */
+    if (blocker != TR_NONE && !c->sfnosplit[blocker]) {
+      const uint32_t *S = c->sfv + 3 * (size_t)blocker;
+      tr_point a = tr_mesh_point(m, S[0]), b = tr_mesh_point(m, S[1]), d = tr_mesh_point(m, S[2]);
+      if (rf_in_equatorial(&a, &b, &d, &p)) {
+        TR_CHECK(tr_u32buf_push(&c->qface, blocker));
+        return push_tet(c, t);
+      }
+    }
+    c->st->skipped_other++;
+    return TR_OK;
+  }
+  int ok = 0;
+  c->split_seg = TR_NONE;
+  TR_CHECK(rf_cavity(c, found, &p, m->nv, 0, &ok));
+  if (!ok) {
+    c->st->skipped_other++;
+    return TR_OK;
+  }
+  /* constraints the circumcentre encroaches are split instead; if one of them cannot be
+   * split (protected near a small input angle, or refused), the tet is left as it is: a
+   * point inserted that close to a constraint would only make worse tets there */
+  int pushed = 0, blocked = 0;
+  tr_status st = TR_OK;
+  for (size_t i = 0; st == TR_OK && i < c->cav.n && !blocked; i++) {
+    const uint32_t *w = m->tv + 4 * (size_t)c->cav.a[i];
+    for (int k = 0; k < 4 && st == TR_OK && !blocked; k++) {
+      uint32_t f = rf_subface_of(c, w[tr_face_vtx[k][0]], w[tr_face_vtx[k][1]], w[tr_face_vtx[k][2]]);
+      if (f == TR_NONE)
+        continue;
+      const uint32_t *S = c->sfv + 3 * (size_t)f;
+      tr_point a = tr_mesh_point(m, S[0]), b = tr_mesh_point(m, S[1]), d = tr_mesh_point(m, S[2]);
+      if (!rf_in_equatorial(&a, &b, &d, &p))
+        continue;
+      if (c->sfnosplit[f])
+        blocked = 1;
+      else {
+        st = tr_u32buf_push(&c->qface, f);
+        pushed = 1;
+      }
+    }
+    for (int e = 0; e < 6 && st == TR_OK && !blocked; e++) {
+      uint32_t g = rf_subseg_of(c, w[tr_edge_vtx[e][0]], w[tr_edge_vtx[e][1]]);
+      if (g == TR_NONE)
+        continue;
+      tr_point a = tr_mesh_point(m, c->ssv[2 * (size_t)g]), b = tr_mesh_point(m, c->ssv[2 * (size_t)g + 1]);
+      if (!rf_in_diametral(&a, &b, &p))
+        continue;
+      if (c->ssnosplit[g])
+        blocked = 1;
+      else {
+        st = tr_u32buf_push(&c->qseg, g);
+        pushed = 1;
+      }
+    }
+  }
+  if (st != TR_OK || blocked || pushed) {
+    rf_cavity_release(c);
+    TR_CHECK(st);
+    if (blocked) {
+      c->st->skipped_other++;
+      return TR_OK;
+    }
+    return push_tet(c, t);
+  }
+  /* a cavity shrunk to be star-shaped can leave a face the point sees almost edge-on:
+   * the cone would hold a tet far worse than the one being refined; leave that one */
+  for (size_t i = 0; i < c->bfaces.n; i++) {
+    uint32_t u = c->bfaces.a[i] >> 2;
+    int k = (int)(c->bfaces.a[i] & 3);
+    const double *x[3];
+    for (int j = 0; j < 3; j++)
+      x[j] = m->xyz + 3 * (size_t)m->tv[4 * (size_t)u + tr_face_vtx[k][j]];
+    double r2, v2;
+    tr_tet_shape(x[0], x[1], x[2], cc, &r2, &v2, NULL, NULL);
+    if (!(r2 <= 1000) || !(r2 <= 100 * ratio)) {
+      rf_cavity_release(c);
+      c->st->skipped_other++;
+      return TR_OK;
+    }
+  }
+  uint32_t pid;
+  TR_CHECK(tr_mesh_add_vertex(m, cc, &pid));
+  TR_CHECK(rf_insert(c, pid, &ok));
+  if (!ok) {
+    c->st->skipped_other++;
+    return TR_OK;
+  }
+  c->st->inside++;
+  return after_insert(c, pid, RF_FREE, TR_NONE);
+}
+
+/* Outer and ghost tets are freed; the faces they shared with inner tets become TR_NONE. */
+static void discard_outer(struct tr_mesh *m)
+{
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (!tr_tet_is_free(m, t) && (tr_tet_is_ghost(m, t) || (m->flags[t] & TR_TF_OUTER)))
+      m->flags[t] |= TR_TF_MARK;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (tr_tet_is_free(m, t) || (m->flags[t] & TR_TF_MARK))
+      continue;
+    for (int k = 0; k < 4; k++) {
+      uint32_t n = TR_NEIG(m, t, k);
+      if (n != TR_NONE && (m->flags[n] & TR_TF_MARK))
+        m->tn[4 * (size_t)t + k] = TR_NONE;
+    }
+  }
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (!tr_tet_is_free(m, t) && (m->flags[t] & TR_TF_MARK)) {
+      m->flags[t] = 0;
+      tr_tet_free(m, t);
+    }
+  for (uint32_t v = 0; v < m->nv; v++)
+    m->v2t[v] = TR_NONE;
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (!tr_tet_is_free(m, t))
+      for (int i = 0; i < 4; i++)
+        m->v2t[m->tv[4 * (size_t)t + i]] = t;
+}
+
+static void ctx_free(rf_ctx *c)
+{
+  free(c->sfv);
+  free(c->sftri);
+  free(c->sfdead);
+  free(c->sfnosplit);
+  rf_facemap_free(&c->fm);
+  rf_facemap_free(&c->trimap);
+  free(c->ssv);
+  free(c->ssab);
+  free(c->ssdead);
+  free(c->ssnosplit);
+  tr_edgeset_free(&c->es);
+  free(c->vkind);
+  free(c->vown);
+  tr_u32buf *b[] = {&c->qseg, &c->qface, &c->qtet, &c->cav, &c->init, &c->bfaces,
+                    &c->stack, &c->newsf, &c->tmp, &c->newtets};
+  for (size_t i = 0; i < sizeof b / sizeof *b; i++)
+    tr_u32buf_free(b[i]);
+  free(c->tstate);
+}
+
+static size_t left(const tr_u32buf *q, size_t head, size_t w)
+{
+  return (q->n - head) / w;
+}
+
+/* Drops the served prefix of a queue once it is most of it. */
+static void compact_queue(tr_u32buf *q, size_t *head)
+{
+  if (*head > 4096 && *head * 2 > q->n) {
+    memmove(q->a, q->a + *head, (q->n - *head) * sizeof *q->a);
+    q->n -= *head;
+    *head = 0;
+  }
+}
+
+static tr_status run(rf_ctx *c)
+{
+  struct tr_mesh *m = c->m;
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (!tr_tet_is_free(m, t)) {
+      TR_CHECK(push_tet(c, t));
+      TR_CHECK(check_tet(c, t));
+    }
+  for (;;) {
+    if (c->st->points >= c->par.budget && (left(&c->qseg, c->hseg, 1) || left(&c->qface, c->hface, 1) ||
+                                            left(&c->qtet, c->htet, 5)))
+      return tr_error(TR_ERR_NOMEM,
+                      "refinement stopped at its point budget of %llu points with %zu bad tets "
+                      "and %zu encroached constraint pieces still queued (an input angle too "
+                      "small for the bound? raise the budget or relax -q/-a)",
+                      (unsigned long long)c->par.budget, left(&c->qtet, c->htet, 5),
+                      left(&c->qseg, c->hseg, 1) + left(&c->qface, c->hface, 1));
+    if (c->hseg < c->qseg.n) {
+      uint32_t g = c->qseg.a[c->hseg++];
+      compact_queue(&c->qseg, &c->hseg);
+      if (!c->ssdead[g] && !c->ssnosplit[g])
+        TR_CHECK(split_segment(c, g));
+    } else if (c->hface < c->qface.n) {
+      uint32_t f = c->qface.a[c->hface++];
+      compact_queue(&c->qface, &c->hface);
+      if (!c->sfdead[f] && !c->sfnosplit[f])
+        TR_CHECK(split_facet(c, f));
+    } else if (c->htet < c->qtet.n) {
+      uint32_t it[5];
+      memcpy(it, c->qtet.a + c->htet, sizeof it);
+      c->htet += 5;
+      if (c->htet > 5 * 4096 && c->htet * 2 > c->qtet.n) {
+        memmove(c->qtet.a, c->qtet.a + c->htet, (c->qtet.n - c->htet) * sizeof *c->qtet.a);
+        c->qtet.n -= c->htet;
+        c->htet = 0;
+      }
+      if (it[0] < m->nt && !tr_tet_is_free(m, it[0]) &&
+          !memcmp(m->tv + 4 * (size_t)it[0], it + 1, 4 * sizeof *it) && tet_bad(c, it[0]))
+        TR_CHECK(refine_tet(c, it[0]));
+    } else
+      return TR_OK;
+  }
+}
+
+tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
+                    const tr_refine_params *par, tr_refine_stats *st)
+{
+  tr_refine_stats local;
+  if (!st)
+    st = &local;
+  memset(st, 0, sizeof *st);
+  if (plc->nsegs)
+    return tr_error(TR_ERR_UNSUPPORTED, "quality refinement of inputs with free segments is "
+                    "not supported yet (%u segments)", plc->nsegs);
+  discard_outer(m);
+  rf_ctx c;
+  memset(&c, 0, sizeof c);
+  c.m = m;
+  c.plc = plc;
+  c.par = *par;
+  c.st = st;
+  c.split_seg = TR_NONE;
+  if (!c.par.budget)
+    c.par.budget = tr_refine_default_budget(plc->npoints, 0, 0);
+  tr_status s = rf_subs_init(&c, sub);
+  if (s == TR_OK)
+    s = run(&c);
+  if (s == TR_OK)
+    s = rf_subs_export(&c, sub);
+  if (par->verbose >= 1 && (s == TR_OK || s == TR_ERR_NOMEM))
+    fprintf(stderr,
+            "tetrec: refinement added %llu points (%llu on edges, %llu on facets, %llu "
+            "inside); %llu bad tets left for small input angles, %llu otherwise\n",
+            (unsigned long long)st->points, (unsigned long long)st->on_segments,
+            (unsigned long long)st->on_facets, (unsigned long long)st->inside,
+            (unsigned long long)st->skipped_small_angle, (unsigned long long)st->skipped_other);
+  ctx_free(&c);
+  return s;
+}

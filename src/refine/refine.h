@@ -1,0 +1,62 @@
+/* Constrained Delaunay refinement for mesh quality (Shewchuk 1998, "Tetrahedral mesh
+ * generation by Delaunay refinement"; Si 2015, "TetGen"): runs on the recovered mesh
+ * after outer removal and inserts points until every inner tet meets the radius-edge
+ * bound and the volume bound, or is exempt (see below), or the point budget is spent.
+ *
+ * Points and where they lie:
+ *  - a bad tet (radius-edge ratio > R, or volume > V) gets its circumcentre, computed in
+ *    doubles from the tet's nearest doubles and inserted as an exact double point;
+ *  - a point that would lie in the diametral sphere of a sub-segment or the equatorial
+ *    sphere of a sub-face (exact tests, encroach.c) is not inserted: the constraint is
+ *    split instead, at a point exactly on it: on an input edge AB the dyadic point
+ *    A + k/2^m (B - A) (near the sub-segment's midpoint, or at a power-of-two fraction of
+ *    AB next to an input vertex: concentric shells), on an input triangle ABC a dyadic
+ *    barycentric combination of A, B, C near the sub-face's circumcentre.
+ * Insertion is constrained Bowyer-Watson (cavity.c): the cavity grows through faces
+ * whose far tet has the point strictly inside its circumsphere (exact, perturbed where
+ * every point is a double), never through a sub-face unless the point lies in that
+ * sub-face's input triangle, never out of the domain; it is then shrunk until every face
+ * it is coned from is strictly visible from the point, so every new tet is positive
+ * whatever the mesh was (recovery leaves it constrained, not Delaunay).
+ *
+ * Termination: sub-segments next to an input vertex are split on concentric shells; a
+ * bad tet whose shortest edge joins points on two input edges that meet at an input
+ * vertex under less than 60 degrees is left as it is (its quality is forced by that
+ * angle); and a point budget stops a runaway with TR_ERR_NOMEM ("a size limit was
+ * exceeded") and a message. Outer and ghost tets are discarded first. */
+#ifndef TR_REFINE_H
+#define TR_REFINE_H
+
+#include <stdint.h>
+
+#include "core/plc.h"
+#include "mesh/mesh.h"
+#include "recover_facets/recover_facets.h"
+
+typedef struct tr_refine_params {
+  double ratio;        /* radius-edge bound R (> 0), 0: no ratio criterion */
+  double max_volume;   /* volume bound, 0: none */
+  uint64_t budget;     /* points the stage may add; 0: tr_refine_default_budget */
+  int verbose;
+} tr_refine_params;
+
+typedef struct tr_refine_stats {
+  uint64_t points;          /* points added, all kinds */
+  uint64_t on_segments, on_facets, inside; /* by kind */
+  uint64_t skipped_small_angle; /* bad tets exempt: quality forced by an input angle */
+  uint64_t skipped_other;   /* bad tets left: circumcentre blocked / refused */
+} tr_refine_stats;
+
+/* The default budget: 100 points per input point plus 100,000, plus, with a volume bound,
+ * 20 per multiple of V in the domain's volume (a mesh of tets of volume about V/6 needs
+ * about 6 times that many points). */
+uint64_t tr_refine_default_budget(uint32_t npoints, double domain_volume, double max_volume);
+
+/* m: the recovered mesh with outer tets flagged (tr_outer_color), vertex ids = plc's point
+ * ids for the first plc->npoints; sub: its sub-faces, replaced on success by the refined
+ * ones (same ordering rules). On return m holds only inner tets (outer and ghost slots
+ * freed, their faces TR_NONE). */
+tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
+                    const tr_refine_params *par, tr_refine_stats *st);
+
+#endif

@@ -1,0 +1,126 @@
+/* Internal state of the refinement stage (refine.h), shared by its files:
+ *   subs.c      the sub-face and sub-segment tables and the face map
+ *   encroach.c  exact encroachment tests and the exact split points on constraints
+ *   cavity.c    constrained Bowyer-Watson: locate, cavity, insertion
+ *   refine.c    the queues and the main loop */
+#ifndef TR_REFINE_IMPL_H
+#define TR_REFINE_IMPL_H
+
+#include <stdint.h>
+
+#include "recover_edges/edgeset.h"
+#include "refine/refine.h"
+
+/* Sorted vertex triple -> sub-face id, open addressing (linear probing, fixed hash
+ * tr_hash3 so runs are reproducible). A split sub-face's entry stays and points to a dead
+ * id: its three vertices never span a face of the mesh again as a sub-face. */
+typedef struct rf_facemap {
+  uint32_t *key; /* 3 per slot, key[3s] == TR_NONE: empty */
+  uint32_t *val;
+  uint32_t n, cap;
+} rf_facemap;
+
+/* What a vertex lies on: for split points the constraint it was inserted on. */
+enum { RF_FREE = 0, RF_INPUT = 1, RF_SEG = 2, RF_FACET = 3 };
+
+typedef struct rf_ctx {
+  struct tr_mesh *m;
+  const struct tr_plc *plc;
+  tr_refine_params par;
+  tr_refine_stats *st;
+  /* sub-faces: vertices (right-hand normal = the input triangle's), input triangle */
+  uint32_t nsf, capsf;
+  uint32_t *sfv, *sftri;
+  uint8_t *sfdead;
+  rf_facemap fm;
+  rf_facemap trimap; /* the input triangles by their vertices (angles.c) */
+  /* sub-segments: vertices, the input edge (A,B) they lie on (input ids, A < B) */
+  uint32_t nss, capss;
+  uint32_t *ssv, *ssab;
+  uint8_t *ssdead, *ssnosplit;
+  tr_edgeset es; /* {u,v} -> sub-segment id (dead ids stay) */
+  /* per vertex: RF_* kind and owner (input edge id = index into ssab pairs of the first
+   * sub-segment of that edge, or input triangle) */
+  uint32_t capv;
+  uint8_t *vkind;
+  uint32_t *vown; /* RF_SEG: a,b packed via seg id; RF_FACET: triangle */
+  uint8_t *sfnosplit;
+  /* queues (FIFO through a head index) */
+  tr_u32buf qseg, qface, qtet; /* qtet: 5 entries per item: tet, its 4 vertices */
+  size_t hseg, hface, htet;
+  /* scratch of one insertion */
+  tr_u32buf cav, init, bfaces, stack, newsf, tmp, newtets;
+  uint8_t *tstate; /* cavity state per tet slot (cavity.c), 0 at rest */
+  uint32_t captstate;
+  uint32_t split_seg; /* the sub-segment the point being inserted splits, or TR_NONE */
+} rf_ctx;
+
+/* ---- subs.c ---- */
+void rf_facemap_free(rf_facemap *f);
+tr_status rf_facemap_put(rf_facemap *f, const uint32_t v[3], uint32_t val);
+uint32_t rf_facemap_get(const rf_facemap *f, uint32_t a, uint32_t b, uint32_t c);
+/* Builds the tables from sub (and the plc's triangles). */
+tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub);
+tr_status rf_subface_add(rf_ctx *c, uint32_t a, uint32_t b, uint32_t d, uint32_t tri,
+                         uint32_t *id);
+tr_status rf_subseg_add(rf_ctx *c, uint32_t u, uint32_t v, uint32_t A, uint32_t B,
+                        uint32_t *id);
+/* The live sub-face with vertices {a,b,c}, TR_NONE if none. */
+uint32_t rf_subface_of(const rf_ctx *c, uint32_t a, uint32_t b, uint32_t d);
+/* The live sub-segment {u,v}, TR_NONE if none. */
+uint32_t rf_subseg_of(const rf_ctx *c, uint32_t u, uint32_t v);
+/* The live sub-faces back into a tr_subfaces (sorted by triangle, then vertex ids). */
+tr_status rf_subs_export(const rf_ctx *c, tr_subfaces *out);
+tr_status rf_vertex_room(rf_ctx *c, uint32_t nv);
+
+/* ---- encroach.c ---- */
+/* 1 iff p is strictly inside the diametral sphere of segment ab (exact). */
+int rf_in_diametral(const tr_point *a, const tr_point *b, const tr_point *p);
+/* 1 iff p is strictly inside the equatorial sphere of triangle abc (exact). */
+int rf_in_equatorial(const tr_point *a, const tr_point *b, const tr_point *c,
+                     const tr_point *p);
+/* The split point of sub-segment s, exactly on its input edge (malloc'ed, initialised). */
+tr_status rf_segment_split_point(rf_ctx *c, uint32_t s, tr_qpoint **out);
+/* The split point of sub-face f: its circumcentre as a dyadic barycentric combination of
+ * its input triangle's vertices (within 1/16 of f's size), located by a walk in the facet:
+ * *where = the sub-face that holds it. When the walk meets a sub-segment first (the
+ * circumcentre lies beyond it or on it), *encseg = that sub-segment and *where = TR_NONE
+ * (*out is still the point, for the caller's rules); *out = NULL when no point is found. */
+tr_status rf_facet_split_point(rf_ctx *c, uint32_t f, tr_qpoint **out, uint32_t *where,
+                               uint32_t *encseg);
+/* 1 iff the volume of tet abcd (positive) exceeds V exactly. */
+int rf_volume_above(const tr_point *a, const tr_point *b, const tr_point *c, const tr_point *d,
+                    double V);
+/* 1 iff point p lies in the closed input triangle tri (exact). */
+int rf_in_input_triangle(const rf_ctx *c, uint32_t tri, const tr_point *p);
+
+/* ---- angles.c ---- */
+/* 1 iff the constraints x and y lie on meet at an input vertex under a small angle. */
+int rf_small_angle_edge(const rf_ctx *c, uint32_t x, uint32_t y);
+/* 1 iff sub-segment (seg) / sub-face id is protected from a split caused by vertex v. */
+int rf_protected(const rf_ctx *c, int seg, uint32_t id, uint32_t v);
+/* The same for a point at pw on a constraint (kind RF_*, owner own) not inserted yet. */
+int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t own,
+                    const double *pw);
+
+/* ---- cavity.c ---- */
+/* Straight walk from tet t towards p; *found = tet whose closure holds p, or TR_NONE; if
+ * the walk is stopped by a sub-face, *blocker = that sub-face (else TR_NONE). */
+tr_status rf_locate(rf_ctx *c, uint32_t t, const tr_point *p, uint32_t *found,
+                    uint32_t *blocker);
+/* The cavity of p from tet t0 (p in its closure): c->cav (tets), c->bfaces (coned faces,
+ * as 4*tet+face). allow_split: p lies on a constraint and may split the sub-faces whose
+ * input triangle holds it. *ok = 0 when no valid cavity exists (p is a vertex, or lies
+ * on a constraint it may not split). */
+tr_status rf_cavity(rf_ctx *c, uint32_t t0, const tr_point *p, uint32_t pid, int allow_split,
+                    int *ok);
+/* Forgets the cavity of the last successful rf_cavity without inserting. */
+void rf_cavity_release(rf_ctx *c);
+
+/* ---- insert.c ---- */
+/* Replaces the cavity by the cone from vertex pid (already in the mesh), updates the
+ * sub-faces and, when c->split_seg != TR_NONE, that sub-segment; the new tets are in
+ * c->newtets. *ok = 0 (mesh unchanged, cavity released) when the cone would not glue. */
+tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok);
+
+#endif

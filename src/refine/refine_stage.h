@@ -1,0 +1,17 @@
+/* The refinement stage's entry points for the pipeline (src/pipeline/mesh_plc.c) and the
+ * CLI: option checks, the stage with its default budget, the quality rows of tr_stats. */
+#ifndef TR_REFINE_STAGE_H
+#define TR_REFINE_STAGE_H
+
+#include "refine/refine.h"
+
+/* TR_ERR_USAGE for a bound out of range, TR_ERR_UNSUPPORTED for a dihedral target. */
+tr_status tr_refine_check_options(const tr_options *opt);
+/* tr_refine with the options' bounds and budget (default: tr_refine_default_budget on the
+ * domain's volume); *points = points added. keep_hull (open input in its hull): refused. */
+tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
+                          const tr_options *opt, int keep_hull, uint64_t *points);
+/* The shape rows of s (min/max dihedral, histograms, ...) measured on m's doubles. */
+void tr_quality_stats(const struct tr_mesh *m, tr_stats *s);
+
+#endif

@@ -1,0 +1,64 @@
+/* The refinement stage as the pipeline calls it: option checks, the default budget, the
+ * statistics rows (refine.h, quality.h). */
+#include <math.h>
+#include <string.h>
+
+#include "refine/quality.h"
+#include "refine/refine_stage.h"
+
+tr_status tr_refine_check_options(const tr_options *opt)
+{
+  if (opt->quality_min_dihedral != 0)
+    return tr_error(TR_ERR_UNSUPPORTED, "a minimum dihedral target (-q R/D, D = %g) is not "
+                    "supported yet: refinement bounds the radius-edge ratio only",
+                    opt->quality_min_dihedral);
+  if (opt->quality_ratio != 0 && !(opt->quality_ratio >= 1 && isfinite(opt->quality_ratio)))
+    return tr_error(TR_ERR_USAGE, "radius-edge bound %g: it must be at least 1 (the regular "
+                    "tet has 0.61; bounds below 1 cannot be met in general)",
+                    opt->quality_ratio);
+  if (opt->max_volume != 0 && !(opt->max_volume > 0 && isfinite(opt->max_volume)))
+    return tr_error(TR_ERR_USAGE, "maximum volume %g: it must be positive", opt->max_volume);
+  return TR_OK;
+}
+
+tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
+                          const tr_options *opt, int keep_hull, uint64_t *points)
+{
+  TR_CHECK(tr_refine_check_options(opt));
+  if (keep_hull)
+    return tr_error(TR_ERR_UNSUPPORTED, "quality refinement of an open surface meshed within "
+                    "its convex hull is not supported yet");
+  double vol = 0;
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER)) {
+      const uint32_t *v = m->tv + 4 * (size_t)t;
+      double r, w, d[6];
+      tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
+                   m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &r, &w, d, NULL);
+      vol += w;
+    }
+  tr_refine_params par;
+  memset(&par, 0, sizeof par);
+  par.ratio = opt->quality_ratio;
+  par.max_volume = opt->max_volume;
+  par.verbose = opt->verbose;
+  par.budget = opt->refine_budget ? opt->refine_budget
+                                  : tr_refine_default_budget(plc->npoints, vol, opt->max_volume);
+  tr_refine_stats rs;
+  tr_status s = tr_refine(m, plc, sub, &par, &rs);
+  *points = rs.points;
+  return s;
+}
+
+void tr_quality_stats(const struct tr_mesh *m, tr_stats *s)
+{
+  tr_quality q;
+  tr_quality_measure(m, &q);
+  s->min_dihedral = q.min_dihedral;
+  s->max_dihedral = q.max_dihedral;
+  s->max_radius_edge = q.max_radius_edge;
+  s->tets_dihedral_below_5 = q.below5;
+  s->tets_dihedral_below_10 = q.below10;
+  memcpy(s->dihedral_histogram, q.dihedral_hist, sizeof s->dihedral_histogram);
+  memcpy(s->radius_edge_histogram, q.ratio_hist, sizeof s->radius_edge_histogram);
+}

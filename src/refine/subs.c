@@ -1,0 +1,291 @@
+/* The constraint tables of the refinement stage: sub-faces (with a face map for "is this
+ * mesh face a sub-face?") and sub-segments (tr_edgeset), and what each vertex lies on.
+ * Sub-segments are derived from the sub-faces: a sub-face edge whose ends both lie on
+ * one edge of its input triangle (exact collinearity) is a piece of that input edge. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "refine/refine_impl.h"
+
+void rf_facemap_free(rf_facemap *f)
+{
+  free(f->key);
+  free(f->val);
+  memset(f, 0, sizeof *f);
+}
+
+static size_t fm_slot(const uint32_t k[3], uint32_t cap)
+{
+  return (size_t)(tr_hash3(k) >> 32) & (cap - 1);
+}
+
+static tr_status fm_grow(rf_facemap *f)
+{
+  if (f->cap >= (1u << 29))
+    return tr_error(TR_ERR_NOMEM, "refinement: more than 2^28 sub-faces");
+  uint32_t nc = f->cap ? 2 * f->cap : 256;
+  uint32_t *k = malloc(sizeof *k * 3 * (size_t)nc), *v = malloc(sizeof *v * nc);
+  if (!k || !v) {
+    free(k);
+    free(v);
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-faces", f->n);
+  }
+  for (uint32_t i = 0; i < nc; i++)
+    k[3 * (size_t)i] = TR_NONE;
+  for (uint32_t i = 0; i < f->cap; i++) {
+    const uint32_t *o = f->key + 3 * (size_t)i;
+    if (o[0] == TR_NONE)
+      continue;
+    size_t j = fm_slot(o, nc);
+    while (k[3 * j] != TR_NONE)
+      j = (j + 1) & (nc - 1);
+    memcpy(k + 3 * j, o, 3 * sizeof *o);
+    v[j] = f->val[i];
+  }
+  free(f->key);
+  free(f->val);
+  f->key = k;
+  f->val = v;
+  f->cap = nc;
+  return TR_OK;
+}
+
+tr_status rf_facemap_put(rf_facemap *f, const uint32_t v[3], uint32_t val)
+{
+  if (2 * (f->n + 1) > f->cap)
+    TR_CHECK(fm_grow(f));
+  uint32_t k[3] = {v[0], v[1], v[2]};
+  tr_sort3(k);
+  size_t j = fm_slot(k, f->cap);
+  while (f->key[3 * j] != TR_NONE) {
+    if (!memcmp(f->key + 3 * j, k, sizeof k)) {
+      f->val[j] = val; /* a dead entry revived by a new sub-face on the same vertices */
+      return TR_OK;
+    }
+    j = (j + 1) & (f->cap - 1);
+  }
+  memcpy(f->key + 3 * j, k, sizeof k);
+  f->val[j] = val;
+  f->n++;
+  return TR_OK;
+}
+
+uint32_t rf_facemap_get(const rf_facemap *f, uint32_t a, uint32_t b, uint32_t c)
+{
+  if (!f->cap)
+    return TR_NONE;
+  uint32_t k[3] = {a, b, c};
+  tr_sort3(k);
+  for (size_t j = fm_slot(k, f->cap); f->key[3 * j] != TR_NONE; j = (j + 1) & (f->cap - 1))
+    if (!memcmp(f->key + 3 * j, k, sizeof k))
+      return f->val[j];
+  return TR_NONE;
+}
+
+uint32_t rf_subface_of(const rf_ctx *c, uint32_t a, uint32_t b, uint32_t d)
+{
+  uint32_t f = rf_facemap_get(&c->fm, a, b, d);
+  return f != TR_NONE && !c->sfdead[f] ? f : TR_NONE;
+}
+
+uint32_t rf_subseg_of(const rf_ctx *c, uint32_t u, uint32_t v)
+{
+  uint32_t s = tr_edgeset_get(&c->es, u, v);
+  return s != TR_EDGESET_NONE && !c->ssdead[s] ? s : TR_NONE;
+}
+
+static tr_status grow_arrays(void **arrs, const size_t *sizes, int n, uint32_t *cap,
+                             uint32_t need)
+{
+  if (need <= *cap)
+    return TR_OK;
+  if (need > (1u << 30))
+    return tr_error(TR_ERR_NOMEM, "refinement: more than 2^30 constraint pieces");
+  uint32_t nc = *cap ? *cap : 64;
+  while (nc < need)
+    nc *= 2;
+  for (int i = 0; i < n; i++) {
+    void *p = realloc(arrs[i], sizes[i] * nc);
+    if (!p)
+      return tr_error(TR_ERR_NOMEM, "out of memory for %u constraint pieces", need);
+    memset((char *)p + sizes[i] * *cap, 0, sizes[i] * (nc - *cap));
+    arrs[i] = p;
+  }
+  *cap = nc;
+  return TR_OK;
+}
+
+tr_status rf_subface_add(rf_ctx *c, uint32_t a, uint32_t b, uint32_t d, uint32_t tri,
+                         uint32_t *id)
+{
+  void *arrs[4] = {c->sfv, c->sftri, c->sfdead, c->sfnosplit};
+  size_t sizes[4] = {3 * sizeof(uint32_t), sizeof(uint32_t), 1, 1};
+  tr_status s = grow_arrays(arrs, sizes, 4, &c->capsf, c->nsf + 1);
+  c->sfv = arrs[0];
+  c->sftri = arrs[1];
+  c->sfdead = arrs[2];
+  c->sfnosplit = arrs[3];
+  TR_CHECK(s);
+  uint32_t f = c->nsf++;
+  c->sfv[3 * (size_t)f] = a;
+  c->sfv[3 * (size_t)f + 1] = b;
+  c->sfv[3 * (size_t)f + 2] = d;
+  c->sftri[f] = tri;
+  c->sfdead[f] = c->sfnosplit[f] = 0;
+  if (id)
+    *id = f;
+  return rf_facemap_put(&c->fm, c->sfv + 3 * (size_t)f, f);
+}
+
+tr_status rf_subseg_add(rf_ctx *c, uint32_t u, uint32_t v, uint32_t A, uint32_t B,
+                        uint32_t *id)
+{
+  void *arrs[4] = {c->ssv, c->ssab, c->ssdead, c->ssnosplit};
+  size_t sizes[4] = {2 * sizeof(uint32_t), 2 * sizeof(uint32_t), 1, 1};
+  tr_status s = grow_arrays(arrs, sizes, 4, &c->capss, c->nss + 1);
+  c->ssv = arrs[0];
+  c->ssab = arrs[1];
+  c->ssdead = arrs[2];
+  c->ssnosplit = arrs[3];
+  TR_CHECK(s);
+  uint32_t g = c->nss++;
+  c->ssv[2 * (size_t)g] = u;
+  c->ssv[2 * (size_t)g + 1] = v;
+  c->ssab[2 * (size_t)g] = A < B ? A : B;
+  c->ssab[2 * (size_t)g + 1] = A < B ? B : A;
+  if (id)
+    *id = g;
+  /* tr_edgeset keeps the first value of a key: a split sub-segment's key is never
+   * reused (its two ends are no longer joined by a constraint piece), so this is new */
+  return tr_edgeset_put(&c->es, u, v, g);
+}
+
+tr_status rf_vertex_room(rf_ctx *c, uint32_t nv)
+{
+  if (nv <= c->capv)
+    return TR_OK;
+  uint32_t nc = c->capv ? c->capv : 64;
+  while (nc < nv)
+    nc = nc > UINT32_MAX / 2 ? UINT32_MAX : 2 * nc;
+  uint8_t *k = realloc(c->vkind, nc);
+  if (k)
+    c->vkind = k;
+  uint32_t *o = realloc(c->vown, sizeof *o * nc);
+  if (o)
+    c->vown = o;
+  if (!k || !o)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u vertices", nv);
+  memset(c->vkind + c->capv, RF_FREE, nc - c->capv);
+  for (uint32_t i = c->capv; i < nc; i++)
+    c->vown[i] = TR_NONE;
+  c->capv = nc;
+  return TR_OK;
+}
+
+/* 1 iff p lies on the line through a and b (exact: every coordinate projection). */
+static int on_line(const tr_point *a, const tr_point *b, const tr_point *p)
+{
+  for (int d = 0; d < 3; d++)
+    if (tr_orient2d_proj_p(a, b, p, d) != 0)
+      return 0;
+  return 1;
+}
+
+tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
+{
+  const struct tr_plc *plc = c->plc;
+  struct tr_mesh *m = c->m;
+  TR_CHECK(rf_vertex_room(c, m->nv + 1));
+  for (uint32_t v = 0; v < m->nv; v++) {
+    c->vkind[v] = v < plc->npoints ? RF_INPUT : RF_FREE;
+    c->vown[v] = v < plc->npoints ? v : TR_NONE;
+  }
+  for (uint32_t t = 0; t < plc->ntris; t++)
+    TR_CHECK(rf_facemap_put(&c->trimap, plc->tris + 3 * (size_t)t, t));
+  for (uint32_t f = 0; f < sub->n; f++) {
+    const uint32_t *v = sub->v + 3 * (size_t)f, tri = sub->tri[f];
+    TR_CHECK(rf_subface_add(c, v[0], v[1], v[2], tri, NULL));
+    const uint32_t *T = plc->tris + 3 * (size_t)tri;
+    for (int e = 0; e < 3; e++) {
+      uint32_t u = v[e], w = v[(e + 1) % 3];
+      if (tr_edgeset_get(&c->es, u, w) != TR_EDGESET_NONE)
+        continue;
+      tr_point pu = tr_mesh_point(m, u), pw = tr_mesh_point(m, w);
+      for (int k = 0; k < 3; k++) {
+        uint32_t A = T[k], B = T[(k + 1) % 3];
+        tr_point pa = tr_mesh_point(m, A), pb = tr_mesh_point(m, B);
+        int uon = u == A || u == B || (u >= plc->npoints && on_line(&pa, &pb, &pu));
+        int won = w == A || w == B || (w >= plc->npoints && on_line(&pa, &pb, &pw));
+        if (!uon || !won)
+          continue;
+        uint32_t g;
+        TR_CHECK(rf_subseg_add(c, u, w, A, B, &g));
+        if (u >= plc->npoints) {
+          c->vkind[u] = RF_SEG;
+          c->vown[u] = g;
+        }
+        if (w >= plc->npoints) {
+          c->vkind[w] = RF_SEG;
+          c->vown[w] = g;
+        }
+        break;
+      }
+    }
+  }
+  for (uint32_t f = 0; f < c->nsf; f++)
+    for (int i = 0; i < 3; i++) {
+      uint32_t u = c->sfv[3 * (size_t)f + i];
+      if (c->vkind[u] == RF_FREE) {
+        c->vkind[u] = RF_FACET;
+        c->vown[u] = c->sftri[f];
+      }
+    }
+  return TR_OK;
+}
+
+typedef struct {
+  uint32_t tri, v[3];
+} sf_rec;
+
+static int cmp_sf(const void *pa, const void *pb)
+{
+  const sf_rec *a = pa, *b = pb;
+  if (a->tri != b->tri)
+    return a->tri < b->tri ? -1 : 1;
+  return tr_cmp_face_key(a->v, b->v);
+}
+
+tr_status rf_subs_export(const rf_ctx *c, tr_subfaces *out)
+{
+  uint32_t n = 0;
+  for (uint32_t f = 0; f < c->nsf; f++)
+    n += !c->sfdead[f];
+  sf_rec *r = malloc(sizeof *r * (n ? n : 1));
+  uint32_t *v = malloc(sizeof *v * 3 * (size_t)(n ? n : 1));
+  uint32_t *tri = malloc(sizeof *tri * (n ? n : 1));
+  if (!r || !v || !tri) {
+    free(r);
+    free(v);
+    free(tri);
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-faces", n);
+  }
+  uint32_t k = 0;
+  for (uint32_t f = 0; f < c->nsf; f++)
+    if (!c->sfdead[f]) {
+      r[k].tri = c->sftri[f];
+      memcpy(r[k].v, c->sfv + 3 * (size_t)f, sizeof r[k].v);
+      tr_rotate_min3(r[k].v); /* same turn: the orientation is kept */
+      k++;
+    }
+  qsort(r, n, sizeof *r, cmp_sf);
+  for (uint32_t i = 0; i < n; i++) {
+    memcpy(v + 3 * (size_t)i, r[i].v, sizeof r[i].v);
+    tri[i] = r[i].tri;
+  }
+  free(r);
+  tr_subfaces_free(out);
+  out->n = n;
+  out->v = v;
+  out->tri = tri;
+  return TR_OK;
+}

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The refinement options of `tetrec mesh`: --quality R bounds the radius-edge ratio, a dihedral
+# target is refused as not supported (exit 11), bad bounds and the options on other
+# commands are usage errors (exit 1), the point budget stops a run with exit 8 and a
+# message, and --stats carries the quality rows. Every mesh written is checked.
+# usage: cli_options.sh TETREC SURFACE WORKDIR
+set -u
+T=$1 S=$2 W=$3
+mkdir -p "$W"
+fails=0
+expect() { # expect CODE PATTERN -- ARGS...
+  local code=$1 pat=$2
+  shift 3
+  "$T" "$@" >"$W/out" 2>&1
+  local rc=$?
+  if [ $rc -ne "$code" ] || { [ -n "$pat" ] && ! grep -qE "$pat" "$W/out"; }; then
+    echo "FAIL: tetrec $* -> $rc (want $code, /$pat/):"; cat "$W/out"; fails=$((fails + 1))
+  fi
+}
+expect 0 "" -- mesh --quality 1.414 "$S" -o "$W/a.node" --exact --stats "$W/a.json"
+expect 0 "conforms exactly" -- check "$S" "$W/a.node"
+grep -q '"points_added_for_quality"' "$W/a.json" && grep -q '"min_dihedral"' "$W/a.json" &&
+  grep -q '"radius_edge_histogram": \[' "$W/a.json" || { echo "FAIL: stats rows"; fails=$((fails + 1)); }
+expect 0 "" -- mesh "$S" --quality 1.2 -a 0.05 -o "$W/b.node" --exact -q
+expect 0 "conforms exactly.*volume equals" -- check "$S" "$W/b.node"
+expect 11 "not supported yet" -- mesh "$S" --quality 1.2/15 -o "$W/c.node"
+expect 1 "at least 1" -- mesh "$S" --quality 0.5 -o "$W/c.node"
+expect 1 "positive volume" -- mesh "$S" -a -1 -o "$W/c.node"
+expect 1 "does not apply to 'delaunay'" -- delaunay "$S" --quality 1.414
+expect 8 "point budget of 50 points" -- mesh "$S" -a 0.001 --refine-budget 50 -o "$W/c.node"
+expect 1 "whole number" -- mesh "$S" --refine-budget 0 -o "$W/c.node"
+[ ! -e "$W/c.node" ] || { echo "FAIL: a refused run wrote a mesh"; fails=$((fails + 1)); }
+exit $((fails != 0))
