@@ -210,6 +210,9 @@ typedef struct tr_options {
   double max_volume;           /* bound on every tet's volume, 0: none */
   uint64_t refine_budget;      /* points refinement may add (0: 100 per input point +
                                   100,000, + 20 per max_volume in the domain's volume) */
+  int keep_steiner; /* 1: the recovery's Steiner points stay where they are (on the input
+                       edges and facets, exact rationals); 0 (default): the suppression
+                       stage removes them or moves them inside where it can */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);

@@ -179,15 +179,25 @@ def validate(points, triangles=None, *, markers=None):
 
 
 def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
-                   keep_surface=False, quality=None, max_volume=None, exact=False,
+                   keep_surface=False, keep_steiner=False, quality=None, max_volume=None,
+                   exact=False,
                    smooth=True, round_budget=None, verbose=0, progress=None):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
     points (n,3) floats and triangles (m,3) 0-based indices, or a Surface from read()
     as the only positional argument (its markers are used unless markers= is given).
     markers: one int32 per triangle, carried to the boundary faces.
-    holes, regions, keep_surface, quality, max_volume: raise NotImplementedError until
-    the C library offers them (tetrec.SUPPORTED_OPTIONS lists what it offers).
+    holes: rows (x, y, z), each point's cell is left empty. regions: rows (x, y, z,
+    attribute, max_volume), the tets of each point's cell carry the attribute in
+    .regions (a per-region max_volume > 0 is only warned about: not used yet).
+    keep_surface: no Steiner point on the surface, the boundary faces are exactly the
+    input triangles (tetrec.Error when that cannot be done). keep_steiner: the
+    recovery's Steiner points stay on the input edges and facets (by default they are
+    removed or moved inside where that can be done exactly). quality: R or (R, D), the
+    radius-edge bound of constrained Delaunay refinement (a dihedral D is refused as not
+    supported yet); max_volume: refinement until every tet's volume is at most it.
+    Options the C library does not offer raise NotImplementedError
+    (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: Mesh.write() defaults to writing exact rational Steiner points.
     smooth: surface diagonal swaps before recovery. round_budget: star checks the
     rounding repair may spend. verbose: 0 quiet, 1 normal, 2 chatty (on stderr).
@@ -207,6 +217,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
                if value is not None}
     if keep_surface:
         options["keep_surface"] = keep_surface
+    if keep_steiner:
+        options["keep_steiner"] = keep_steiner
     if not smooth:
         options["smooth"] = 0
     if verbose:

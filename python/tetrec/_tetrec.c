@@ -6,6 +6,7 @@
 #include <Python.h>
 #include <numpy/arrayobject.h>
 
+#include <math.h>
 #include <string.h>
 
 #include "arrays.h"
@@ -144,8 +145,23 @@ static int progress_hook(void *user, const char *stage, double fraction)
  * build of the C library supports is copied into tr_options; any other raises
  * NotImplementedError, so no option is ever dropped. To wire a new option: handle its
  * key here and add its name to SUPPORTED_OPTIONS below. */
-static const char *const SUPPORTED_OPTIONS[] = {"smooth", "verbose", "round_budget",
-                                                "progress", NULL};
+static const char *const SUPPORTED_OPTIONS[] = {
+    "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
+    "max_volume",
+    "holes", "regions", NULL};
+
+/* A positive finite float, or -1 with a Python error set. */
+static double positive(PyObject *value, const char *name)
+{
+  double x = PyFloat_AsDouble(value);
+  if (x == -1.0 && PyErr_Occurred())
+    return -1;
+  if (!(x > 0) || !isfinite(x)) {
+    PyErr_Format(PyExc_ValueError, "%s must be a positive finite number", name);
+    return -1;
+  }
+  return x;
+}
 
 static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
 {
@@ -194,6 +210,42 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         return -1;
       }
       opt->round_budget = (uint64_t)x;
+    } else if (!strcmp(k, "keep_surface") || !strcmp(k, "keep_steiner")) {
+      int x = PyObject_IsTrue(value);
+      if (x < 0)
+        return -1;
+      if (!strcmp(k, "keep_surface"))
+        opt->keep_surface = x;
+      else
+        opt->keep_steiner = x;
+    } else if (!strcmp(k, "quality")) {
+      /* R, or (R, D) with D a minimum dihedral angle in degrees (the library refuses a
+       * nonzero D as not supported yet) */
+      PyObject *r = value, *d = NULL;
+      if (PyTuple_Check(value) || PyList_Check(value)) {
+        if (PySequence_Size(value) != 2) {
+          PyErr_SetString(PyExc_ValueError, "quality is R or (R, D)");
+          return -1;
+        }
+        r = PySequence_GetItem(value, 0);
+        d = PySequence_GetItem(value, 1);
+        Py_XDECREF(r); /* borrowed from here on: value keeps them alive */
+        Py_XDECREF(d);
+        if (!r || !d)
+          return -1;
+      }
+      if ((opt->quality_ratio = positive(r, "quality")) < 0)
+        return -1;
+      if (d) {
+        opt->quality_min_dihedral = PyFloat_AsDouble(d);
+        if (opt->quality_min_dihedral == -1.0 && PyErr_Occurred())
+          return -1;
+      }
+    } else if (!strcmp(k, "max_volume")) {
+      if ((opt->max_volume = positive(value, "max_volume")) < 0)
+        return -1;
+    } else if (!strcmp(k, "holes") || !strcmp(k, "regions")) {
+      /* added to the PLC by py_tetrahedralize (add_points) */
     } else {
       PyErr_Format(PyExc_NotImplementedError,
                    "tetrahedralize(%s=...): the tetrec C library (version %s) has no such "
@@ -236,6 +288,41 @@ static PyObject *stats_dict(const tr_stats *s)
     return NULL;
   }
   Py_DECREF(stages);
+  /* the rows added after the paper's Table 14: counts, then measures */
+  const struct {
+    const char *name;
+    uint64_t value;
+  } counts[] = {{"facets_recovered_by_cavity", s->facets_recovered_by_cavity},
+                {"steiner_on_edges", s->steiner_on_edges},
+                {"steiner_on_facets", s->steiner_on_facets},
+                {"steiner_interior", s->steiner_interior},
+                {"steiner_removed", s->steiner_removed},
+                {"steiner_relocated", s->steiner_relocated},
+                {"hole_points", s->hole_points},
+                {"region_points", s->region_points},
+                {"cavities", s->cavities},
+                {"inclusions", s->inclusions},
+                {"points_added_for_quality", s->points_added_for_quality},
+                {"tets_dihedral_below_5", s->tets_dihedral_below_5},
+                {"tets_dihedral_below_10", s->tets_dihedral_below_10}};
+  const struct {
+    const char *name;
+    double value;
+  } reals[] = {{"min_dihedral", s->min_dihedral},
+               {"max_dihedral", s->max_dihedral},
+               {"max_radius_edge", s->max_radius_edge},
+               {"double_deviation", s->double_deviation}};
+  size_t nc = sizeof counts / sizeof *counts, nr = sizeof reals / sizeof *reals;
+  for (size_t i = 0; i < nc + nr; i++) {
+    PyObject *x = i < nc ? PyLong_FromUnsignedLongLong((unsigned long long)counts[i].value)
+                         : PyFloat_FromDouble(reals[i - nc].value);
+    if (!x || PyDict_SetItemString(d, i < nc ? counts[i].name : reals[i - nc].name, x) < 0) {
+      Py_XDECREF(x);
+      Py_DECREF(d);
+      return NULL;
+    }
+    Py_DECREF(x);
+  }
   return d;
 }
 
@@ -299,6 +386,44 @@ static tr_plc *build_plc(PyObject *pts_obj, PyObject *tri_obj, PyObject *mark_ob
   return plc;
 }
 
+/* Hole points (rows x y z, width 3) or region points (rows x y z attribute max_volume,
+ * width 5) into plc; rows NULL: none. -1 with a Python error set on failure. */
+static int add_points(tr_plc *plc, PyObject *rows, int width)
+{
+  if (!rows || rows == Py_None)
+    return 0;
+  PyArrayObject *a =
+      (PyArrayObject *)PyArray_FROMANY(rows, NPY_FLOAT64, 2, 2, NPY_ARRAY_IN_ARRAY);
+  if (!a)
+    return -1;
+  if (PyArray_DIM(a, 1) != width) {
+    PyErr_Format(PyExc_ValueError, "%s: rows of %d numbers (%s)",
+                 width == 3 ? "holes" : "regions", width,
+                 width == 3 ? "x, y, z" : "x, y, z, attribute, max_volume");
+    Py_DECREF(a);
+    return -1;
+  }
+  const double *x = (const double *)PyArray_DATA(a);
+  tr_status st = TR_OK;
+  for (npy_intp i = 0; i < PyArray_DIM(a, 0) && st == TR_OK; i++) {
+    const double *r = x + (size_t)width * (size_t)i;
+    if (width == 3)
+      st = tr_plc_add_hole(plc, r[0], r[1], r[2]);
+    else if (!(r[3] >= -2147483648.0 && r[3] <= 2147483647.0) || r[3] != floor(r[3])) {
+      Py_DECREF(a);
+      PyErr_Format(PyExc_ValueError, "regions: attribute %g is not a 32-bit integer", r[3]);
+      return -1;
+    } else
+      st = tr_plc_add_region(plc, r[0], r[1], r[2], (int32_t)r[3], r[4]);
+  }
+  Py_DECREF(a);
+  if (st != TR_OK) {
+    tetrec_py_raise(st);
+    return -1;
+  }
+  return 0;
+}
+
 /* tetrahedralize(points float64 (n,3), triangles uint32 (m,3), markers int32 (m,) or None,
  * options dict or None) -> (CMesh, stats dict) */
 static PyObject *py_tetrahedralize(PyObject *Py_UNUSED(mod), PyObject *args)
@@ -313,6 +438,11 @@ static PyObject *py_tetrahedralize(PyObject *Py_UNUSED(mod), PyObject *args)
   tr_plc *plc = build_plc(pts_obj, tri_obj, mark_obj);
   if (!plc)
     return NULL;
+  if (opts != Py_None && (add_points(plc, PyDict_GetItemString(opts, "holes"), 3) < 0 ||
+                          add_points(plc, PyDict_GetItemString(opts, "regions"), 5) < 0)) {
+    tr_plc_destroy(plc);
+    return NULL;
+  }
   tr_mesh *mesh = NULL;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);

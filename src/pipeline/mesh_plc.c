@@ -105,6 +105,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   double t0 = tr_pipeline_now();
   tr_options opt;
   read_options(optin, &opt);
+  if (opt.keep_steiner)
+    flags |= TR_PIPE_KEEP_STEINER;
   tr_stats full, *stats = &full;
   memset(&full, 0, sizeof full);
   if (out)
