@@ -198,6 +198,15 @@ static inline int tr_cmp_face_key(const void *pa, const void *pb)
   return 0;
 }
 
+/* qsort / bsearch order of edge keys (two sorted vertex ids): lexicographic. */
+static inline int tr_cmp_edge_key(const void *pa, const void *pb)
+{
+  const uint32_t *a = (const uint32_t *)pa, *b = (const uint32_t *)pb;
+  if (a[0] != b[0])
+    return a[0] < b[0] ? -1 : 1;
+  return a[1] < b[1] ? -1 : a[1] > b[1];
+}
+
 /* A fixed hash of a vertex triple (sort it first where orientation must not matter): the
  * face tables take their slot from its high bits, so no run depends on addresses. */
 static inline uint64_t tr_hash3(const uint32_t k[3])

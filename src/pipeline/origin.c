@@ -49,24 +49,13 @@ tr_status tr_pipeline_origins(const struct tr_mesh *m, uint32_t npoints,
   return TR_OK;
 }
 
-/* Binary search of the sorted unique edges (2 per edge, a < b). */
+/* The index of {a,b} in the sorted unique edges (2 per edge, a < b), UINT32_MAX if
+ * absent. */
 static uint32_t edge_index(const uint32_t *edges, uint32_t ne, uint32_t a, uint32_t b)
 {
-  if (a > b) {
-    uint32_t t = a;
-    a = b;
-    b = t;
-  }
-  uint32_t lo = 0, hi = ne;
-  while (lo < hi) {
-    uint32_t mid = lo + (hi - lo) / 2;
-    const uint32_t *e = edges + 2 * (size_t)mid;
-    if (e[0] < a || (e[0] == a && e[1] < b))
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  return lo < ne && edges[2 * (size_t)lo] == a && edges[2 * (size_t)lo + 1] == b ? lo : UINT32_MAX;
+  uint32_t key[2] = {a < b ? a : b, a < b ? b : a};
+  const uint32_t *hit = bsearch(key, edges, ne, 2 * sizeof *edges, tr_cmp_edge_key);
+  return hit ? (uint32_t)((hit - edges) / 2) : UINT32_MAX;
 }
 
 tr_status tr_pipeline_origins_extend(const struct tr_mesh *m, const struct tr_plc *plc,

@@ -15,14 +15,6 @@ double tr_pipeline_now(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static int cmp_pair(const void *pa, const void *pb)
-{
-  const uint32_t *a = pa, *b = pb;
-  if (a[0] != b[0])
-    return a[0] < b[0] ? -1 : 1;
-  return a[1] < b[1] ? -1 : a[1] > b[1];
-}
-
 tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t *n,
                             uint32_t *nopen, uint32_t *nmulti)
 {
@@ -46,7 +38,7 @@ tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t
     e[3 * i + 1] = a < b ? b : a;
     e[3 * i + 2] = i < nt;
   }
-  qsort(e, ne, 3 * sizeof *e, cmp_pair);
+  qsort(e, ne, 3 * sizeof *e, tr_cmp_edge_key);
   size_t j = 0;
   for (size_t i = 0; i < ne;) {
     size_t k = i;
@@ -121,11 +113,11 @@ static tr_status recover_none(struct tr_mesh *m, const struct tr_plc *plc,
     }
   }
   qsort(f, n, sizeof *f, tr_cmp_face_key);
-  qsort(el, nel, 2 * sizeof *el, cmp_pair);
+  qsort(el, nel, 2 * sizeof *el, tr_cmp_edge_key);
   uint64_t missing_e = 0, missing_f = 0;
   uint32_t first_e = TR_NONE, first_f = TR_NONE;
   for (uint32_t i = 0; i < ne; i++)
-    if (!bsearch(edges + 2 * (size_t)i, el, nel, 2 * sizeof *el, cmp_pair)) {
+    if (!bsearch(edges + 2 * (size_t)i, el, nel, 2 * sizeof *el, tr_cmp_edge_key)) {
       if (!missing_e++)
         first_e = i;
     }
