@@ -277,7 +277,7 @@ tr_status tr_plc_write(const tr_plc *plc, const char *path);
  * rationals num/den in the .node file. Tets carry their region (Medit reference, .ele
  * attribute, VTU/VTK "region" cell data, Gmsh physical tag). The faces written are those
  * of tr_mesh_boundary_faces with their markers (Medit triangle references, .face
- * markers, VTU triangle cells after the tets with "marker" cell data, Gmsh physical
+ * markers, VTU and VTK triangle cells after the tets with "marker" cell data, Gmsh physical
  * tags), plus, for an open input meshed within its convex hull, the hull faces with
  * marker 0; a tr_delaunay mesh writes its hull faces with marker 1. */
 tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact);

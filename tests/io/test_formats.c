@@ -116,11 +116,26 @@ static void t_msh_mesh(void)
   size_t len;
   if (tr_io_load(path("dm.vtk"), &buf, &len) == TR_OK) {
     char want[64];
-    snprintf(want, sizeof want, "CELLS %u %u\n", nt, 5 * nt);
+    /* the tets, then the 12 hull faces with their marker (1 for a tr_delaunay mesh) */
+    snprintf(want, sizeof want, "CELLS %u %u\n", nt + 12, 5 * nt + 4 * 12);
     EXPECT(strstr(buf, want) != NULL, "vtk: no '%s'", want);
-    snprintf(want, sizeof want, "CELL_TYPES %u\n10\n", nt);
+    snprintf(want, sizeof want, "CELL_TYPES %u\n10\n", nt + 12);
     EXPECT(strstr(buf, want) != NULL, "vtk: no '%s'", want);
     EXPECT(strstr(buf, "SCALARS region int 1") != NULL, "vtk: region cell data");
+    const char *mk = strstr(buf, "SCALARS marker int 1\nLOOKUP_TABLE default\n");
+    EXPECT(mk != NULL, "vtk: marker cell data");
+    if (mk) {
+      mk = strchr(strchr(mk, '\n') + 1, '\n') + 1;
+      uint32_t ones = 0, zeros = 0;
+      for (uint32_t c = 0; c < nt + 12; c++, mk = strchr(mk, '\n') + 1) {
+        if (c < nt)
+          zeros += mk[0] == '0';
+        else
+          ones += mk[0] == '1';
+      }
+      EXPECT(zeros == nt && ones == 12, "vtk: markers %u zeros (tets), %u ones (faces)", zeros,
+             ones);
+    }
     free(buf);
   }
   tr_plc_clear(&ref);
