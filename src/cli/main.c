@@ -117,6 +117,10 @@ static const struct option {
      "points refinement may add before it stops with exit 8\n"
      "(default: 100 per input point + 100,000, + 20 per V of the\n"
      "domain's volume with --max-volume)"},
+    {"--progress", NULL, C_MESH,
+     "a progress line (stage, share of stages done) on stderr from\n"
+     "the start; without it the line shows when stderr is a\n"
+     "terminal and the run takes over a second"},
     {"--strict-doubles", NULL, C_MESH,
      "fail (exit 9) when a written double lies farther than\n"
      "2^-40 of the bounding box diagonal from the edge or facet\n"
@@ -129,7 +133,7 @@ typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
   unsigned cmd_bit;
   int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
-  int keep_surface, keep_steiner;
+  int keep_surface, keep_steiner, progress;
   int msh_version; /* 41 or 22 */
   double quality, quality_dih, max_volume; /* 0: off */
   uint64_t refine_budget;                  /* 0: the default */
@@ -155,6 +159,33 @@ static double now(void)
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The progress line of `tetrec mesh` (tr_options.progress): the stage and the share of
+ * stages done, rewritten in place on stderr. Shown when stderr is a terminal and the run
+ * has taken over a second, or from the start with --progress. */
+typedef struct {
+  double t0, after; /* start, and the seconds before the line shows */
+  int shown;
+} progress_line;
+
+static int stage_progress(void *user, const char *stage, double fraction)
+{
+  /* tr_mesh_plc's stages in their order (include/tetrec.h, tr_options.progress) */
+  static const char *const order[] = {"validation",     "smoothing", "delaunay", "edge_recovery",
+                                      "facet_recovery", "coloring",  "rounding"};
+  const int n = (int)(sizeof order / sizeof *order);
+  progress_line *p = user;
+  if (now() - p->t0 < p->after)
+    return 0;
+  int k = 0;
+  while (k < n && strcmp(order[k], stage))
+    k++;
+  double done = k < n ? 100.0 * (k + fraction) / n : 0;
+  fprintf(stderr, "\rtetrec: %-16s %3.0f%%", stage, done);
+  fflush(stderr);
+  p->shown = 1;
+  return 0;
 }
 
 /* IN without its extension, plus ".1". */
@@ -219,6 +250,8 @@ static tr_status set_option(args *a, const char *name, const char *v)
     a->no_smooth = 1;
   else if (!strcmp(name, "--strict-doubles"))
     a->strict_doubles = 1;
+  else if (!strcmp(name, "--progress"))
+    a->progress = 1;
   else if (!strcmp(name, "--quality")) {
     /* "R" or "R/D", finite numbers and nothing else */
     char *end;
@@ -484,11 +517,18 @@ static int cmd_mesh(const args *a)
    * warning, not a failure: the exact points are written. */
   tr_mesh *mesh = NULL;
   progress("meshing", a->in);
+  progress_line line = {now(), a->progress ? 0.0 : 1.0, 0};
+  if (a->progress || progress_on) {
+    opt.progress = stage_progress;
+    opt.progress_user = &line;
+  }
   unsigned flags = (a->exact ? TR_PIPE_KEEP_EXACT : 0) |
                    (a->keep_steiner ? TR_PIPE_KEEP_STEINER : 0);
   double t_read = stats.stage_seconds[TR_STAGE_READ];
   s = tr_mesh_plc_flags(plc, &opt, &mesh, &stats, NULL, flags);
   stats.stage_seconds[TR_STAGE_READ] = t_read; /* the pipeline filled the others */
+  if (line.shown)
+    fputc('\n', stderr);
   if (s == TR_OK && !a->exact) {
     uint32_t v;
     s = tr_mesh_double_deviation(mesh, plc, &stats.double_deviation, &v);

@@ -238,4 +238,18 @@ with tempfile.TemporaryDirectory() as d:
     rc, _, err = run(["mesh", "-q", "c.off", "-o", "near.mesh", "--strict-doubles"], d)
     expect(rc == 0, f"--strict-doubles on a model at the origin: {rc} {err}")
 
+    # the progress line: every stage of the pipeline rewritten in place on stderr, ending
+    # at 100% with a newline; without --progress and with stderr not a terminal, none
+    # (bytes: text mode would turn the carriage returns into newlines)
+    def run_bytes(args):
+        p = subprocess.run([tetrec] + args, capture_output=True, cwd=d)
+        return p.returncode, p.stderr.decode()
+    rc, err = run_bytes(["mesh", "c.off", "-o", "p.mesh", "--progress"])
+    line = err.split("\n")[1] if err.count("\n") > 1 else ""
+    stages = [x.split()[1] for x in line.split("\r") if x.startswith("tetrec: ")]
+    expect(rc == 0 and stages[:1] == ["validation"] and "delaunay" in stages and
+           "rounding" in stages and line.endswith("100%"), f"--progress: {rc} {err!r}")
+    rc, err = run_bytes(["mesh", "c.off", "-o", "p.mesh"])
+    expect(rc == 0 and "\r" not in err, f"a progress line without a terminal: {err!r}")
+
 sys.exit(1 if fails else 0)
