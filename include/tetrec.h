@@ -106,8 +106,9 @@ tr_status tr_plc_add_segments(tr_plc *plc, const uint32_t *segs, uint32_t nsegs)
 tr_status tr_plc_add_hole(tr_plc *plc, double x, double y, double z);
 /* A region point: every tet of the cell that contains it gets region id `attribute` in
  * the output (cells without a region point keep tetrec's numbering 1..k by smallest
- * tet). max_volume > 0 is a volume bound for refinement, which tetrec does not do yet:
- * it is stored and warned about. A region point outside the domain or on a facet is an
+ * tet). max_volume > 0 bounds the volume of every tet of that cell: quality refinement
+ * (src/refine) runs to meet it, with tr_options.max_volume the smaller bound where both
+ * are set. A region point outside the domain or on a facet is an
  * error. Hole and region points are kept by tr_plc_set. */
 tr_status tr_plc_add_region(tr_plc *plc, double x, double y, double z, int32_t attribute,
                             double max_volume);

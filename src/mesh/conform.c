@@ -475,7 +475,9 @@ static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *
   if (volume6 || manifold || !(flags & TR_CONF_OPEN)) {
     if (volume6)
       mpq_set(want, volume6);
-    else if (manifold)
+    else if (manifold && plc->ninclusions == 0 && plc->nholes == 0)
+      /* the triangle sum; an inclusion (an outward shell inside the domain) or a hole
+       * point's cell make it differ from the domain's volume */
       st = tr_input_volume6(plc, want);
     else
       st = tr_input_domain_volume6(plc, want);

@@ -14,8 +14,8 @@
  *     triangles (the volume the surface encloses; a cavity shell oriented inward counts
  *     negatively); otherwise (internal facets, cracks) the domain volume of the input's
  *     cell analysis (tr_input_domain_volume6), except under TR_CONF_OPEN (no volume
- *     check: the domain is the convex hull). Nested outward shells need the caller's
- *     volume6: their triangle sum is not the domain's volume. */
+ *     check: the domain is the convex hull); the cell analysis too when the validated
+ *     input has inclusions or hole points, whose triangle sum is not the domain's volume. */
 #ifndef TR_MESH_CONFORM_H
 #define TR_MESH_CONFORM_H
 

@@ -136,10 +136,6 @@ tr_status tr_outer_points(struct tr_mesh *m, const struct tr_plc *plc, int verbo
     }
     if (!named[r])
       named[r] = j + 1;
-    if (plc->region_maxvol[j] > 0 && verbose >= 1)
-      fprintf(stderr,
-              "tetrec: warning: region point %u: maximum volume %.17g not supported yet (no "
-              "refinement): the region is meshed without it\n", j, plc->region_maxvol[j]);
   }
   if (st != TR_OK)
     goto done;

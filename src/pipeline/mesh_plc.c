@@ -204,8 +204,11 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK)
     st = suppress(m, &sub, p, &opt, keep_hull, flags, stats, vkind);
   /* Quality refinement (off by default): inner tets only, before the flips and rounding. */
+  int region_bounds = 0; /* a region point with a maximum volume */
+  for (uint32_t i = 0; p && i < p->nregions; i++)
+    region_bounds |= p->region_maxvol[i] > 0;
   if (st == TR_OK && (opt.quality_ratio != 0 || opt.max_volume != 0 ||
-                      opt.quality_min_dihedral != 0)) {
+                      opt.quality_min_dihedral != 0 || region_bounds)) {
     uint32_t nv0 = m->nv;
     st = tr_refine_stage(m, p, &sub, &opt, keep_hull, &stats->points_added_for_quality);
     if (st == TR_OK)

@@ -23,12 +23,27 @@ static int too_big(const rf_ctx *c, uint32_t t)
 {
   const struct tr_mesh *m = c->m;
   const uint32_t *v = m->tv + 4 * (size_t)t;
-  if (!(c->par.max_volume > 0))
+  double bound = c->par.max_volume;
+  if (c->par.nregion_bounds && m->region) {
+    /* the region's own bound, by binary search of the sorted ids */
+    uint32_t r = m->region[t], lo = 0, hi = c->par.nregion_bounds;
+    while (lo < hi) {
+      uint32_t mid = lo + (hi - lo) / 2;
+      if (c->par.region_id[mid] < r)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    if (lo < c->par.nregion_bounds && c->par.region_id[lo] == r &&
+        (!(bound > 0) || c->par.region_max_volume[lo] < bound))
+      bound = c->par.region_max_volume[lo];
+  }
+  if (!(bound > 0))
     return 0;
   tr_point p[4];
   for (int i = 0; i < 4; i++)
     p[i] = tr_mesh_point(m, v[i]);
-  return rf_volume_above(&p[0], &p[1], &p[2], &p[3], c->par.max_volume);
+  return rf_volume_above(&p[0], &p[1], &p[2], &p[3], bound);
 }
 
 static int tet_bad(const rf_ctx *c, uint32_t t)

@@ -36,6 +36,11 @@
 typedef struct tr_refine_params {
   double ratio;        /* radius-edge bound R (> 0), 0: no ratio criterion */
   double max_volume;   /* volume bound, 0: none */
+  /* per-region volume bounds: region ids (sorted, distinct) and their bounds (> 0); a
+   * tet of such a region is bounded by the smaller of its region's and max_volume */
+  const uint32_t *region_id;
+  const double *region_max_volume;
+  uint32_t nregion_bounds;
   uint64_t budget;     /* points the stage may add; 0: tr_refine_default_budget */
   int verbose;
 } tr_refine_params;

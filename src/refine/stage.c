@@ -1,6 +1,7 @@
 /* The refinement stage as the pipeline calls it: option checks, the default budget, the
  * statistics rows (refine.h, quality.h). */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "refine/quality.h"
@@ -19,6 +20,17 @@ tr_status tr_refine_check_options(const tr_options *opt)
   if (opt->max_volume != 0 && !(opt->max_volume > 0 && isfinite(opt->max_volume)))
     return tr_error(TR_ERR_USAGE, "maximum volume %g: it must be positive", opt->max_volume);
   return TR_OK;
+}
+
+typedef struct {
+  uint32_t id;
+  double bound;
+} region_bound;
+
+static int cmp_region_bound(const void *pa, const void *pb)
+{
+  const region_bound *a = pa, *b = pb;
+  return a->id < b->id ? -1 : a->id > b->id;
 }
 
 tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
@@ -42,11 +54,47 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   par.ratio = opt->quality_ratio;
   par.max_volume = opt->max_volume;
   par.verbose = opt->verbose;
+  /* Per-region bounds of the region points (src/outer/points.c gave each one's cell the
+   * attribute as its region id), sorted by id, the smallest where an id repeats; the
+   * smallest bound of all sizes the default budget. */
+  region_bound *rb = malloc(sizeof *rb * (plc->nregions ? plc->nregions : 1));
+  uint32_t *id = malloc(sizeof *id * (plc->nregions ? plc->nregions : 1));
+  double *bound = malloc(sizeof *bound * (plc->nregions ? plc->nregions : 1));
+  if (!rb || !id || !bound) {
+    free(rb);
+    free(id);
+    free(bound);
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u region bounds", plc->nregions);
+  }
+  uint32_t nb = 0, n = 0;
+  double least = opt->max_volume;
+  for (uint32_t i = 0; i < plc->nregions; i++)
+    if (plc->region_maxvol[i] > 0) {
+      rb[nb].id = (uint32_t)plc->region_attr[i];
+      rb[nb++].bound = plc->region_maxvol[i];
+      if (!(least > 0) || plc->region_maxvol[i] < least)
+        least = plc->region_maxvol[i];
+    }
+  qsort(rb, nb, sizeof *rb, cmp_region_bound);
+  for (uint32_t i = 0; i < nb; i++)
+    if (n && id[n - 1] == rb[i].id) {
+      if (rb[i].bound < bound[n - 1])
+        bound[n - 1] = rb[i].bound;
+    } else {
+      id[n] = rb[i].id;
+      bound[n++] = rb[i].bound;
+    }
+  free(rb);
+  par.region_id = id;
+  par.region_max_volume = bound;
+  par.nregion_bounds = n;
   par.budget = opt->refine_budget ? opt->refine_budget
-                                  : tr_refine_default_budget(plc->npoints, vol, opt->max_volume);
+                                  : tr_refine_default_budget(plc->npoints, vol, least);
   tr_refine_stats rs;
   tr_status s = tr_refine(m, plc, sub, &par, &rs);
   *points = rs.points;
+  free(id);
+  free(bound);
   return s;
 }
 

@@ -255,6 +255,52 @@ static void thin_slab(void)
   tr_plc_destroy(plc);
 }
 
+/* The tets of m (of region `region`, or all when it is UINT32_MAX) whose exact volume is
+ * above V. */
+static uint32_t count_over(const tr_mesh *m, double V, uint32_t region, uint32_t *counted)
+{
+  mpq_t v6, lim, x;
+  mpq_inits(v6, lim, x, NULL);
+  mpq_set_d(lim, V);
+  mpq_set_ui(x, 6, 1);
+  mpq_mul(lim, lim, x);
+  uint32_t over = 0;
+  *counted = 0;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t) || (region != UINT32_MAX && m->region[t] != region))
+      continue;
+    (*counted)++;
+    mpq_t a[3], b[3], c[3], d[3];
+    for (int i = 0; i < 3; i++)
+      mpq_inits(a[i], b[i], c[i], d[i], NULL);
+    coords(m, m->tv[4 * t], a);
+    coords(m, m->tv[4 * t + 1], b);
+    coords(m, m->tv[4 * t + 2], c);
+    coords(m, m->tv[4 * t + 3], d);
+    for (int i = 0; i < 3; i++) {
+      mpq_sub(b[i], b[i], a[i]);
+      mpq_sub(c[i], c[i], a[i]);
+      mpq_sub(d[i], d[i], a[i]);
+    }
+    /* det[b; c; d] */
+    mpq_set_ui(v6, 0, 1);
+    static const int P[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
+    for (int k = 0; k < 6; k++) {
+      mpq_mul(x, b[P[k][0]], c[P[k][1]]);
+      mpq_mul(x, x, d[P[k][2]]);
+      if (k < 3)
+        mpq_add(v6, v6, x);
+      else
+        mpq_sub(v6, v6, x);
+    }
+    over += mpq_cmp(v6, lim) > 0;
+    for (int i = 0; i < 3; i++)
+      mpq_clears(a[i], b[i], c[i], d[i], NULL);
+  }
+  mpq_clears(v6, lim, x, NULL);
+  return over;
+}
+
 /* -a V: the exact volume of every tet is at most V. */
 static void max_volume(void)
 {
@@ -263,50 +309,53 @@ static void max_volume(void)
   tr_stats st;
   tr_mesh *m = mesh("max_volume", plc, 0, V, TR_CHK_TOPOLOGY, &used, &st);
   if (m) {
-    mpq_t v6, lim, x;
-    mpq_inits(v6, lim, x, NULL);
-    mpq_set_d(lim, V);
-    mpq_set_ui(x, 6, 1);
-    mpq_mul(lim, lim, x);
-    uint32_t over = 0;
-    for (uint32_t t = 0; t < m->nt; t++) {
-      if (!tr_tet_is_real(m, t))
-        continue;
-      mpq_t a[3], b[3], c[3], d[3];
-      for (int i = 0; i < 3; i++)
-        mpq_inits(a[i], b[i], c[i], d[i], NULL);
-      coords(m, m->tv[4 * t], a);
-      coords(m, m->tv[4 * t + 1], b);
-      coords(m, m->tv[4 * t + 2], c);
-      coords(m, m->tv[4 * t + 3], d);
-      for (int i = 0; i < 3; i++) {
-        mpq_sub(b[i], b[i], a[i]);
-        mpq_sub(c[i], c[i], a[i]);
-        mpq_sub(d[i], d[i], a[i]);
-      }
-      /* det[b; c; d] */
-      mpq_set_ui(v6, 0, 1);
-      static const int P[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
-      for (int k = 0; k < 6; k++) {
-        mpq_mul(x, b[P[k][0]], c[P[k][1]]);
-        mpq_mul(x, x, d[P[k][2]]);
-        if (k < 3)
-          mpq_add(v6, v6, x);
-        else
-          mpq_sub(v6, v6, x);
-      }
-      over += mpq_cmp(v6, lim) > 0;
-      for (int i = 0; i < 3; i++)
-        mpq_clears(a[i], b[i], c[i], d[i], NULL);
-    }
+    uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
     EXPECT(over == 0, "max_volume: %u tets have a volume above %g", over, V);
-    EXPECT(tr_mesh_num_tets(m) >= 100, "max_volume: %u tets cannot all be under 1/100",
-           tr_mesh_num_tets(m));
-    mpq_clears(v6, lim, x, NULL);
+    EXPECT(n >= 100, "max_volume: %u tets cannot all be under 1/100", n);
   }
   tr_mesh_destroy(m);
   tr_plc_destroy(used);
   tr_plc_destroy(plc);
+}
+
+/* A region point's maximum volume bounds the tets of its cell only: a box [0,1]^3 with
+ * an inclusion [1/4,3/4]^3 whose region point asks for 1/500, the outer region none. */
+static void region_max_volume(void)
+{
+  const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, lo2[3] = {0.25, 0.25, 0.25},
+               hi2[3] = {0.75, 0.75, 0.75}, V = 0.002;
+  tr_plc *outer = box_surface(lo, hi), *inner = box_surface(lo2, hi2), *plc = NULL, *used = NULL;
+  uint32_t n1 = outer->npoints, np = n1 + inner->npoints, nt = outer->ntris + inner->ntris;
+  double *xyz = malloc(sizeof *xyz * 3 * np);
+  uint32_t *tris = malloc(sizeof *tris * 3 * nt);
+  memcpy(xyz, outer->xyz, sizeof *xyz * 3 * n1);
+  memcpy(xyz + 3 * n1, inner->xyz, sizeof *xyz * 3 * inner->npoints);
+  memcpy(tris, outer->tris, sizeof *tris * 3 * outer->ntris);
+  /* box_surface faces inward: the inner box reversed faces outward, an inclusion */
+  for (uint32_t i = 0; i < 3 * inner->ntris; i++)
+    tris[3 * outer->ntris + i] = inner->tris[3 * (i / 3) + 2 - i % 3] + n1;
+  EXPECT(tr_plc_create(&plc) == TR_OK && tr_plc_set(plc, xyz, np, tris, nt, NULL) == TR_OK &&
+             tr_plc_add_region(plc, 0.5, 0.5, 0.5, 5, V) == TR_OK &&
+             tr_plc_add_region(plc, 0.1, 0.1, 0.1, 3, 0) == TR_OK,
+         "region_max_volume: building the input: %s", tr_last_error());
+  tr_stats st;
+  tr_mesh *m = mesh("region_max_volume", plc, 0, 0, TR_CHK_TOPOLOGY, &used, &st);
+  if (m) {
+    uint32_t n, over = count_over(m, V, 5, &n), nout;
+    EXPECT(over == 0, "region_max_volume: %u tets of the inner region above %g", over, V);
+    EXPECT(n >= 63, "region_max_volume: %u inner tets cannot all be under 1/500", n);
+    count_over(m, V, 3, &nout);
+    EXPECT(nout > 0 && st.points_added_for_quality > 0,
+           "region_max_volume: %u outer tets, %llu points added", nout,
+           (unsigned long long)st.points_added_for_quality);
+  }
+  tr_mesh_destroy(m);
+  tr_plc_destroy(used);
+  tr_plc_destroy(plc);
+  tr_plc_destroy(outer);
+  tr_plc_destroy(inner);
+  free(xyz);
+  free(tris);
 }
 
 /* Shapes from tests/data: each refined mesh validates and its worst radius-edge ratio
@@ -362,6 +411,8 @@ int main(int argc, char **argv)
     thin_slab();
   else if (!strcmp(c, "max_volume"))
     max_volume();
+  else if (!strcmp(c, "region_max_volume"))
+    region_max_volume();
   else if (!strcmp(c, "shapes") && argc > 2)
     shapes(argv[2]);
   else if (!strcmp(c, "determinism"))
