@@ -200,10 +200,8 @@ typedef struct tr_options {
                             are exactly the input triangles, or the call fails naming the
                             point (TetGen's -Y; implies no smoothing; default 0) */
   int strict_doubles; /* a written double farther than 2^-40 of the bounding box diagonal
-                         from the constraint its exact point lies on is TR_ERR_INVALID_MESH
-                         (default 0: a warning). Applied by the tetrec command after
-                         tr_mesh_plc with tr_mesh_double_deviation; tr_mesh_plc itself does
-                         not read it yet */
+                         from the constraint its exact point lies on makes tr_mesh_plc fail
+                         with TR_ERR_INVALID_MESH (default 0: a warning on stderr) */
   /* quality refinement (src/refine/refine.h), off unless quality_ratio or max_volume > 0 */
   double quality_ratio;        /* radius-edge bound R (e.g. 1.414), 0: off */
   double quality_min_dihedral; /* minimum dihedral target in degrees: not supported yet,

@@ -189,7 +189,7 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     markers: one int32 per triangle, carried to the boundary faces.
     holes: rows (x, y, z), each point's cell is left empty. regions: rows (x, y, z,
     attribute, max_volume), the tets of each point's cell carry the attribute in
-    .regions (a per-region max_volume > 0 is only warned about: not used yet).
+    .regions, and a max_volume > 0 bounds their volumes (quality refinement).
     keep_surface: no Steiner point on the surface, the boundary faces are exactly the
     input triangles (tetrec.Error when that cannot be done). keep_steiner: the
     recovery's Steiner points stay on the input edges and facets (by default they are

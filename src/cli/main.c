@@ -529,20 +529,7 @@ static int cmd_mesh(const args *a)
   stats.stage_seconds[TR_STAGE_READ] = t_read; /* the pipeline filled the others */
   if (line.shown)
     fputc('\n', stderr);
-  if (s == TR_OK && !a->exact) {
-    uint32_t v;
-    s = tr_mesh_double_deviation(mesh, plc, &stats.double_deviation, &v);
-    if (s == TR_OK && stats.double_deviation > 0x1p-40) {
-      if (opt.strict_doubles)
-        s = tr_error(TR_ERR_INVALID_MESH, "vertex %u is written %.3g of the bounding box "
-                     "diagonal off the edge or facet it lies on (above 2^-40; "
-                     "--strict-doubles)", v, stats.double_deviation);
-      else if (!a->quiet)
-        fprintf(stderr, "tetrec: warning: vertex %u is written %.3g of the bounding box "
-                "diagonal off the edge or facet it lies on exactly (above 2^-40; --exact "
-                "writes it exactly)\n", v, stats.double_deviation);
-    }
-  }
+  /* the deviation of the written doubles (warning or --strict-doubles): tr_mesh_plc */
   tr_plc_destroy(plc);
   if (s == TR_OK) {
     progress("writing", path);

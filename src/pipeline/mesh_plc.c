@@ -245,7 +245,21 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       fprintf(stderr,
               "tetrec: %llu Steiner points moved off their nearest double so that every "
               "tet is positive in doubles (exact positions: --exact)\n",
-              (unsigned long long)stats->rounding_repairs);
+              (unsigned long long)stats->rounding_repairs);    /* How far the written doubles lie from the constraints their exact points are on */
+    uint32_t v;
+    if (st == TR_OK)
+      st = tr_mesh_double_deviation(res, p, &stats->double_deviation, &v);
+    if (st == TR_OK && stats->double_deviation > 0x1p-40) {
+      if (opt.strict_doubles)
+        st = tr_error(TR_ERR_INVALID_MESH, "vertex %u is written %.3g of the bounding box "
+                      "diagonal off the edge or facet it lies on (above 2^-40; "
+                      "--strict-doubles, tr_options.strict_doubles)", v,
+                      stats->double_deviation);
+      else if (opt.verbose >= 1)
+        fprintf(stderr, "tetrec: warning: vertex %u is written %.3g of the bounding box "
+                "diagonal off the edge or facet it lies on exactly (above 2^-40; --exact "
+                "writes it exactly)\n", v, stats->double_deviation);
+    }
   }
   PROGRESS(TR_STAGE_ROUND, 1);
   stage[TR_STAGE_ROUND] = tr_pipeline_now() - t5;
