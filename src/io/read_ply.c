@@ -4,8 +4,9 @@
  * in the Stanford and Cyberware scans: -1 ends a strip and starts the next; triangle k of
  * a strip v0 v1 v2 ... is (vk, vk+1, vk+2) for even k and (vk+1, vk, vk+2) for odd k, so
  * the strip keeps one orientation; triangles with a repeated vertex are the joins that
- * stitch strips and are not triangles of the surface), and skip every other property and
- * element, so their types must be understood even when unused. */
+ * stitch strips and are not triangles of the surface), and a face's integer `marker`,
+ * `label` or `ref` property as its boundary marker; every other property and element is
+ * skipped, so their types must be understood even when unused. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,7 +21,8 @@ static const int tsize[] = {0, 1, 1, 2, 2, 4, 4, 4, 8};
 typedef struct {
   int type;       /* value type, or the item type of a list */
   int count_type; /* T_NONE for a scalar property */
-  int role;       /* 0 skip, 1..3 = x,y,z, 4 = face index list, 5 = strip index list */
+  int role;       /* 0 skip, 1..3 = x,y,z, 4 = face index list, 5 = strip index list,
+                     6 = face marker */
 } prop;
 
 #define MAX_PROPS 64
@@ -184,6 +186,9 @@ static tr_status read_header(tr_lex *lx, elem *el, int *nel, int *format)
       if (strcmp(e->name, "face") == 0 && p->count_type &&
           (tr_lex_is(lx, "vertex_indices") || tr_lex_is(lx, "vertex_index")))
         p->role = 4;
+      if (strcmp(e->name, "face") == 0 && !p->count_type &&
+          (tr_lex_is(lx, "marker") || tr_lex_is(lx, "label") || tr_lex_is(lx, "ref")))
+        p->role = 6;
       if (strcmp(e->name, "tristrips") == 0 && p->count_type &&
           (tr_lex_is(lx, "vertex_indices") || tr_lex_is(lx, "vertex_index")))
         p->role = 5;
@@ -285,6 +290,12 @@ static tr_status parse(reader *r, const char *buf, size_t len, tr_soup *s)
           TR_CHECK(get(r, P->type, &v, E->name));
           if (is_vertex && P->role)
             p[P->role - 1] = v;
+          if (is_face && P->role == 6) {
+            if (!(v >= INT32_MIN && v <= INT32_MAX && v == floor(v)))
+              return tr_error(TR_ERR_PARSE, "%s: face %llu: marker %g is not a 32-bit integer",
+                              r->name, (unsigned long long)i, v);
+            s->facet_marker.a[s->facet_marker.n - 1] = (uint32_t)(int32_t)v;
+          }
           continue;
         }
         double c;

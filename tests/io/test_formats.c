@@ -289,6 +289,28 @@ static void t_ply_strips(void)
     mpq_clear(vol);
     tr_plc_destroy(p);
   }
+  /* a face marker property (after the index list) reaches both triangles of each quad */
+  n = snprintf(text, sizeof text,
+               "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+               "property float z\nelement face 6\nproperty list uchar int vertex_indices\n"
+               "property int marker\nend_header\n");
+  for (int i = 0; i < 8; i++)
+    n += snprintf(text + n, sizeof text - (size_t)n, "%g %g %g\n", cube[3 * i], cube[3 * i + 1],
+                  cube[3 * i + 2]);
+  static const int quad[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                 {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+  for (int q = 0; q < 6; q++)
+    n += snprintf(text + n, sizeof text - (size_t)n, "4 %d %d %d %d %d\n", quad[q][0], quad[q][1],
+                  quad[q][2], quad[q][3], 10 + q);
+  {
+    tr_status sm;
+    struct tr_plc *pm = read_buf(tr_read_ply_buf, text, (size_t)n, &sm);
+    EXPECT(sm == TR_OK && pm && pm->ntris == 12, "ply markers: %s", tr_last_error());
+    for (uint32_t t = 0; sm == TR_OK && t < pm->ntris; t++)
+      EXPECT(pm->tri_marker && pm->tri_marker[t] == 10 + (int32_t)(t / 2),
+             "ply markers: triangle %u has marker %d", t, pm->tri_marker ? pm->tri_marker[t] : -1);
+    tr_plc_destroy(pm);
+  }
   static const char badidx[] = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                                "property float y\nproperty float z\nelement tristrips 1\n"
                                "property list int int vertex_indices\nend_header\n"
