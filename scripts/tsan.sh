@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 dir=${1:-build-tsan}
 if [ ! -f "$dir/build.ninja" ]; then
   meson setup "$dir" -Db_sanitize=thread -Db_lundef=false -Dbench=false -Dcgal=disabled \
-    -Ddefault_library=static >/dev/null
+    >/dev/null
 fi
 ninja -C "$dir" tests/api/test_threads
 # halt_on_error: any report fails the run; second_deadlock_stack for useful reports
