@@ -12,19 +12,9 @@
 #include "mesh/mesh.h"
 #include "qpoint.h"
 #include "tetrec.h"
+#include "../pipeline/texpect.h"
 
 static const char *data, *tmp;
-static int failures;
-
-#define EXPECT(cond, ...)                                                                    \
-  do {                                                                                       \
-    if (!(cond)) {                                                                           \
-      fprintf(stderr, "%s:%d: FAILED %s: ", __FILE__, __LINE__, #cond);                      \
-      fprintf(stderr, __VA_ARGS__);                                                          \
-      fputc('\n', stderr);                                                                   \
-      failures++;                                                                            \
-    }                                                                                        \
-  } while (0)
 
 static char *path(const char *name)
 {
