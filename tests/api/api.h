@@ -1,4 +1,5 @@
-/* Shared by the tests of the public API (test_api.c, api_cases.c): the counting check,
+/* Shared by the tests of the public API (test_api.c, api_cases.c, api_doubles.c): the
+ * counting check (tests/pipeline/texpect.h, one counter for the three files),
  * the inputs and the validated meshing every case starts from. */
 #ifndef TR_TESTS_API_H
 #define TR_TESTS_API_H
@@ -10,16 +11,8 @@
 #include "mesh/mesh.h"
 #include "tetrec.h"
 
-extern int api_failures;
-#define EXPECT(cond, ...)                                               \
-  do {                                                                  \
-    if (!(cond)) {                                                      \
-      fprintf(stderr, "FAIL %s:%d: ", __FILE__, __LINE__);              \
-      fprintf(stderr, __VA_ARGS__);                                     \
-      fprintf(stderr, "\n");                                            \
-      api_failures++;                                                   \
-    }                                                                   \
-  } while (0)
+#define TEXPECT_SHARED_COUNTER /* test_api.c defines it */
+#include "../pipeline/texpect.h"
 
 /* SOURCE_ROOT-relative file -> path (one static buffer). */
 const char *api_src(const char *rel);
@@ -40,5 +33,7 @@ void t_progress(void);
 void t_abi_size(void);
 void t_stage_times(void);
 void t_version(const char *want);
+/* api_doubles.c */
+void t_strict_doubles(void);
 
 #endif

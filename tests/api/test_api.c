@@ -17,7 +17,7 @@
 #include "pipeline/pipeline.h"
 
 const char *api_root;
-int api_failures;
+int failures;
 static char pathbuf[4096];
 
 const char *api_src(const char *rel)
@@ -521,6 +521,8 @@ int main(int argc, char **argv)
     t_abi_size();
   else if (!strcmp(c, "stage_times"))
     t_stage_times();
+  else if (!strcmp(c, "strict_doubles"))
+    t_strict_doubles();
   else if (!strcmp(c, "version"))
     t_version(argc > 3 ? argv[3] : NULL);
   else {
@@ -528,5 +530,5 @@ int main(int argc, char **argv)
     return 2;
   }
   tr_exact_scratch_free();
-  return api_failures != 0;
+  return failures != 0;
 }

@@ -12,18 +12,10 @@
 #include "mesh/mesh.h"
 #include "qpoint.h"
 #include "tetrec.h"
+#include "tpath.h"
 #include "../pipeline/texpect.h"
 
 static const char *data, *tmp;
-
-static char *path(const char *name)
-{
-  static char buf[4][1024];
-  static int k;
-  k = (k + 1) % 4;
-  snprintf(buf[k], sizeof buf[k], "%s/%s", tmp, name);
-  return buf[k];
-}
 
 static struct tr_plc *read_buf(tr_status (*rd)(const char *, size_t, const char *, struct tr_plc *),
                                const char *text, size_t len, tr_status *st)
@@ -51,7 +43,7 @@ static void t_msh_roundtrip(void)
   EXPECT(tr_plc_create(&p) == TR_OK, "create");
   EXPECT(tr_plc_set(p, xyz, 5, tris, 5, mark) == TR_OK, "set: %s", tr_last_error());
   for (int ver = 0; ver < 2; ver++) {
-    const char *file = path(ver ? "rt22.msh" : "rt41.msh");
+    const char *file = tpath(tmp, ver ? "rt22.msh" : "rt41.msh");
     EXPECT(tr_plc_write_ex(p, file, ver ? 22 : 41) == TR_OK, "write: %s", tr_last_error());
     struct tr_plc q;
     memset(&q, 0, sizeof q);
@@ -83,12 +75,12 @@ static void t_msh_mesh(void)
   if (!m)
     return;
   uint32_t nt = tr_mesh_num_tets(m);
-  EXPECT(tr_mesh_write(m, path("dm.mesh"), 0) == TR_OK, "%s", tr_last_error());
+  EXPECT(tr_mesh_write(m, tpath(tmp, "dm.mesh"), 0) == TR_OK, "%s", tr_last_error());
   struct tr_plc ref;
   memset(&ref, 0, sizeof ref);
-  EXPECT(tr_io_read_file(path("dm.mesh"), &ref) == TR_OK, "%s", tr_last_error());
+  EXPECT(tr_io_read_file(tpath(tmp, "dm.mesh"), &ref) == TR_OK, "%s", tr_last_error());
   for (int ver = 0; ver < 2; ver++) {
-    const char *file = path(ver ? "dm22.msh" : "dm41.msh");
+    const char *file = tpath(tmp, ver ? "dm22.msh" : "dm41.msh");
     EXPECT(tr_mesh_write_ex(m, file, 0, ver ? 22 : 41) == TR_OK, "%s", tr_last_error());
     struct tr_plc q;
     memset(&q, 0, sizeof q);
@@ -101,10 +93,10 @@ static void t_msh_mesh(void)
       EXPECT(q.tri_marker[t] == 1, "%s: triangle %u has marker %d", file, t, q.tri_marker[t]);
     tr_plc_clear(&q);
   }
-  EXPECT(tr_mesh_write(m, path("dm.vtk"), 0) == TR_OK, "%s", tr_last_error());
+  EXPECT(tr_mesh_write(m, tpath(tmp, "dm.vtk"), 0) == TR_OK, "%s", tr_last_error());
   char *buf;
   size_t len;
-  if (tr_io_load(path("dm.vtk"), &buf, &len) == TR_OK) {
+  if (tr_io_load(tpath(tmp, "dm.vtk"), &buf, &len) == TR_OK) {
     char want[64];
     /* the tets, then the 12 hull faces with their marker (1 for a tr_delaunay mesh) */
     snprintf(want, sizeof want, "CELLS %u %u\n", nt + 12, 5 * nt + 4 * 12);
@@ -330,9 +322,9 @@ static void t_out_names(void)
          "x.stl: %s", tr_last_error());
   EXPECT(tr_io_check_out_name("x.off", 0) == TR_ERR_USAGE, "a mesh is not written as .off");
   EXPECT(tr_io_check_out_name("x.off", 1) == TR_OK, "a surface is");
-  EXPECT(tr_io_check_writable(path("nodir/x.mesh")) == TR_ERR_IO, "missing directory");
-  EXPECT(tr_io_check_writable(path("probe")) == TR_OK, "TetGen base in tmp: %s", tr_last_error());
-  FILE *f = fopen(path("probe.node"), "r");
+  EXPECT(tr_io_check_writable(tpath(tmp, "nodir/x.mesh")) == TR_ERR_IO, "missing directory");
+  EXPECT(tr_io_check_writable(tpath(tmp, "probe")) == TR_OK, "TetGen base in tmp: %s", tr_last_error());
+  FILE *f = fopen(tpath(tmp, "probe.node"), "r");
   EXPECT(f == NULL, "the probe left probe.node behind");
   if (f)
     fclose(f);
@@ -342,8 +334,8 @@ static void t_out_names(void)
   static const double x[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   static const uint32_t t[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
   tr_plc_set(p, x, 4, t, 4, NULL);
-  EXPECT(tr_plc_write(p, path("w.stl")) == TR_ERR_USAGE, "tr_plc_write .stl");
-  f = fopen(path("w.stl.node"), "r");
+  EXPECT(tr_plc_write(p, tpath(tmp, "w.stl")) == TR_ERR_USAGE, "tr_plc_write .stl");
+  f = fopen(tpath(tmp, "w.stl.node"), "r");
   EXPECT(f == NULL, "w.stl.node written");
   if (f)
     fclose(f);

@@ -13,28 +13,10 @@
 #include "io/soup.h"
 #include "qpoint.h"
 #include "tetrec.h"
+#include "tpath.h"
+#include "../pipeline/texpect.h"
 
 static const char *data, *tmp;
-static int failures;
-
-#define EXPECT(cond, ...)                                                                    \
-  do {                                                                                       \
-    if (!(cond)) {                                                                           \
-      fprintf(stderr, "%s:%d: FAILED %s: ", __FILE__, __LINE__, #cond);                      \
-      fprintf(stderr, __VA_ARGS__);                                                          \
-      fputc('\n', stderr);                                                                   \
-      failures++;                                                                            \
-    }                                                                                        \
-  } while (0)
-
-static char *path(const char *dir, const char *name)
-{
-  static char buf[4][1024];
-  static int k;
-  k = (k + 1) % 4;
-  snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
-  return buf[k];
-}
 
 static struct tr_plc *read_ok(const char *file)
 {
@@ -71,7 +53,7 @@ static void t_off_variants(void)
 {
   const char *f[] = {"tet.off", "variant_coff.off", "variant_noff.off"};
   for (int i = 0; i < 3; i++) {
-    struct tr_plc *p = read_ok(path(data, f[i]));
+    struct tr_plc *p = read_ok(tpath(data, f[i]));
     expect_tet(p, f[i]);
     destroy(p);
   }
@@ -79,7 +61,7 @@ static void t_off_variants(void)
 
 static void t_off_polygons(void)
 {
-  struct tr_plc *p = read_ok(path(data, "lshape.off"));
+  struct tr_plc *p = read_ok(tpath(data, "lshape.off"));
   EXPECT(p->ntris == 5, "L-shaped 7-gon gives %u triangles (5 expected)", p->ntris);
   double sum = 0;
   for (uint32_t t = 0; t < p->ntris; t++) {
@@ -91,7 +73,7 @@ static void t_off_polygons(void)
   EXPECT(sum == 12, "triangles cover twice-area %g (12 expected)", sum);
   destroy(p);
   p = calloc(1, sizeof *p);
-  tr_status s = tr_io_read_file(path(data, "../../examples/data/cube.off"), p);
+  tr_status s = tr_io_read_file(tpath(data, "../../examples/data/cube.off"), p);
   EXPECT(s == TR_OK && p->ntris == 12, "cube of 6 quads: %s, %u triangles", tr_last_error(),
          p->ntris);
   if (s == TR_OK) {
@@ -105,7 +87,7 @@ static void t_off_polygons(void)
 
 static void t_stl(void)
 {
-  struct tr_plc *p = read_ok(path(data, "tet_ascii.stl"));
+  struct tr_plc *p = read_ok(tpath(data, "tet_ascii.stl"));
   /* First-occurrence order: (0,0,0) (0,1,0) (1,0,0) (0,0,1); -0 merged with 0. */
   static const double xyz[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1};
   static const uint32_t tris[12] = {0, 1, 2, 0, 2, 3, 0, 3, 1, 2, 1, 3};
@@ -139,7 +121,7 @@ static void t_stl(void)
 
 static void t_obj(void)
 {
-  struct tr_plc *p = read_ok(path(data, "forms.obj"));
+  struct tr_plc *p = read_ok(tpath(data, "forms.obj"));
   EXPECT(p->npoints == 8 && p->ntris == 12, "OBJ: %u points %u triangles (8, 12)", p->npoints,
          p->ntris);
   for (uint32_t t = 0; t < p->ntris; t++)
@@ -164,7 +146,7 @@ static size_t put(unsigned char *b, size_t at, const void *x, int n, int big)
 
 static void t_ply(void)
 {
-  struct tr_plc *p = read_ok(path(data, "tet_ascii.ply"));
+  struct tr_plc *p = read_ok(tpath(data, "tet_ascii.ply"));
   expect_tet(p, "ascii PLY");
   destroy(p);
   for (int big = 0; big < 2; big++) {
@@ -210,7 +192,7 @@ static void t_ply(void)
 
 static void t_medit(void)
 {
-  struct tr_plc *p = read_ok(path(data, "tet.mesh"));
+  struct tr_plc *p = read_ok(tpath(data, "tet.mesh"));
   EXPECT(p->npoints == 4 && p->ntris == 4 && p->ntets == 1, "Medit: %u %u %u", p->npoints,
          p->ntris, p->ntets);
   if (p->ntris == 4) {
@@ -225,23 +207,23 @@ static void t_medit(void)
 
 static void t_tetgen(void)
 {
-  struct tr_plc *p = read_ok(path(data, "tet.node"));
+  struct tr_plc *p = read_ok(tpath(data, "tet.node"));
   EXPECT(p->npoints == 4 && p->ntris == 0, ".node: %u points", p->npoints);
   if (p->npoints == 4)
     EXPECT(p->xyz[11] == 1.0 / 3.0, "1/3 must read as the nearest double, got %.17g",
            p->xyz[11]);
   destroy(p);
-  p = read_ok(path(data, "tet.smesh"));
+  p = read_ok(tpath(data, "tet.smesh"));
   expect_tet(p, ".smesh");
   for (uint32_t t = 0; t < p->ntris; t++)
     EXPECT(p->tri_marker[t] == 5 + (int)t, ".smesh marker %d", p->tri_marker[t]);
   destroy(p);
-  p = read_ok(path(data, "cube_facets.poly"));
+  p = read_ok(tpath(data, "cube_facets.poly"));
   EXPECT(p->npoints == 8 && p->ntris == 12, ".poly with .node: %u points %u triangles",
          p->npoints, p->ntris);
   EXPECT(p->ntris == 12 && p->tri_marker[11] == 6, ".poly facet markers");
   destroy(p);
-  p = read_ok(path(data, "frame.poly"));
+  p = read_ok(tpath(data, "frame.poly"));
   EXPECT(p->ntris == 8, "square with a square hole: %u triangles (8 expected)", p->ntris);
   double sum = 0;
   for (uint32_t t = 0; t < p->ntris; t++) {
@@ -272,9 +254,9 @@ static void t_roundtrip(void)
   EXPECT(tr_plc_set(p, xyz, 4, tris, 4, mark) == TR_OK, "set: %s", tr_last_error());
   const char *outs[] = {"rt.mesh", "rt.off", "rt.node"};
   for (int i = 0; i < 3; i++) {
-    tr_status s = tr_plc_write(p, path(tmp, outs[i]));
+    tr_status s = tr_plc_write(p, tpath(tmp, outs[i]));
     EXPECT(s == TR_OK, "writing %s: %s", outs[i], tr_last_error());
-    struct tr_plc *q = read_ok(path(tmp, outs[i]));
+    struct tr_plc *q = read_ok(tpath(tmp, outs[i]));
     EXPECT(q->npoints == 4 && memcmp(q->xyz, xyz, sizeof xyz) == 0,
            "%s: coordinates not bitwise equal after the round trip", outs[i]);
     if (i < 2)
@@ -285,10 +267,10 @@ static void t_roundtrip(void)
              "%s: markers differ", outs[i]);
     destroy(q);
   }
-  EXPECT(tr_plc_write(p, path(tmp, "rt.vtu")) == TR_OK, "vtu: %s", tr_last_error());
+  EXPECT(tr_plc_write(p, tpath(tmp, "rt.vtu")) == TR_OK, "vtu: %s", tr_last_error());
   char *buf;
   size_t len;
-  if (tr_io_load(path(tmp, "rt.vtu"), &buf, &len) == TR_OK) {
+  if (tr_io_load(tpath(tmp, "rt.vtu"), &buf, &len) == TR_OK) {
     EXPECT(strstr(buf, "NumberOfPoints=\"4\" NumberOfCells=\"4\"") != NULL, "vtu counts");
     EXPECT(strstr(buf, "Name=\"region\"") != NULL, "vtu region data");
     EXPECT(strstr(buf, "0.33333333333333331") != NULL, "vtu %%.17g coordinates");
@@ -310,14 +292,14 @@ static void t_mesh_write(void)
   if (s != TR_OK)
     return;
   uint32_t nt = tr_mesh_num_tets(m);
-  EXPECT(tr_mesh_write(m, path(tmp, "dm.mesh"), 0) == TR_OK, "%s", tr_last_error());
-  EXPECT(tr_mesh_write(m, path(tmp, "dm.1"), 0) == TR_OK, "%s", tr_last_error());
-  EXPECT(tr_mesh_write(m, path(tmp, "dm.vtu"), 0) == TR_OK, "%s", tr_last_error());
-  struct tr_plc *q = read_ok(path(tmp, "dm.mesh"));
+  EXPECT(tr_mesh_write(m, tpath(tmp, "dm.mesh"), 0) == TR_OK, "%s", tr_last_error());
+  EXPECT(tr_mesh_write(m, tpath(tmp, "dm.1"), 0) == TR_OK, "%s", tr_last_error());
+  EXPECT(tr_mesh_write(m, tpath(tmp, "dm.vtu"), 0) == TR_OK, "%s", tr_last_error());
+  struct tr_plc *q = read_ok(tpath(tmp, "dm.mesh"));
   EXPECT(q->ntets == nt && q->npoints == 8, ".mesh: %u tets (%u expected)", q->ntets, nt);
   EXPECT(q->ntris == 12, "hull of the cube: %u boundary triangles (12 expected)", q->ntris);
   destroy(q);
-  q = read_ok(path(tmp, "dm.1.ele"));
+  q = read_ok(tpath(tmp, "dm.1.ele"));
   EXPECT(q->ntets == nt && q->npoints == 8, ".ele: %u tets (%u expected)", q->ntets, nt);
   destroy(q);
   tr_mesh_destroy(m);
@@ -332,14 +314,14 @@ static void t_mesh_write(void)
   double xyz[12] = {0, 0, 0, qp.near[0], qp.near[1], qp.near[2], 0, 1, 0, 0, 0, 1};
   uint32_t tet[4] = {0, 1, 2, 3};
   struct tr_mesh_view v = {4, xyz, ex, 1, tet, NULL, 0, NULL, NULL};
-  EXPECT(tr_write_tetgen(&v, path(tmp, "ex"), 1) == TR_OK, "%s", tr_last_error());
+  EXPECT(tr_write_tetgen(&v, tpath(tmp, "ex"), 1) == TR_OK, "%s", tr_last_error());
   char *buf;
   size_t len;
-  if (tr_io_load(path(tmp, "ex.node"), &buf, &len) == TR_OK) {
+  if (tr_io_load(tpath(tmp, "ex.node"), &buf, &len) == TR_OK) {
     EXPECT(strstr(buf, "2 1/3 2/7 -5/11\n") != NULL, "exact .node line missing:\n%s", buf);
     free(buf);
   }
-  q = read_ok(path(tmp, "ex.node"));
+  q = read_ok(tpath(tmp, "ex.node"));
   EXPECT(q->npoints == 4 && q->xyz[3] == 1.0 / 3 && q->xyz[4] == 2.0 / 7 &&
              q->xyz[5] == -5.0 / 11,
          "rationals must read as the nearest doubles");
@@ -361,7 +343,7 @@ static void t_malformed(void)
 {
   char *tab;
   size_t len;
-  if (tr_io_load(path(data, "../io/malformed.txt"), &tab, &len) != TR_OK) {
+  if (tr_io_load(tpath(data, "../io/malformed.txt"), &tab, &len) != TR_OK) {
     EXPECT(0, "cannot read malformed.txt");
     return;
   }
@@ -402,7 +384,7 @@ static void t_repairs(void)
                      "bad/dup_tri.off"};
   for (int i = 0; i < 4; i++) {
     tr_plc *p = NULL;
-    tr_status s = tr_plc_read(path(data, f[i]), &p);
+    tr_status s = tr_plc_read(tpath(data, f[i]), &p);
     if (s == TR_OK)
       s = tr_plc_validate(p, NULL);
     EXPECT(s == TR_OK, "%s: %s", f[i], tr_last_error());
@@ -437,7 +419,7 @@ static void t_cavity(void)
   const int flips[] = {11, 0};
   for (int i = 0; i < 2; i++) {
     tr_plc *p = NULL;
-    tr_status s = tr_plc_read(path(data, f[i]), &p);
+    tr_status s = tr_plc_read(tpath(data, f[i]), &p);
     if (s == TR_OK)
       s = tr_plc_validate(p, NULL);
     EXPECT(s == TR_OK, "%s: %s", f[i], tr_last_error());

@@ -1,12 +1,18 @@
-/* The counting check of the end-to-end tests (test_pipeline, test_round, tests/hard): a
- * failed EXPECT prints where and why and counts, the case goes on so that one run
- * reports every violated property; main returns failures != 0. */
+/* The counting check of the tests: a failed EXPECT prints where and why and counts, the
+ * case goes on so that one run reports every violated property; main returns
+ * failures != 0. A test of one translation unit gets its own static counter; a test
+ * split over several (tests/api) defines TEXPECT_SHARED_COUNTER before including this
+ * and defines `int failures;` once, in the file holding main. */
 #ifndef TR_TESTS_PIPELINE_TEXPECT_H
 #define TR_TESTS_PIPELINE_TEXPECT_H
 
 #include <stdio.h>
 
+#ifdef TEXPECT_SHARED_COUNTER
+extern int failures;
+#else
 static int failures;
+#endif
 #define EXPECT(cond, ...)                                               \
   do {                                                                  \
     if (!(cond)) {                                                      \
