@@ -50,8 +50,9 @@
 #                 not even the enclosed volume, so the validator rejects such meshes;
 #                 -p181Q makes every input edge a segment, i.e. the problem tetrec solves.
 #                 Results of other flags go to BUILD/bench-peer<FLAGS>/.
-#   TETGEN=path   the tetgen binary (default: tetgen on PATH), e.g. a TetGen 1.6 build;
-#                 its version line in machine.txt is then the binary's path
+#   TETGEN=path   the tetgen binary (default: tetgen on PATH), e.g. a TetGen 1.6 build
+#                 made by bench/peer/build_tetgen.sh SRC_DIR OUT from its public source;
+#                 machine.txt then names the version its -h prints and the path
 #   TR_FLAGS=...  extra tetrec switches (e.g. --keep-surface, to compare with -pQY);
 #                 results go to BUILD/bench-peer<TG_FLAGS><TR_FLAGS>/
 # Output: stdout, BUILD/bench-peer/table.txt and BUILD/bench-peer/results.csv; logs of
@@ -79,7 +80,9 @@ RUN=$BUILD/bench/peer/peer_run
 TG=${TETGEN:-$(command -v tetgen || true)}
 [ -n "$TG" ] && [ -x "$TG" ] || { echo "tetgen not found (apt-get install tetgen; see scripts/setup.sh, or TETGEN=path)"; exit 1; }
 TG_VERSION=$(dpkg-query -W -f='${Version}' tetgen 2>/dev/null || echo '(version unknown)')
-[ -z "${TETGEN:-}" ] || TG_VERSION="at $TG"
+if [ -n "${TETGEN:-}" ]; then
+  TG_VERSION="$("$TG" -h 2>/dev/null | sed -n 's/^Version *//p' | head -n 1 || true) at $TG"
+fi
 
 OUT=$BUILD/bench-peer
 [ "$TG_FLAGS" = -pQ ] && [ -z "$TR_FLAGS" ] || OUT=$BUILD/bench-peer$TG_FLAGS${TR_FLAGS// /}
@@ -126,7 +129,7 @@ reason() {
 }
 
 CSV=$OUT/results.csv
-echo "model,source,tris,tr_outcome,tr_valid,tg_outcome,tg_valid,tr_steiner,tg_steiner,tr_tets,tg_tets,tr_wall_s,tg_wall_s,tr_cpu_s,tg_cpu_s,tr_rss_kb,tg_rss_kb,tr_steiner_json,tr_steiner_added,tg_steiner_stats,tg_steiner_nodes" >"$CSV"
+echo "model,source,tris,tr_outcome,tr_valid,tg_outcome,tg_valid,tr_steiner,tg_steiner,tr_tets,tg_tets,tr_wall_s,tg_wall_s,tr_cpu_s,tg_cpu_s,tr_rss_kb,tg_rss_kb,tr_steiner_json,tr_steiner_added,tg_steiner_stats,tg_steiner_nodes,tr_surface,tr_steiner_boundary,tr_steiner_interior,tg_surface,tg_steiner_boundary,tg_steiner_interior" >"$CSV"
 NOTES=$OUT/notes.txt
 : >"$NOTES"
 for n in "${notes[@]}"; do echo "$n" >>"$NOTES"; done
@@ -157,6 +160,15 @@ steiner() {
        f == 1 { inp[k] = 1; next }
        !(k in inp) { s++ }
        END { print s + 0 }' "$w/input.node" "$1"
+}
+# boundary OUTNODE OUTELE: "SURFACE ON_BOUNDARY INTERIOR" (bench/peer/boundary.sh): SURFACE
+# yes when the boundary faces are exactly the input triangles (as `tetrec convert` writes
+# them to W/input.face), else NO; the Steiner points on a boundary face and the others
+boundary() {
+  [ -s "$w/input.node" ] && [ -s "$w/input.face" ] && [ -f "$1" ] && [ -f "$2" ] || {
+    echo "- - -"; return 0; }
+  bash "$ROOT/bench/peer/boundary.sh" "$w/input.node" "$w/input.face" "$1" "$2" |
+    awk '{ print $1, $4, $5 }'
 }
 # check OUTNODE LOG WHO: the validator on a mesh; sets chk to yes / yes* / NO
 check() {
@@ -208,7 +220,7 @@ for m in "${models[@]}"; do
   # same files for tetgen's .poly/.smesh companions (a .poly may name a .node)
   for c in "${model%.*}".node; do [ -f "$c" ] && ln -sf "$c" "$w/tetgen/"; done
   polys=$(polygons "$model")
-  "$TR" convert "$model" "$w/input.node" >/dev/null 2>&1 || rm -f "$w/input.node"
+  "$TR" convert "$model" "$w/input.node" >/dev/null 2>&1 || rm -f "$w/input.node" "$w/input.face"
   if [ $((idx % 2)) -eq 0 ]; then run_tetrec; run_tetgen; else run_tetgen; run_tetrec; fi
   idx=$((idx + 1))
 
@@ -216,6 +228,7 @@ for m in "${models[@]}"; do
   tr_code=${tr_status#exit:}
   tr_ok=0
   tr_steiner=""; tr_json=""; tr_tets=""; tr_added=""; tr_valid="-"; tris=""
+  tr_surf=-; tr_sbnd=""; tr_sint=""; tg_surf=-; tg_sbnd=""; tg_sint=""
   if [ -f "$w/tetrec.json" ]; then
     tris=$(field surface_facets "$w/tetrec.json")
   fi
@@ -226,6 +239,7 @@ for m in "${models[@]}"; do
       tr_steiner=$(steiner "$w/tetrec.node")
       tr_added=$(( $(field points_added_for_edges "$w/tetrec.json") + $(field points_added_for_facets "$w/tetrec.json") ))
       tr_out=ok; tr_ok=1
+      read -r tr_surf tr_sbnd tr_sint < <(boundary "$w/tetrec.node" "$w/tetrec.ele") || true
       check "$w/tetrec.node" "$w/tetrec.check" tetrec; tr_valid=$chk ;;
     exit:[2-7]) tr_out="rejected:$(reason "$w/tetrec.err")" ;;
     exit:*) tr_out="FAIL:$(reason "$w/tetrec.err")"
@@ -263,6 +277,7 @@ for m in "${models[@]}"; do
       [ -z "$tris" ] && tris=$(awk -F: '/^  Input facets:/ { print $2 + 0 }' "$w/tetgen.stats")
     fi
     tg_steiner=$(steiner "$tg_node")
+    read -r tg_surf tg_sbnd tg_sint < <(boundary "$tg_node" "$tg_ele") || true
     if [ $tr_rejected = 0 ]; then
       check "$tg_node" "$w/tetgen.check" tetgen; tg_valid=$chk
     fi
@@ -278,7 +293,7 @@ for m in "${models[@]}"; do
   if [ -n "$tg_stats$tg_steiner" ] && [ "$tg_steiner" != "$tg_stats" ]; then
     echo "$name: tetgen Steiner: new vertices in the output = $tg_steiner, its statistics = $tg_stats, nodes - input points = $tg_nodes_steiner" >>"$NOTES"
   fi
-  echo "$name,$src,$tris,$tr_out,$tr_valid,$tg_out,$tg_valid,$tr_steiner,$tg_steiner,$tr_tets,$tg_tets,$tr_wall,$tg_wall,$tr_cpu,$tg_cpu,$tr_rss,$tg_rss,$tr_json,$tr_added,$tg_stats,$tg_nodes_steiner" >>"$CSV"
+  echo "$name,$src,$tris,$tr_out,$tr_valid,$tg_out,$tg_valid,$tr_steiner,$tg_steiner,$tr_tets,$tg_tets,$tr_wall,$tg_wall,$tr_cpu,$tg_cpu,$tr_rss,$tg_rss,$tr_json,$tr_added,$tg_stats,$tg_nodes_steiner,$tr_surf,${tr_sbnd/-/},${tr_sint/-/},$tg_surf,${tg_sbnd/-/},${tg_sint/-/}" >>"$CSV"
   printf '%-34s tetrec %-22s %8ss   tetgen %-18s %8ss\n' "$name" "$tr_out/$tr_valid" "$tr_wall" "$tg_out/$tg_valid" "$tg_wall" >&2
   if [ "$KEEP" != 1 ]; then
     rm -f "$w"/tetrec.node "$w"/tetrec.ele "$w"/tetrec.face "$w"/tetgen/*.1.*

@@ -11,25 +11,37 @@ TIMEOUT=${4:-?}
 echo "times in seconds (wall: monotonic clock around the process; cpu: user+sys), mem: peak RSS"
 echo "valid: yes = links, exact orientation, exact conformity (+ exact volume if closed);"
 echo "  yes* = Steiner points rounded to doubles in the file: links and exact orientation only"
+echo "St: Steiner points (output vertices that are no input vertex), St.in: those on no boundary"
+echo "  face; surf: yes when the boundary faces are exactly the input triangles (a polygon face:"
+echo "  as tetrec triangulates it, which tetgen need not do); ratios tetrec/tetgen"
 awk -F, -v timeout="$TIMEOUT" '
 function mb(kb) { return kb == "" ? "-" : sprintf("%.1f", kb / 1024) }
 function nz(x) { return x == "" ? "-" : x }
 function ratio(a, b) { return b > 0 ? sprintf("%.3f", a / b) : "n/a" }
 function kind(o) { sub(/:.*/, "", o); return o }
+function pr(a, b) { return a == "" || b == "" ? "-" : b > 0 ? sprintf("%.2f", a / b) : a > 0 ? "inf" : "=" }
 NR == 1 { next }
 {
   n++
   model[n] = $1; tris = $3; tro = $4; trv = $5; tgo = $6; tgv = $7
   trs = $8; tgs = $9; trt = $10; tgt = $11; trw = $12; tgw = $13; trc = $14; tgc = $15
   trm = $16; tgm = $17
+  trsf = $22; trsi = $24; tgsf = $25; tgsi = $27
   if (n == 1) {
-    printf "%-32s %7s %-26s %-14s %8s %8s %9s %9s %8s %8s %8s %8s %8s %8s\n", "model", "tris",
-      "tetrec ok/valid", "tetgen ok/valid", "St.tetrec", "St.tetgen", "tets tr", "tets tg",
-      "wall tr", "wall tg", "cpu tr", "cpu tg", "mem trMB", "mem tgMB"
+    printf "%-32s %7s %-26s %-14s %7s %7s %6s %7s %7s %5s %5s %9s %9s %8s %8s %8s %8s %6s %8s %8s\n",
+      "model", "tris", "tetrec ok/valid", "tetgen ok/valid", "St.tr", "St.tg", "St r",
+      "St.in tr", "St.in tg", "surf", "surf", "tets tr", "tets tg", "wall tr", "wall tg",
+      "cpu tr", "cpu tg", "cpu r", "mem trMB", "mem tgMB"
+    printf "%-32s %7s %-26s %-14s %7s %7s %6s %7s %7s %5s %5s\n", "", "", "", "", "", "", "",
+      "", "", "tr", "tg"
   }
-  printf "%-32s %7s %-26s %-14s %8s %8s %9s %9s %8s %8s %8s %8s %8s %8s\n", $1, tris,
-    substr(tro "/" trv, 1, 26), substr(tgo "/" tgv, 1, 14), nz(trs), nz(tgs), nz(trt),
-    nz(tgt), trw, tgw, trc, tgc, mb(trm), mb(tgm)
+  printf "%-32s %7s %-26s %-14s %7s %7s %6s %7s %7s %5s %5s %9s %9s %8s %8s %8s %8s %6s %8s %8s\n",
+    $1, tris, substr(tro "/" trv, 1, 26), substr(tgo "/" tgv, 1, 14), nz(trs), nz(tgs),
+    tro == "ok" && tgo == "ok" ? pr(trs, tgs) : "-", nz(trsi), nz(tgsi), nz(trsf), nz(tgsf),
+    nz(trt), nz(tgt), trw, tgw, trc, tgc, tro == "ok" && tgo == "ok" ? pr(trc, tgc) : "-",
+    mb(trm), mb(tgm)
+  if (tro == "ok") { sf_tr_n++; if (trsf == "yes") sf_tr++; si_tr_all += trsi }
+  if (tgo == "ok" && kind(tro) != "rejected") { sf_tg_n++; if (tgsf == "yes") sf_tg++ }
   # outcome counts
   trk = tro; if (tro == "ok") trk = "ok, valid: " trv; cnt_tr[trk]++
   tgk = tgo; if (tgo == "ok") tgk = "ok, valid: " tgv
@@ -45,7 +57,9 @@ NR == 1 { next }
     na++
     if (trv == "NO") na_trinv++
     if (tgv == "NO") na_tginv++
-    s_tr += trs; s_tg += tgs; t_tr += trt; t_tg += tgt
+    s_tr += trs; s_tg += tgs; t_tr += trt; t_tg += tgt; si_tr += trsi; si_tg += tgsi
+    if (trsf == "yes") sfa_tr++
+    if (tgsf == "yes") sfa_tg++
     w_tr += trw; w_tg += tgw; c_tr += trc; c_tg += tgc; m_tr += trm; m_tg += tgm
     if (trm > mx_tr) mx_tr = trm
     if (tgm > mx_tg) mx_tg = tgm
@@ -74,6 +88,8 @@ END {
   printf " (invalid among them: tetrec %d, tetgen %d):\n", na_trinv, na_tginv
   printf "  %-22s %14s %14s %9s\n", "", "tetrec", "tetgen", "tr/tg"
   printf "  %-22s %14d %14d %9s\n", "Steiner points", s_tr, s_tg, ratio(s_tr, s_tg)
+  printf "  %-22s %14d %14d %9s\n", "Steiner inside", si_tr, si_tg, ratio(si_tr, si_tg)
+  printf "  %-22s %14d %14d\n", "boundary = input", sfa_tr, sfa_tg
   printf "  %-22s %14d %14d %9s\n", "tets", t_tr, t_tg, ratio(t_tr, t_tg)
   printf "  %-22s %14.2f %14.2f %9s\n", "wall time s", w_tr, w_tg, ratio(w_tr, w_tg)
   printf "  %-22s %14.2f %14.2f %9s\n", "CPU time s (user+sys)", c_tr, c_tg, ratio(c_tr, c_tg)
@@ -94,6 +110,8 @@ END {
     nb, timeout, nb_trfail, nb_tgfail
   printf "  wall time s: tetrec %.2f, tetgen %.2f, ratio %s;  CPU time s: tetrec %.2f, tetgen %.2f, ratio %s\n",
     bw_tr, bw_tg, ratio(bw_tr, bw_tg), bc_tr, bc_tg, ratio(bc_tr, bc_tg)
+  printf "Boundary faces exactly the input triangles: tetrec %d of its %d meshes (%d Steiner points inside them), tetgen %d of its %d meshes of models tetrec accepts\n",
+    sf_tr, sf_tr_n, si_tr_all, sf_tg, sf_tg_n
   printf "Issue 7 criteria on (A): total time tetrec <= tetgen: %s (wall), %s (CPU); Steiner tetrec <= tetgen: %s\n",
     w_tr <= w_tg ? "yes" : "NO", c_tr <= c_tg ? "yes" : "NO", s_tr <= s_tg ? "yes" : "NO"
 
