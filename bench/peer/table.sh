@@ -13,7 +13,9 @@ echo "valid: yes = links, exact orientation, exact conformity (+ exact volume if
 echo "  yes* = Steiner points rounded to doubles in the file: links and exact orientation only"
 echo "St: Steiner points (output vertices that are no input vertex), St.in: those on no boundary"
 echo "  face; surf: yes when the boundary faces are exactly the input triangles (a polygon face:"
-echo "  as tetrec triangulates it, which tetgen need not do); ratios tetrec/tetgen"
+echo "  as \`tetrec convert\` triangulates it, which a mesh of either program need not keep; a"
+echo "  triangle between two cavities is no face; tetrec's default mode swaps coplanar surface"
+echo "  diagonals, --no-smooth or --keep-surface do not); ratios tetrec/tetgen"
 awk -F, -v timeout="$TIMEOUT" '
 function mb(kb) { return kb == "" ? "-" : sprintf("%.1f", kb / 1024) }
 function nz(x) { return x == "" ? "-" : x }
