@@ -57,10 +57,22 @@ static uint32_t sort_unique(uint32_t *k, uint32_t n, size_t w,
   return o;
 }
 
-static tr_status build(tr_sliver_ctx *c, const tr_subfaces *sub, const uint8_t *vkind,
-                       uint32_t npoints)
+void tr_sliver_ctx_free(tr_sliver_ctx *c)
 {
-  struct tr_mesh *m = c->m;
+  free(c->faces);
+  free(c->edges);
+  free(c->movable);
+  memset(c, 0, sizeof *c);
+}
+
+tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfaces *sub,
+                             const uint8_t *vkind, uint32_t npoints, double bound)
+{
+  memset(c, 0, sizeof *c);
+  c->m = m;
+  c->bound = bound;
+  if (sub->n > UINT32_MAX / 3)
+    return tr_error(TR_ERR_UNSUPPORTED, "%u sub-faces: too many for the sliver stage", sub->n);
   size_t n = sub->n;
   c->faces = malloc(3 * sizeof *c->faces * (n ? n : 1));
   c->edges = malloc(6 * sizeof *c->edges * (n ? n : 1));
@@ -92,13 +104,8 @@ tr_status tr_sliver_remove(struct tr_mesh *m, const tr_subfaces *sub, const uint
   memset(st, 0, sizeof *st);
   if (par->level <= TR_SLIVER_OFF)
     return TR_OK;
-  if (sub->n > UINT32_MAX / 3)
-    return tr_error(TR_ERR_UNSUPPORTED, "%u sub-faces: too many for the sliver stage", sub->n);
   tr_sliver_ctx c;
-  memset(&c, 0, sizeof c);
-  c.m = m;
-  c.bound = par->bound;
-  tr_status s = build(&c, sub, vkind, npoints);
+  tr_status s = tr_sliver_ctx_init(&c, m, sub, vkind, npoints, par->bound);
   for (int r = 0; s == TR_OK && r < par->rounds; r++) {
     tr_sliver_stats before = *st;
     s = tr_sliver_flip_pass(&c, st);
@@ -107,8 +114,6 @@ tr_status tr_sliver_remove(struct tr_mesh *m, const tr_subfaces *sub, const uint
     if (!memcmp(&before, st, sizeof before))
       break; /* a round that changed nothing: the next would not either */
   }
-  free(c.faces);
-  free(c.edges);
-  free(c.movable);
+  tr_sliver_ctx_free(&c);
   return s;
 }

@@ -61,6 +61,12 @@ typedef struct tr_sliver_ctx {
   double bound;
 } tr_sliver_ctx;
 
+/* The context of one mesh: c->m = m, the constraint sets of sub, the movable vertices
+ * (vkind: see tr_sliver_remove). Free with tr_sliver_ctx_free. */
+tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfaces *sub,
+                             const uint8_t *vkind, uint32_t npoints, double bound);
+void tr_sliver_ctx_free(tr_sliver_ctx *c);
+
 /* The smallest dihedral angle of tet (a,b,c,d) on m->xyz, degrees; 0 for a tet flat in
  * doubles. */
 double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c,
