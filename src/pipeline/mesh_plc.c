@@ -219,7 +219,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv0, &vkind, &vindex);
     /* sliver removal: refinement bounds the radius-edge ratio, which slivers meet */
     if (st == TR_OK && opt.optimize > 0) {
-      tr_sliver_params sp = {opt.optimize, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS};
+      tr_sliver_params sp = {opt.optimize, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS,
+                             {opt.quality_ratio, opt.max_volume, p}};
       tr_sliver_stats ss;
       st = tr_sliver_remove(m, &sub, vkind, p->npoints, &sp, &ss);
       stats->points_added_for_sliver = ss.points;

@@ -22,10 +22,19 @@ static int positive(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c,
   return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) > 0;
 }
 
-static double tet_min(const struct tr_mesh *m, uint32_t t)
+/* Tet t's smallest dihedral angle; its ratio raises *ratio to at least it. */
+static double tet_min(const struct tr_mesh *m, uint32_t t, double *ratio)
 {
-  const uint32_t *v = m->tv + 4 * (size_t)t;
-  return tr_sliver_min_dihedral(m, v[0], v[1], v[2], v[3]);
+  double r;
+  double q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
+  if (ratio && r > *ratio)
+    *ratio = r;
+  return q;
+}
+
+static uint32_t region_of(const struct tr_mesh *m, uint32_t t)
+{
+  return m->region ? m->region[t] : 0;
 }
 
 /* Swap23 on face k of t: the face goes, the segment between the two apexes comes. */
@@ -43,21 +52,23 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, cand *x)
   /* (f_i, f_i+1, a, b) positive for all three exactly when ab crosses the open face:
    * f is listed so that (f0, f1, f2, a) is positive */
   x->newmin = INFINITY;
+  double ratio[3], was = 0;
   for (int i = 0; i < 3; i++) {
     uint32_t *p = x->newv + 4 * i;
     p[0] = f[i], p[1] = f[(i + 1) % 3], p[2] = b, p[3] = a;
-    x->newmin = fmin(x->newmin, tr_sliver_min_dihedral(m, p[0], p[1], p[2], p[3]));
+    x->newmin = fmin(x->newmin, tr_sliver_min_dihedral_at(m, p, TR_NONE, NULL, &ratio[i]));
   }
   x->nnew = 3;
   x->old[0] = t;
   x->old[1] = nb >> 2;
   x->nold = 2;
-  x->oldmin = fmin(tet_min(m, t), tet_min(m, nb >> 2));
+  x->oldmin = fmin(tet_min(m, t, &was), tet_min(m, nb >> 2, &was));
   if (!(x->newmin > x->oldmin))
     return 0; /* the exact tests only for a flip worth making */
   for (int i = 0; i < 3; i++) {
     const uint32_t *p = x->newv + 4 * i;
-    if (!positive(m, p[0], p[1], p[2], p[3]))
+    if (!positive(m, p[0], p[1], p[2], p[3]) ||
+        !tr_sliver_keeps_bounds(c, p, TR_NONE, NULL, region_of(m, t), ratio[i], was))
       return 0;
   }
   return 1;
@@ -65,7 +76,10 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, cand *x)
 
 /* The ring polygon around the removed edge and its best triangulation. */
 typedef struct ring {
+  const tr_sliver_ctx *c;
   const struct tr_mesh *m;
+  uint32_t region;
+  double was; /* the largest ratio of the shell's tets */
   uint32_t A, B, r[SL_MAX_RING];
   int n;
   double val[SL_MAX_RING][SL_MAX_RING]; /* best smallest angle of r[i..j], -1: none */
@@ -85,10 +99,15 @@ static void ring_dp(ring *R)
         double q = fmin(R->val[i][k], R->val[k][j]);
         if (q < 0 || q <= best)
           continue;
-        uint32_t x = R->r[i], y = R->r[k], z = R->r[j];
-        q = fmin(q, fmin(tr_sliver_min_dihedral(R->m, R->A, x, y, z),
-                         tr_sliver_min_dihedral(R->m, R->B, z, y, x)));
-        if (q <= best || !positive(R->m, R->A, x, y, z) || !positive(R->m, R->B, z, y, x))
+        uint32_t pa[4] = {R->A, R->r[i], R->r[k], R->r[j]};
+        uint32_t pb[4] = {R->B, R->r[j], R->r[k], R->r[i]};
+        double ra, rb;
+        q = fmin(q, fmin(tr_sliver_min_dihedral_at(R->m, pa, TR_NONE, NULL, &ra),
+                         tr_sliver_min_dihedral_at(R->m, pb, TR_NONE, NULL, &rb)));
+        if (q <= best || !positive(R->m, pa[0], pa[1], pa[2], pa[3]) ||
+            !positive(R->m, pb[0], pb[1], pb[2], pb[3]) ||
+            !tr_sliver_keeps_bounds(R->c, pa, TR_NONE, NULL, R->region, ra, R->was) ||
+            !tr_sliver_keeps_bounds(R->c, pb, TR_NONE, NULL, R->region, rb, R->was))
           continue;
         best = q;
         bk = k;
@@ -127,15 +146,18 @@ static tr_status edge_cand(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint3
   if (!closed || n < 3 || n > SL_MAX_RING)
     return TR_OK;
   ring R;
+  R.c = c;
   R.m = m;
   R.n = n;
+  R.region = region_of(m, t);
+  R.was = 0;
   x->oldmin = INFINITY;
   for (int i = 0; i < n; i++) {
     uint32_t u = sh->a[i], w = sh->a[(i + 1) % n];
     if (!tr_tet_is_real(m, u))
       return TR_OK;
     x->old[i] = u;
-    x->oldmin = fmin(x->oldmin, tet_min(m, u));
+    x->oldmin = fmin(x->oldmin, tet_min(m, u, &R.was));
     /* the vertex u shares with the next tet besides a and b */
     R.r[i] = TR_NONE;
     for (int s = 0; s < 4; s++) {
@@ -196,7 +218,7 @@ tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
   cand best, x;
   uint32_t nt = m->nt; /* tets made by this pass wait for the next */
   for (uint32_t t = 0; t < nt && s == TR_OK; t++) {
-    if (!tr_tet_is_real(m, t) || !(tet_min(m, t) < c->bound))
+    if (!tr_tet_is_real(m, t) || !(tet_min(m, t, NULL) < c->bound))
       continue;
     int have = 0;
     best.newmin = -1;

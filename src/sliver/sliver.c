@@ -7,16 +7,19 @@
 #include <string.h>
 
 #include "refine/quality.h"
+#include "refine/refine_impl.h" /* rf_volume_above: the bound decided as refinement does */
 #include "tetrec.h"
 
 double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
-                                 const double x[3])
+                                 const double x[3], double *ratio)
 {
   const double *p[4];
   for (int i = 0; i < 4; i++)
     p[i] = t[i] == v ? x : m->xyz + 3 * (size_t)t[i];
   double r, w, d[6];
   tr_tet_shape(p[0], p[1], p[2], p[3], &r, &w, d, NULL);
+  if (ratio)
+    *ratio = isnan(r) ? INFINITY : r;
   if (!(w != 0))
     return 0; /* flat in doubles: the worst there is */
   double lo = d[0];
@@ -29,7 +32,32 @@ double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, u
                               uint32_t d)
 {
   uint32_t t[4] = {a, b, c, d};
-  return tr_sliver_min_dihedral_at(m, t, TR_NONE, NULL);
+  return tr_sliver_min_dihedral_at(m, t, TR_NONE, NULL, NULL);
+}
+
+/* The volume bound of region r: the smaller of max_volume and its region points'. */
+static double volume_bound(const tr_sliver_bounds *k, uint32_t r)
+{
+  double b = k->max_volume;
+  for (uint32_t i = 0; k->plc && i < k->plc->nregions; i++)
+    if (k->plc->region_maxvol[i] > 0 && (uint32_t)k->plc->region_attr[i] == r &&
+        (!(b > 0) || k->plc->region_maxvol[i] < b))
+      b = k->plc->region_maxvol[i];
+  return b;
+}
+
+int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
+                           const double x[3], uint32_t region, double ratio, double ratio_was)
+{
+  if (c->keep.ratio > 0 && ratio > fmax(c->keep.ratio, ratio_was))
+    return 0;
+  double V = volume_bound(&c->keep, region);
+  if (!(V > 0))
+    return 1;
+  tr_point q[4];
+  for (int i = 0; i < 4; i++)
+    q[i] = p[i] == v ? tr_pt_d(x) : tr_mesh_point(c->m, p[i]);
+  return !rf_volume_above(&q[0], &q[1], &q[2], &q[3], V);
 }
 
 int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv)
@@ -106,6 +134,7 @@ tr_status tr_sliver_remove(struct tr_mesh *m, const tr_subfaces *sub, const uint
     return TR_OK;
   tr_sliver_ctx c;
   tr_status s = tr_sliver_ctx_init(&c, m, sub, vkind, npoints, par->bound);
+  c.keep = par->keep;
   for (int r = 0; s == TR_OK && r < par->rounds; r++) {
     tr_sliver_stats before = *st;
     s = tr_sliver_flip_pass(&c, st);

@@ -40,10 +40,20 @@ enum { TR_SLIVER_OFF = 0, TR_SLIVER_FLIPS = 1, TR_SLIVER_SMOOTH = 2 };
 
 #define SL_MAX_RING 7 /* largest edge shell the flips remove (7 tets -> 10) */
 
+/* The refinement's bounds hold after the stage: a new tet's volume is at most its region's
+ * bound (exactly, as refinement decides it), and its radius-edge ratio at most the ratio
+ * bound or, where a tet it replaces was already over it, the largest ratio of those. */
+typedef struct tr_sliver_bounds {
+  double ratio;                /* radius-edge bound (0: none) */
+  double max_volume;           /* volume bound for every tet (0: none) */
+  const struct tr_plc *plc;    /* NULL, or its region points' maximum volumes by attribute */
+} tr_sliver_bounds;
+
 typedef struct tr_sliver_params {
   int level;     /* TR_SLIVER_FLIPS or TR_SLIVER_SMOOTH */
   double bound;  /* degrees: tets with a smaller dihedral angle are worked on */
   int rounds;    /* rounds of (flip pass, smoothing pass) */
+  tr_sliver_bounds keep;
 } tr_sliver_params;
 
 typedef struct tr_sliver_stats {
@@ -59,10 +69,12 @@ typedef struct tr_sliver_ctx {
   uint32_t *edges, nedges; /* sorted edge keys (tr_cmp_edge_key) of their edges */
   uint8_t *movable;        /* nv: 1 for a vertex smoothing may move */
   double bound;
+  tr_sliver_bounds keep;
 } tr_sliver_ctx;
 
 /* The context of one mesh: c->m = m, the constraint sets of sub, the movable vertices
- * (vkind: see tr_sliver_remove). Free with tr_sliver_ctx_free. */
+ * (vkind: see tr_sliver_remove), no bounds to keep (set c->keep after). Free with
+ * tr_sliver_ctx_free. */
 tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfaces *sub,
                              const uint8_t *vkind, uint32_t npoints, double bound);
 void tr_sliver_ctx_free(tr_sliver_ctx *c);
@@ -71,9 +83,15 @@ void tr_sliver_ctx_free(tr_sliver_ctx *c);
  * doubles. */
 double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c,
                               uint32_t d);
-/* The same with vertex v's coordinates replaced by x (v may be none of them). */
+/* The same with vertex v's coordinates replaced by x (v may be none of them); *ratio (may
+ * be NULL) = its radius-edge ratio. */
 double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
-                                 const double x[3]);
+                                 const double x[3], double *ratio);
+/* 1 iff tet p (positive, exact points; vertex v at the double x when v is one of them) of
+ * region `region` keeps c->keep: its ratio (given) at most max(c->keep.ratio, ratio_was),
+ * its exact volume at most the region's bound. */
+int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
+                           const double x[3], uint32_t region, double ratio, double ratio_was);
 
 /* 1 iff the face / edge (any vertex order) is a constraint the flips must keep. */
 int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv);

@@ -18,7 +18,7 @@ static double star_min(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t 
 {
   double lo = INFINITY;
   for (size_t i = 0; i < ball->n; i++) {
-    double q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)ball->a[i], v, x);
+    double q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)ball->a[i], v, x, NULL);
     if (q < lo) {
       lo = q;
       if (worst)
@@ -28,9 +28,12 @@ static double star_min(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t 
   return lo;
 }
 
-static int star_positive(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
-                         const double x[3])
+/* Every tet of the star exactly positive with v at x, and within the bounds (a tet's
+ * ratio may exceed the bound only up to the star's largest ratio as it is, `was`). */
+static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
+                      const double x[3], double was)
 {
+  const struct tr_mesh *m = c->m;
   for (size_t i = 0; i < ball->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
     tr_point p[4];
@@ -39,7 +42,25 @@ static int star_positive(const struct tr_mesh *m, const tr_u32buf *ball, uint32_
     if (tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) <= 0)
       return 0;
   }
+  for (size_t i = 0; i < ball->n; i++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
+    double r;
+    tr_sliver_min_dihedral_at(m, tv, v, x, &r);
+    if (!tr_sliver_keeps_bounds(c, tv, v, x, m->region ? m->region[ball->a[i]] : 0, r, was))
+      return 0;
+  }
   return 1;
+}
+
+/* The largest radius-edge ratio of the star as it is. */
+static double star_ratio(const struct tr_mesh *m, const tr_u32buf *ball)
+{
+  double was = 0, r;
+  for (size_t i = 0; i < ball->n; i++) {
+    tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)ball->a[i], TR_NONE, NULL, &r);
+    was = fmax(was, r);
+  }
+  return was;
 }
 
 /* Every face of the star through v has a tet behind it: v is inside the mesh. */
@@ -54,9 +75,10 @@ static int star_closed(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t 
 }
 
 /* One improving move of v, if there is one (*moved = 1). */
-static void move(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v, double q0,
+static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, double q0,
                  size_t worst, double to[3], int *moved)
 {
+  const struct tr_mesh *m = c->m;
   const double *x0 = m->xyz + 3 * (size_t)v;
   /* the shortest edge at v and the centroid of the link */
   double h = INFINITY, cen[3] = {0, 0, 0};
@@ -87,7 +109,8 @@ static void move(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v, dou
     double xp[3] = {x0[0], x0[1], x0[2]}, xm[3] = {x0[0], x0[1], x0[2]};
     xp[j] += eps;
     xm[j] -= eps;
-    g[j] = tr_sliver_min_dihedral_at(m, wt, v, xp) - tr_sliver_min_dihedral_at(m, wt, v, xm);
+    g[j] = tr_sliver_min_dihedral_at(m, wt, v, xp, NULL) -
+           tr_sliver_min_dihedral_at(m, wt, v, xm, NULL);
     gn += g[j] * g[j];
   }
   gn = sqrt(gn);
@@ -106,6 +129,7 @@ static void move(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v, dou
   nt += 2;
   for (int i = 0; i < nt; i++)
     val[i] = star_min(m, ball, v, trial[i], NULL);
+  double was = star_ratio(m, ball);
   /* the best trial that is exactly valid; ties to the earlier one */
   for (;;) {
     int b = -1;
@@ -114,7 +138,7 @@ static void move(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v, dou
         b = i;
     if (b < 0)
       return;
-    if (star_positive(m, ball, v, trial[b])) {
+    if (star_valid(c, ball, v, trial[b], was)) {
       memcpy(to, trial[b], sizeof trial[b]);
       *moved = 1;
       return;
@@ -143,7 +167,7 @@ tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
         break;
       double to[3];
       int ok;
-      move(m, &ball, v, q0, worst, to, &ok);
+      move(c, &ball, v, q0, worst, to, &ok);
       if (!ok)
         break;
       memcpy(m->xyz + 3 * (size_t)v, to, sizeof to);
