@@ -527,6 +527,13 @@ static int cmd_mesh(const args *a)
     free(out);
     return finish(a, &stats, t0, s);
   }
+  /* sliver removal follows refinement: without a bound there is nothing it runs after */
+  int bounded = a->quality > 0 || a->max_volume > 0;
+  for (uint32_t i = 0; i < plc->nregions; i++)
+    bounded |= plc->region_maxvol[i] > 0;
+  if (a->optimize > 1 && !bounded && !a->quiet)
+    fprintf(stderr, "tetrec: warning: -O/--optimize has no effect without quality refinement "
+            "(--quality, --max-volume or a region's maximum volume)\n");
   /* The pipeline (src/pipeline): Delaunay, edge and facet recovery, outer removal. With
    * --exact (checked above to go to a .node), a rounding that cannot be repaired is a
    * warning, not a failure: the exact points are written. */
