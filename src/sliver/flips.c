@@ -52,11 +52,12 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, cand *x)
   /* (f_i, f_i+1, a, b) positive for all three exactly when ab crosses the open face:
    * f is listed so that (f0, f1, f2, a) is positive */
   x->newmin = INFINITY;
-  double ratio[3], was = 0;
+  double ratio[3], dih[3], was = 0;
   for (int i = 0; i < 3; i++) {
     uint32_t *p = x->newv + 4 * i;
     p[0] = f[i], p[1] = f[(i + 1) % 3], p[2] = b, p[3] = a;
-    x->newmin = fmin(x->newmin, tr_sliver_min_dihedral_at(m, p, TR_NONE, NULL, &ratio[i]));
+    dih[i] = tr_sliver_min_dihedral_at(m, p, TR_NONE, NULL, &ratio[i]);
+    x->newmin = fmin(x->newmin, dih[i]);
   }
   x->nnew = 3;
   x->old[0] = t;
@@ -68,7 +69,7 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, cand *x)
   for (int i = 0; i < 3; i++) {
     const uint32_t *p = x->newv + 4 * i;
     if (!positive(m, p[0], p[1], p[2], p[3]) ||
-        !tr_sliver_keeps_bounds(c, p, TR_NONE, NULL, region_of(m, t), ratio[i], was))
+        !tr_sliver_keeps_bounds(c, p, TR_NONE, NULL, region_of(m, t), ratio[i], dih[i], was))
       return 0;
   }
   return 1;
@@ -101,13 +102,13 @@ static void ring_dp(ring *R)
           continue;
         uint32_t pa[4] = {R->A, R->r[i], R->r[k], R->r[j]};
         uint32_t pb[4] = {R->B, R->r[j], R->r[k], R->r[i]};
-        double ra, rb;
-        q = fmin(q, fmin(tr_sliver_min_dihedral_at(R->m, pa, TR_NONE, NULL, &ra),
-                         tr_sliver_min_dihedral_at(R->m, pb, TR_NONE, NULL, &rb)));
+        double ra, rb, qa = tr_sliver_min_dihedral_at(R->m, pa, TR_NONE, NULL, &ra),
+                       qb = tr_sliver_min_dihedral_at(R->m, pb, TR_NONE, NULL, &rb);
+        q = fmin(q, fmin(qa, qb));
         if (q <= best || !positive(R->m, pa[0], pa[1], pa[2], pa[3]) ||
             !positive(R->m, pb[0], pb[1], pb[2], pb[3]) ||
-            !tr_sliver_keeps_bounds(R->c, pa, TR_NONE, NULL, R->region, ra, R->was) ||
-            !tr_sliver_keeps_bounds(R->c, pb, TR_NONE, NULL, R->region, rb, R->was))
+            !tr_sliver_keeps_bounds(R->c, pa, TR_NONE, NULL, R->region, ra, qa, R->was) ||
+            !tr_sliver_keeps_bounds(R->c, pb, TR_NONE, NULL, R->region, rb, qb, R->was))
           continue;
         best = q;
         bk = k;

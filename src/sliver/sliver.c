@@ -47,9 +47,10 @@ static double volume_bound(const tr_sliver_bounds *k, uint32_t r)
 }
 
 int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
-                           const double x[3], uint32_t region, double ratio, double ratio_was)
+                           const double x[3], uint32_t region, double ratio, double dih,
+                           double ratio_was)
 {
-  if (c->keep.ratio > 0 && ratio > fmax(c->keep.ratio, ratio_was))
+  if (c->keep.ratio > 0 && ratio > fmax(c->keep.ratio, ratio_was) && !(dih >= c->bound))
     return 0;
   double V = volume_bound(&c->keep, region);
   if (!(V > 0))

@@ -88,10 +88,13 @@ double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, u
 double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
                                  const double x[3], double *ratio);
 /* 1 iff tet p (positive, exact points; vertex v at the double x when v is one of them) of
- * region `region` keeps c->keep: its ratio (given) at most max(c->keep.ratio, ratio_was),
- * its exact volume at most the region's bound. */
+ * region `region` keeps c->keep: its exact volume at most the region's bound, and its ratio
+ * (given) at most max(c->keep.ratio, ratio_was) unless its smallest dihedral angle `dih`
+ * (given) is at least c->bound: a tet with no angle under the bound is well shaped
+ * whatever its ratio (small dihedral angles are what the ratio misses, not the reverse). */
 int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
-                           const double x[3], uint32_t region, double ratio, double ratio_was);
+                           const double x[3], uint32_t region, double ratio, double dih,
+                           double ratio_was);
 
 /* 1 iff the face / edge (any vertex order) is a constraint the flips must keep. */
 int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv);
