@@ -49,7 +49,7 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, cand *x)
   if (tr_sliver_protected(c, f, 3))
     return 0;
   uint32_t a = tv[k], b = m->tv[4 * (size_t)(nb >> 2) + (nb & 3)];
-  /* (f_i, f_i+1, a, b) positive for all three exactly when ab crosses the open face:
+  /* (f_i, f_i+1, b, a) positive for all three exactly when ab crosses the open face:
    * f is listed so that (f0, f1, f2, a) is positive */
   x->newmin = INFINITY;
   double ratio[3], dih[3], was = 0;
