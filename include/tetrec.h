@@ -212,6 +212,9 @@ typedef struct tr_options {
   int keep_steiner; /* 1: the recovery's Steiner points stay where they are (on the input
                        edges and facets, exact rationals); 0 (default): the suppression
                        stage removes them or moves them inside where it can */
+  int optimize; /* sliver removal after quality refinement (src/sliver/sliver.h), run only
+                   when refinement runs: 0 off, 1 flips that raise the smallest dihedral
+                   angle, 2 (default) those flips and smoothing of interior points */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
@@ -245,6 +248,9 @@ typedef struct tr_stats {
   uint64_t tets_dihedral_below_5, tets_dihedral_below_10;
   uint64_t dihedral_histogram[18];   /* all six angles of every tet, 10-degree bins */
   uint64_t radius_edge_histogram[7]; /* <1, <1.414, <2, <4, <10, <100, >=100 */
+  /* sliver removal (src/sliver/sliver.h): points it added (none: it flips and moves
+   * interior points only), flips it made, interior points it moved */
+  uint64_t points_added_for_sliver, sliver_flips, sliver_points_smoothed;
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

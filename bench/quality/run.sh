@@ -17,6 +17,7 @@
 #   R=1.414    the radius-edge bound given to both
 #   TIMEOUT=s  per-process wall-clock limit (default 120)
 #   ONLY=regex only the models whose name matches (grep -E)
+#   TETREC_OPTS="..." more options for tetrec mesh (e.g. "-O 0": without sliver removal)
 # Output: stdout and BUILD/bench-quality/table.txt; logs under BUILD/bench-quality/work/.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -72,7 +73,7 @@ for model in "$DATA"/data/meshes/*.off; do
   ra=ok
   rc=0
   timeout "$TIMEOUT" /usr/bin/time -o "$w/tetrec.time" -f "%U %S" \
-    "$TETREC" mesh "$model" --quality "$R" -o "$w/tetrec.node" --exact -q >"$w/tetrec.log" 2>&1 || rc=$?
+    "$TETREC" mesh "$model" --quality "$R" ${TETREC_OPTS:-} -o "$w/tetrec.node" --exact -q >"$w/tetrec.log" 2>&1 || rc=$?
   case $rc in
     0) ;;
     2|3|4|5|6|7) ra=fail why=rejected ;; # the input (self-intersecting, open, ...)

@@ -36,6 +36,18 @@ def test_quality_refinement_adds_points_and_conforms(unit_cube):
         assert tets_volume6(pts, [t]) <= Fraction(6) * Fraction(0.05)
 
 
+def test_optimize_levels_reach_the_library_and_add_no_point(unit_cube):
+    off = tetrec.tetrahedralize(*unit_cube, quality=1.2, max_volume=0.01, optimize=0)
+    on = tetrec.tetrahedralize(*unit_cube, quality=1.2, max_volume=0.01, optimize=2)
+    for mesh in (off, on):
+        check_mesh(mesh, *unit_cube)
+        assert mesh.stats["points_added_for_sliver"] == 0
+    assert off.stats["sliver_flips"] == 0 and off.stats["sliver_points_smoothed"] == 0
+    assert on.stats["min_dihedral"] >= off.stats["min_dihedral"]
+    with pytest.raises(ValueError):
+        tetrec.tetrahedralize(*unit_cube, quality=1.2, optimize=3)
+
+
 def test_quality_with_a_dihedral_target_is_refused(unit_cube):
     with pytest.raises(tetrec.Error) as e:
         tetrec.tetrahedralize(*unit_cube, quality=(1.414, 15.0))

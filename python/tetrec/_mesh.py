@@ -180,7 +180,7 @@ def validate(points, triangles=None, *, markers=None):
 
 def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
                    keep_surface=False, keep_steiner=False, quality=None, max_volume=None,
-                   exact=False,
+                   optimize=None, exact=False,
                    smooth=True, round_budget=None, verbose=0, progress=None):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
@@ -196,6 +196,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     removed or moved inside where that can be done exactly). quality: R or (R, D), the
     radius-edge bound of constrained Delaunay refinement (a dihedral D is refused as not
     supported yet); max_volume: refinement until every tet's volume is at most it.
+    optimize: sliver removal after refinement, 0 off, 1 flips, 2 (default) flips and
+    smoothing of interior points.
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: Mesh.write() defaults to writing exact rational Steiner points.
@@ -213,6 +215,7 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     options = {name: value for name, value in (("holes", holes), ("regions", regions),
                                                ("quality", quality),
                                                ("max_volume", max_volume),
+                                               ("optimize", optimize),
                                                ("round_budget", round_budget))
                if value is not None}
     if keep_surface:

@@ -147,7 +147,7 @@ static int progress_hook(void *user, const char *stage, double fraction)
  * key here and add its name to SUPPORTED_OPTIONS below. */
 static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
-    "max_volume",
+    "max_volume", "optimize",
     "holes", "regions", NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
@@ -241,6 +241,16 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         if (opt->quality_min_dihedral == -1.0 && PyErr_Occurred())
           return -1;
       }
+    } else if (!strcmp(k, "optimize")) {
+      /* the sliver removal level; the library refuses one out of 0..2 */
+      long x = PyLong_AsLong(value);
+      if (x == -1 && PyErr_Occurred())
+        return -1;
+      if (x < 0 || x > 2) {
+        PyErr_SetString(PyExc_ValueError, "optimize is 0, 1 or 2");
+        return -1;
+      }
+      opt->optimize = (int)x;
     } else if (!strcmp(k, "max_volume")) {
       if ((opt->max_volume = positive(value, "max_volume")) < 0)
         return -1;
@@ -304,7 +314,10 @@ static PyObject *stats_dict(const tr_stats *s)
                 {"inclusions", s->inclusions},
                 {"points_added_for_quality", s->points_added_for_quality},
                 {"tets_dihedral_below_5", s->tets_dihedral_below_5},
-                {"tets_dihedral_below_10", s->tets_dihedral_below_10}};
+                {"tets_dihedral_below_10", s->tets_dihedral_below_10},
+                {"points_added_for_sliver", s->points_added_for_sliver},
+                {"sliver_flips", s->sliver_flips},
+                {"sliver_points_smoothed", s->sliver_points_smoothed}};
   const struct {
     const char *name;
     double value;

@@ -117,6 +117,13 @@ static const struct option {
      "points refinement may add before it stops with exit 8\n"
      "(default: 100 per input point + 100,000, + 20 per V of the\n"
      "domain's volume with --max-volume)"},
+    {"--optimize", "N", C_MESH,
+     "sliver removal after quality refinement (runs only with\n"
+     "--quality or --max-volume): 0 off, 1 flips that raise the\n"
+     "smallest dihedral angle, 2 those flips and smoothing of\n"
+     "interior points (default 2); no point is added or moved off\n"
+     "an input edge or facet"},
+    {"-O", "N", C_MESH, "the same as --optimize (TetGen's switch)"},
     {"--progress", NULL, C_MESH,
      "a progress line (stage, share of stages done) on stderr from\n"
      "the start; without it the line shows when stderr is a\n"
@@ -135,6 +142,7 @@ typedef struct {
   int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
   int keep_surface, keep_steiner, progress;
   int msh_version; /* 41 or 22 */
+  int optimize; /* sliver removal level + 1, 0: the default */
   double quality, quality_dih, max_volume; /* 0: off */
   uint64_t refine_budget;                  /* 0: the default */
   uint64_t round_budget; /* 0: the default */
@@ -272,6 +280,11 @@ static tr_status set_option(args *a, const char *name, const char *v)
     if (!*v || *end || !(x > 0) || !isfinite(x))
       return tr_error(TR_ERR_USAGE, "%s needs a positive volume, not '%s'", name, v);
     a->max_volume = x;
+  }
+  else if (!strcmp(name, "--optimize") || !strcmp(name, "-O")) {
+    if (strlen(v) != 1 || v[0] < '0' || v[0] > '2')
+      return tr_error(TR_ERR_USAGE, "%s needs a level 0, 1 or 2, not '%s'", name, v);
+    a->optimize = v[0] - '0' + 1;
   }
   else if (!strcmp(name, "--keep-surface") || !strcmp(name, "-Y"))
     a->keep_surface = 1;
@@ -462,6 +475,8 @@ static int cmd_mesh(const args *a)
   opt.quality_min_dihedral = a->quality_dih;
   opt.max_volume = a->max_volume;
   opt.refine_budget = a->refine_budget;
+  if (a->optimize)
+    opt.optimize = a->optimize - 1;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();
@@ -512,6 +527,13 @@ static int cmd_mesh(const args *a)
     free(out);
     return finish(a, &stats, t0, s);
   }
+  /* sliver removal follows refinement: without a bound there is nothing it runs after */
+  int bounded = a->quality > 0 || a->max_volume > 0;
+  for (uint32_t i = 0; i < plc->nregions; i++)
+    bounded |= plc->region_maxvol[i] > 0;
+  if (a->optimize > 1 && !bounded && !a->quiet)
+    fprintf(stderr, "tetrec: warning: -O/--optimize has no effect without quality refinement "
+            "(--quality, --max-volume or a region's maximum volume)\n");
   /* The pipeline (src/pipeline): Delaunay, edge and facet recovery, outer removal. With
    * --exact (checked above to go to a .node), a rounding that cannot be repaired is a
    * warning, not a failure: the exact points are written. */

@@ -20,6 +20,7 @@
 #include "output/round.h"
 #include "pipeline.h"
 #include "refine/refine_stage.h"
+#include "sliver/sliver.h"
 #include "smooth/smooth.h"
 
 static tr_status copy_plc(const tr_plc *in, tr_plc **out)
@@ -125,6 +126,9 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   double secs[2];
   double *stage = stats->stage_seconds;
   tr_status st = tr_pipeline_progress(&opt, TR_STAGE_VALIDATE, 0);
+  if (st == TR_OK && (opt.optimize < TR_SLIVER_OFF || opt.optimize > TR_SLIVER_SMOOTH))
+    st = tr_error(TR_ERR_USAGE, "optimize level %d: it is 0 (off), 1 (flips) or 2 (flips "
+                  "and smoothing)", opt.optimize);
   if (st == TR_OK)
     st = copy_plc(plc, &p);
   /* Validation works on a copy: the caller's PLC is const. One the caller validated
@@ -213,6 +217,22 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = tr_refine_stage(m, p, &sub, &opt, keep_hull, &stats->points_added_for_quality);
     if (st == TR_OK)
       st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv0, &vkind, &vindex);
+    /* sliver removal: refinement bounds the radius-edge ratio, which slivers meet */
+    if (st == TR_OK && opt.optimize > 0) {
+      tr_sliver_params sp = {opt.optimize, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS,
+                             {opt.quality_ratio, opt.max_volume, p}};
+      tr_sliver_stats ss;
+      st = tr_sliver_remove(m, &sub, vkind, p->npoints, &sp, &ss);
+      stats->points_added_for_sliver = ss.points;
+      stats->sliver_flips = ss.flips23 + ss.flips32 + ss.flips44 + ss.flipsn;
+      stats->sliver_points_smoothed = ss.smoothed;
+      if (st == TR_OK && opt.verbose >= 2)
+        fprintf(stderr, "tetrec: sliver removal: %llu flips (2-3 %llu, 3-2 %llu, 4-4 %llu, "
+                "n %llu), %llu interior points moved\n",
+                (unsigned long long)stats->sliver_flips, (unsigned long long)ss.flips23,
+                (unsigned long long)ss.flips32, (unsigned long long)ss.flips44,
+                (unsigned long long)ss.flipsn, (unsigned long long)ss.smoothed);
+    }
   }
   PROGRESS(TR_STAGE_COLOR, 1);
   double t5 = tr_pipeline_now();

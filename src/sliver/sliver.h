@@ -1,0 +1,113 @@
+/* Sliver removal after quality refinement (issue 17): Delaunay refinement bounds the
+ * radius-edge ratio, which leaves slivers (four nearly coplanar points on a small
+ * circumsphere, dihedral angles near 0 and 180 degrees). This stage raises the worst
+ * dihedral angle locally, without adding points:
+ *
+ *  - flips.c: for every tet whose smallest dihedral angle is under the bound, the flips
+ *    that remove one of its faces (2-3) or one of its edges (3-2, 4-4, and edge removal
+ *    n -> 2n-4 up to SL_MAX_RING, the triangulation of the ring chosen by dynamic
+ *    programming to maximise the smallest dihedral angle). A flip is done only when the
+ *    smallest dihedral angle of the tets it creates is strictly larger than that of the
+ *    tets it deletes, and never deletes a constraint: a sub-face (tr_subfaces) or an edge
+ *    of one (so no input edge either). Validity is exact: every new tet strictly positive
+ *    by tr_orient3d_p on the exact points.
+ *  - smooth.c: every interior vertex (on no input edge or triangle, not an input point)
+ *    whose star holds such a tet is moved to a double position that strictly raises the
+ *    smallest dihedral angle of its star, accepted only when every tet of the star is
+ *    exactly positive with the new point. A moved vertex stays strictly inside its star,
+ *    so it never reaches a constraint; its exact point becomes the double itself.
+ *
+ * Angles are measured in doubles (src/refine/quality.h, on m->xyz): they only rank
+ * choices; every topological decision is exact. Both steps run in fixed passes in slot /
+ * vertex index order with ties broken by order, so the result is deterministic. Since
+ * every change strictly raises the minimum over the tets it touches and leaves the others
+ * alone, the mesh's smallest dihedral angle never decreases. */
+#ifndef TR_SLIVER_H
+#define TR_SLIVER_H
+
+#include <stdint.h>
+
+#include "mesh/mesh.h"
+#include "recover_facets/recover_facets.h"
+
+/* Levels of tr_options.optimize. */
+enum { TR_SLIVER_OFF = 0, TR_SLIVER_FLIPS = 1, TR_SLIVER_SMOOTH = 2 };
+
+/* The pipeline's choice: tets under 20 degrees are worked on (the bench's figures are the
+ * share under 10 and the minimum), in up to 3 rounds. */
+#define TR_SLIVER_BOUND 20.0
+#define TR_SLIVER_ROUNDS 3
+
+#define SL_MAX_RING 7 /* largest edge shell the flips remove (7 tets -> 10) */
+
+/* The refinement's bounds hold after the stage: a new tet's volume is at most its region's
+ * bound (exactly, as refinement decides it), and its radius-edge ratio at most the ratio
+ * bound or, where a tet it replaces was already over it, the largest ratio of those. */
+typedef struct tr_sliver_bounds {
+  double ratio;                /* radius-edge bound (0: none) */
+  double max_volume;           /* volume bound for every tet (0: none) */
+  const struct tr_plc *plc;    /* NULL, or its region points' maximum volumes by attribute */
+} tr_sliver_bounds;
+
+typedef struct tr_sliver_params {
+  int level;     /* TR_SLIVER_FLIPS or TR_SLIVER_SMOOTH */
+  double bound;  /* degrees: tets with a smaller dihedral angle are worked on */
+  int rounds;    /* rounds of (flip pass, smoothing pass) */
+  tr_sliver_bounds keep;
+} tr_sliver_params;
+
+typedef struct tr_sliver_stats {
+  uint64_t flips23, flips32, flips44, flipsn; /* n: edge removal with a shell of 5+ */
+  uint64_t smoothed;                          /* accepted vertex moves */
+  uint64_t points;                            /* points added: always 0 */
+} tr_sliver_stats;
+
+/* What the steps may not touch, built once from the sub-faces. */
+typedef struct tr_sliver_ctx {
+  struct tr_mesh *m;
+  uint32_t *faces, nfaces; /* sorted face keys (tr_cmp_face_key) of the sub-faces */
+  uint32_t *edges, nedges; /* sorted edge keys (tr_cmp_edge_key) of their edges */
+  uint8_t *movable;        /* nv: 1 for a vertex smoothing may move */
+  double bound;
+  tr_sliver_bounds keep;
+} tr_sliver_ctx;
+
+/* The context of one mesh: c->m = m, the constraint sets of sub, the movable vertices
+ * (vkind: see tr_sliver_remove), no bounds to keep (set c->keep after). Free with
+ * tr_sliver_ctx_free. */
+tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfaces *sub,
+                             const uint8_t *vkind, uint32_t npoints, double bound);
+void tr_sliver_ctx_free(tr_sliver_ctx *c);
+
+/* The smallest dihedral angle of tet (a,b,c,d) on m->xyz, degrees; 0 for a tet flat in
+ * doubles. */
+double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c,
+                              uint32_t d);
+/* The same with vertex v's coordinates replaced by x (v may be none of them); *ratio (may
+ * be NULL) = its radius-edge ratio. */
+double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
+                                 const double x[3], double *ratio);
+/* 1 iff tet p (positive, exact points; vertex v at the double x when v is one of them) of
+ * region `region` keeps c->keep: its exact volume at most the region's bound, and its ratio
+ * (given) at most max(c->keep.ratio, ratio_was) unless its smallest dihedral angle `dih`
+ * (given) is at least c->bound: a tet with no angle under the bound is well shaped
+ * whatever its ratio (small dihedral angles are what the ratio misses, not the reverse). */
+int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
+                           const double x[3], uint32_t region, double ratio, double dih,
+                           double ratio_was);
+
+/* 1 iff the face / edge (any vertex order) is a constraint the flips must keep. */
+int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv);
+
+/* One flip pass over the tets in slot order (flips.c). */
+tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+/* One smoothing pass over the movable vertices in index order (smooth.c). */
+tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+
+/* The stage: m holds only inner tets (tr_refine's output), sub their sub-faces, vkind the
+ * vertex origins (tetrec.h's enum tr_vertex_origin; NULL: none known, so only vertices
+ * above npoints on no sub-face move). */
+tr_status tr_sliver_remove(struct tr_mesh *m, const tr_subfaces *sub, const uint8_t *vkind,
+                           uint32_t npoints, const tr_sliver_params *par, tr_sliver_stats *st);
+
+#endif

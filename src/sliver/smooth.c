@@ -1,0 +1,181 @@
+/* Smoothing of interior vertices (sliver.h): a vertex whose star holds a tet with a
+ * dihedral angle under the bound moves, in doubles, along the direction that opens the
+ * worst angle of its star, or towards the centroid of its link, to the trial position that
+ * gives the star the largest smallest angle; the move is kept only when that beats the
+ * star as it is and every tet of the star is exactly positive with the new point, which
+ * keeps the point strictly inside its link polyhedron, so it reaches no constraint. */
+#include <math.h>
+#include <string.h>
+
+#include "sliver/sliver.h"
+
+#define SL_STEPS 6 /* trial steps: h/2, h/4, ..., h the shortest edge at the vertex */
+#define SL_MOVES 4 /* moves per vertex and pass */
+
+/* The smallest dihedral angle of the star with v at x; *worst = its tet (ball index). */
+static double star_min(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
+                       const double x[3], size_t *worst)
+{
+  double lo = INFINITY;
+  for (size_t i = 0; i < ball->n; i++) {
+    double q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)ball->a[i], v, x, NULL);
+    if (q < lo) {
+      lo = q;
+      if (worst)
+        *worst = i;
+    }
+  }
+  return lo;
+}
+
+/* Every tet of the star exactly positive with v at x, and within the bounds (a tet's
+ * ratio may exceed the bound only up to the star's largest ratio as it is, `was`). */
+static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
+                      const double x[3], double was)
+{
+  const struct tr_mesh *m = c->m;
+  for (size_t i = 0; i < ball->n; i++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
+    tr_point p[4];
+    for (int k = 0; k < 4; k++)
+      p[k] = tv[k] == v ? tr_pt_d(x) : tr_mesh_point(m, tv[k]);
+    if (tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) <= 0)
+      return 0;
+  }
+  for (size_t i = 0; i < ball->n; i++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
+    double r, q = tr_sliver_min_dihedral_at(m, tv, v, x, &r);
+    if (!tr_sliver_keeps_bounds(c, tv, v, x, m->region ? m->region[ball->a[i]] : 0, r, q, was))
+      return 0;
+  }
+  return 1;
+}
+
+/* The largest radius-edge ratio of the star as it is. */
+static double star_ratio(const struct tr_mesh *m, const tr_u32buf *ball)
+{
+  double was = 0, r;
+  for (size_t i = 0; i < ball->n; i++) {
+    tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)ball->a[i], TR_NONE, NULL, &r);
+    was = fmax(was, r);
+  }
+  return was;
+}
+
+/* Every face of the star through v has a tet behind it: v is inside the mesh. */
+static int star_closed(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v)
+{
+  for (size_t i = 0; i < ball->n; i++)
+    for (int k = 0; k < 4; k++)
+      if (m->tv[4 * (size_t)ball->a[i] + (size_t)k] != v &&
+          m->tn[4 * (size_t)ball->a[i] + (size_t)k] == TR_NONE)
+        return 0;
+  return 1;
+}
+
+/* One improving move of v, if there is one (*moved = 1). */
+static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, double q0,
+                 size_t worst, double to[3], int *moved)
+{
+  const struct tr_mesh *m = c->m;
+  const double *x0 = m->xyz + 3 * (size_t)v;
+  /* the shortest edge at v and the centroid of the link */
+  double h = INFINITY, cen[3] = {0, 0, 0};
+  size_t nl = 0;
+  for (size_t i = 0; i < ball->n; i++)
+    for (int k = 0; k < 4; k++) {
+      uint32_t w = m->tv[4 * (size_t)ball->a[i] + (size_t)k];
+      if (w == v)
+        continue;
+      const double *y = m->xyz + 3 * (size_t)w;
+      double d2 = 0;
+      for (int j = 0; j < 3; j++) {
+        d2 += (y[j] - x0[j]) * (y[j] - x0[j]);
+        cen[j] += y[j];
+      }
+      h = fmin(h, sqrt(d2));
+      nl++;
+    }
+  *moved = 0;
+  if (!(h > 0) || !isfinite(h) || !nl)
+    return;
+  for (int j = 0; j < 3; j++)
+    cen[j] /= (double)nl; /* every link vertex counted once per tet: a weighted centroid */
+  /* the gradient of the worst tet's worst angle, by central differences */
+  const uint32_t *wt = m->tv + 4 * (size_t)ball->a[worst];
+  double g[3], eps = h * 1e-6, gn = 0;
+  for (int j = 0; j < 3; j++) {
+    double xp[3] = {x0[0], x0[1], x0[2]}, xm[3] = {x0[0], x0[1], x0[2]};
+    xp[j] += eps;
+    xm[j] -= eps;
+    g[j] = tr_sliver_min_dihedral_at(m, wt, v, xp, NULL) -
+           tr_sliver_min_dihedral_at(m, wt, v, xm, NULL);
+    gn += g[j] * g[j];
+  }
+  gn = sqrt(gn);
+  /* trial positions: SL_STEPS along the gradient, the centroid and half-way to it */
+  double trial[SL_STEPS + 2][3], val[SL_STEPS + 2];
+  int nt = 0;
+  for (int s = 0; s < SL_STEPS && gn > 0 && isfinite(gn); s++, nt++) {
+    double step = h / (double)(2 << s);
+    for (int j = 0; j < 3; j++)
+      trial[nt][j] = x0[j] + step * g[j] / gn;
+  }
+  for (int j = 0; j < 3; j++) {
+    trial[nt][j] = cen[j];
+    trial[nt + 1][j] = 0.5 * (x0[j] + cen[j]);
+  }
+  nt += 2;
+  for (int i = 0; i < nt; i++)
+    val[i] = star_min(m, ball, v, trial[i], NULL);
+  double was = star_ratio(m, ball);
+  /* the best trial that is exactly valid; ties to the earlier one */
+  for (;;) {
+    int b = -1;
+    for (int i = 0; i < nt; i++)
+      if (val[i] > q0 && (b < 0 || val[i] > val[b]))
+        b = i;
+    if (b < 0)
+      return;
+    if (star_valid(c, ball, v, trial[b], was)) {
+      memcpy(to, trial[b], sizeof trial[b]);
+      *moved = 1;
+      return;
+    }
+    val[b] = -1;
+  }
+}
+
+tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
+{
+  struct tr_mesh *m = c->m;
+  tr_u32buf ball = {0};
+  tr_status s = TR_OK;
+  for (uint32_t v = 0; v < m->nv && s == TR_OK; v++) {
+    if (!c->movable[v])
+      continue;
+    if ((s = tr_ball(m, v, 0, &ball)) != TR_OK)
+      break;
+    if (!ball.n || !star_closed(m, &ball, v))
+      continue;
+    int moved = 0;
+    for (int it = 0; it < SL_MOVES; it++) {
+      size_t worst = 0;
+      double q0 = star_min(m, &ball, v, m->xyz + 3 * (size_t)v, &worst);
+      if (!(q0 < c->bound))
+        break;
+      double to[3];
+      int ok;
+      move(c, &ball, v, q0, worst, to, &ok);
+      if (!ok)
+        break;
+      memcpy(m->xyz + 3 * (size_t)v, to, sizeof to);
+      if (m->vq && m->vq[v]) /* the exact point is the double from now on */
+        tr_qpoint_set_d(m->vq[v], to);
+      moved = 1;
+    }
+    st->smoothed += (uint64_t)moved;
+  }
+  tr_u32buf_free(&ball);
+  return s;
+}

@@ -1,0 +1,353 @@
+/* Sliver removal (src/sliver/sliver.h): on hand-made meshes (the Delaunay mesh of a box
+ * with a sliver inside) and through the whole pipeline on refined surfaces from
+ * tests/data. Every mesh goes through the mesh validator (links, exact orientation, v2t)
+ * and, the pipeline's, through the exact conformity validator (every input edge a chain
+ * of mesh edges, every input triangle exactly covered, exact volume). */
+#include <gmp.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/plc.h"
+#include "delaunay/delaunay.h"
+#include "mesh/check.h"
+#include "mesh/conform.h"
+#include "pipeline/pipeline.h"
+#include "refine/quality.h"
+#include "sliver/sliver.h"
+#include "../pipeline/texpect.h"
+
+/* The box [0,1]^3 (vertices 0..7) and a sliver: a square at z = 1/2 folded by e, its
+ * corners alternately up and down (vertices 8..11). Its circumsphere is centred in the
+ * square, so the four points form a Delaunay tet with dihedral angles near 0 and 180. */
+static tr_mesh *sliver_box(double e)
+{
+  double x[36];
+  for (int i = 0; i < 8; i++)
+    for (int k = 0; k < 3; k++)
+      x[3 * i + k] = (i >> k) & 1 ? 1.0 : 0.0;
+  const double sq[4][3] = {{0.375, 0.375, 0.5 + e}, {0.625, 0.375, 0.5 - e},
+                           {0.625, 0.625, 0.5 + e}, {0.375, 0.625, 0.5 - e}};
+  memcpy(x + 24, sq, sizeof sq);
+  tr_mesh *m = NULL;
+  if (tr_delaunay_build(x, 12, &m) != TR_OK) {
+    fprintf(stderr, "Delaunay failed: %s\n", tr_last_error());
+    exit(1);
+  }
+  return m;
+}
+
+/* 1 iff some live tet has exactly the vertices v (any order). */
+static int has_tet(const tr_mesh *m, const uint32_t v[4])
+{
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    int n = 0;
+    for (int i = 0; i < 4; i++)
+      n += tr_ncode(m, t, v[i]) >= 0;
+    if (n == 4)
+      return 1;
+  }
+  return 0;
+}
+
+static double min_dihedral(const tr_mesh *m)
+{
+  tr_quality q;
+  tr_quality_measure(m, &q);
+  return q.min_dihedral;
+}
+
+/* The validator, and the exact volume of the box (6 * 1). */
+static void valid_box(const char *name, const tr_mesh *m)
+{
+  mpq_t six;
+  mpq_init(six);
+  mpq_set_ui(six, 6, 1);
+  tr_status s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six);
+  EXPECT(s == TR_OK, "%s: mesh validator: %s", name, tr_last_error());
+  mpq_clear(six);
+}
+
+static void a_sliver_is_removed_by_a_flip(void)
+{
+  tr_mesh *m = sliver_box(0.01);
+  const uint32_t sl[4] = {8, 9, 10, 11};
+  EXPECT(has_tet(m, sl), "the folded square is not a tet of the Delaunay mesh");
+  double before = min_dihedral(m);
+  EXPECT(before < 5, "the sliver's smallest angle %g is not small", before);
+  tr_subfaces none = {0, NULL, NULL};
+  tr_sliver_params par = {TR_SLIVER_FLIPS, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, {0, 0, NULL}};
+  tr_sliver_stats st;
+  tr_status s = tr_sliver_remove(m, &none, NULL, 8, &par, &st);
+  EXPECT(s == TR_OK, "sliver stage: %s", tr_last_error());
+  EXPECT(!has_tet(m, sl), "the sliver is still there");
+  EXPECT(st.flips23 + st.flips32 + st.flips44 + st.flipsn > 0 && st.smoothed == 0 &&
+             st.points == 0, "flips only were asked for");
+  double after = min_dihedral(m);
+  EXPECT(after > before, "smallest dihedral angle %g -> %g: not raised", before, after);
+  valid_box("flip", m);
+  tr_mesh_destroy(m);
+}
+
+/* A sub-face through the sliver's diagonal 8-10 and a vertex (9) given as lying on an input
+ * triangle: neither the face nor the edge is flipped away, 8, 9, 10 do not move, and the
+ * free vertex 11 may. */
+static void constraints_are_kept_and_their_vertices_stay(void)
+{
+  tr_mesh *m = sliver_box(0.01);
+  uint32_t f[3] = {8, 10, 9}, t = TR_NONE;
+  tr_ball_find(m, 8, 10, 9, &t);
+  EXPECT(t != TR_NONE, "8 10 9 is not a face");
+  uint32_t tri = 0;
+  tr_subfaces sub = {1, f, &tri};
+  uint8_t vkind[12];
+  for (int v = 0; v < 12; v++)
+    vkind[v] = v < 8 ? TR_VERTEX_INPUT : TR_VERTEX_INTERIOR;
+  vkind[9] = TR_VERTEX_ON_TRIANGLE;
+  double x0[36];
+  memcpy(x0, m->xyz, sizeof x0);
+  double before = min_dihedral(m);
+  tr_sliver_params par = {TR_SLIVER_SMOOTH, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, {0, 0, NULL}};
+  tr_sliver_stats st;
+  tr_status s = tr_sliver_remove(m, &sub, vkind, 8, &par, &st);
+  EXPECT(s == TR_OK, "sliver stage: %s", tr_last_error());
+  for (uint32_t v = 0; v < 11; v++)
+    EXPECT(!memcmp(x0 + 3 * v, m->xyz + 3 * (size_t)v, 24), "vertex %u moved", v);
+  t = TR_NONE;
+  tr_ball_find(m, 8, 10, 9, &t);
+  EXPECT(t != TR_NONE, "the sub-face 8 10 9 was flipped away");
+  double after = min_dihedral(m);
+  EXPECT(after >= before, "smallest dihedral angle %g -> %g: lowered", before, after);
+  valid_box("constraints", m);
+  tr_mesh_destroy(m);
+}
+
+/* The smallest dihedral angle of the tets at vertex v. */
+static double star_min(const tr_mesh *m, uint32_t v)
+{
+  double q = 180;
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (tr_tet_is_real(m, t) && tr_ncode(m, t, v) >= 0) {
+      const uint32_t *w = m->tv + 4 * (size_t)t;
+      q = fmin(q, tr_sliver_min_dihedral(m, w[0], w[1], w[2], w[3]));
+    }
+  return q;
+}
+
+/* One smoothing pass with 11 the only vertex that may move (npoints 11, no sub-faces):
+ * it moves, the smallest angle of its star rises, the mesh's does not drop, every tet
+ * stays exactly positive. */
+static void smoothing_moves_a_free_vertex_and_raises_the_angle(void)
+{
+  tr_mesh *m = sliver_box(0.01);
+  double before = min_dihedral(m), star0 = star_min(m, 11), x0[36];
+  memcpy(x0, m->xyz, sizeof x0);
+  tr_subfaces none = {0, NULL, NULL};
+  tr_sliver_ctx c;
+  tr_sliver_stats st;
+  memset(&st, 0, sizeof st);
+  tr_status s = tr_sliver_ctx_init(&c, m, &none, NULL, 11, TR_SLIVER_BOUND);
+  if (s == TR_OK)
+    s = tr_sliver_smooth_pass(&c, &st);
+  EXPECT(s == TR_OK, "smoothing: %s", tr_last_error());
+  tr_sliver_ctx_free(&c);
+  EXPECT(st.smoothed == 1, "%llu vertices moved, 11 only may", (unsigned long long)st.smoothed);
+  for (uint32_t v = 0; v < 11; v++)
+    EXPECT(!memcmp(x0 + 3 * v, m->xyz + 3 * (size_t)v, 24), "vertex %u moved", v);
+  double after = min_dihedral(m), star1 = star_min(m, 11);
+  EXPECT(star1 > star0, "smallest dihedral angle at 11 %g -> %g: not raised", star0, star1);
+  EXPECT(after >= before, "smallest dihedral angle %g -> %g: lowered", before, after);
+  valid_box("smoothing", m);
+  tr_mesh_destroy(m);
+}
+
+/* Every flip pass and smoothing pass on a box with several slivers leaves the smallest
+ * dihedral angle where it was or higher, and a valid mesh. */
+static void no_pass_lowers_the_smallest_angle(void)
+{
+  for (int i = 1; i <= 4; i++) {
+    tr_mesh *m = sliver_box(0.002 * i);
+    tr_subfaces none = {0, NULL, NULL};
+    tr_sliver_ctx c;
+    tr_sliver_stats st;
+    memset(&st, 0, sizeof st);
+    tr_status s = tr_sliver_ctx_init(&c, m, &none, NULL, 8, TR_SLIVER_BOUND);
+    double q = min_dihedral(m);
+    for (int pass = 0; pass < 6 && s == TR_OK; pass++) {
+      s = pass % 2 ? tr_sliver_smooth_pass(&c, &st) : tr_sliver_flip_pass(&c, &st);
+      double r = min_dihedral(m);
+      EXPECT(r >= q, "fold %d pass %d: smallest dihedral angle %g -> %g", i, pass, q, r);
+      q = r;
+    }
+    EXPECT(s == TR_OK, "passes: %s", tr_last_error());
+    tr_sliver_ctx_free(&c);
+    valid_box("passes", m);
+    tr_mesh_destroy(m);
+  }
+}
+
+/* Meshes plc with --quality R and the given level; validators; NULL on failure. */
+static tr_mesh *mesh(const char *name, const tr_plc *plc, int level, unsigned chk,
+                     tr_plc **used, tr_stats *st)
+{
+  tr_options opt;
+  tr_options_default(&opt);
+  opt.verbose = 0;
+  opt.quality_ratio = 1.414;
+  opt.optimize = level;
+  tr_mesh *m = NULL;
+  memset(st, 0, sizeof *st);
+  st->size = sizeof *st;
+  tr_status s = tr_mesh_plc_ex(plc, &opt, &m, st, used);
+  if (s != TR_OK) {
+    EXPECT(0, "%s -O %d: tr_mesh_plc failed: %s: %s", name, level, tr_status_name(s),
+           tr_last_error());
+    return NULL;
+  }
+  s = tr_check_mesh(m, chk, NULL);
+  EXPECT(s == TR_OK, "%s -O %d: mesh validator: %s", name, level, tr_last_error());
+  s = tr_check_conformity(m, *used, NULL, 0);
+  EXPECT(s == TR_OK, "%s -O %d: exact conformity: %s", name, level, tr_last_error());
+  return m;
+}
+
+/* Refined surfaces of tests/data with and without the stage: both validate, the stage adds
+ * no point, keeps every input vertex where it was, never lowers the smallest dihedral
+ * angle, leaves no more tets under 10 degrees, and keeps the ratio bound on the tets with
+ * an angle under its bound. */
+static void refined_surfaces(const char *dir)
+{
+  const char *files[] = {"schoenhardt.off", "cavity.off", "cube_facets.poly", "two_cubes.off",
+                         "star_rounding_budget.off"};
+  for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, files[i]);
+    tr_plc *p = NULL;
+    if (tr_plc_read(path, &p) != TR_OK) {
+      EXPECT(0, "%s: %s", path, tr_last_error());
+      continue;
+    }
+    /* a cavity or two cubes are not a ball: no Euler check (the volume is checked exactly) */
+    unsigned chk = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T;
+    tr_plc *u0 = NULL, *u2 = NULL;
+    tr_stats s0, s2;
+    tr_mesh *m0 = mesh(files[i], p, 0, chk, &u0, &s0);
+    tr_mesh *m2 = mesh(files[i], p, 2, chk, &u2, &s2);
+    if (m0 && m2) {
+      EXPECT(s2.points_added_for_sliver == 0 && s0.volume_nodes == s2.volume_nodes,
+             "%s: the stage added points (%llu -> %llu vertices)", files[i],
+             (unsigned long long)s0.volume_nodes, (unsigned long long)s2.volume_nodes);
+      EXPECT(s0.sliver_flips == 0 && s0.sliver_points_smoothed == 0,
+             "%s: -O 0 flipped or moved", files[i]);
+      EXPECT(s2.min_dihedral >= s0.min_dihedral, "%s: smallest dihedral %g -> %g", files[i],
+             s0.min_dihedral, s2.min_dihedral);
+      EXPECT(s2.tets_dihedral_below_10 <= s0.tets_dihedral_below_10,
+             "%s: tets under 10 degrees %llu -> %llu", files[i],
+             (unsigned long long)s0.tets_dihedral_below_10,
+             (unsigned long long)s2.tets_dihedral_below_10);
+      /* the ratio bound holds for every tet with an angle under the stage's bound, up to
+       * the worst ratio refinement left (exempt tets); the written doubles of Steiner
+       * points may differ from the ones the stage measured by a few ulps */
+      double worst0 = 0, worst2 = 0;
+      for (int k = 0; k < 2; k++) {
+        const tr_mesh *m = k ? m2 : m0;
+        for (uint32_t t = 0; t < m->nt; t++) {
+          double r = 0, q;
+          if (!tr_tet_is_real(m, t))
+            continue;
+          q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
+          if (!k)
+            worst0 = fmax(worst0, r);
+          else if (q < TR_SLIVER_BOUND)
+            worst2 = fmax(worst2, r);
+        }
+      }
+      EXPECT(worst2 <= fmax(1.414, worst0) * (1 + 1e-9),
+             "%s: a tet under %g degrees has ratio %g above max(1.414, %g)", files[i],
+             TR_SLIVER_BOUND, worst2, worst0);
+      for (uint32_t v = 0; v < m2->nv && v < m0->nv; v++) {
+        int k0, k2;
+        uint32_t x0, x2;
+        if (tr_mesh_vertex_origin(m0, v, &k0, &x0) != TR_OK ||
+            tr_mesh_vertex_origin(m2, v, &k2, &x2) != TR_OK) {
+          EXPECT(0, "%s: vertex origin %u: %s", files[i], v, tr_last_error());
+          break;
+        }
+        if (k0 == TR_VERTEX_INPUT || k2 == TR_VERTEX_INPUT)
+          EXPECT(k0 == k2 && !memcmp(m0->xyz + 3 * (size_t)v, m2->xyz + 3 * (size_t)v, 24),
+                 "%s: input vertex %u moved", files[i], v);
+      }
+      fprintf(stderr, "%s: min dihedral %.3f -> %.3f, under 10 deg %llu -> %llu, %llu flips, "
+              "%llu moved\n", files[i], s0.min_dihedral, s2.min_dihedral,
+              (unsigned long long)s0.tets_dihedral_below_10,
+              (unsigned long long)s2.tets_dihedral_below_10,
+              (unsigned long long)s2.sliver_flips,
+              (unsigned long long)s2.sliver_points_smoothed);
+    }
+    tr_mesh_destroy(m0);
+    tr_mesh_destroy(m2);
+    tr_plc_destroy(u0);
+    tr_plc_destroy(u2);
+    tr_plc_destroy(p);
+  }
+}
+
+/* Two runs, the same bytes; an unknown level is a usage error before any work. */
+static void deterministic_and_levels_checked(const char *dir)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/star_rounding_budget.off", dir);
+  tr_plc *p = NULL;
+  if (tr_plc_read(path, &p) != TR_OK) {
+    EXPECT(0, "%s: %s", path, tr_last_error());
+    return;
+  }
+  tr_plc *u0 = NULL, *u1 = NULL;
+  tr_stats st;
+  tr_mesh *m0 = mesh("determinism", p, 2, TR_CHK_TOPOLOGY, &u0, &st);
+  tr_mesh *m1 = mesh("determinism", p, 2, TR_CHK_TOPOLOGY, &u1, &st);
+  if (m0 && m1) {
+    EXPECT(m0->nv == m1->nv && m0->nt == m1->nt, "determinism: sizes differ");
+    if (m0->nv == m1->nv && m0->nt == m1->nt)
+      EXPECT(!memcmp(m0->xyz, m1->xyz, 24 * (size_t)m0->nv) &&
+                 !memcmp(m0->tv, m1->tv, 16 * (size_t)m0->nt),
+             "determinism: two runs differ");
+  }
+  tr_options opt;
+  tr_options_default(&opt);
+  EXPECT(opt.optimize == TR_SLIVER_SMOOTH, "default level %d", opt.optimize);
+  opt.verbose = 0;
+  opt.quality_ratio = 1.414;
+  opt.optimize = 3;
+  tr_mesh *bad = NULL;
+  EXPECT(tr_mesh_plc(p, &opt, &bad, NULL) == TR_ERR_USAGE && !bad, "level 3 accepted");
+  tr_mesh_destroy(m0);
+  tr_mesh_destroy(m1);
+  tr_plc_destroy(u0);
+  tr_plc_destroy(u1);
+  tr_plc_destroy(p);
+}
+
+int main(int argc, char **argv)
+{
+  const char *c = argc > 1 ? argv[1] : "";
+  if (!strcmp(c, "flip"))
+    a_sliver_is_removed_by_a_flip();
+  else if (!strcmp(c, "constraints"))
+    constraints_are_kept_and_their_vertices_stay();
+  else if (!strcmp(c, "smoothing"))
+    smoothing_moves_a_free_vertex_and_raises_the_angle();
+  else if (!strcmp(c, "passes"))
+    no_pass_lowers_the_smallest_angle();
+  else if (!strcmp(c, "surfaces") && argc > 2)
+    refined_surfaces(argv[2]);
+  else if (!strcmp(c, "determinism") && argc > 2)
+    deterministic_and_levels_checked(argv[2]);
+  else {
+    fprintf(stderr, "unknown case '%s'\n", c);
+    return 2;
+  }
+  return failures != 0;
+}
