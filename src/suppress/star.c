@@ -440,6 +440,10 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
     if (st == TR_OK && !*done && !inner && (flags & TR_SUP_RELOCATE))
       st = try_relocate(c, p, &star, &bf, &old, &merged, region, dbl, done);
   }
+  /* last, since its undo may move the star's tets to other slots */
+  for (int dbl = 1; dbl >= (flags & TR_SUP_REQUIRE ? 0 : 1) && !*done && st == TR_OK; dbl--)
+    if (inner && (flags & TR_SUP_REMOVE))
+      st = sup_flip_out(m, p, region, dbl, done);
 done:
   tr_u32buf_free(&old);
   tr_u32buf_free(&star);
