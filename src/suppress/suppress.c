@@ -266,8 +266,9 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
             }
           }
         }
-        if (rounds[r] != TR_SUP_REMOVE)
-          break; /* a relocated point is off the boundary: one pass is enough */
+        if (rounds[r] & TR_SUP_RELOCATE)
+          break; /* a relocated point is off the boundary: one pass is enough; removals
+                    free their neighbours, so those rounds go on while they remove */
       }
     }
   }

@@ -61,7 +61,9 @@ enum {
  * in all and far fewer on the surface, for 2% more CPU. An interior point no cone takes
  * out is then removed by flips (flipout.c): 509 left (4 on edges), the same CPU; a second
  * removal / relocation round and interior removal after it: 454 (1 on an edge), and
- * --keep-surface meshes all 84 (80 with three rounds). */
+ * --keep-surface meshes all 84 (80 with three rounds); an interior point the flips
+ * cannot remove moved into its kernel first, and the removal rounds repeated while they
+ * remove something: 358 (none on the surface; 589 under --keep-surface). */
 #define TR_SUP_DEFAULT (TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_INTERIOR)
 
 typedef struct tr_suppress_stats {
