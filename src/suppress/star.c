@@ -378,6 +378,8 @@ static tr_status try_relocate(sup_ctx *c, uint32_t p, const tr_u32buf *star,
       double d = fabs(m->xyz[3 * (size_t)bf->a[i] + k] - p0[k]);
       dir[3] = d > dir[3] ? d : dir[3];
     }
+  if (nf == star->n)
+    dir[3] = 0; /* an interior point: no surface to step away from */
   if (!find_q(m, bf, star, p0, g, dir, dbl, q))
     return TR_OK;
   tr_u32buf nv = {0};
@@ -439,6 +441,29 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
       st = try_remove(c, p, &star, &bf, &old, &merged, region, dbl, done);
     if (st == TR_OK && !*done && !inner && (flags & TR_SUP_RELOCATE))
       st = try_relocate(c, p, &star, &bf, &old, &merged, region, dbl, done);
+  }
+  /* last, since its undo may move the star's tets to other slots */
+  for (int dbl = 1; dbl >= (flags & TR_SUP_REQUIRE ? 0 : 1) && !*done && st == TR_OK; dbl--)
+    if (inner && (flags & TR_SUP_REMOVE))
+      st = sup_flip_out(m, p, region, dbl, done);
+  /* The edge removals' positivity depends on where p is: a point relocated off the
+   * surface sits just inside it, where its star is flat. Moved into its kernel (the
+   * centroid of its link or a point towards it, kept as a double, find_q), it is often
+   * removable; if not, it stays there (a valid interior point). The star changed. */
+  if (st == TR_OK && !*done && inner && (flags & TR_SUP_REMOVE)) {
+    st = star_of(c, p, &old, &star, &region, &ok);
+    bf.n = 0;
+    for (size_t i = 0; i < star.n && st == TR_OK && ok; i++) {
+      const uint32_t *tv = m->tv + 4 * (size_t)star.a[i];
+      int k = tr_ncode(m, star.a[i], p);
+      for (int j = 0; j < 3 && st == TR_OK; j++)
+        st = tr_u32buf_push(&bf, tv[tr_face_vtx[k][j]]);
+    }
+    int moved = 0;
+    if (st == TR_OK && ok)
+      st = try_relocate(c, p, &star, &bf, &old, &merged, region, 1, &moved);
+    if (st == TR_OK && moved)
+      st = sup_flip_out(m, p, region, 1, done);
   }
 done:
   tr_u32buf_free(&old);

@@ -24,7 +24,9 @@
  * New tets must also be positive with every Steiner point at its nearest double (what
  * rounding can repair is the vertices' rounding, not the shape); under --keep-surface a
  * last try asks only the exact test and leaves the rest to the rounding repair.
- * Otherwise p stays. No tolerance decides anything.
+ * Otherwise p stays. An interior point (TR_SUP_INTERIOR) whose star no vertex sees is
+ * removed by flips that only delete simplices on p (flipout.c). No tolerance decides
+ * anything.
  *
  * The outer tets are taken out of the working mesh first (their faces on the domain side
  * become mesh boundary, neighbour TR_NONE): they are discarded by compaction anyway and
@@ -49,13 +51,19 @@ enum {
   TR_SUP_CHECK = 1u << 3,    /* tests: the mesh validator and the exact conformity
                                 validator after every change (closed PLCs only) */
   TR_SUP_INTERIOR = 1u << 4  /* full removal of interior Steiner points too (those the
-                                recovery put inside and those relocated), last round */
+                                recovery put inside and those relocated), last round: a
+                                cone from a star vertex, else flips down to a 4-1 flip */
 };
 /* What the default mode runs. On CGAL's 84 sample models recovery adds 4,434 Steiner
  * points, all on input edges; full removal alone leaves 1,797 (on edges); removal, then
  * relocation of the rest, then removal again leaves 1,363, of which 4 on the surface;
  * with the removal of interior points in the last round 1,137 (4 on edges): fewer points
- * in all and far fewer on the surface, for 2% more CPU. */
+ * in all and far fewer on the surface, for 2% more CPU. An interior point no cone takes
+ * out is then removed by flips (flipout.c): 509 left (4 on edges), the same CPU; a second
+ * removal / relocation round and interior removal after it: 454 (1 on an edge), and
+ * --keep-surface meshes all 84 (80 with three rounds); an interior point the flips
+ * cannot remove moved into its kernel first, and the removal rounds repeated while they
+ * remove something: 358 (none on the surface; 589 under --keep-surface). */
 #define TR_SUP_DEFAULT (TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_INTERIOR)
 
 typedef struct tr_suppress_stats {

@@ -36,4 +36,10 @@ tr_status sup_unsplit(sup_ctx *c, uint32_t p, const tr_u32buf *old, tr_u32buf *m
  * (TR_SUP_RELOCATE). *done = 0 (p stays), 1 (removed) or 2 (relocated). */
 tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done);
 
+/* Removes interior point p (no constraint on its star, region: its tets' region) by flips
+ * that bring it down to four tets, then a 4-1 flip (flipout.c). dbl: refuse a new tet that
+ * is not positive with its vertices at their doubles too. *done = 1 if p is gone; else
+ * the mesh is as it was. */
+tr_status sup_flip_out(struct tr_mesh *m, uint32_t p, uint32_t region, int dbl, int *done);
+
 #endif
