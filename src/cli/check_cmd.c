@@ -171,9 +171,17 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
    * fills its convex hull: the enclosed volume means nothing. */
   uint32_t nsteiner = vol->npoints > surface->npoints ? vol->npoints - surface->npoints : 0;
   int rounded = nsteiner && !exact_file;
-  int with_volume = !rounded && !allow_open;
   int smoothed = 0;
   tr_status st = tr_input_domain_volume6(surface, v6); /* internal facets, cracks too */
+  /* The doubles may be the exact points after all: Steiner points strictly inside the
+   * domain (--keep-surface, or all surface points suppressed) are plain doubles. Then the
+   * full exact check passes on them as read, and nothing is left unverified. */
+  if (st == TR_OK && rounded && tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T,
+                                              allow_open ? NULL : v6) == TR_OK &&
+      conformity(m, surface, allow_open ? NULL : v6, allow_open ? TR_CONF_OPEN : 0,
+                 &smoothed) == TR_OK)
+    rounded = 0;
+  int with_volume = !rounded && !allow_open;
   if (st == TR_OK)
     st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, with_volume ? v6 : NULL);
   if (st == TR_OK && !rounded)
@@ -199,7 +207,8 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
     else
       fprintf(stderr, "tetrec: check: %u tets%s, links and orientation are valid, the mesh "
               "conforms exactly to the surface%s%s\n", vol->ntets,
-              nsteiner ? " (Steiner points read exactly)" : "",
+              !nsteiner ? "" : exact_file ? " (Steiner points read exactly)"
+                                          : " (Steiner points as written, exactly)",
               smoothed ? " with its coplanar diagonals swapped" : "",
               with_volume ? ", volume equals the enclosed volume" : "");
   }

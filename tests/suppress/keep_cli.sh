@@ -1,7 +1,7 @@
 #!/bin/sh
 # `tetrec mesh --keep-surface` / `-Y` from the command line: on Schoenhardt's prism it
 # writes a mesh with no Steiner point on the surface (stats rows) that `tetrec check`
-# accepts; on a fin attached inside a box (a Steiner point on the fin's edge, which has
+# verifies exactly as written (the interior point is a double); on a fin attached inside a box (a Steiner point on the fin's edge, which has
 # tets of one region on both sides) it exits 11 naming the point and the edge, and writes
 # nothing; --keep-surface with --keep-steiner is a usage error.
 # usage: keep_cli.sh TETREC GEN_HARD SCHOENHARDT.off WORKDIR
@@ -22,8 +22,11 @@ for opt in --keep-surface -Y; do
   grep -q '"steiner_on_edges": 0,' "$work/s.json" && grep -q '"steiner_on_facets": 0,' "$work/s.json" ||
     say "$opt: Steiner points left on the surface: $(grep steiner "$work/s.json")"
   grep -q '"steiner_relocated": 1' "$work/s.json" || say "$opt: the point was not moved inside"
-  "$tetrec" check "$schoen" "$work/s.node" 2>"$work/s.check" ||
+  # the interior point is a plain double: check verifies the mesh exactly as written
+  "$tetrec" check "$schoen" "$work/s.node" -v 2>"$work/s.check" ||
     say "$opt: check exited $?: $(tail -1 "$work/s.check")"
+  grep -q "conforms exactly to the surface, volume equals the enclosed volume" "$work/s.check" ||
+    say "$opt: check did not verify the doubles exactly: $(cat "$work/s.check")"
 done
 
 "$tetrec" mesh "$work/fin_attached_inside.off" -o "$work/fin.node" -Y 2>"$work/fin.log"
