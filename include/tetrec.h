@@ -168,11 +168,12 @@ tr_status tr_mesh_input_edge(const tr_mesh *mesh, uint32_t k, uint32_t *a, uint3
  * and writing are filled by the caller that reads and writes (the CLI does). */
 enum tr_stage {
   TR_STAGE_READ, TR_STAGE_VALIDATE, TR_STAGE_SELFINT, TR_STAGE_NESTING, TR_STAGE_SMOOTH,
-  TR_STAGE_DELAUNAY, TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR, TR_STAGE_ROUND,
-  TR_STAGE_WRITE, TR_STAGE_COUNT
+  TR_STAGE_DELAUNAY, TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR, TR_STAGE_REFINE,
+  TR_STAGE_ROUND, TR_STAGE_WRITE, TR_STAGE_COUNT
 };
 /* "reading", "validation", "self_intersection", "nesting", "smoothing", "delaunay",
- * "edge_recovery", "facet_recovery", "coloring", "rounding", "writing"; NULL out of range.
+ * "edge_recovery", "facet_recovery", "coloring", "refinement", "rounding", "writing";
+ * NULL out of range.
  * Thread-safe. */
 const char *tr_stage_name(int stage);
 
@@ -185,7 +186,8 @@ typedef struct tr_options {
   /* Called by tr_mesh_plc, from the calling thread, at the start (fraction 0) and end
    * (fraction 1) of each stage it runs, in this order: "validation" (its self-
    * intersection and nesting sub-steps included), "smoothing" (unless smooth is 0),
-   * "delaunay", "edge_recovery", "facet_recovery", "coloring", "rounding". A non-zero
+   * "delaunay", "edge_recovery", "facet_recovery", "coloring", "refinement" (only with a
+   * quality or volume bound), "rounding". A non-zero
    * return cancels the run: tr_mesh_plc frees everything it allocated, sets *out to NULL
    * and returns TR_ERR_CANCELLED. NULL: none (default). progress_user is passed back as
    * `user`. */
