@@ -49,6 +49,8 @@ typedef struct tr_refine_stats {
   uint64_t points;          /* points added, all kinds */
   uint64_t on_segments, on_facets, inside; /* by kind */
   uint64_t skipped_small_angle; /* bad tets exempt: quality forced by an input angle */
+  uint64_t skipped_close;   /* bad tets left: circumcentre within a new vertex's
+                               insertion radius (refine.c, too_close) */
   uint64_t skipped_other;   /* bad tets left: circumcentre blocked / refused */
 } tr_refine_stats;
 
