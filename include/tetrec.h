@@ -168,11 +168,17 @@ tr_status tr_mesh_input_edge(const tr_mesh *mesh, uint32_t k, uint32_t *a, uint3
  * and writing are filled by the caller that reads and writes (the CLI does). */
 enum tr_stage {
   TR_STAGE_READ, TR_STAGE_VALIDATE, TR_STAGE_SELFINT, TR_STAGE_NESTING, TR_STAGE_SMOOTH,
-  TR_STAGE_DELAUNAY, TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR, TR_STAGE_ROUND,
-  TR_STAGE_WRITE, TR_STAGE_COUNT
+  TR_STAGE_DELAUNAY, TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR, TR_STAGE_REFINE,
+  TR_STAGE_ROUND, TR_STAGE_WRITE, TR_STAGE_COUNT
 };
+/* Room in tr_stats.stage_seconds, so that a stage added later leaves the fields after the
+ * array where they are (entries from TR_STAGE_COUNT on are 0). Before version 1.0 a new
+ * stage may still take its place in pipeline order and move the indices of the stages
+ * after it (as "refinement" did): use the enum names, not numbers. */
+#define TR_STAGE_SLOTS 24
 /* "reading", "validation", "self_intersection", "nesting", "smoothing", "delaunay",
- * "edge_recovery", "facet_recovery", "coloring", "rounding", "writing"; NULL out of range.
+ * "edge_recovery", "facet_recovery", "coloring", "refinement", "rounding", "writing";
+ * NULL out of range.
  * Thread-safe. */
 const char *tr_stage_name(int stage);
 
@@ -185,7 +191,8 @@ typedef struct tr_options {
   /* Called by tr_mesh_plc, from the calling thread, at the start (fraction 0) and end
    * (fraction 1) of each stage it runs, in this order: "validation" (its self-
    * intersection and nesting sub-steps included), "smoothing" (unless smooth is 0),
-   * "delaunay", "edge_recovery", "facet_recovery", "coloring", "rounding". A non-zero
+   * "delaunay", "edge_recovery", "facet_recovery", "coloring", "refinement" (only with a
+   * quality or volume bound), "rounding". A non-zero
    * return cancels the run: tr_mesh_plc frees everything it allocated, sets *out to NULL
    * and returns TR_ERR_CANCELLED. NULL: none (default). progress_user is passed back as
    * `user`. */
@@ -233,7 +240,7 @@ typedef struct tr_stats {
   uint64_t hole_points, region_points, cavities, inclusions;
   double total_seconds, recovery_seconds;
   uint64_t peak_memory_bytes;
-  double stage_seconds[TR_STAGE_COUNT]; /* wall-clock time of each stage (enum tr_stage) */
+  double stage_seconds[TR_STAGE_SLOTS]; /* wall-clock time of each stage (enum tr_stage) */
   uint64_t facets_recovered_by_cavity; /* missing facets recovered by cavity
                                           retriangulation, without Steiner points */
   /* Steiner points in the output by where they lie, and the boundary ones taken off the

@@ -21,10 +21,12 @@ void tr_free(void *p) { free(p); }
 
 void tr_thread_cleanup(void) { tr_exact_scratch_free(); }
 
+_Static_assert(TR_STAGE_COUNT <= TR_STAGE_SLOTS, "tr_stats.stage_seconds has no room");
+
 const char *tr_stage_name(int stage)
 {
   static const char *const names[TR_STAGE_COUNT] = {
       "reading", "validation", "self_intersection", "nesting", "smoothing", "delaunay",
-      "edge_recovery", "facet_recovery", "coloring", "rounding", "writing"};
+      "edge_recovery", "facet_recovery", "coloring", "refinement", "rounding", "writing"};
   return stage >= 0 && stage < TR_STAGE_COUNT ? names[stage] : NULL;
 }

@@ -207,14 +207,20 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   sides = NULL;
   if (st == TR_OK)
     st = suppress(m, &sub, p, &opt, keep_hull, flags, stats, vkind);
+  PROGRESS(TR_STAGE_COLOR, 1);
+  double t45 = tr_pipeline_now();
+  stage[TR_STAGE_COLOR] = t45 - t4;
+  say(&opt, TR_STAGE_COLOR, t45 - t4);
   /* Quality refinement (off by default): inner tets only, before the flips and rounding. */
   int region_bounds = 0; /* a region point with a maximum volume */
   for (uint32_t i = 0; p && i < p->nregions; i++)
     region_bounds |= p->region_maxvol[i] > 0;
   if (st == TR_OK && (opt.quality_ratio != 0 || opt.max_volume != 0 ||
                       opt.quality_min_dihedral != 0 || region_bounds)) {
+    PROGRESS(TR_STAGE_REFINE, 0);
     uint32_t nv0 = m->nv;
-    st = tr_refine_stage(m, p, &sub, &opt, keep_hull, &stats->points_added_for_quality);
+    if (st == TR_OK)
+      st = tr_refine_stage(m, p, &sub, &opt, keep_hull, &stats->points_added_for_quality);
     if (st == TR_OK)
       st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv0, &vkind, &vindex);
     /* sliver removal: refinement bounds the radius-edge ratio, which slivers meet */
@@ -233,11 +239,11 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
                 (unsigned long long)ss.flips32, (unsigned long long)ss.flips44,
                 (unsigned long long)ss.flipsn, (unsigned long long)ss.smoothed);
     }
+    PROGRESS(TR_STAGE_REFINE, 1);
+    stage[TR_STAGE_REFINE] = tr_pipeline_now() - t45;
+    say(&opt, TR_STAGE_REFINE, stage[TR_STAGE_REFINE]);
   }
-  PROGRESS(TR_STAGE_COLOR, 1);
   double t5 = tr_pipeline_now();
-  stage[TR_STAGE_COLOR] = t5 - t4;
-  say(&opt, TR_STAGE_COLOR, t5 - t4);
   PROGRESS(TR_STAGE_ROUND, 0);
   /* Before compaction: the flips need the sub-faces, which are in m's numbering. */
   if (st == TR_OK)

@@ -100,11 +100,51 @@ static tr_status check_tet(rf_ctx *c, uint32_t t)
   return TR_OK;
 }
 
-static tr_status after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own)
+static double dist2(const double *a, const double *b)
+{
+  return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+         (a[2] - b[2]) * (a[2] - b[2]);
+}
+
+/* Would the point at p (doubles) lie closer to a vertex of the cavity than that vertex's
+ * insertion radius? Such a point would make an edge shorter than the one its neighbour
+ * was inserted to fix, and the next round of bad tets around it a finer one still: the
+ * cascade that ends only at the budget (Shewchuk 1998, insertion radii; TetGen rejects
+ * such circumcentres the same way, Si 2015). A measure in doubles: it only chooses which
+ * points are inserted. */
+static int too_close(const rf_ctx *c, const double *p)
+{
+  const struct tr_mesh *m = c->m;
+  for (size_t i = 0; i < c->cav.n; i++) {
+    const uint32_t *v = m->tv + 4 * (size_t)c->cav.a[i];
+    for (int j = 0; j < 4; j++) {
+      double r = v[j] < c->capv ? c->vrad[v[j]] : 0;
+      if (r > 0 && dist2(p, m->xyz + 3 * (size_t)v[j]) < r * r)
+        return 1;
+    }
+  }
+  return 0;
+}
+
+/* rad: an upper bound of the new point's insertion radius (the shortest edge of the tet
+ * it refines), INFINITY if none; its distance to the nearest vertex of its new tets is
+ * taken when smaller. */
+static tr_status after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own, double rad)
 {
   TR_CHECK(rf_vertex_room(c, pid + 1));
   c->vkind[pid] = (uint8_t)kind;
   c->vown[pid] = own;
+  const double *x = c->m->xyz + 3 * (size_t)pid;
+  double r2 = rad * rad;
+  for (size_t i = 0; i < c->newtets.n; i++) {
+    const uint32_t *v = c->m->tv + 4 * (size_t)c->newtets.a[i];
+    for (int j = 0; j < 4; j++)
+      if (v[j] != pid) {
+        double d = dist2(x, c->m->xyz + 3 * (size_t)v[j]);
+        r2 = d < r2 ? d : r2;
+      }
+  }
+  c->vrad[pid] = isfinite(r2) ? sqrt(r2) : 0;
   c->st->points++;
   for (size_t i = 0; i < c->newtets.n; i++) {
     TR_CHECK(push_tet(c, c->newtets.a[i]));
@@ -149,7 +189,7 @@ static tr_status split_segment(rf_ctx *c, uint32_t g)
     return TR_OK;
   }
   c->st->on_segments++;
-  return after_insert(c, pid, RF_SEG, g);
+  return after_insert(c, pid, RF_SEG, g, INFINITY);
 }
 
 static tr_status split_facet(rf_ctx *c, uint32_t f)
@@ -243,7 +283,7 @@ static tr_status split_facet(rf_ctx *c, uint32_t f)
   if (ok != 1)
     return TR_OK;
   c->st->on_facets++;
-  return after_insert(c, pid, RF_FACET, c->sftri[f]);
+  return after_insert(c, pid, RF_FACET, c->sftri[f], INFINITY);
 }
 
 /* A tet whose shortest edge joins points on two constraints that meet at an input vertex
@@ -271,13 +311,18 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t)
 {
   struct tr_mesh *m = c->m;
   const uint32_t *v = m->tv + 4 * (size_t)t;
-  double ratio, vol, cc[3];
+  double ratio, vol, cc[3], emin = INFINITY;
+  for (int e = 0; e < 6; e++) {
+    double d = dist2(m->xyz + 3 * (size_t)v[tr_edge_vtx[e][0]], m->xyz + 3 * (size_t)v[tr_edge_vtx[e][1]]);
+    emin = d < emin ? d : emin;
+  }
   if (!tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1], m->xyz + 3 * (size_t)v[2],
                     m->xyz + 3 * (size_t)v[3], &ratio, &vol, NULL, cc)) {
     c->st->skipped_other++;
     return TR_OK;
   }
-  if (!too_big(c, t) && forced_by_angle(c, t)) {
+  int big = too_big(c, t); /* a volume bound is met whatever the edges it makes */
+  if (!big && forced_by_angle(c, t)) {
     c->st->skipped_small_angle++;
     return TR_OK;
   }
@@ -302,6 +347,11 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t)
   TR_CHECK(rf_cavity(c, found, &p, m->nv, 0, &ok));
   if (!ok) {
     c->st->skipped_other++;
+    return TR_OK;
+  }
+  if (!big && too_close(c, cc)) {
+    rf_cavity_release(c);
+    c->st->skipped_close++;
     return TR_OK;
   }
   /* constraints the circumcentre encroaches are split instead; if one of them cannot be
@@ -374,7 +424,7 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t)
     return TR_OK;
   }
   c->st->inside++;
-  return after_insert(c, pid, RF_FREE, TR_NONE);
+  return after_insert(c, pid, RF_FREE, TR_NONE, sqrt(emin));
 }
 
 /* Outer and ghost tets are freed; the faces they shared with inner tets become TR_NONE. */
@@ -420,6 +470,7 @@ static void ctx_free(rf_ctx *c)
   tr_edgeset_free(&c->es);
   free(c->vkind);
   free(c->vown);
+  free(c->vrad);
   tr_u32buf *b[] = {&c->qseg, &c->qface, &c->qtet, &c->cav, &c->init, &c->bfaces,
                     &c->stack, &c->newsf, &c->tmp, &c->newtets};
   for (size_t i = 0; i < sizeof b / sizeof *b; i++)
@@ -514,10 +565,12 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
   if (par->verbose >= 1 && (s == TR_OK || s == TR_ERR_NOMEM))
     fprintf(stderr,
             "tetrec: refinement added %llu points (%llu on edges, %llu on facets, %llu "
-            "inside); %llu bad tets left for small input angles, %llu otherwise\n",
+            "inside); bad tets left: %llu for small input angles, %llu whose circumcentre "
+            "lies too close to a new vertex, %llu otherwise\n",
             (unsigned long long)st->points, (unsigned long long)st->on_segments,
             (unsigned long long)st->on_facets, (unsigned long long)st->inside,
-            (unsigned long long)st->skipped_small_angle, (unsigned long long)st->skipped_other);
+            (unsigned long long)st->skipped_small_angle, (unsigned long long)st->skipped_close,
+            (unsigned long long)st->skipped_other);
   ctx_free(&c);
   return s;
 }

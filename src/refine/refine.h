@@ -22,8 +22,11 @@
  * Termination: sub-segments next to an input vertex are split on concentric shells; a
  * bad tet whose shortest edge joins points on two input edges that meet at an input
  * vertex under less than 60 degrees is left as it is (its quality is forced by that
- * angle); and a point budget stops a runaway with TR_ERR_NOMEM ("a size limit was
- * exceeded") and a message. Outer and ghost tets are discarded first. */
+ * angle); a circumcentre closer to a vertex of its cavity than that vertex's insertion
+ * radius (its distance to its nearest vertex when refinement added it) is not inserted,
+ * unless its tet is over the volume bound; and a point budget stops a runaway with
+ * TR_ERR_NOMEM ("a size limit was exceeded") and a message. Outer and ghost tets are
+ * discarded first. */
 #ifndef TR_REFINE_H
 #define TR_REFINE_H
 
@@ -49,6 +52,8 @@ typedef struct tr_refine_stats {
   uint64_t points;          /* points added, all kinds */
   uint64_t on_segments, on_facets, inside; /* by kind */
   uint64_t skipped_small_angle; /* bad tets exempt: quality forced by an input angle */
+  uint64_t skipped_close;   /* bad tets left: circumcentre within a new vertex's
+                               insertion radius (refine.c, too_close) */
   uint64_t skipped_other;   /* bad tets left: circumcentre blocked / refused */
 } tr_refine_stats;
 

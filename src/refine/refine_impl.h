@@ -44,6 +44,10 @@ typedef struct rf_ctx {
   uint32_t capv;
   uint8_t *vkind;
   uint32_t *vown; /* RF_SEG: a,b packed via seg id; RF_FACET: triangle */
+  /* insertion radius of the points refinement added (0 for the others): the distance to
+   * their nearest vertex when inserted (Shewchuk 1998; Si 2015); a circumcentre closer
+   * than that to such a point is not inserted (refine.c, too_close) */
+  double *vrad;
   uint8_t *sfnosplit;
   /* queues (FIFO through a head index) */
   tr_u32buf qseg, qface, qtet; /* qtet: 5 entries per item: tet, its 4 vertices */

@@ -173,11 +173,16 @@ tr_status rf_vertex_room(rf_ctx *c, uint32_t nv)
   uint32_t *o = realloc(c->vown, sizeof *o * nc);
   if (o)
     c->vown = o;
-  if (!k || !o)
+  double *r = realloc(c->vrad, sizeof *r * nc);
+  if (r)
+    c->vrad = r;
+  if (!k || !o || !r)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u vertices", nv);
   memset(c->vkind + c->capv, RF_FREE, nc - c->capv);
-  for (uint32_t i = c->capv; i < nc; i++)
+  for (uint32_t i = c->capv; i < nc; i++) {
     c->vown[i] = TR_NONE;
+    c->vrad[i] = 0;
+  }
   c->capv = nc;
   return TR_OK;
 }

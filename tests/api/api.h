@@ -30,6 +30,7 @@ int cmp_key(const void *a, const void *b);
 void t_writers(const char *tmp);
 void t_writers_open(const char *tmp);
 void t_progress(void);
+void t_progress_refinement(void);
 void t_abi_size(void);
 void t_stage_times(void);
 void t_version(const char *want);

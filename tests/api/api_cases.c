@@ -9,6 +9,7 @@
 #include "api.h"
 #include "io/io.h"
 #include "mesh/check.h"
+#include "mesh/conform.h"
 #include "pipeline/pipeline.h"
 
 /* ---- writers: the faces and markers in every format ---- */
@@ -215,6 +216,53 @@ void t_progress(void)
     EXPECT(strstr(tr_last_error(), "cancelled") != NULL, "cancel message: %s", tr_last_error());
   }
   EXPECT(strcmp(tr_status_name(TR_ERR_CANCELLED), "TR_ERR_CANCELLED") == 0, "status name");
+  tr_plc_destroy(p);
+}
+
+/* With a quality bound, refinement is a stage of its own between coloring and rounding:
+ * its progress calls come in that place and its time is in its own row, not coloring's. */
+void t_progress_refinement(void)
+{
+  tr_plc *p = read_plc("examples/data/cube.off");
+  if (!p)
+    return;
+  tr_options o = quiet();
+  o.quality_ratio = 1.414;
+  prog rec;
+  memset(&rec, 0, sizeof rec);
+  o.progress = on_progress;
+  o.progress_user = &rec;
+  tr_mesh *m = NULL;
+  tr_plc *used = NULL;
+  tr_stats st = {.size = sizeof st};
+  EXPECT(tr_mesh_plc_ex(p, &o, &m, &st, &used) == TR_OK && m, "quality run: %s",
+         tr_last_error());
+  if (!m) {
+    tr_plc_destroy(p);
+    return;
+  }
+  static const int order[] = {TR_STAGE_VALIDATE, TR_STAGE_SMOOTH, TR_STAGE_DELAUNAY,
+                              TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR,
+                              TR_STAGE_REFINE, TR_STAGE_ROUND};
+  int n = (int)(sizeof order / sizeof *order);
+  EXPECT(rec.calls == 2 * n, "progress: %d calls (%d expected)", rec.calls, 2 * n);
+  for (int i = 0; i < rec.calls && i < 2 * n; i++)
+    EXPECT(strcmp(rec.stages[i], tr_stage_name(order[i / 2])) == 0 &&
+               rec.fraction[i] == (i % 2 ? 1.0 : 0.0),
+           "progress call %d: %s %g", i, rec.stages[i], rec.fraction[i]);
+  EXPECT(strcmp(tr_stage_name(TR_STAGE_REFINE), "refinement") == 0, "stage name %s",
+         tr_stage_name(TR_STAGE_REFINE));
+  EXPECT(st.stage_seconds[TR_STAGE_REFINE] > 0, "refinement not timed");
+  double sum = 0;
+  for (int k = 0; k < TR_STAGE_COUNT; k++)
+    sum += st.stage_seconds[k];
+  EXPECT(sum <= st.total_seconds, "stages %g > total %g", sum, st.total_seconds);
+  EXPECT(tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, NULL) == TR_OK,
+         "refined mesh: %s", tr_last_error());
+  EXPECT(tr_check_conformity(m, used, NULL, 0) == TR_OK, "refined conformity: %s",
+         tr_last_error());
+  tr_mesh_destroy(m);
+  tr_plc_destroy(used);
   tr_plc_destroy(p);
 }
 

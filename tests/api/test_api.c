@@ -517,6 +517,8 @@ int main(int argc, char **argv)
     t_writers_open(argc > 3 ? argv[3] : ".");
   else if (!strcmp(c, "progress"))
     t_progress();
+  else if (!strcmp(c, "progress_refinement"))
+    t_progress_refinement();
   else if (!strcmp(c, "abi_size"))
     t_abi_size();
   else if (!strcmp(c, "stage_times"))

@@ -49,6 +49,9 @@ static tr_plc *box_surface(const double lo[3], const double hi[3])
   return plc_of(x, 8, t, 12);
 }
 
+/* The point budget mesh() gives refinement (0: the default budget). */
+static uint64_t test_budget;
+
 /* Meshes plc with the given bounds and runs both validators; NULL on failure (counted). */
 static tr_mesh *mesh(const char *name, const tr_plc *plc, double ratio, double maxvol,
                      unsigned chk, tr_plc **used, tr_stats *st)
@@ -58,6 +61,7 @@ static tr_mesh *mesh(const char *name, const tr_plc *plc, double ratio, double m
   opt.verbose = 0;
   opt.quality_ratio = ratio;
   opt.max_volume = maxvol;
+  opt.refine_budget = test_budget;
   tr_mesh *m = NULL;
   memset(st, 0, sizeof *st);
   st->size = sizeof *st; /* the whole struct is filled (ABI growth, tetrec.h) */
@@ -255,6 +259,55 @@ static void thin_slab(void)
   tr_plc_destroy(plc);
 }
 
+/* The same slab under R = 1.414 ends well inside a budget of 5,000 points (it used to
+ * spend any budget: points on the long edges encroached the neighbouring pieces, whose
+ * circumcentres then fell closer to the new points than their own spacing, and so on),
+ * and the mesh validates exactly. */
+static void thin_slab_terminates(void)
+{
+  const double lo[3] = {0, 0, 0}, hi[3] = {8, 8, 0.25};
+  tr_plc *plc = box_surface(lo, hi), *used = NULL;
+  tr_stats st;
+  test_budget = 5000;
+  tr_mesh *m = mesh("thin_slab_1414", plc, 1.414, 0, TR_CHK_TOPOLOGY, &used, &st);
+  test_budget = 0;
+  if (m) {
+    EXPECT(st.points_added_for_quality > 0 && st.points_added_for_quality < 5000,
+           "thin_slab_1414: %llu points", (unsigned long long)st.points_added_for_quality);
+    fprintf(stderr, "thin_slab_1414: %llu points, %u tets\n",
+            (unsigned long long)st.points_added_for_quality, tr_mesh_num_tets(m));
+  }
+  tr_mesh_destroy(m);
+  tr_plc_destroy(used);
+  tr_plc_destroy(plc);
+}
+
+/* A prism whose two long side facets meet at a dihedral angle of about 10 degrees (its
+ * cross-section has a 10-degree corner): refinement under R = 1.414 ends within a budget
+ * of 5,000 points (the tets the narrow wedge forces are left as they are) and the mesh
+ * validates exactly. */
+static void wedge_10_degrees(void)
+{
+  /* tan(10 deg) = 0.17633; cross-section (0,0), (10,0), (10,1.7633) at z = 0 and z = 6 */
+  const double x[18] = {0, 0, 0, 10, 0, 0, 10, 1.7633, 0, 0, 0, 6, 10, 0, 6, 10, 1.7633, 6};
+  static const uint32_t t[24] = {0, 2, 1, 3, 4, 5, 0, 1, 4, 0, 4, 3,
+                                 1, 2, 5, 1, 5, 4, 2, 0, 3, 2, 3, 5};
+  tr_plc *plc = plc_of(x, 6, t, 8), *used = NULL;
+  tr_stats st;
+  test_budget = 5000;
+  tr_mesh *m = mesh("wedge_10", plc, 1.414, 0, TR_CHK_TOPOLOGY, &used, &st);
+  test_budget = 0;
+  if (m) {
+    EXPECT(st.points_added_for_quality > 0 && st.points_added_for_quality < 5000,
+           "wedge_10: %llu points", (unsigned long long)st.points_added_for_quality);
+    fprintf(stderr, "wedge_10: %llu points, %u tets\n",
+            (unsigned long long)st.points_added_for_quality, tr_mesh_num_tets(m));
+  }
+  tr_mesh_destroy(m);
+  tr_plc_destroy(used);
+  tr_plc_destroy(plc);
+}
+
 /* The tets of m (of region `region`, or all when it is UINT32_MAX) whose exact volume is
  * above V. */
 static uint32_t count_over(const tr_mesh *m, double V, uint32_t region, uint32_t *counted)
@@ -409,6 +462,10 @@ int main(int argc, char **argv)
     small_angle();
   else if (!strcmp(c, "thin_slab"))
     thin_slab();
+  else if (!strcmp(c, "thin_slab_terminates"))
+    thin_slab_terminates();
+  else if (!strcmp(c, "wedge_10_degrees"))
+    wedge_10_degrees();
   else if (!strcmp(c, "max_volume"))
     max_volume();
   else if (!strcmp(c, "region_max_volume"))
