@@ -1,7 +1,8 @@
 #!/bin/sh
 # `tetrec mesh --exact` then `tetrec check` on the result: the exact .node passes the exact
-# conformity and volume checks, a double .node passes the orientation check and says what
-# it cannot verify, and an exact .node with one digit of a Steiner coordinate changed fails.
+# conformity and volume checks, a double .node whose points conform as written passes them
+# too, one with its Steiner point moved off passes the orientation check and says what it
+# cannot verify, and an exact .node with one digit of a Steiner coordinate changed fails.
 # usage: round_cli.sh TETREC SURFACE WORKDIR
 set -u
 tetrec=$1
@@ -31,6 +32,17 @@ done
 grep -q '/' "$work/double.node" && say "num/den in a double .node"
 "$tetrec" check "$in" "$work/double.node" 2>"$work/check.log" ||
   say "check double.node exited $?: $(cat "$work/check.log")"
+# Schoenhardt's point, at its nearest doubles, is still exactly where it conforms: check
+# verifies the doubles exactly as written
+grep -q 'Steiner points as written, exactly' "$work/check.log" ||
+  say "check of doubles that conform does not verify them exactly: $(cat "$work/check.log")"
+# moved off by 1e-10 it no longer conforms exactly: check says what it cannot verify
+awk 'BEGIN { CONVFMT = "%.17g" } NR == 1 { n = $1 } NR == n + 1 { $2 = $2 + 1e-10 } { print }' "$work/double.node" \
+  >"$work/moved.node"
+cp "$work/double.ele" "$work/moved.ele"
+cmp -s "$work/double.node" "$work/moved.node" && say "moving the point changed nothing"
+"$tetrec" check "$in" "$work/moved.node" 2>"$work/check.log" ||
+  say "check moved.node exited $?: $(cat "$work/check.log")"
 grep -q 'cannot be verified' "$work/check.log" ||
   say "check of rounded Steiner points does not say what it skips: $(cat "$work/check.log")"
 
