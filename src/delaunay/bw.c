@@ -768,6 +768,11 @@ tr_status tr_delaunay_build(const double *xyz, uint32_t n, struct tr_mesh **out)
     goto done;
   if ((s = build(&D)) != TR_OK)
     goto done;
+  /* on insertion ids: they follow the Hilbert curve, so the canonical order keeps the
+   * locality of the build (input indices may be in any order), and they are a function
+   * of the input alone, like the tetrahedralization */
+  if ((s = tr_delaunay_canonical(m)) != TR_OK)
+    goto done;
   s = renumber(m, order, nu);
 done:
   free(order);

@@ -34,6 +34,13 @@ extern "C" {
  * non-finite coordinate, TR_ERR_DEGENERATE when the distinct points span less than 3D. */
 tr_status tr_delaunay_build(const double *xyz, uint32_t n, struct tr_mesh **out);
 
+/* Puts the tet store in canonical order (canon.c): real tets first, sorted by vertex
+ * tuple, each rotated (orientation kept) to its smallest vertex first, then the ghosts;
+ * free slots dropped, neighbours renumbered, flags cleared; v2t is left to the caller.
+ * The store then depends only on the tetrahedralization and the vertex numbering, not on
+ * the order the tets were made in. */
+tr_status tr_delaunay_canonical(struct tr_mesh *m);
+
 /* Insertion order used by the builder: the distinct points (first of each duplicate
  * group), in BRIO rounds each sorted along a Hilbert curve. order gets *nuniq indices;
  * dup_map (n entries) receives the kept index of every point. Deterministic. */
