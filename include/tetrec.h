@@ -212,6 +212,9 @@ typedef struct tr_options {
   int keep_steiner; /* 1: the recovery's Steiner points stay where they are (on the input
                        edges and facets, exact rationals); 0 (default): the suppression
                        stage removes them or moves them inside where it can */
+  int threads; /* threads for the Delaunay stage: 0 (default) every online core, N > 0 at
+                  most N (64 at most are used); the output is the same byte for byte for
+                  any value. Negative: TR_ERR_USAGE */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
