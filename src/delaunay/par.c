@@ -28,6 +28,7 @@
 
 typedef struct shared {
   uint32_t *own;       /* per tet slot: owning thread + 1, 0 when free */
+  uint32_t nown;       /* entries of own */
   uint32_t next_fresh; /* first slot no thread has taken (atomic) */
   uint32_t cap;        /* slots usable in this pass */
 } shared;
@@ -341,11 +342,14 @@ static tr_status reserve(dt *D, shared *S, uint32_t npts, uint32_t nthreads)
     return tr_error(TR_ERR_NOMEM, "too many tets for the parallel Delaunay build");
   if (want > m->cap_t)
     TR_CHECK(tr_mesh_reserve_tets(m, (uint32_t)want));
-  uint32_t *o = realloc(S->own, (size_t)m->cap_t * sizeof *o);
-  if (!o)
-    return tr_error(TR_ERR_NOMEM, "out of memory for the tet owners");
-  S->own = o;
-  memset(o, 0, (size_t)m->cap_t * sizeof *o);
+  if (m->cap_t > S->nown) { /* every owner word is 0 between passes: zero the new ones */
+    uint32_t *o = realloc(S->own, (size_t)m->cap_t * sizeof *o);
+    if (!o)
+      return tr_error(TR_ERR_NOMEM, "out of memory for the tet owners");
+    memset(o + S->nown, 0, (size_t)(m->cap_t - S->nown) * sizeof *o);
+    S->own = o;
+    S->nown = m->cap_t;
+  }
   /* slots a thread takes but does not fill (the rest of a chunk given up mid-insertion)
    * must read as free */
   for (uint32_t t = m->nt; t < m->cap_t; t++)
