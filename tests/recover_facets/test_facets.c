@@ -543,6 +543,7 @@ static int test_e2e(int lattice)
         pairs[2 * ne + 1] = (uint32_t)ed[i];
         ne++;
       }
+    free(ed);
     int ok = 1;
     tr_edge_chains chains = {0};
     tr_edge_recovery_stats es = {0};
