@@ -222,6 +222,9 @@ typedef struct tr_options {
   int optimize; /* sliver removal after quality refinement (src/sliver/sliver.h), run only
                    when refinement runs: 0 off, 1 flips that raise the smallest dihedral
                    angle, 2 (default) those flips and smoothing of interior points */
+  int threads; /* threads for the Delaunay stage: 0 (default) every online core, N > 0 at
+                  most N (64 at most are used); the output is the same byte for byte for
+                  any value. Negative: TR_ERR_USAGE */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);

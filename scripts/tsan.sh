@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# ThreadSanitizer run of the thread test (tests/api/test_threads.c: four threads meshing
-# at once, compared with the serial meshes). Builds only that test and the library, so it
-# stays cheap enough for CI. Usage: scripts/tsan.sh [BUILD_DIR]
+# ThreadSanitizer run of the thread tests: tests/api/test_threads.c (four threads meshing
+# at once, compared with the serial meshes) and tests/delaunay/test_threads.c (the
+# parallel Delaunay build with 1-4 threads, compared with the serial store). Builds only
+# those tests and the library, so it stays cheap enough for CI.
+# Usage: scripts/tsan.sh [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=${1:-build-tsan}
@@ -9,6 +11,7 @@ if [ ! -f "$dir/build.ninja" ]; then
   meson setup "$dir" -Db_sanitize=thread -Db_lundef=false -Dbench=false -Dcgal=disabled \
     >/dev/null
 fi
-ninja -C "$dir" tests/api/test_threads
+ninja -C "$dir" tests/api/test_threads tests/delaunay/test_dt_threads
 # halt_on_error: any report fails the run; second_deadlock_stack for useful reports
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" "$dir/tests/api/test_threads" "$PWD"
+TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" "$dir/tests/delaunay/test_dt_threads" all

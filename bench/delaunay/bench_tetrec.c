@@ -5,7 +5,7 @@
  * samples normalised, so every insphere test among close points is nearly degenerate:
  * the case that exercises the exact stages of the predicates); grid: the N^3 integer
  * grid (exactly cospherical: the symbolic perturbation decides). Fixed seeds.
- *   bench_tetrec run in.bin [check|hash]
+ *   bench_tetrec run in.bin [check] [hash] [-jN]   (N threads, 0 every core; default 1)
  * .bin: uint32 n, then 3n doubles (native endianness). run prints one line
  * "tetrec n=.. tets=.. dt_seconds=.. dt_cpu=.." (triangulation only, reading excluded;
  * wall and CPU time) and with
@@ -127,7 +127,7 @@ static uint64_t fnv(uint64_t h, const void *p, size_t n)
   return h;
 }
 
-static int run(const char *bin, int check, int hash)
+static int run(const char *bin, int check, int hash, int threads)
 {
   FILE *f = fopen(bin, "rb");
   uint32_t n;
@@ -143,14 +143,15 @@ static int run(const char *bin, int check, int hash)
   fclose(f);
   double t0 = now(), c0 = cpu();
   struct tr_mesh *m;
-  tr_status s = tr_delaunay_build(p, n, &m);
+  tr_status s = threads == 1 ? tr_delaunay_build(p, n, &m)
+                             : tr_delaunay_build_threads(p, n, threads, &m);
   double t1 = now(), c1 = cpu();
   if (s != TR_OK) {
     fprintf(stderr, "tetrec: %s: %s\n", tr_status_name(s), tr_last_error());
     return 1;
   }
-  printf("tetrec n=%u tets=%u dt_seconds=%.3f dt_cpu=%.3f\n", n, tr_mesh_num_tets(m), t1 - t0,
-         c1 - c0);
+  printf("tetrec n=%u threads=%d tets=%u dt_seconds=%.3f dt_cpu=%.3f\n", n,
+         tr_delaunay_thread_count(threads), tr_mesh_num_tets(m), t1 - t0, c1 - c0);
   if (hash) {
     uint64_t h = fnv(0xcbf29ce484222325ull, &m->nt, sizeof m->nt);
     h = fnv(h, m->tv, 4 * (size_t)m->nt * sizeof *m->tv);
@@ -174,10 +175,22 @@ int main(int argc, char **argv)
 {
   if (argc >= 6 && !strcmp(argv[1], "gen"))
     return gen(argv[2], strtoul(argv[3], NULL, 10), argv[4], argv[5]);
-  if (argc >= 3 && !strcmp(argv[1], "run"))
-    return run(argv[2], argc >= 4 && !strcmp(argv[3], "check"),
-               argc >= 4 && !strcmp(argv[3], "hash"));
+  if (argc >= 3 && !strcmp(argv[1], "run")) {
+    int check = 0, hash = 0, threads = 1;
+    for (int i = 3; i < argc; i++) {
+      if (!strcmp(argv[i], "check"))
+        check = 1;
+      else if (!strcmp(argv[i], "hash"))
+        hash = 1;
+      else if (!strncmp(argv[i], "-j", 2) && argv[i][2] >= '0' && argv[i][2] <= '9')
+        threads = atoi(argv[i] + 2);
+      else
+        break;
+    }
+    return run(argv[2], check, hash, threads);
+  }
   fprintf(stderr, "usage: bench_tetrec gen random|sphere|grid N out.bin out.node\n"
-                  "       bench_tetrec run in.bin [check|hash]\n");
+                  "       bench_tetrec run in.bin [check] [hash] [-jN]   (N threads, 0: all "
+                  "cores; default 1)\n");
   return 2;
 }

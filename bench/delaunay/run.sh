@@ -5,6 +5,9 @@
 # the unit sphere (nearly cospherical everywhere: the exact stages of insphere decide most
 # tests among close points), the 100^3 integer grid (exactly cospherical: the symbolic
 # perturbation decides).
+# tetrec runs twice: one thread (the serial build) and NJ threads (default every core);
+# the ratios to CGAL are printed for both, and the wall-time speed-up of NJ threads over
+# one (whole process, and the triangulation alone). 4x10^6 uniform points: CASES=random4000000.
 # For each program: the in-process triangulation CPU time (dt: reading excluded; for
 # tetgen its own "Delaunay seconds", which is clock() time), the whole-process wall time,
 # CPU time (user + sys: reading the points, sorting, triangulating, freeing) and peak RSS
@@ -24,6 +27,7 @@ set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build-bench}
 REPEAT=${REPEAT:-1}
+NJ=${NJ:-$(nproc)} # threads of the parallel run (default: every core)
 CASES=${CASES:-"random100000 random1000000 sphere250000 sphere1000000 grid100"}
 OUT=$ROOT/bench/out/delaunay
 mkdir -p "$OUT"
@@ -57,6 +61,8 @@ measure() {
     "$label" "${M_DT:-0}" "$M_WALL" "$M_CPU" "$(awk "BEGIN{print $M_RSS/1024}")" \
     "$(grep -o 'tets=[0-9]*' "$OUT/stdout.txt" || sed -n 's/^ *Mesh tetrahedra: */tets=/p' "$OUT/stdout.txt")"
 }
+# dtwall <threads>: the in-process triangulation wall time of one more run (dt_seconds)
+dtwall() { "$TR" run "$OUT/$c.bin" -j"$1" | sed -n 's/.*dt_seconds=\([0-9.]*\).*/\1/p'; }
 ratio() { awk "BEGIN{ if ($2 > 0) printf \"%.2f\", $1 / $2; else printf \"n/a\" }"; }
 
 echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -71,9 +77,13 @@ for c in $CASES; do
   echo "== $c"
   measure tetrec "$TR" run "$OUT/$c.bin"
   t_dt=$M_DT; t_wall=$M_WALL; t_rss=$M_RSS; t_cpu=$M_CPU
+  measure "tetrec-j$NJ" "$TR" run "$OUT/$c.bin" -j"$NJ"
+  j_dt=$M_DT; j_wall=$M_WALL; j_rss=$M_RSS; j_cpu=$M_CPU
+  echo "  tetrec 1 -> $NJ threads: wall speed-up $(ratio "$t_wall" "$j_wall"), dt wall speed-up $(ratio "$(dtwall 1)" "$(dtwall "$NJ")")"
   if [ -n "$CG" ]; then
     measure cgal "$CG" "$OUT/$c.bin"
     echo "  tetrec/CGAL:   dt $(ratio "$t_dt" "$M_DT")   wall $(ratio "$t_wall" "$M_WALL")   process cpu $(ratio "$t_cpu" "$M_CPU")   peak RSS $(ratio "$t_rss" "$M_RSS")"
+    echo "  tetrec-j$NJ/CGAL: wall $(ratio "$j_wall" "$M_WALL")   process cpu $(ratio "$j_cpu" "$M_CPU")   peak RSS $(ratio "$j_rss" "$M_RSS")"
   fi
   if [ -n "$TG" ]; then
     measure tetgen "$TG" -NEF "$OUT/$c.node"

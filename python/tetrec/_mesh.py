@@ -181,7 +181,7 @@ def validate(points, triangles=None, *, markers=None):
 def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
                    keep_surface=False, keep_steiner=False, quality=None, max_volume=None,
                    optimize=None, exact=False,
-                   smooth=True, round_budget=None, verbose=0, progress=None):
+                   smooth=True, round_budget=None, verbose=0, progress=None, threads=0):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
     points (n,3) floats and triangles (m,3) 0-based indices, or a Surface from read()
@@ -206,6 +206,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     progress: called as progress(stage, fraction) at the start (0.0) and end (1.0) of
     each pipeline stage; a true return value or an exception cancels the run (then
     tetrec.Error with status TR_ERR_CANCELLED, or the exception). Ctrl-C cancels too.
+    threads: threads for the Delaunay stage, 0 (default) every core; the mesh is the
+    same for any value.
 
     Returns a Mesh; raises tetrec.Error (.status, .code, .message) when the library
     refuses the input (open surface, self-intersection, ...).
@@ -228,6 +230,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
         options["verbose"] = int(verbose)
     if progress is not None:
         options["progress"] = progress
+    if threads:
+        options["threads"] = int(threads)
     pts, tris, mk = _prepare(points, triangles, markers)
     handle, stats = _tetrec.tetrahedralize(pts, tris, mk, options)
     return Mesh(handle, stats, bool(exact))

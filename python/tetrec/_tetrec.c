@@ -148,7 +148,7 @@ static int progress_hook(void *user, const char *stage, double fraction)
 static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
     "max_volume", "optimize",
-    "holes", "regions", NULL};
+    "holes", "regions", "threads", NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
 static double positive(PyObject *value, const char *name)
@@ -210,6 +210,15 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         return -1;
       }
       opt->round_budget = (uint64_t)x;
+    } else if (!strcmp(k, "threads")) {
+      long x = PyLong_AsLong(value);
+      if (x == -1 && PyErr_Occurred())
+        return -1;
+      if (x < 0 || x > 1024) {
+        PyErr_Format(PyExc_ValueError, "threads must be 0 (every core) to 1024, not %ld", x);
+        return -1;
+      }
+      opt->threads = (int)x;
     } else if (!strcmp(k, "keep_surface") || !strcmp(k, "keep_steiner")) {
       int x = PyObject_IsTrue(value);
       if (x < 0)

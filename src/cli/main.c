@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "delaunay/delaunay.h"
 #include "io/io.h"
 #include "pipeline/pipeline.h"
 #include "refine/refine_stage.h"
@@ -128,6 +129,11 @@ static const struct option {
      "a progress line (stage, share of stages done) on stderr from\n"
      "the start; without it the line shows when stderr is a\n"
      "terminal and the run takes over a second"},
+    {"--threads", "N", C_MESH | C_DELAUNAY,
+     "threads for the Delaunay tetrahedralization (default 0:\n"
+     "every core); the output is the same for any N, byte for\n"
+     "byte"},
+    {"-j", "N", C_MESH | C_DELAUNAY, "the same as --threads"},
     {"--strict-doubles", NULL, C_MESH,
      "fail (exit 9) when a written double lies farther than\n"
      "2^-40 of the bounding box diagonal from the edge or facet\n"
@@ -141,6 +147,7 @@ typedef struct {
   unsigned cmd_bit;
   int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
   int keep_surface, keep_steiner, progress;
+  int threads; /* 0: every core */
   int msh_version; /* 41 or 22 */
   int optimize; /* sliver removal level + 1, 0: the default */
   double quality, quality_dih, max_volume; /* 0: off */
@@ -320,6 +327,14 @@ static tr_status set_option(args *a, const char *name, const char *v)
       a->round_budget = n;
     else
       a->refine_budget = n;
+  } else if (!strcmp(name, "--threads") || !strcmp(name, "-j")) {
+    size_t len = strlen(v);
+    int ok = len > 0 && len <= 4 && strspn(v, "0123456789") == len;
+    long n = ok ? strtol(v, NULL, 10) : -1;
+    if (!ok || n > 1024)
+      return tr_error(TR_ERR_USAGE, "%s needs a whole number from 0 (every core) to 1024, "
+                      "not '%s'", name, v);
+    a->threads = (int)n;
   } else
     return tr_error(TR_ERR_INTERNAL, "option %s in the table but not handled", name);
   return TR_OK;
@@ -477,6 +492,7 @@ static int cmd_mesh(const args *a)
   opt.refine_budget = a->refine_budget;
   if (a->optimize)
     opt.optimize = a->optimize - 1;
+  opt.threads = a->threads;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();
@@ -601,7 +617,10 @@ static int cmd_delaunay(const args *a)
   tr_mesh *mesh = NULL;
   if (s == TR_OK) {
     progress("tetrahedralizing", a->in);
-    s = tr_delaunay(tr_plc_points(plc), tr_plc_num_points(plc), &mesh);
+    s = tr_delaunay_build_threads(tr_plc_points(plc), tr_plc_num_points(plc), a->threads,
+                                  &mesh);
+    if (s == TR_OK)
+      s = tr_mesh_attach_dense_tets(mesh); /* what tr_delaunay adds for the writers */
     stats.surface_nodes = tr_plc_num_points(plc);
     stats.surface_facets = tr_plc_num_triangles(plc);
   }

@@ -34,6 +34,27 @@ extern "C" {
  * non-finite coordinate, TR_ERR_DEGENERATE when the distinct points span less than 3D. */
 tr_status tr_delaunay_build(const double *xyz, uint32_t n, struct tr_mesh **out);
 
+/* The same with `threads` threads (0: every online core, see tr_delaunay_thread_count).
+ * The store is the same byte for byte for any number of threads: the tetrahedralization
+ * is unique and tr_delaunay_canonical orders it. One thread is the serial build. */
+tr_status tr_delaunay_build_threads(const double *xyz, uint32_t n, int threads,
+                                    struct tr_mesh **out);
+/* Points inserted serially before the threads start, per thread: below that the threads
+ * would meet in the few tets there are. */
+#define TR_DT_SERIAL_PREFIX 4096u
+/* For tests: nthreads threads (1..64) after a serial prefix of `prefix` points. */
+tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint32_t prefix,
+                               struct tr_mesh **out);
+/* Threads for an option value: threads itself (at most 64), or 0: the online cores. */
+int tr_delaunay_thread_count(int threads);
+
+/* Puts the tet store in canonical order (canon.c): real tets first, sorted by vertex
+ * tuple, each rotated (orientation kept) to its smallest vertex first, then the ghosts;
+ * free slots dropped, neighbours renumbered, flags cleared; v2t is left to the caller.
+ * The store then depends only on the tetrahedralization and the vertex numbering, not on
+ * the order the tets were made in. */
+tr_status tr_delaunay_canonical(struct tr_mesh *m);
+
 /* Insertion order used by the builder: the distinct points (first of each duplicate
  * group), in BRIO rounds each sorted along a Hilbert curve. order gets *nuniq indices;
  * dup_map (n entries) receives the kept index of every point. Deterministic. */

@@ -172,7 +172,10 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK)
     st = tr_pipeline_edges(p, &edges, &ne, &nopen, &nmulti);
   if (st == TR_OK)
-    st = tr_delaunay_build(p->xyz, p->npoints, &m);
+    st = opt.threads < 0
+             ? tr_error(TR_ERR_USAGE, "tr_options.threads is %d (0: every core, or N > 0)",
+                        opt.threads)
+             : tr_delaunay_build_threads(p->xyz, p->npoints, opt.threads, &m);
   PROGRESS(TR_STAGE_DELAUNAY, 1);
   double t3 = tr_pipeline_now();
   stage[TR_STAGE_DELAUNAY] = t3 - t2;

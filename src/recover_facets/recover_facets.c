@@ -106,6 +106,17 @@ tr_status tr_recover_facets_ex(struct tr_mesh *m, const uint32_t *tris, uint32_t
         return e2;
       }
     }
+  /* Without chains the triangles' edges are mesh edges (the caller recovered them
+   * without Steiner points): they are the constraint edges. Unprotected, the flips for
+   * one facet could take away an edge of another, whose cluster is then ill-formed. */
+  for (uint32_t i = 0; !chains && i < n; i++)
+    for (int q = 0; q < 3; q++) {
+      tr_status e2 = tr_edgeset_put(&kp.cons, tris[3 * i + q], tris[3 * i + (q + 1) % 3], i);
+      if (e2 != TR_OK) {
+        tr_edgeset_free(&kp.cons);
+        return e2;
+      }
+    }
   opt.guard = keep_guard;
   opt.guard_ud = &kp;
   /* Which facets are faces already, in one pass over the tets instead of a ball search

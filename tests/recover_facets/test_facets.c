@@ -534,26 +534,33 @@ static int test_e2e(int lattice)
       for (int q = 0; q < 3; q++)
         ed[3 * i + q] = key2(tris[3 * i + q], tris[3 * i + (q + 1) % 3]);
     qsort(ed, 3 * (size_t)nt, sizeof *ed, cmp_u64);
-    int ok = 1;
-    for (size_t i = 0; i < 3 * (size_t)nt && ok; i++) {
-      if (i > 0 && ed[i] == ed[i - 1])
-        continue;
-      tr_edge_stats es = {0};
-      if (tr_recover_edge(m, (uint32_t)(ed[i] >> 32), (uint32_t)ed[i], &es) != TR_OK) {
-        /* edge recovery is another stage's job: counted, not a failure here */
-        printf("%s %d: edge recovery failed (%s), mesh skipped\n", mode, seed, tr_last_error());
-        edge_fail++;
-        ok = 0;
+    /* the unique edges, sorted, as the pipeline hands them to the edge stage; its chains
+     * go to the facet stage, which keeps their pieces (TR_NONE-free pairs) */
+    uint32_t *pairs = malloc(6 * (size_t)nt * sizeof *pairs), ne = 0;
+    for (size_t i = 0; i < 3 * (size_t)nt; i++)
+      if (i == 0 || ed[i] != ed[i - 1]) {
+        pairs[2 * ne] = (uint32_t)(ed[i] >> 32);
+        pairs[2 * ne + 1] = (uint32_t)ed[i];
+        ne++;
       }
-    }
     free(ed);
+    int ok = 1;
+    tr_edge_chains chains = {0};
+    tr_edge_recovery_stats es = {0};
+    if (tr_recover_edges(m, pairs, ne, &chains, &es) != TR_OK) {
+      /* edge recovery is another stage's job: counted, not a failure here */
+      printf("%s %d: edge recovery failed (%s), mesh skipped\n", mode, seed, tr_last_error());
+      edge_fail++;
+      ok = 0;
+    }
+    free(pairs);
     if (ok) {
       mpq_t vol;
       mpq_init(vol);
       tr_mesh_volume6(m, vol);
       tr_subfaces sub = {0};
       tr_facet_recovery_stats st;
-      tr_status s = tr_recover_facets(m, tris, nt, NULL, &sub, &st);
+      tr_status s = tr_recover_facets(m, tris, nt, &chains, &sub, &st);
       CHECK(s == TR_OK, "%s %d: tr_recover_facets: %s", mode, seed, tr_last_error());
       if (s == TR_OK) {
         s = tr_check_mesh(m, TR_CHK_TOPOLOGY, vol);
@@ -615,6 +622,7 @@ static int test_e2e(int lattice)
       tr_subfaces_free(&sub);
       mpq_clear(vol);
     }
+    tr_edge_chains_free(&chains);
     free(tris);
     tr_mesh_destroy(m);
   }
