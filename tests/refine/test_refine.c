@@ -52,7 +52,9 @@ static tr_plc *box_surface(const double lo[3], const double hi[3])
 /* The point budget mesh() gives refinement (0: the default budget). */
 static uint64_t test_budget;
 
-/* Meshes plc with the given bounds and runs both validators; NULL on failure (counted). */
+/* Meshes plc with the given bounds and runs both validators; NULL on failure (counted).
+ * Refinement alone: sliver removal (tests/sliver) may trade a tet's radius-edge ratio above
+ * the bound for larger dihedral angles, which the ratio properties here do not allow. */
 static tr_mesh *mesh(const char *name, const tr_plc *plc, double ratio, double maxvol,
                      unsigned chk, tr_plc **used, tr_stats *st)
 {
@@ -62,6 +64,7 @@ static tr_mesh *mesh(const char *name, const tr_plc *plc, double ratio, double m
   opt.quality_ratio = ratio;
   opt.max_volume = maxvol;
   opt.refine_budget = test_budget;
+  opt.optimize = 0;
   tr_mesh *m = NULL;
   memset(st, 0, sizeof *st);
   st->size = sizeof *st; /* the whole struct is filled (ABI growth, tetrec.h) */
@@ -424,8 +427,12 @@ static void shapes(const char *dir)
       EXPECT(0, "%s: %s", path, tr_last_error());
       continue;
     }
-    /* a cavity leaves a mesh that is not a ball: no Euler check there */
-    improves(files[i], p, 1.414, i == 1 ? TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T : TR_CHK_TOPOLOGY, 1);
+    /* a cavity leaves a mesh that is not a ball: no Euler check there. Between the cavity
+     * and the outer box, circumcentres closer to a vertex than its insertion radius are
+     * not inserted (src/refine/refine.c), so a worse tet than the recovery's can remain
+     * there: the share of bad tets is what drops */
+    improves(files[i], p, 1.414, i == 1 ? TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T : TR_CHK_TOPOLOGY,
+             i == 0);
     tr_plc_destroy(p);
   }
 }
