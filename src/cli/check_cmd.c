@@ -170,23 +170,20 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
    * the doubles, and the output says what was skipped. With an open surface the mesh
    * fills its convex hull: the enclosed volume means nothing. */
   uint32_t nsteiner = vol->npoints > surface->npoints ? vol->npoints - surface->npoints : 0;
-  int rounded = nsteiner && !exact_file;
   int smoothed = 0;
+  mpq_srcptr vol6 = allow_open ? NULL : v6;
   tr_status st = tr_input_domain_volume6(surface, v6); /* internal facets, cracks too */
-  /* The doubles may be the exact points after all: Steiner points strictly inside the
-   * domain (--keep-surface, or all surface points suppressed) are plain doubles. Then the
-   * full exact check passes on them as read, and nothing is left unverified. */
-  if (st == TR_OK && rounded && tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T,
-                                              allow_open ? NULL : v6) == TR_OK &&
-      conformity(m, surface, allow_open ? NULL : v6, allow_open ? TR_CONF_OPEN : 0,
-                 &smoothed) == TR_OK)
-    rounded = 0;
-  int with_volume = !rounded && !allow_open;
+  /* The full exact check first, also on doubles: Steiner points strictly inside the
+   * domain (--keep-surface, suppressed surface points) are plain doubles, and then nothing
+   * is left unverified. Only doubles that fail it are taken as rounded. */
   if (st == TR_OK)
-    st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, with_volume ? v6 : NULL);
-  if (st == TR_OK && !rounded)
-    st = conformity(m, surface, with_volume ? v6 : NULL, allow_open ? TR_CONF_OPEN : 0,
-                    &smoothed);
+    st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, vol6);
+  if (st == TR_OK)
+    st = conformity(m, surface, vol6, allow_open ? TR_CONF_OPEN : 0, &smoothed);
+  int rounded = st == TR_ERR_INVALID_MESH && nsteiner && !exact_file;
+  if (rounded)
+    st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, NULL);
+  int with_volume = !rounded && !allow_open;
   if (st == TR_OK && rounded)
     fprintf(stderr, "tetrec: check: %u Steiner points read as rounded doubles: exact "
             "conformity and the exact volume cannot be verified on them (write the mesh with "
