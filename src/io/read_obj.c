@@ -1,6 +1,8 @@
 /* Wavefront OBJ: `v x y z [w | r g b]` and `f` with the index forms i, i/t, i//n, i/t/n
- * (1-based; negative = relative to the vertices defined so far). Every other statement
- * (vt, vn, g, o, s, usemtl, l, ...) is skipped. Faces are polygons. */
+ * (1-based; negative = relative to the vertices defined so far). Faces are polygons.
+ * Statements that only dress the surface (vt, vn, g, o, s, usemtl, mtllib, ...) are
+ * skipped; geometry tetrec cannot take from OBJ (points `p`, polylines `l`, free-form
+ * curves and surfaces) is an error, since dropping it would change the domain. */
 #include "io.h"
 #include "lex.h"
 #include "soup.h"
@@ -55,6 +57,12 @@ static tr_status parse(tr_lex *lx, tr_soup *s)
       if (count < 3)
         return tr_error(TR_ERR_INPUT, "%s:%lu: face %u has %u vertices (at least 3 needed)",
                         lx->name, line, tr_soup_nfacets(s) - 1, count);
+    } else if (tr_lex_is(lx, "p") || tr_lex_is(lx, "l") || tr_lex_is(lx, "curv") ||
+               tr_lex_is(lx, "curv2") || tr_lex_is(lx, "surf") || tr_lex_is(lx, "cstype")) {
+      return tr_error(TR_ERR_UNSUPPORTED,
+                      "%s:%lu: OBJ '%.*s' statements are not supported (only v and f define "
+                      "geometry; give segments or isolated points in a TetGen .poly file)",
+                      lx->name, lx->tokline, (int)lx->toklen, lx->tok);
     } else if (lx->tok[0] == '\\' || lx->toklen > 64) {
       return tr_error(TR_ERR_PARSE, "%s:%lu: unexpected '%.*s'", lx->name, lx->tokline,
                       (int)(lx->toklen > 40 ? 40 : lx->toklen), lx->tok);

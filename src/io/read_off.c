@@ -88,6 +88,13 @@ static tr_status parse(tr_lex *lx, tr_soup *s)
     if (!tr_lex_at_eol(lx))
       tr_lex_skip_line(lx);
   }
+  /* More than the header declares is a malformed file: reading on would guess, and
+   * stopping silently would drop elements the user wrote. */
+  if (tr_lex_next(lx))
+    return tr_error(TR_ERR_PARSE,
+                    "%s:%lu: unexpected '%.*s' after the %lld faces the header (line %lu) "
+                    "declares", lx->name, lx->tokline, (int)(lx->toklen > 40 ? 40 : lx->toklen),
+                    lx->tok, (long long)nf, hline);
   return TR_OK;
 }
 

@@ -56,6 +56,33 @@ static void say(const tr_options *opt, int stage, double secs)
 }
 
 /* The caller's options, read up to its opt->size (ABI growth, include/tetrec.h). */
+/* An input point on no triangle is meshed as an isolated vertex when it lies in the
+ * domain; outside it cannot be, and leaving it out silently would look like a lost
+ * vertex. */
+static void warn_dropped_points(const struct tr_mesh *res, const tr_plc *p)
+{
+  uint8_t *in = calloc(p->npoints ? p->npoints : 1, 1);
+  if (!in)
+    return; /* a warning only: no memory for it is no reason to fail the mesh */
+  const struct tr_mesh_attrs *a = res->attrs;
+  for (uint32_t v = 0; v < res->nv; v++) {
+    uint32_t i = a && a->vkind ? (a->vkind[v] == TR_VERTEX_INPUT ? a->vindex[v] : UINT32_MAX) : v;
+    if (i < p->npoints)
+      in[i] = 1;
+  }
+  uint32_t n = 0, first = 0;
+  for (uint32_t i = p->npoints; i-- > 0;)
+    if (!in[i])
+      n++, first = i;
+  if (n)
+    fprintf(stderr, "tetrec: warning: %u input point%s on no triangle lie%s outside the domain "
+            "and %s not in the mesh (the first: point %u at %.17g %.17g %.17g)\n", n,
+            n > 1 ? "s" : "", n > 1 ? "" : "s", n > 1 ? "are" : "is", first,
+            p->xyz[3 * (size_t)first], p->xyz[3 * (size_t)first + 1],
+            p->xyz[3 * (size_t)first + 2]);
+  free(in);
+}
+
 static void read_options(const tr_options *in, tr_options *opt)
 {
   tr_options_default(opt);
@@ -274,7 +301,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       fprintf(stderr,
               "tetrec: %llu Steiner points moved off their nearest double so that every "
               "tet is positive in doubles (exact positions: --exact)\n",
-              (unsigned long long)stats->rounding_repairs);    /* How far the written doubles lie from the constraints their exact points are on */
+              (unsigned long long)stats->rounding_repairs);
+    /* How far the written doubles lie from the constraints their exact points are on */
     uint32_t v;
     if (st == TR_OK)
       st = tr_mesh_double_deviation(res, p, &stats->double_deviation, &v);
@@ -295,6 +323,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   say(&opt, TR_STAGE_ROUND, stage[TR_STAGE_ROUND]);
   if (st == TR_OK && tr_mesh_num_tets(res) == 0)
     st = tr_error(TR_ERR_INPUT, "the surface encloses no tetrahedron (is it inside out?)");
+  if (st == TR_OK && opt.verbose >= 1)
+    warn_dropped_points(res, p);
   if (st == TR_OK) {
     stats->volume_nodes = res->nv;
     stats->volume_elements = tr_mesh_num_tets(res);

@@ -91,5 +91,18 @@ with tempfile.TemporaryDirectory() as d:
     open(os.path.join(d, "bad.mesh"), "w").write("\n".join(lines))
     rc, _, err = run(["check", "t.off", "bad.mesh"], cwd=d)
     expect(rc == 9, f"check of an inverted tet -> 9: {rc} {err}")
+    # an input point on no triangle: kept when it lies in the domain, and when it lies
+    # outside (where no tet can hold it) the mesh says so instead of dropping it quietly
+    for name, where, n_out in (("in.off", "0.25 0.25 0.25", 5), ("out.off", "2 2 2", 4)):
+        open(os.path.join(d, name), "w").write(
+            "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + where + "\n"
+            "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+        rc, _, err = run(["mesh", name, "-o", name + ".mesh"], cwd=d)
+        warned = "1 input point on no triangle lies outside the domain" in err
+        expect(rc == 0 and warned == (n_out == 4), f"{name}: isolated point at {where}: {rc} {err}")
+        expect(f"mesh: {n_out} vertices" in err or f".mesh: {n_out} vertices" in err,
+               f"{name}: {n_out} vertices expected: {err}")
+        rc, _, err = run(["check", name, name + ".mesh"], cwd=d)
+        expect(rc == 0, f"{name}: check: {rc} {err}")
 
 sys.exit(1 if fails else 0)
