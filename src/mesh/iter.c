@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/vtmap.h"
+
 /* The tet a search of Ball(p) starts from: v2t[p], checked. */
 static tr_status ball_start(const struct tr_mesh *m, uint32_t p, uint32_t *t0)
 {
@@ -110,49 +112,44 @@ tr_status tr_ball_find_ex(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
   return s;
 }
 
-static uint32_t tri_hash(const uint32_t k[3], uint32_t mask)
-{
-  return (uint32_t)(tr_hash3(k) >> 32) & mask;
-}
-
 tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                              uint32_t *tet)
 {
-  uint32_t cap = 16;
-  while (cap < 2 * (uint64_t)n)
-    cap *= 2;
-  /* slot -> triangle index; the key is re-read from tris (sorted on the fly) */
-  uint32_t *slot = malloc(sizeof *slot * cap), mask = cap - 1;
-  if (!slot)
-    return tr_error(TR_ERR_NOMEM, "out of memory for %u face keys", n);
-  memset(slot, 0xff, sizeof *slot * cap);
-  for (uint32_t i = 0; i < n; i++) {
-    uint32_t k[3] = {tris[3 * (size_t)i], tris[3 * (size_t)i + 1], tris[3 * (size_t)i + 2]};
-    tr_sort3(k);
-    uint32_t h = tri_hash(k, mask);
-    while (slot[h] != TR_NONE)
-      h = (h + 1) & mask;
-    slot[h] = i;
+  /* face key -> the first triangle with it; a repeated triangle takes that one's tet */
+  tr_vtmap faces = {0};
+  tr_status st = tr_vtmap_reserve(&faces, 3, n);
+  for (uint32_t i = 0; i < n && st == TR_OK; i++) {
+    uint32_t k[3];
+    tr_vtkey_face(tris[3 * (size_t)i], tris[3 * (size_t)i + 1], tris[3 * (size_t)i + 2], k);
+    st = tr_vtmap_put(&faces, 3, k, i, NULL);
     tet[i] = TR_NONE;
   }
-  for (uint32_t t = 0; t < m->nt; t++) {
+  for (uint32_t t = 0; t < m->nt && st == TR_OK; t++) {
     if (!tr_tet_is_real(m, t))
       continue;
     const uint32_t *tv = m->tv + 4 * (size_t)t;
     for (int f = 0; f < 4; f++) {
-      uint32_t k[3] = {tv[tr_face_vtx[f][0]], tv[tr_face_vtx[f][1]], tv[tr_face_vtx[f][2]]};
-      tr_sort3(k);
-      for (uint32_t h = tri_hash(k, mask); slot[h] != TR_NONE; h = (h + 1) & mask) {
-        uint32_t i = slot[h], w[3] = {tris[3 * (size_t)i], tris[3 * (size_t)i + 1],
-                                      tris[3 * (size_t)i + 2]};
-        tr_sort3(w);
-        if (w[0] == k[0] && w[1] == k[1] && w[2] == k[2] && tet[i] == TR_NONE)
-          tet[i] = t; /* the first tet in slot order: deterministic */
-      }
+      /* A face between two real tets is looked up from the lower one only: that is the
+       * first of the two in slot order anyway, and it halves the probes. */
+      uint32_t nb = m->tn[4 * (size_t)t + f];
+      if (nb != TR_NONE && nb / 4 < t && tr_tet_is_real(m, nb / 4))
+        continue;
+      uint32_t k[3];
+      tr_vtkey_face(tv[tr_face_vtx[f][0]], tv[tr_face_vtx[f][1]], tv[tr_face_vtx[f][2]], k);
+      uint32_t i = tr_vtmap_get(&faces, 3, k);
+      if (i != TR_VTMAP_NONE && tet[i] == TR_NONE)
+        tet[i] = t; /* the first tet in slot order: deterministic */
     }
   }
-  free(slot);
-  return TR_OK;
+  for (uint32_t i = 0; i < n && st == TR_OK; i++) {
+    uint32_t k[3];
+    tr_vtkey_face(tris[3 * (size_t)i], tris[3 * (size_t)i + 1], tris[3 * (size_t)i + 2], k);
+    uint32_t first = tr_vtmap_get(&faces, 3, k);
+    if (first != i)
+      tet[i] = tet[first];
+  }
+  tr_vtmap_free(&faces);
+  return st;
 }
 
 /* For tet t containing a (slot i) and b (slot j): the slots c, d such that (a,b,c,d) is

@@ -8,9 +8,8 @@
  * edges) into a refused swap and a TR_ERR_SELF_INTERSECT naming both edges instead of a
  * silently destroyed constraint.
  *
- * Open addressing with linear probing and a fixed multiplicative hash: no seed, so runs
- * are reproducible. Entries are never removed (a stale entry only makes a check more
- * conservative).
+ * It is the edge-keyed face of the shared vertex-tuple map (core/vtmap.h): the same
+ * hashing and growth, under the names the recovery stages read best.
  */
 #ifndef TR_RECOVER_EDGES_EDGESET_H
 #define TR_RECOVER_EDGES_EDGESET_H
@@ -18,18 +17,28 @@
 #include <stdint.h>
 
 #include "core/status.h"
+#include "core/vtmap.h"
 
 typedef struct tr_edgeset {
-  uint64_t *key; /* (min << 32 | max) + 1; 0 = empty slot */
-  uint32_t *val;
-  uint32_t n, cap; /* cap is a power of two or 0 */
+  tr_vtmap m; /* arity 2, keys {min, max} */
 } tr_edgeset;
 
-void tr_edgeset_free(tr_edgeset *s);
+#define TR_EDGESET_NONE TR_VTMAP_NONE
+
+static inline void tr_edgeset_free(tr_edgeset *s) { tr_vtmap_free(&s->m); }
 /* Inserts {u,v} -> val; an existing entry keeps its first value. */
-tr_status tr_edgeset_put(tr_edgeset *s, uint32_t u, uint32_t v, uint32_t val);
+static inline tr_status tr_edgeset_put(tr_edgeset *s, uint32_t u, uint32_t v, uint32_t val)
+{
+  uint32_t k[2];
+  tr_vtkey_edge(u, v, k);
+  return tr_vtmap_put(&s->m, 2, k, val, NULL);
+}
 /* The value of {u,v}, TR_EDGESET_NONE if absent. s may be NULL (empty). */
-#define TR_EDGESET_NONE UINT32_MAX
-uint32_t tr_edgeset_get(const tr_edgeset *s, uint32_t u, uint32_t v);
+static inline uint32_t tr_edgeset_get(const tr_edgeset *s, uint32_t u, uint32_t v)
+{
+  uint32_t k[2];
+  tr_vtkey_edge(u, v, k);
+  return s ? tr_vtmap_get(&s->m, 2, k) : TR_EDGESET_NONE;
+}
 
 #endif

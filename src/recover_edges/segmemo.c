@@ -13,11 +13,7 @@ void tr_segmemo_init(tr_segmemo *g, const struct tr_mesh *m, uint32_t a, uint32_
 
 void tr_segmemo_free(tr_segmemo *g)
 {
-  free(g->key);
-  free(g->val);
-  g->key = NULL;
-  g->val = NULL;
-  g->cap = g->n = 0;
+  tr_vtmap_free(&g->map);
 }
 
 /* n: 2 bits; per end: type 3 bits, code 4 bits (ECodes reach 15). */
@@ -42,54 +38,11 @@ static tr_isect unpack(uint16_t r)
   return x;
 }
 
-static uint32_t slot(const tr_segmemo *g, const uint32_t v[4])
-{
-  uint64_t x = ((uint64_t)v[0] << 32 | v[1]) * 0x9E3779B97F4A7C15ull ^
-               ((uint64_t)v[2] << 32 | v[3]) * 0xC2B2AE3D27D4EB4Full;
-  uint32_t i = (uint32_t)(x >> 32) & (g->cap - 1);
-  while (g->key[i][0] != TR_NONE && memcmp(g->key[i], v, 4 * sizeof *v) != 0)
-    i = (i + 1) & (g->cap - 1);
-  return i;
-}
-
-static void put(tr_segmemo *g, const uint32_t v[4], uint16_t r)
-{
-  if (2 * (g->n + 1) > g->cap) {
-    uint32_t nc = g->cap ? 2 * g->cap : 256;
-    tr_segmemo h = {g->pa, g->pb, malloc(nc * sizeof *h.key), malloc(nc * sizeof *h.val), nc,
-                    0};
-    if (!h.key || !h.val) {
-      free(h.key);
-      free(h.val);
-      return;
-    }
-    memset(h.key, 0xff, nc * sizeof *h.key);
-    for (uint32_t i = 0; i < g->cap; i++)
-      if (g->key[i][0] != TR_NONE) {
-        uint32_t k = slot(&h, g->key[i]);
-        memcpy(h.key[k], g->key[i], sizeof h.key[k]);
-        h.val[k] = g->val[i];
-        h.n++;
-      }
-    free(g->key);
-    free(g->val);
-    *g = h;
-  }
-  uint32_t i = slot(g, v);
-  if (g->key[i][0] == TR_NONE) {
-    memcpy(g->key[i], v, sizeof g->key[i]);
-    g->n++;
-  }
-  g->val[i] = r;
-}
-
 tr_isect tr_segmemo_classify(tr_segmemo *g, const struct tr_mesh *m, const uint32_t v[4])
 {
-  if (g->cap) {
-    uint32_t i = slot(g, v);
-    if (g->key[i][0] != TR_NONE)
-      return unpack(g->val[i]);
-  }
+  uint32_t known = tr_vtmap_get(&g->map, 4, v);
+  if (known != TR_VTMAP_NONE)
+    return unpack((uint16_t)known);
   tr_point p[4];
   const tr_point *pp[4];
   for (int k = 0; k < 4; k++) {
@@ -98,6 +51,6 @@ tr_isect tr_segmemo_classify(tr_segmemo *g, const struct tr_mesh *m, const uint3
   }
   tr_isect x = tr_classify_segment_tet(&g->pa, &g->pb, pp);
   uint16_t r = pack(&x);
-  put(g, v, r);
+  (void)tr_vtmap_put(&g->map, 4, v, r, NULL); /* no room: recomputed next time */
   return unpack(r);
 }

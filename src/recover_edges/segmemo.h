@@ -3,21 +3,21 @@
  * Flip attempts that are made and undone, and the re-collection of Pipe(ab) after a kept
  * flip, classify the same tets again and again; the points never move while ab is
  * flipped for, so a tet's classification is a function of its vertex list (in slot
- * order: the codes are slot numbers). Open addressing with linear probing; an
- * all-TR_NONE key (never a tet) marks an empty slot. On allocation failure the memo just
- * stops growing (results are then recomputed), so it never changes an answer.
+ * order: the codes are slot numbers), kept in the shared vertex-tuple map with the
+ * oriented 4-tuple as key. On allocation failure the memo just stops growing (results
+ * are then recomputed), so it never changes an answer.
  */
 #ifndef TR_RECOVER_EDGES_SEGMEMO_H
 #define TR_RECOVER_EDGES_SEGMEMO_H
 
 #include "classify.h"
+#include "core/vtmap.h"
 #include "mesh/mesh.h"
 
 typedef struct tr_segmemo {
   tr_point pa, pb;
-  uint32_t (*key)[4];
-  uint16_t *val; /* packed tr_isect: n, end types and codes (on_seg is not kept) */
-  uint32_t cap, n; /* cap: 0 or a power of two */
+  tr_vtmap map; /* tet listing -> packed tr_isect: n, end types and codes (on_seg is
+                  not kept) */
 } tr_segmemo;
 
 /* Starts an empty memo for segment ab (no allocation yet). */

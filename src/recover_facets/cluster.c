@@ -35,41 +35,6 @@ static int in_closed_triangle(const tr_point *p, const tr_point *e, const tr_poi
  * and the on-plane answers (the facet's own boundary vertices, often rational Steiner
  * points) always need the exact evaluation, so this removes most of the exact work. */
 
-static tr_status vcache_grow(tr_vcache *c)
-{
-  uint32_t cap = c->key ? 2 * (c->mask + 1) : 256;
-  uint32_t *nk = malloc(cap * sizeof *nk);
-  uint8_t *nv = malloc(cap);
-  if (!nk || !nv) {
-    free(nk);
-    free(nv);
-    return tr_error(TR_ERR_NOMEM, "cluster: out of memory");
-  }
-  for (uint32_t i = 0; i < cap; i++)
-    nk[i] = TR_NONE;
-  for (uint32_t i = 0; c->key && i <= c->mask; i++) {
-    if (c->key[i] == TR_NONE)
-      continue;
-    uint32_t h = (c->key[i] * 2654435761u) & (cap - 1);
-    while (nk[h] != TR_NONE)
-      h = (h + 1) & (cap - 1);
-    nk[h] = c->key[i];
-    nv[h] = c->val[i];
-  }
-  free(c->key);
-  free(c->val);
-  c->key = nk;
-  c->val = nv;
-  c->mask = cap - 1;
-  return TR_OK;
-}
-
-static void vcache_free(tr_vcache *c)
-{
-  free(c->key);
-  free(c->val);
-}
-
 /* Memo of crossing_in_triangle by edge {u, v} (the answer is symmetric in u, v: swapping
  * them negates all three signs), stored as w + 1: the facet flip driver collects the
  * cluster again after every kept flip, and most edges are unchanged. When the map cannot
@@ -89,21 +54,14 @@ static int crossing_memo(tr_cluster_memo *c, uint32_t u, uint32_t v, const tr_po
 }
 
 /* Side of vertex v (point p) and, on the plane, membership in the closed triangle. */
-static tr_status vertex_side(tr_vcache *c, uint32_t v, const tr_point *p, const tr_point *e,
+static tr_status vertex_side(tr_vtmap *c, uint32_t v, const tr_point *p, const tr_point *e,
                              const tr_point *f, const tr_point *g, int *side, int *in)
 {
-  uint32_t h = 0;
-  if (c) {
-    if (!c->key || 2 * (c->n + 1) > c->mask + 1)
-      TR_CHECK(vcache_grow(c));
-    h = (v * 2654435761u) & c->mask;
-    while (c->key[h] != TR_NONE && c->key[h] != v)
-      h = (h + 1) & c->mask;
-    if (c->key[h] == v) {
-      *side = (c->val[h] & 3) - 1;
-      *in = c->val[h] >> 2;
-      return TR_OK;
-    }
+  uint32_t r = c ? tr_vtmap_get(c, 1, &v) : TR_VTMAP_NONE;
+  if (r != TR_VTMAP_NONE) {
+    *side = (int)(r & 3) - 1;
+    *in = (int)(r >> 2);
+    return TR_OK;
   }
   if (tr_pt_same(p, e) || tr_pt_same(p, f) || tr_pt_same(p, g)) {
     /* a corner of the facet: an exact zero costs the most */
@@ -113,12 +71,7 @@ static tr_status vertex_side(tr_vcache *c, uint32_t v, const tr_point *p, const 
     *side = tr_orient3d_p(e, f, g, p);
     *in = *side == 0 && in_closed_triangle(p, e, f, g);
   }
-  if (c) {
-    c->key[h] = v;
-    c->val[h] = (uint8_t)((*side + 1) | (*in << 2));
-    c->n++;
-  }
-  return TR_OK;
+  return c ? tr_vtmap_put(c, 1, &v, (uint32_t)((*side + 1) | (*in << 2)), NULL) : TR_OK;
 }
 
 /* Classification plus the "touches the closed triangle" answer the search needs. */
@@ -126,7 +79,7 @@ static tr_status classify(const struct tr_mesh *m, uint32_t t, const tr_point *e
                           const tr_point *f, const tr_point *g, tr_clusterel *out,
                           int *member, int *touch, tr_cluster_memo *mc)
 {
-  tr_vcache *vc = mc ? &mc->v : NULL;
+  tr_vtmap *vc = mc ? &mc->v : NULL;
   tr_point p[4];
   int s[4], n0 = 0, nin = 0;
   const uint32_t *tv = m->tv + 4 * (size_t)t;
@@ -271,7 +224,7 @@ static tr_status collect(struct tr_mesh *m, const tr_point *pe, const tr_point *
 
 void tr_cluster_memo_free(tr_cluster_memo *c)
 {
-  vcache_free(&c->v);
+  tr_vtmap_free(&c->v);
   tr_edgeset_free(&c->e);
   memset(c, 0, sizeof *c);
 }

@@ -30,6 +30,7 @@
 #ifndef TR_RECOVER_FACETS_CLUSTER_H
 #define TR_RECOVER_FACETS_CLUSTER_H
 
+#include "core/vtmap.h"
 #include "mesh/mesh.h"
 #include "recover_edges/edgeset.h"
 
@@ -65,13 +66,8 @@ tr_status tr_cluster_collect(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t
  * that collecting the same facet's cluster again after flips only evaluates what is
  * new. Valid for one facet while no point moves. Zero-initialise; free with
  * tr_cluster_memo_free. */
-typedef struct tr_vcache {
-  uint32_t *key; /* TR_NONE: empty */
-  uint8_t *val;  /* (side + 1) | in_closed << 2 */
-  uint32_t mask, n;
-} tr_vcache;
 typedef struct tr_cluster_memo {
-  tr_vcache v;
+  tr_vtmap v;   /* vertex -> (side + 1) | in_closed << 2 */
   tr_edgeset e; /* edge {u, v} -> crossing_in_triangle + 1 */
 } tr_cluster_memo;
 void tr_cluster_memo_free(tr_cluster_memo *c);

@@ -7,6 +7,7 @@
 
 #include "classify.h"
 #include "construct.h"
+#include "core/vtmap.h"
 #include "recover_edges/decompose.h"
 #include "recover_edges/edge_tables.h"
 #include "recover_facets/cluster.h"
@@ -37,26 +38,11 @@ static uint32_t cut_point(const cut *c, uint32_t n, uint32_t a, uint32_t b)
 
 /* ---- the diagonal chosen on each face with two cut edges, by face vertex set ---- */
 
-typedef struct diag {
-  uint32_t f[3]; /* sorted face vertices; f[0] == TR_NONE: empty slot */
-  uint32_t x, y; /* the diagonal's ends, x < y */
-} diag;
-
 typedef struct dmap {
-  diag *a;
-  uint32_t mask;
+  tr_vtmap faces; /* sorted face vertices -> entry */
+  uint32_t *ends; /* 2 per entry: the diagonal's ends, x < y */
+  uint32_t n, cap;
 } dmap;
-
-/* The slot of face f (sorted), empty if absent. The table never fills: it has room for
- * twice the number of faces the cluster can have. */
-static diag *dmap_slot(dmap *d, const uint32_t f[3])
-{
-  uint32_t i = (uint32_t)(tr_hash3(f) >> 29) & d->mask;
-  while (d->a[i].f[0] != TR_NONE &&
-         (d->a[i].f[0] != f[0] || d->a[i].f[1] != f[1] || d->a[i].f[2] != f[2]))
-    i = (i + 1) & d->mask;
-  return &d->a[i];
-}
 
 /* ---- one facet's decomposition state ---- */
 
@@ -168,17 +154,18 @@ static tr_status plan_clusterel(ctx *cx, const tr_clusterel *c)
       continue;
     uint32_t f[3] = {tv[qd[k].x], tv[qd[k].u], tv[qd[k].v]};
     tr_sort3(f);
-    const diag *dg = dmap_slot(&cx->dm, f);
-    if (dg->f[0] != TR_NONE) {
+    uint32_t de = tr_vtmap_get(&cx->dm.faces, 3, f);
+    if (de != TR_VTMAP_NONE) {
+      const uint32_t *dg = cx->dm.ends + 2 * (size_t)de;
       uint32_t sa = tv[qd[k].v], sb = sp[qd[k].x][qd[k].u];
       uint32_t za = tv[qd[k].u], zb = sp[qd[k].x][qd[k].v];
-      if (dg->x == (sa < sb ? sa : sb) && dg->y == (sa < sb ? sb : sa))
+      if (dg[0] == (sa < sb ? sa : sb) && dg[1] == (sa < sb ? sb : sa))
         want[k] = TR_DTYPE_S;
-      else if (dg->x == (za < zb ? za : zb) && dg->y == (za < zb ? zb : za))
+      else if (dg[0] == (za < zb ? za : zb) && dg[1] == (za < zb ? zb : za))
         want[k] = TR_DTYPE_Z;
       else
         return tr_error(TR_ERR_INTERNAL, "facet %u: tet %u: recorded diagonal %u-%u is not one "
-                        "of its face's two", cx->idx, c->iele, dg->x, dg->y);
+                        "of its face's two", cx->idx, c->iele, dg[0], dg[1]);
     } else if (use_force) {
       want[k] = (cx->opt->force_first >> k) & 1 ? TR_DTYPE_Z : TR_DTYPE_S;
     }
@@ -269,13 +256,18 @@ static tr_status plan_clusterel(ctx *cx, const tr_clusterel *c)
                       "neighbour's choice", cx->idx, c->iele, k);
     uint32_t f[3] = {tv[qd[k].x], tv[qd[k].u], tv[qd[k].v]};
     tr_sort3(f);
-    diag *dg = dmap_slot(&cx->dm, f);
-    if (dg->f[0] == TR_NONE) {
+    uint32_t de;
+    dmap *dm = &cx->dm;
+    TR_CHECK(tr_vtmap_put(&dm->faces, 3, f, dm->n, &de));
+    if (de == dm->n) {
+      if (dm->n == dm->cap)
+        return tr_error(TR_ERR_INTERNAL, "facet %u: more quad faces than the cluster has",
+                        cx->idx);
       uint32_t a = dt == TR_DTYPE_S ? tv[qd[k].v] : tv[qd[k].u];
       uint32_t b = dt == TR_DTYPE_S ? sp[qd[k].x][qd[k].u] : sp[qd[k].x][qd[k].v];
-      memcpy(dg->f, f, sizeof f);
-      dg->x = a < b ? a : b;
-      dg->y = a < b ? b : a;
+      dm->ends[2 * (size_t)de] = a < b ? a : b;
+      dm->ends[2 * (size_t)de + 1] = a < b ? b : a;
+      dm->n++;
     }
   }
   /* exact positivity before anything is committed */
@@ -350,15 +342,12 @@ static tr_status decompose_cluster(ctx *cx, const tr_clusterel *cl, uint32_t ncl
                                    uint32_t f, uint32_t g)
 {
   TR_CHECK(make_cuts(cx, cl, ncl, e, f, g));
-  uint32_t cap = 16;
-  while (cap < 8 * ncl + 16)
-    cap *= 2;
-  cx->dm.a = malloc(cap * sizeof *cx->dm.a);
-  if (!cx->dm.a)
+  /* each clusterel has at most four faces with two cut edges */
+  cx->dm.cap = 4 * ncl;
+  cx->dm.ends = malloc(2 * (size_t)(cx->dm.cap ? cx->dm.cap : 1) * sizeof *cx->dm.ends);
+  if (!cx->dm.ends)
     return tr_error(TR_ERR_NOMEM, "facet %u: out of memory", cx->idx);
-  cx->dm.mask = cap - 1;
-  for (uint32_t i = 0; i < cap; i++)
-    cx->dm.a[i].f[0] = TR_NONE;
+  TR_CHECK(tr_vtmap_reserve(&cx->dm.faces, 3, cx->dm.cap));
   tr_u32buf old = {0};
   tr_status st = TR_OK;
   /* Test hook: the first clusterel of the highest type goes first, so all its faces are
@@ -549,7 +538,8 @@ tr_status tr_recover_facet(struct tr_mesh *m, uint32_t idx, uint32_t e, uint32_t
     cx.d = d;
     st = decompose_cluster(&cx, cl, ncl, e, f, g);
     free(cx.cuts);
-    free(cx.dm.a);
+    free(cx.dm.ends);
+    tr_vtmap_free(&cx.dm.faces);
     tr_u32buf_free(&cx.newv);
     *outcome = TR_FACET_BY_CLUSTER;
   }

@@ -7,51 +7,18 @@
 #include "recover_edges/edgeset.h"
 #include "recover_facets/facet.h"
 
-/* The sub-faces listed so far (sorted triples, open addressing, fixed hash: no seed) and
- * the constraint edges: what the flips of later facets must keep. */
+/* The sub-faces listed so far and the constraint edges: what the flips of later facets
+ * must keep. */
 typedef struct keep {
   tr_edgeset cons;
-  uint32_t *f; /* 3 per slot, f[3i] == TR_NONE: empty */
-  uint32_t n, cap;
+  tr_vtmap faces; /* sorted sub-face -> 0 (a set) */
 } keep;
-
-static uint32_t face_slot(const keep *k, const uint32_t o[3])
-{
-  uint32_t i = (uint32_t)(tr_hash3(o) >> 32) & (k->cap - 1);
-  while (k->f[3 * (size_t)i] != TR_NONE &&
-         (k->f[3 * (size_t)i] != o[0] || k->f[3 * (size_t)i + 1] != o[1] ||
-          k->f[3 * (size_t)i + 2] != o[2]))
-    i = (i + 1) & (k->cap - 1);
-  return i;
-}
 
 static tr_status keep_face(keep *k, const uint32_t *v)
 {
-  if (2 * (k->n + 1) > k->cap) {
-    uint32_t nc = k->cap ? 2 * k->cap : 1024, *old = k->f, oc = k->cap;
-    k->f = malloc(3 * (size_t)nc * sizeof *k->f);
-    if (!k->f) {
-      k->f = old;
-      return tr_error(TR_ERR_NOMEM, "out of memory for the sub-face set");
-    }
-    memset(k->f, 0xff, 3 * (size_t)nc * sizeof *k->f);
-    k->cap = nc;
-    for (uint32_t i = 0; i < oc; i++)
-      if (old[3 * (size_t)i] != TR_NONE) {
-        uint32_t j = face_slot(k, old + 3 * (size_t)i);
-        memcpy(k->f + 3 * (size_t)j, old + 3 * (size_t)i, 3 * sizeof *old);
-      }
-    free(old);
-  }
   uint32_t o[3];
-  memcpy(o, v, 3 * sizeof *o);
-  tr_sort3(o);
-  uint32_t j = face_slot(k, o);
-  if (k->f[3 * (size_t)j] == TR_NONE) {
-    memcpy(k->f + 3 * (size_t)j, o, sizeof o);
-    k->n++;
-  }
-  return TR_OK;
+  tr_vtkey_face(v[0], v[1], v[2], o);
+  return tr_vtmap_put(&k->faces, 3, o, 0, NULL);
 }
 
 static int keep_guard(void *ud, const uint32_t *v, int nv)
@@ -59,12 +26,9 @@ static int keep_guard(void *ud, const uint32_t *v, int nv)
   const keep *k = ud;
   if (nv == 2)
     return tr_edgeset_get(&k->cons, v[0], v[1]) != TR_EDGESET_NONE;
-  if (k->cap == 0)
-    return 0;
   uint32_t o[3];
-  memcpy(o, v, 3 * sizeof *o);
-  tr_sort3(o);
-  return k->f[3 * (size_t)face_slot(k, o)] != TR_NONE;
+  tr_vtkey_face(v[0], v[1], v[2], o);
+  return tr_vtmap_get(&k->faces, 3, o) != TR_VTMAP_NONE;
 }
 
 void tr_subfaces_free(tr_subfaces *s)
@@ -164,7 +128,7 @@ tr_status tr_recover_facets_ex(struct tr_mesh *m, const uint32_t *tris, uint32_t
     }
   }
   tr_edgeset_free(&kp.cons);
-  free(kp.f);
+  tr_vtmap_free(&kp.faces);
   free(hint);
   s.points_added = d.steiner + d.h_points;
   s.by_flips = d.by_flips;
