@@ -424,6 +424,7 @@ enum {
   C_TWO_REGIONS_INV,
   C_TWO_CAVITIES,
   C_GRID_ULPS_ZERO,
+  C_SLIT,
   C_COUNT
 };
 
@@ -437,7 +438,7 @@ static const char *names[C_COUNT] = {
     "fin_attached_inside",  "gridbox_8_ulps",       "chazelle_g4_ulps",
     "open_box",             "crack_outside_box",    "two_tets_sharing_an_edge",
     "cavity_and_crack",     "two_regions_inverted", "two_cavities_sharing_a_face",
-    "gridbox_4_ulps_at_zero"};
+    "gridbox_4_ulps_at_zero", "slit_2-20"};
 
 int hard_case_count(void) { return C_COUNT; }
 const char *hard_case_name(int i) { return i >= 0 && i < C_COUNT ? names[i] : NULL; }
@@ -651,6 +652,40 @@ int hard_case_build(int i, hard_case *c)
     c->property = "grid_box_with_subnormal_coordinates_conforms";
     c->why = "coordinates 0 moved by 1-2 ulps become subnormal";
     break;
+  case C_SLIT: {
+    /* The U-shaped section (x, z) extruded along y over [0, 4]: a box with a slot
+     * 2w = 2^-19 wide and 2 deep cut across its top. The slot's walls face each other
+     * 2^-19 apart: the cells between them are flat cospherical boxes whose Delaunay tets
+     * need not hold the walls' diagonals. All coordinates dyadic: the raw points are
+     * exact. */
+    const double w = 0x1p-20;
+    const double P[8][2] = {{0, 0}, {4, 0}, {4, 4}, {2 + w, 4}, {2 + w, 2}, {2 - w, 2},
+                            {2 - w, 4}, {0, 4}}; /* counterclockwise in (x, z) */
+    for (int e = 0; e < 8; e++) {
+      const double *a = P[e], *d = P[(e + 1) % 8];
+      const double o[3] = {a[0], 0, a[1]}, u[3] = {0, 4, 0}, v[3] = {d[0] - a[0], 0, d[1] - a[1]};
+      const double n[3] = {d[1] - a[1], 0, a[0] - d[0]}; /* outward for a ccw section */
+      grid(&b, o, u, v, 8, 1, 2, n);
+    }
+    for (int end = 0; end < 2; end++) {
+      double y = end ? 4 : 0;
+      const double n[3] = {0, end ? 1 : -1, 0};
+      uint32_t q[8];
+      for (int k = 0; k < 8; k++)
+        q[k] = pt(&b, P[k][0], y, P[k][1]);
+      /* the part right of the slot as a fan from its reflex corner (2+w, 2), the strip
+       * under the slot, and the convex part left of it */
+      tri(&b, q[4], q[0], q[1], n);
+      tri(&b, q[4], q[1], q[2], n);
+      tri(&b, q[4], q[2], q[3], n);
+      tri(&b, q[0], q[4], q[5], n);
+      quad(&b, q[0], q[5], q[6], q[7], n);
+    }
+    c->property = "slit_2-19_wide_across_a_box_conforms";
+    c->why = "two walls 2^-19 apart facing each other across a slot";
+    c->vol6 = 6.0 * (64 - 16 * w);
+    break;
+  }
   case C_OPEN_BOX:
     box(&b, z, q4, 4, 0, 1 << 5);
     c->property = "box_without_a_face_is_rejected_as_open";
