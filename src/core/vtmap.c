@@ -18,6 +18,7 @@ static uint32_t *find(const tr_vtmap *m, const uint32_t *key)
 void tr_vtmap_free(tr_vtmap *m)
 {
   free(m->slot);
+  free(m->bits);
   memset(m, 0, sizeof *m);
 }
 
@@ -25,6 +26,8 @@ void tr_vtmap_clear(tr_vtmap *m)
 {
   if (m->slot)
     memset(m->slot, 0xff, (size_t)m->cap * (m->arity + 1) * sizeof *m->slot);
+  if (m->bits)
+    memset(m->bits, 0, (size_t)m->cap / 8 * sizeof *m->bits);
   m->n = 0;
 }
 
@@ -37,6 +40,28 @@ static tr_status check_arity(tr_vtmap *m, uint32_t arity)
   return TR_OK;
 }
 
+static void mark(tr_vtmap *m, const uint32_t *key)
+{
+  uint32_t b = tr_vtmap_bit_(key, m->arity, m->cap);
+  m->bits[b >> 6] |= 1ull << (b & 63);
+}
+
+/* The filter of every key, at the current capacity (cap >= 16: a whole number of words). */
+static tr_status refilter(tr_vtmap *m)
+{
+  uint64_t *bits = calloc(m->cap / 8, sizeof *bits);
+  if (!bits)
+    return tr_error(TR_ERR_NOMEM, "out of memory for a filter of %u vertex-tuple keys", m->n);
+  free(m->bits);
+  m->bits = bits;
+  for (uint32_t i = 0; i < m->cap; i++) {
+    const uint32_t *k = m->slot + (uint64_t)i * (m->arity + 1);
+    if (k[0] != TR_VTMAP_NONE)
+      mark(m, k);
+  }
+  return TR_OK;
+}
+
 static tr_status rehash(tr_vtmap *m, uint32_t cap)
 {
   uint32_t w = m->arity + 1;
@@ -44,7 +69,7 @@ static tr_status rehash(tr_vtmap *m, uint32_t cap)
   if (!s)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u vertex-tuple keys", m->n);
   memset(s, 0xff, (size_t)cap * w * sizeof *s);
-  tr_vtmap g = {s, m->n, cap, m->arity};
+  tr_vtmap g = {s, m->n, cap, m->arity, m->bits};
   for (uint32_t i = 0; i < m->cap; i++) {
     const uint32_t *o = m->slot + (uint64_t)i * w;
     if (o[0] != TR_VTMAP_NONE)
@@ -52,7 +77,14 @@ static tr_status rehash(tr_vtmap *m, uint32_t cap)
   }
   free(m->slot);
   *m = g;
-  return TR_OK;
+  return m->bits ? refilter(m) : TR_OK;
+}
+
+tr_status tr_vtmap_filter(tr_vtmap *m)
+{
+  if (!m->cap)
+    return tr_error(TR_ERR_INTERNAL, "vertex-tuple map: a filter before the map has room");
+  return m->bits ? TR_OK : refilter(m);
 }
 
 tr_status tr_vtmap_reserve(tr_vtmap *m, uint32_t arity, uint32_t n)
@@ -87,6 +119,8 @@ tr_status tr_vtmap_put(tr_vtmap *m, uint32_t arity, const uint32_t *key, uint32_
     memcpy(s, key, arity * sizeof *key);
     s[arity] = val;
     m->n++;
+    if (m->bits)
+      mark(m, key);
   }
   if (stored)
     *stored = s[arity];
@@ -100,6 +134,8 @@ tr_status tr_vtmap_set(tr_vtmap *m, uint32_t arity, const uint32_t *key, uint32_
   if (s[0] == TR_VTMAP_NONE) {
     memcpy(s, key, arity * sizeof *key);
     m->n++;
+    if (m->bits)
+      mark(m, key);
   }
   s[arity] = val;
   return TR_OK;

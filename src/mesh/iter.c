@@ -118,6 +118,8 @@ tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint
   /* face key -> the first triangle with it; a repeated triangle takes that one's tet */
   tr_vtmap faces = {0};
   tr_status st = tr_vtmap_reserve(&faces, 3, n);
+  if (st == TR_OK)
+    st = tr_vtmap_filter(&faces); /* most faces of the mesh are no triangle of the list */
   for (uint32_t i = 0; i < n && st == TR_OK; i++) {
     uint32_t k[3];
     tr_vtkey_face(tris[3 * (size_t)i], tris[3 * (size_t)i + 1], tris[3 * (size_t)i + 2], k);

@@ -9,11 +9,15 @@ enum { NKEYS = 3000 };
 
 /* Keys from a small id range so that repeats are common; a brute-force list of what the
  * map must hold (put keeps the value present, set overwrites it) decides every answer. */
-static int agrees_with_brute_force(uint32_t arity)
+static int agrees_with_brute_force(uint32_t arity, int filtered)
 {
   static uint32_t keys[NKEYS][4], cur[NKEYS];
   tr_vtmap m = {0};
   uint32_t nk = 0;
+  if (filtered) {
+    EXPECT_OK(tr_vtmap_reserve(&m, arity, 4), "reserve");
+    EXPECT_OK(tr_vtmap_filter(&m), "filter"); /* then grown through many rehashes */
+  }
   for (int it = 0; it < NKEYS; it++) {
     uint32_t k[4] = {0, 0, 0, 0};
     for (uint32_t i = 0; i < arity; i++)
@@ -65,8 +69,41 @@ static int agrees_with_brute_force(uint32_t arity)
 static int every_arity(void)
 {
   for (uint32_t a = 1; a <= 4; a++)
-    if (agrees_with_brute_force(a))
-      return 1;
+    for (int filtered = 0; filtered < 2; filtered++)
+      if (agrees_with_brute_force(a, filtered))
+        return 1;
+  return 0;
+}
+
+/* The filter never hides a key: every present key passes it, after growth and clear. */
+static int filter_keeps_every_key(void)
+{
+  tr_vtmap m = {0};
+  uint32_t k[3];
+  EXPECT(tr_vtmap_filter(&m) == TR_ERR_INTERNAL, "a filter on a map without room");
+  EXPECT_OK(tr_vtmap_reserve(&m, 3, 10), "reserve");
+  EXPECT_OK(tr_vtmap_filter(&m), "filter");
+  for (int round = 0; round < 2; round++) {
+    for (uint32_t i = 0; i < 20000; i++) {
+      tr_vtkey_face(i, 3 * i + 1, 7 * i + 2, k);
+      EXPECT_OK(tr_vtmap_put(&m, 3, k, i, NULL), "put");
+    }
+    uint32_t absent_passed = 0;
+    for (uint32_t i = 0; i < 20000; i++) {
+      tr_vtkey_face(i, 3 * i + 1, 7 * i + 2, k);
+      EXPECT(tr_vtmap_get(&m, 3, k) == i, "key %u lost (round %d)", i, round);
+      tr_vtkey_face(i, 3 * i + 1, 7 * i + 3, k);
+      EXPECT(tr_vtmap_get(&m, 3, k) == TR_VTMAP_NONE, "absent key %u found", i);
+      uint32_t b = tr_vtmap_bit_(k, 3, m.cap);
+      absent_passed += (uint32_t)(m.bits[b >> 6] >> (b & 63) & 1);
+    }
+    /* 8 bits per slot, at most half the slots used: at most 1 in 16 bits set */
+    EXPECT(absent_passed < 20000 / 8, "the filter passes %u of 20000 absent keys",
+           absent_passed);
+    tr_vtmap_clear(&m);
+    EXPECT(m.n == 0, "clear");
+  }
+  tr_vtmap_free(&m);
   return 0;
 }
 
@@ -120,6 +157,8 @@ int main(int argc, char **argv)
   const char *c = argv[1];
   if (!strcmp(c, "brute"))
     return every_arity();
+  if (!strcmp(c, "filter"))
+    return filter_keeps_every_key();
   if (!strcmp(c, "arity"))
     return arity_is_fixed();
   if (!strcmp(c, "layout"))
