@@ -51,6 +51,8 @@ int tr_tet_shape(const double *a, const double *b, const double *c, const double
       cc[i] = a[i] + o[i];
   /* dihedral at edge (i,j): the angle between the faces opposite the other two
    * vertices k, l, from their inward normals n_k, n_l: pi - angle(n_k, n_l) */
+  if (!dih) /* the refinement loop asks for the ratio and circumcentre only */
+    return isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]);
   double n[4][3];
   for (int k = 0; k < 4; k++) {
     const double *x = p[tr_face_vtx[k][0]], *y = p[tr_face_vtx[k][1]], *z = p[tr_face_vtx[k][2]];
@@ -59,7 +61,7 @@ int tr_tet_shape(const double *a, const double *b, const double *c, const double
     sub3(z, x, e2);
     cross3(e1, e2, n[k]);
   }
-  for (int e = 0; e < 6 && dih; e++) {
+  for (int e = 0; e < 6; e++) {
     int i = tr_edge_vtx[e][0], j = tr_edge_vtx[e][1], k = -1, l = -1;
     for (int s = 0; s < 4; s++)
       if (s != i && s != j) {
