@@ -140,7 +140,7 @@ static int small_at(const rf_ctx *c, uint32_t V, const element *e, const element
   if (e->kind == RF_SEG && f->kind == RF_SEG) {
     uint32_t P = e->v[0] == V ? e->v[1] : e->v[0], Q = f->v[0] == V ? f->v[1] : f->v[0];
     /* two edges of one input triangle: its own corner (see seg_facet_small) */
-    double lim = rf_facemap_get(&c->trimap, V, P, Q) != TR_NONE ? RF_SHARP_COS : RF_SMALL_COS;
+    double lim = rf_face_get(&c->trimap, V, P, Q) != TR_NONE ? RF_SHARP_COS : RF_SMALL_COS;
     return P != Q && cos_between(X(c, V), X(c, P), X(c, Q)) > lim;
   }
   if (e->kind == RF_SEG || f->kind == RF_SEG) {

@@ -493,8 +493,8 @@ static void ctx_free(rf_ctx *c)
   free(c->sftri);
   free(c->sfdead);
   free(c->sfnosplit);
-  rf_facemap_free(&c->fm);
-  rf_facemap_free(&c->trimap);
+  tr_vtmap_free(&c->fm);
+  tr_vtmap_free(&c->trimap);
   free(c->ssv);
   free(c->ssab);
   free(c->ssdead);

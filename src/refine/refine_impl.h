@@ -8,17 +8,9 @@
 
 #include <stdint.h>
 
+#include "core/vtmap.h"
 #include "recover_edges/edgeset.h"
 #include "refine/refine.h"
-
-/* Sorted vertex triple -> sub-face id, open addressing (linear probing, fixed hash
- * tr_hash3 so runs are reproducible). A split sub-face's entry stays and points to a dead
- * id: its three vertices never span a face of the mesh again as a sub-face. */
-typedef struct rf_facemap {
-  uint32_t *key; /* 3 per slot, key[3s] == TR_NONE: empty */
-  uint32_t *val;
-  uint32_t n, cap;
-} rf_facemap;
 
 /* What a vertex lies on: for split points the constraint it was inserted on. */
 enum { RF_FREE = 0, RF_INPUT = 1, RF_SEG = 2, RF_FACET = 3 };
@@ -32,8 +24,9 @@ typedef struct rf_ctx {
   uint32_t nsf, capsf;
   uint32_t *sfv, *sftri;
   uint8_t *sfdead;
-  rf_facemap fm;
-  rf_facemap trimap; /* the input triangles by their vertices (angles.c) */
+  tr_vtmap fm;      /* sorted sub-face vertices -> sub-face id (rf_face_set); a split
+                       sub-face's entry stays and points to a dead id */
+  tr_vtmap trimap;  /* the input triangles by their vertices (angles.c) */
   /* sub-segments: vertices, the input edge (A,B) they lie on (input ids, A < B) */
   uint32_t nss, capss;
   uint32_t *ssv, *ssab;
@@ -60,9 +53,19 @@ typedef struct rf_ctx {
 } rf_ctx;
 
 /* ---- subs.c ---- */
-void rf_facemap_free(rf_facemap *f);
-tr_status rf_facemap_put(rf_facemap *f, const uint32_t v[3], uint32_t val);
-uint32_t rf_facemap_get(const rf_facemap *f, uint32_t a, uint32_t b, uint32_t c);
+/* Face keys in the shared vertex-tuple map: any listing of the face's vertices. */
+static inline tr_status rf_face_set(tr_vtmap *f, const uint32_t v[3], uint32_t val)
+{
+  uint32_t k[3];
+  tr_vtkey_face(v[0], v[1], v[2], k);
+  return tr_vtmap_set(f, 3, k, val); /* a dead entry revived by a new sub-face */
+}
+static inline uint32_t rf_face_get(const tr_vtmap *f, uint32_t a, uint32_t b, uint32_t c)
+{
+  uint32_t k[3];
+  tr_vtkey_face(a, b, c, k);
+  return tr_vtmap_get(f, 3, k);
+}
 /* Builds the tables from sub (and the plc's triangles). */
 tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub);
 tr_status rf_subface_add(rf_ctx *c, uint32_t a, uint32_t b, uint32_t d, uint32_t tri,

@@ -7,84 +7,9 @@
 
 #include "refine/refine_impl.h"
 
-void rf_facemap_free(rf_facemap *f)
-{
-  free(f->key);
-  free(f->val);
-  memset(f, 0, sizeof *f);
-}
-
-static size_t fm_slot(const uint32_t k[3], uint32_t cap)
-{
-  return (size_t)(tr_hash3(k) >> 32) & (cap - 1);
-}
-
-static tr_status fm_grow(rf_facemap *f)
-{
-  if (f->cap >= (1u << 29))
-    return tr_error(TR_ERR_NOMEM, "refinement: more than 2^28 sub-faces");
-  uint32_t nc = f->cap ? 2 * f->cap : 256;
-  uint32_t *k = malloc(sizeof *k * 3 * (size_t)nc), *v = malloc(sizeof *v * nc);
-  if (!k || !v) {
-    free(k);
-    free(v);
-    return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-faces", f->n);
-  }
-  for (uint32_t i = 0; i < nc; i++)
-    k[3 * (size_t)i] = TR_NONE;
-  for (uint32_t i = 0; i < f->cap; i++) {
-    const uint32_t *o = f->key + 3 * (size_t)i;
-    if (o[0] == TR_NONE)
-      continue;
-    size_t j = fm_slot(o, nc);
-    while (k[3 * j] != TR_NONE)
-      j = (j + 1) & (nc - 1);
-    memcpy(k + 3 * j, o, 3 * sizeof *o);
-    v[j] = f->val[i];
-  }
-  free(f->key);
-  free(f->val);
-  f->key = k;
-  f->val = v;
-  f->cap = nc;
-  return TR_OK;
-}
-
-tr_status rf_facemap_put(rf_facemap *f, const uint32_t v[3], uint32_t val)
-{
-  if (2 * (f->n + 1) > f->cap)
-    TR_CHECK(fm_grow(f));
-  uint32_t k[3] = {v[0], v[1], v[2]};
-  tr_sort3(k);
-  size_t j = fm_slot(k, f->cap);
-  while (f->key[3 * j] != TR_NONE) {
-    if (!memcmp(f->key + 3 * j, k, sizeof k)) {
-      f->val[j] = val; /* a dead entry revived by a new sub-face on the same vertices */
-      return TR_OK;
-    }
-    j = (j + 1) & (f->cap - 1);
-  }
-  memcpy(f->key + 3 * j, k, sizeof k);
-  f->val[j] = val;
-  f->n++;
-  return TR_OK;
-}
-
-uint32_t rf_facemap_get(const rf_facemap *f, uint32_t a, uint32_t b, uint32_t c)
-{
-  if (!f->cap)
-    return TR_NONE;
-  uint32_t k[3] = {a, b, c};
-  tr_sort3(k);
-  for (size_t j = fm_slot(k, f->cap); f->key[3 * j] != TR_NONE; j = (j + 1) & (f->cap - 1))
-    if (!memcmp(f->key + 3 * j, k, sizeof k))
-      return f->val[j];
-  return TR_NONE;
-}
-
 uint32_t rf_subface_of(const rf_ctx *c, uint32_t a, uint32_t b, uint32_t d)
 {
-  uint32_t f = rf_facemap_get(&c->fm, a, b, d);
+  uint32_t f = rf_face_get(&c->fm, a, b, d);
   return f != TR_NONE && !c->sfdead[f] ? f : TR_NONE;
 }
 
@@ -134,7 +59,7 @@ tr_status rf_subface_add(rf_ctx *c, uint32_t a, uint32_t b, uint32_t d, uint32_t
   c->sfdead[f] = c->sfnosplit[f] = 0;
   if (id)
     *id = f;
-  return rf_facemap_put(&c->fm, c->sfv + 3 * (size_t)f, f);
+  return rf_face_set(&c->fm, c->sfv + 3 * (size_t)f, f);
 }
 
 tr_status rf_subseg_add(rf_ctx *c, uint32_t u, uint32_t v, uint32_t A, uint32_t B,
@@ -205,8 +130,12 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
     c->vkind[v] = v < plc->npoints ? RF_INPUT : RF_FREE;
     c->vown[v] = v < plc->npoints ? v : TR_NONE;
   }
+  TR_CHECK(tr_vtmap_reserve(&c->trimap, 3, plc->ntris));
   for (uint32_t t = 0; t < plc->ntris; t++)
-    TR_CHECK(rf_facemap_put(&c->trimap, plc->tris + 3 * (size_t)t, t));
+    TR_CHECK(rf_face_set(&c->trimap, plc->tris + 3 * (size_t)t, t));
+  /* "is this mesh face a sub-face?" is asked of every face the refinement walks */
+  TR_CHECK(tr_vtmap_reserve(&c->fm, 3, 2 * sub->n));
+  TR_CHECK(tr_vtmap_filter(&c->fm));
   for (uint32_t f = 0; f < sub->n; f++) {
     const uint32_t *v = sub->v + 3 * (size_t)f, tri = sub->tri[f];
     TR_CHECK(rf_subface_add(c, v[0], v[1], v[2], tri, NULL));
