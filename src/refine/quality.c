@@ -21,6 +21,34 @@ static void cross3(const double *a, const double *b, double *o)
   o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* cs[e] = the cosine of the angle between the normals of the two faces
+ * at edge e (ECode order), clamped to [-1, 1]; 1 where a face has no normal. The
+ * dihedral angle at e is pi minus its arccosine. */
+static void dihedral_cosines(const double *const p[4], double cs[6])
+{
+  double n[4][3], len[4];
+  for (int k = 0; k < 4; k++) {
+    const double *x = p[tr_face_vtx[k][0]], *y = p[tr_face_vtx[k][1]], *z = p[tr_face_vtx[k][2]];
+    double e1[3], e2[3];
+    sub3(y, x, e1);
+    sub3(z, x, e2);
+    cross3(e1, e2, n[k]);
+    len[k] = sqrt(dot3(n[k], n[k]));
+  }
+  for (int e = 0; e < 6; e++) {
+    int i = tr_edge_vtx[e][0], j = tr_edge_vtx[e][1], k = -1, l = -1;
+    for (int s = 0; s < 4; s++)
+      if (s != i && s != j) {
+        if (k < 0)
+          k = s;
+        else
+          l = s;
+      }
+    double c = len[k] > 0 && len[l] > 0 ? dot3(n[k], n[l]) / (len[k] * len[l]) : 1;
+    cs[e] = fmax(-1.0, fmin(1.0, c));
+  }
+}
+
 int tr_tet_shape(const double *a, const double *b, const double *c, const double *d,
                  double *ratio, double *volume, double dih[6], double cc[3])
 {
@@ -49,33 +77,27 @@ int tr_tet_shape(const double *a, const double *b, const double *c, const double
   if (cc)
     for (int i = 0; i < 3; i++)
       cc[i] = a[i] + o[i];
-  /* dihedral at edge (i,j): the angle between the faces opposite the other two
-   * vertices k, l, from their inward normals n_k, n_l: pi - angle(n_k, n_l) */
-  if (!dih) /* the refinement loop asks for the ratio and circumcentre only */
-    return isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]);
-  double n[4][3];
-  for (int k = 0; k < 4; k++) {
-    const double *x = p[tr_face_vtx[k][0]], *y = p[tr_face_vtx[k][1]], *z = p[tr_face_vtx[k][2]];
-    double e1[3], e2[3];
-    sub3(y, x, e1);
-    sub3(z, x, e2);
-    cross3(e1, e2, n[k]);
-  }
-  for (int e = 0; e < 6; e++) {
-    int i = tr_edge_vtx[e][0], j = tr_edge_vtx[e][1], k = -1, l = -1;
-    for (int s = 0; s < 4; s++)
-      if (s != i && s != j) {
-        if (k < 0)
-          k = s;
-        else
-          l = s;
-      }
-    double nk = sqrt(dot3(n[k], n[k])), nl = sqrt(dot3(n[l], n[l]));
-    double cs = nk > 0 && nl > 0 ? dot3(n[k], n[l]) / (nk * nl) : 1;
-    cs = fmax(-1.0, fmin(1.0, cs));
-    dih[e] = 180.0 - acos(cs) * (180.0 / 3.14159265358979323846);
+  if (dih) {
+    double cs[6];
+    dihedral_cosines(p, cs);
+    for (int e = 0; e < 6; e++)
+      dih[e] = 180.0 - acos(cs[e]) * (180.0 / 3.14159265358979323846);
   }
   return isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]);
+}
+
+double tr_tet_min_dihedral(const double *a, const double *b, const double *c, const double *d,
+                           double *ratio, double *volume)
+{
+  const double *p[4] = {a, b, c, d};
+  tr_tet_shape(a, b, c, d, ratio, volume, NULL, NULL);
+  double cs[6], lo = 1;
+  dihedral_cosines(p, cs);
+  for (int e = 0; e < 6; e++)
+    lo = fmin(lo, cs[e]);
+  /* the smallest angle has the smallest cosine of the normals' angle: one acos, the
+   * same double as the smallest of the six (acos is correctly rounded, so monotone) */
+  return 180.0 - acos(lo) * (180.0 / 3.14159265358979323846);
 }
 
 void tr_quality_measure(const struct tr_mesh *m, tr_quality *q)

@@ -16,6 +16,11 @@
 int tr_tet_shape(const double *a, const double *b, const double *c, const double *d,
                  double *ratio, double *volume, double dih[6], double cc[3]);
 
+/* The smallest of tr_tet_shape's six dihedral angles (the same double), with one arccosine
+ * instead of six: the sliver stage ranks every candidate by it. */
+double tr_tet_min_dihedral(const double *a, const double *b, const double *c, const double *d,
+                           double *ratio, double *volume);
+
 #define TR_QUALITY_DIH_BINS 18   /* dihedral angles, 10 degrees each */
 #define TR_QUALITY_RATIO_BINS 7  /* radius-edge: <1, <1.414, <2, <4, <10, <100, >=100 */
 typedef struct tr_quality {

@@ -476,6 +476,34 @@ static void determinism(void)
   tr_plc_destroy(plc);
 }
 
+/* tr_tet_min_dihedral is the smallest of tr_tet_shape's six angles, the same double, on
+ * regular, random, sliver-like and flat tets (its one arccosine rests on acos being
+ * monotone). */
+static void min_dihedral_equals_smallest_of_six(void)
+{
+  uint64_t r = 12345;
+  for (int it = 0; it < 20000; it++) {
+    double p[4][3];
+    for (int i = 0; i < 4; i++)
+      for (int k = 0; k < 3; k++) {
+        r = r * 6364136223846793005ull + 1442695040888963407ull;
+        p[i][k] = (double)(r >> 11) * 0x1p-53;
+      }
+    if (it % 3 == 1) /* nearly flat: d close to the plane abc */
+      for (int k = 0; k < 3; k++)
+        p[3][k] = (p[0][k] + p[1][k] + p[2][k]) / 3 + (it % 2 ? 1e-9 : 0);
+    double ratio, vol, dih[6], r2, v2;
+    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, dih, NULL);
+    double lo = dih[0];
+    for (int e = 1; e < 6; e++)
+      lo = fmin(lo, dih[e]);
+    double m = tr_tet_min_dihedral(p[0], p[1], p[2], p[3], &r2, &v2);
+    EXPECT(m == lo || (isnan(m) && isnan(lo)), "tet %d: %.17g vs the six's smallest %.17g", it,
+           m, lo);
+    EXPECT((r2 == ratio || (isnan(r2) && isnan(ratio))) && v2 == vol, "tet %d: ratio/volume", it);
+  }
+}
+
 int main(int argc, char **argv)
 {
   const char *c = argc > 1 ? argv[1] : "";
@@ -501,6 +529,8 @@ int main(int argc, char **argv)
     shapes(argv[2]);
   else if (!strcmp(c, "determinism"))
     determinism();
+  else if (!strcmp(c, "min_dihedral"))
+    min_dihedral_equals_smallest_of_six();
   else {
     fprintf(stderr, "unknown case '%s'\n", c);
     return 2;
