@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "predicates/predicates.h"
 #include "refine/quality.h"
 #include "sliver/sliver.h"
 
@@ -25,19 +26,32 @@ static int in_list(const uint32_t *a, uint32_t n, uint32_t x)
   return 0;
 }
 
-/* p strictly inside the circumsphere of tet t (exact). */
-static int conflicts(const struct tr_mesh *m, uint32_t t, const tr_point *p)
+/* p strictly inside the circumsphere of tet t: exact, or (screen) on the vertices'
+ * doubles, which only ranks the candidates. */
+static int conflicts(const struct tr_mesh *m, uint32_t t, const tr_point *p, int screen)
 {
   const uint32_t *v = m->tv + 4 * (size_t)t;
+  if (screen) {
+    const double *x = m->xyz;
+    return tr_insphere(x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2],
+                       x + 3 * (size_t)v[3], p->d) > 0;
+  }
   tr_point q[4];
   for (int i = 0; i < 4; i++)
     q[i] = tr_mesh_point(m, v[i]);
   return tr_insphere_p(&q[0], &q[1], &q[2], &q[3], p) > 0;
 }
 
-/* Face k of t with the point x in place of vertex k is strictly positive. */
-static int sees(const struct tr_mesh *m, uint32_t t, int k, const tr_point *x)
+/* Face k of t with the point x in place of vertex k is strictly positive (exact, or on
+ * the doubles: screen). */
+static int sees(const struct tr_mesh *m, uint32_t t, int k, const tr_point *x, int screen)
 {
+  if (screen) {
+    const double *y[4];
+    for (int i = 0; i < 4; i++)
+      y[i] = i == k ? x->d : m->xyz + 3 * (size_t)m->tv[4 * (size_t)t + (size_t)i];
+    return tr_orient3d(y[0], y[1], y[2], y[3]) > 0;
+  }
   tr_point q[4];
   for (int i = 0; i < 4; i++)
     q[i] = i == k ? *x : tr_mesh_point(m, m->tv[4 * (size_t)t + (size_t)i]);
@@ -56,8 +70,8 @@ static int boundary(const struct tr_mesh *m, const uint32_t *cav, uint32_t n, ui
  * whose circumsphere strictly holds x and to those behind a face x does not strictly see,
  * then shrunk (a tet with a coned face x does not strictly see leaves) until stable.
  * *n = 0 when t itself would have to leave or the cavity grows too big. */
-static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, uint32_t *cav,
-                   uint32_t *n)
+static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int screen,
+                   uint32_t *cav, uint32_t *n)
 {
   const struct tr_mesh *m = c->m;
   *n = 0;
@@ -69,7 +83,7 @@ static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, uint32
       if (nb == TR_NONE || !tr_tet_is_real(m, nb) || in_list(cav, *n, nb))
         continue;
       uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
-      if (tr_sliver_protected(c, f, 3) || !conflicts(m, nb, x))
+      if (tr_sliver_protected(c, f, 3) || !conflicts(m, nb, x, screen))
         continue;
       if (*n == SL_MAX_CAVITY) {
         *n = 0;
@@ -85,7 +99,7 @@ static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, uint32
     for (int k = 0; k < 4; k++) {
       uint32_t nb = TR_NEIG(m, cav[i], k);
       if (nb == TR_NONE || !tr_tet_is_real(m, nb) || in_list(cav, *n, nb) ||
-          sees(m, cav[i], k, x))
+          sees(m, cav[i], k, x, screen))
         continue;
       uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
       if (tr_sliver_protected(c, f, 3))
@@ -102,7 +116,7 @@ static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, uint32
     changed = 0;
     for (uint32_t i = 0; i < *n && !changed; i++)
       for (int k = 0; k < 4; k++)
-        if (boundary(m, cav, *n, cav[i], k) && !sees(m, cav[i], k, x)) {
+        if (boundary(m, cav, *n, cav[i], k) && !sees(m, cav[i], k, x, screen)) {
           if (cav[i] == t) {
             *n = 0;
             return;
@@ -174,12 +188,13 @@ static int keeps_vertices(const struct tr_mesh *m, const trial *z)
 
 /* The cavity and cone of x for sliver t; 1 when the new tets' smallest angle beats the
  * cavity's and they keep the bounds. */
-static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], trial *z)
+static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int screen,
+                     trial *z)
 {
   const struct tr_mesh *m = c->m;
   memcpy(z->x, x, sizeof z->x);
   tr_point px = tr_pt_d(x);
-  cavity(c, t, &px, z->cav, &z->n);
+  cavity(c, t, &px, screen, z->cav, &z->n);
   if (!z->n)
     return 0;
   uint32_t pid = m->nv; /* tr_mesh_add_vertex appends */
@@ -209,9 +224,10 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], tria
     return 0;
   uint32_t region = m->region ? m->region[t] : 0; /* no sub-face inside the cavity */
   for (uint32_t i = 0; i < z->nf; i++)
-    if (!tr_sliver_keeps_bounds(c, z->newv + 4 * (size_t)i, pid, x, region, rat[i], dih[i],
-                                was))
-      return 0;
+    if (screen ? c->keep.ratio > 0 && rat[i] > fmax(c->keep.ratio, was) && !(dih[i] >= c->bound)
+               : !tr_sliver_keeps_bounds(c, z->newv + 4 * (size_t)i, pid, x, region, rat[i],
+                                         dih[i], was))
+      return 0; /* the screen: the ratio part only (the volume part is exact) */
   return 1;
 }
 
@@ -272,14 +288,13 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, 
       for (int j = 0; j < 3; j++)
         cand[nc][j] = fc[j] + sg * height[h] * len * nrm[j] / nn;
   }
-  int have = 0;
-  for (int f = 0; f < nc; f++) {
-    if (try_point(c, t, cand[f], z) && (!have || z->newmin > best->newmin)) {
-      *best = *z;
-      have = 1;
-    }
-  }
-  if (!have)
+  /* ranked on the doubles, then the best one decided exactly */
+  int have = -1;
+  double top = -1;
+  for (int f = 0; f < nc; f++)
+    if (try_point(c, t, cand[f], 1, z) && z->newmin > top)
+      top = z->newmin, have = f;
+  if (have < 0 || !try_point(c, t, cand[have], 0, best))
     return TR_OK;
   uint32_t v, ids[4 * SL_MAX_CAVITY];
   uint32_t region = m->region ? m->region[t] : 0;

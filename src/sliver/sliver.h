@@ -1,7 +1,7 @@
 /* Sliver removal after quality refinement (issue 17): Delaunay refinement bounds the
  * radius-edge ratio, which leaves slivers (four nearly coplanar points on a small
  * circumsphere, dihedral angles near 0 and 180 degrees). This stage raises the worst
- * dihedral angle locally, without adding points:
+ * dihedral angle locally, by flips and moves and, at level 3, new interior points:
  *
  *  - flips.c: for every tet whose smallest dihedral angle is under the bound, the flips
  *    that remove one of its faces (2-3) or one of its edges (3-2, 4-4, and edge removal
@@ -38,7 +38,8 @@
 enum { TR_SLIVER_OFF = 0, TR_SLIVER_FLIPS = 1, TR_SLIVER_SMOOTH = 2, TR_SLIVER_INSERT = 3 };
 
 /* The pipeline's choice: tets under 20 degrees are worked on (the bench's figures are the
- * share under 10 and the minimum), in up to 3 rounds. */
+ * share under 10 and the minimum), in up to 3 rounds of (flips, smoothing, insertion), and
+ * a last flip and smoothing pass when the last round added points. */
 #define TR_SLIVER_BOUND 20.0
 #define TR_SLIVER_ROUNDS 3
 
