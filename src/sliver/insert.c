@@ -315,7 +315,8 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
   trial *z = malloc(2 * sizeof *z);
   if (!z)
     return tr_error(TR_ERR_NOMEM, "out of memory for the sliver insertion");
-  uint32_t nt = m->nt; /* tets made by this pass wait for the next */
+  uint32_t nt = m->nt; /* new tets in slots past nt wait for the next pass (freed slots
+                          below it are reused and visited: slot order, deterministic) */
   for (uint32_t t = 0; t < nt && s == TR_OK && st->points < c->point_budget; t++) {
     if (!tr_tet_is_real(m, t) || !(tr_sliver_min_dihedral(m, m->tv[4 * (size_t)t],
                                      m->tv[4 * (size_t)t + 1], m->tv[4 * (size_t)t + 2],
