@@ -45,7 +45,7 @@ def test_optimize_levels_reach_the_library_and_add_no_point(unit_cube):
     assert off.stats["sliver_flips"] == 0 and off.stats["sliver_points_smoothed"] == 0
     assert on.stats["min_dihedral"] >= off.stats["min_dihedral"]
     with pytest.raises(ValueError):
-        tetrec.tetrahedralize(*unit_cube, quality=1.2, optimize=3)
+        tetrec.tetrahedralize(*unit_cube, quality=1.2, optimize=4)
 
 
 def test_quality_with_a_dihedral_target_is_refused(unit_cube):

@@ -196,8 +196,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     removed or moved inside where that can be done exactly). quality: R or (R, D), the
     radius-edge bound of constrained Delaunay refinement (a dihedral D is refused as not
     supported yet); max_volume: refinement until every tet's volume is at most it.
-    optimize: sliver removal after refinement, 0 off, 1 flips, 2 (default) flips and
-    smoothing of interior points.
+    optimize: sliver removal after refinement, 0 off, 1 flips, 2 flips and smoothing of
+    interior points, 3 (default) also new interior points at slivers.
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: Mesh.write() defaults to writing exact rational Steiner points.

@@ -251,12 +251,12 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
           return -1;
       }
     } else if (!strcmp(k, "optimize")) {
-      /* the sliver removal level; the library refuses one out of 0..2 */
+      /* the sliver removal level; the library refuses one out of 0..3 */
       long x = PyLong_AsLong(value);
       if (x == -1 && PyErr_Occurred())
         return -1;
-      if (x < 0 || x > 2) {
-        PyErr_SetString(PyExc_ValueError, "optimize is 0, 1 or 2");
+      if (x < 0 || x > 3) {
+        PyErr_SetString(PyExc_ValueError, "optimize is 0, 1, 2 or 3");
         return -1;
       }
       opt->optimize = (int)x;

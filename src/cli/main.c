@@ -122,8 +122,9 @@ static const struct option {
      "sliver removal after quality refinement (runs only with\n"
      "--quality or --max-volume): 0 off, 1 flips that raise the\n"
      "smallest dihedral angle, 2 those flips and smoothing of\n"
-     "interior points (default 2); no point is added or moved off\n"
-     "an input edge or facet"},
+     "interior points, 3 (default) also new interior points at\n"
+     "slivers; no point is added on or moved off an input edge\n"
+     "or facet"},
     {"-O", "N", C_MESH, "the same as --optimize (TetGen's switch)"},
     {"--progress", NULL, C_MESH,
      "a progress line (stage, share of stages done) on stderr from\n"
@@ -289,8 +290,8 @@ static tr_status set_option(args *a, const char *name, const char *v)
     a->max_volume = x;
   }
   else if (!strcmp(name, "--optimize") || !strcmp(name, "-O")) {
-    if (strlen(v) != 1 || v[0] < '0' || v[0] > '2')
-      return tr_error(TR_ERR_USAGE, "%s needs a level 0, 1 or 2, not '%s'", name, v);
+    if (strlen(v) != 1 || v[0] < '0' || v[0] > '3')
+      return tr_error(TR_ERR_USAGE, "%s needs a level 0, 1, 2 or 3, not '%s'", name, v);
     a->optimize = v[0] - '0' + 1;
   }
   else if (!strcmp(name, "--keep-surface") || !strcmp(name, "-Y"))

@@ -10,5 +10,5 @@ void tr_options_default(tr_options *opt)
   opt->smooth = 1;
   opt->allow_open = 0;
   opt->verbose = 1;
-  opt->optimize = 2;
+  opt->optimize = 3;
 }

@@ -153,9 +153,9 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   double secs[2];
   double *stage = stats->stage_seconds;
   tr_status st = tr_pipeline_progress(&opt, TR_STAGE_VALIDATE, 0);
-  if (st == TR_OK && (opt.optimize < TR_SLIVER_OFF || opt.optimize > TR_SLIVER_SMOOTH))
-    st = tr_error(TR_ERR_USAGE, "optimize level %d: it is 0 (off), 1 (flips) or 2 (flips "
-                  "and smoothing)", opt.optimize);
+  if (st == TR_OK && (opt.optimize < TR_SLIVER_OFF || opt.optimize > TR_SLIVER_INSERT))
+    st = tr_error(TR_ERR_USAGE, "optimize level %d: it is 0 (off), 1 (flips), 2 (flips "
+                  "and smoothing) or 3 (flips, smoothing and new points)", opt.optimize);
   if (st == TR_OK)
     st = copy_plc(plc, &p);
   /* Validation works on a copy: the caller's PLC is const. One the caller validated
@@ -258,16 +258,20 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       tr_sliver_params sp = {opt.optimize, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS,
                              {opt.quality_ratio, opt.max_volume, p}};
       tr_sliver_stats ss;
+      uint32_t nv1 = m->nv;
       st = tr_sliver_remove(m, &sub, vkind, p->npoints, &sp, &ss);
+      if (st == TR_OK) /* its points are interior */
+        st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv1, &vkind, &vindex);
       stats->points_added_for_sliver = ss.points;
       stats->sliver_flips = ss.flips23 + ss.flips32 + ss.flips44 + ss.flipsn;
       stats->sliver_points_smoothed = ss.smoothed;
       if (st == TR_OK && opt.verbose >= 2)
         fprintf(stderr, "tetrec: sliver removal: %llu flips (2-3 %llu, 3-2 %llu, 4-4 %llu, "
-                "n %llu), %llu interior points moved\n",
+                "n %llu), %llu interior points moved, %llu points added\n",
                 (unsigned long long)stats->sliver_flips, (unsigned long long)ss.flips23,
                 (unsigned long long)ss.flips32, (unsigned long long)ss.flips44,
-                (unsigned long long)ss.flipsn, (unsigned long long)ss.smoothed);
+                (unsigned long long)ss.flipsn, (unsigned long long)ss.smoothed,
+                (unsigned long long)ss.points);
     }
     PROGRESS(TR_STAGE_REFINE, 1);
     stage[TR_STAGE_REFINE] = tr_pipeline_now() - t45;

@@ -100,6 +100,8 @@ tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfa
   memset(c, 0, sizeof *c);
   c->m = m;
   c->bound = bound;
+  c->insert_bound = TR_SLIVER_INSERT_BOUND;
+  c->point_budget = TR_SLIVER_POINTS(m->nv);
   if (sub->n > UINT32_MAX / 3)
     return tr_error(TR_ERR_UNSUPPORTED, "%u sub-faces: too many for the sliver stage", sub->n);
   size_t n = sub->n;
@@ -136,13 +138,23 @@ tr_status tr_sliver_remove(struct tr_mesh *m, const tr_subfaces *sub, const uint
   tr_sliver_ctx c;
   tr_status s = tr_sliver_ctx_init(&c, m, sub, vkind, npoints, par->bound);
   c.keep = par->keep;
+  uint64_t added = 0;
   for (int r = 0; s == TR_OK && r < par->rounds; r++) {
     tr_sliver_stats before = *st;
     s = tr_sliver_flip_pass(&c, st);
     if (s == TR_OK && par->level >= TR_SLIVER_SMOOTH)
       s = tr_sliver_smooth_pass(&c, st);
+    added = st->points;
+    if (s == TR_OK && par->level >= TR_SLIVER_INSERT)
+      s = tr_sliver_insert_pass(&c, st);
+    added = st->points - added;
     if (!memcmp(&before, st, sizeof before))
       break; /* a round that changed nothing: the next would not either */
+  }
+  if (s == TR_OK && added) { /* the last points' tets get their flips and moves too */
+    s = tr_sliver_flip_pass(&c, st);
+    if (s == TR_OK)
+      s = tr_sliver_smooth_pass(&c, st);
   }
   tr_sliver_ctx_free(&c);
   return s;

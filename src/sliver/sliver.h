@@ -1,7 +1,7 @@
 /* Sliver removal after quality refinement (issue 17): Delaunay refinement bounds the
  * radius-edge ratio, which leaves slivers (four nearly coplanar points on a small
  * circumsphere, dihedral angles near 0 and 180 degrees). This stage raises the worst
- * dihedral angle locally, without adding points:
+ * dihedral angle locally, by flips and moves and, at level 3, new interior points:
  *
  *  - flips.c: for every tet whose smallest dihedral angle is under the bound, the flips
  *    that remove one of its faces (2-3) or one of its edges (3-2, 4-4, and edge removal
@@ -16,6 +16,10 @@
  *    smallest dihedral angle of its star, accepted only when every tet of the star is
  *    exactly positive with the new point. A moved vertex stays strictly inside its star,
  *    so it never reaches a constraint; its exact point becomes the double itself.
+ *  - insert.c (level 3): a tet under TR_SLIVER_INSERT_BOUND gets a new interior point at
+ *    its circumcentre (a double), by a cavity that crosses no sub-face and is star-shaped
+ *    about the point, kept when the new tets' smallest angle beats the cavity's; at most
+ *    TR_SLIVER_POINTS(nv) points per stage.
  *
  * Angles are measured in doubles (src/refine/quality.h, on m->xyz): they only rank
  * choices; every topological decision is exact. Both steps run in fixed passes in slot /
@@ -31,12 +35,18 @@
 #include "recover_facets/recover_facets.h"
 
 /* Levels of tr_options.optimize. */
-enum { TR_SLIVER_OFF = 0, TR_SLIVER_FLIPS = 1, TR_SLIVER_SMOOTH = 2 };
+enum { TR_SLIVER_OFF = 0, TR_SLIVER_FLIPS = 1, TR_SLIVER_SMOOTH = 2, TR_SLIVER_INSERT = 3 };
 
 /* The pipeline's choice: tets under 20 degrees are worked on (the bench's figures are the
- * share under 10 and the minimum), in up to 3 rounds. */
+ * share under 10 and the minimum), in up to 3 rounds of (flips, smoothing, insertion), and
+ * a last flip and smoothing pass when the last round added points. */
 #define TR_SLIVER_BOUND 20.0
 #define TR_SLIVER_ROUNDS 3
+
+/* Insertion works on the worse tets only (each point costs), within a budget of points per
+ * stage that grows with the mesh. */
+#define TR_SLIVER_INSERT_BOUND 15.0
+#define TR_SLIVER_POINTS(nv) ((uint64_t)(nv) / 4 + 100)
 
 #define SL_MAX_RING 7 /* largest edge shell the flips remove (7 tets -> 10) */
 
@@ -50,7 +60,7 @@ typedef struct tr_sliver_bounds {
 } tr_sliver_bounds;
 
 typedef struct tr_sliver_params {
-  int level;     /* TR_SLIVER_FLIPS or TR_SLIVER_SMOOTH */
+  int level;     /* TR_SLIVER_FLIPS, TR_SLIVER_SMOOTH or TR_SLIVER_INSERT */
   double bound;  /* degrees: tets with a smaller dihedral angle are worked on */
   int rounds;    /* rounds of (flip pass, smoothing pass) */
   tr_sliver_bounds keep;
@@ -59,7 +69,7 @@ typedef struct tr_sliver_params {
 typedef struct tr_sliver_stats {
   uint64_t flips23, flips32, flips44, flipsn; /* n: edge removal with a shell of 5+ */
   uint64_t smoothed;                          /* accepted vertex moves */
-  uint64_t points;                            /* points added: always 0 */
+  uint64_t points;                            /* points added (insert.c) */
 } tr_sliver_stats;
 
 /* What the steps may not touch, built once from the sub-faces. */
@@ -69,11 +79,14 @@ typedef struct tr_sliver_ctx {
   uint32_t *edges, nedges; /* sorted edge keys (tr_cmp_edge_key) of their edges */
   uint8_t *movable;        /* nv: 1 for a vertex smoothing may move */
   double bound;
+  double insert_bound;     /* insertion: tets with a smaller angle get a point */
+  uint64_t point_budget;   /* insertion: points the stage may add */
   tr_sliver_bounds keep;
 } tr_sliver_ctx;
 
 /* The context of one mesh: c->m = m, the constraint sets of sub, the movable vertices
- * (vkind: see tr_sliver_remove), no bounds to keep (set c->keep after). Free with
+ * (vkind: see tr_sliver_remove), no bounds to keep (set c->keep after), insertion's
+ * bound and budget TR_SLIVER_INSERT_BOUND and TR_SLIVER_POINTS(m->nv). Free with
  * tr_sliver_ctx_free. */
 tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfaces *sub,
                              const uint8_t *vkind, uint32_t npoints, double bound);
@@ -103,6 +116,9 @@ int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv);
 tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
 /* One smoothing pass over the movable vertices in index order (smooth.c). */
 tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+/* One insertion pass over the tets in slot order, while st->points < c->point_budget
+ * (insert.c); a new vertex is movable. */
+tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
 
 /* The stage: m holds only inner tets (tr_refine's output), sub their sub-faces, vkind the
  * vertex origins (tetrec.h's enum tr_vertex_origin; NULL: none known, so only vertices

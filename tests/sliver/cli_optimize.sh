@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The sliver removal option of `tetrec mesh`: -O/--optimize 0|1|2 (default 2) after quality
-# refinement, its --stats rows (points_added_for_sliver is 0, flips and moved points by
-# level), a bad level and the option on another command are usage errors (exit 1), and
+# The sliver removal option of `tetrec mesh`: -O/--optimize 0|1|2|3 (default 3) after quality
+# refinement, its --stats rows (points_added_for_sliver is 0 below level 3, flips and moved
+# points by level), a bad level and the option on another command are usage errors (exit 1), and
 # without refinement it warns that it has no effect. Every mesh written is checked exactly.
 # usage: cli_optimize.sh TETREC SURFACE WORKDIR
 set -u
@@ -18,7 +18,7 @@ expect() { # expect CODE PATTERN -- ARGS...
   fi
 }
 row() { sed -n "s/.*\"$2\": \([0-9]*\).*/\1/p" "$1"; }
-for level in 0 1 2; do
+for level in 0 1 2 3; do
   expect 0 "" -- mesh "$S" --quality 1.414 -O $level -o "$W/o$level.node" --exact --stats "$W/o$level.json"
   expect 0 "conforms exactly" -- check "$S" "$W/o$level.node"
 done
@@ -33,11 +33,11 @@ for level in 0 1 2; do
   [ "$(row "$W/o$level.json" points_added_for_sliver)" = 0 ] ||
     { echo "FAIL: -O $level added points"; fails=$((fails + 1)); }
 done
-cmp -s "$W/o2.ele" "$W/d.ele" && cmp -s "$W/o2.node" "$W/d.node" ||
-  { echo "FAIL: the default is not -O 2"; fails=$((fails + 1)); }
+cmp -s "$W/o3.ele" "$W/d.ele" && cmp -s "$W/o3.node" "$W/d.node" ||
+  { echo "FAIL: the default is not -O 3"; fails=$((fails + 1)); }
 expect 0 "optimize" -- mesh --help
-expect 1 "level 0, 1 or 2" -- mesh "$S" --quality 1.414 -O 3 -o "$W/c.node"
-expect 1 "level 0, 1 or 2" -- mesh "$S" --quality 1.414 --optimize x -o "$W/c.node"
+expect 1 "level 0, 1, 2 or 3" -- mesh "$S" --quality 1.414 -O 4 -o "$W/c.node"
+expect 1 "level 0, 1, 2 or 3" -- mesh "$S" --quality 1.414 --optimize x -o "$W/c.node"
 expect 1 "does not apply to 'delaunay'" -- delaunay "$S" -O 1
 expect 0 "no effect without quality refinement" -- mesh "$S" -O 2 -o "$W/e.node"
 [ ! -e "$W/c.node" ] || { echo "FAIL: a refused run wrote a mesh"; fails=$((fails + 1)); }

@@ -124,6 +124,49 @@ static void constraints_are_kept_and_their_vertices_stay(void)
   tr_mesh_destroy(m);
 }
 
+/* The insertion pass alone on the folded square with the sub-face 8 10 9 (no vertex may
+ * move): the sliver is replaced by the cone from a new double point, which lies strictly
+ * inside the box and off the sub-face's plane (exact), the sub-face stays, every input
+ * vertex stays, the smallest angle rises, the mesh validates. */
+static void a_sliver_is_removed_by_a_new_interior_point(void)
+{
+  tr_mesh *m = sliver_box(0.01);
+  const uint32_t sl[4] = {8, 9, 10, 11};
+  uint32_t f[3] = {8, 10, 9}, tri = 0, t = TR_NONE;
+  tr_subfaces sub = {1, f, &tri};
+  double before = min_dihedral(m), x0[36];
+  memcpy(x0, m->xyz, sizeof x0);
+  tr_sliver_ctx c;
+  tr_sliver_stats st;
+  memset(&st, 0, sizeof st);
+  tr_status s = tr_sliver_ctx_init(&c, m, &sub, NULL, 12, TR_SLIVER_BOUND);
+  if (s == TR_OK)
+    s = tr_sliver_insert_pass(&c, &st);
+  EXPECT(s == TR_OK, "insertion: %s", tr_last_error());
+  tr_sliver_ctx_free(&c);
+  EXPECT(st.points >= 1 && m->nv == 12 + st.points, "%llu points added, %u vertices",
+         (unsigned long long)st.points, m->nv);
+  EXPECT(!has_tet(m, sl), "the sliver is still there");
+  tr_ball_find(m, 8, 10, 9, &t);
+  EXPECT(t != TR_NONE, "the sub-face 8 10 9 is gone");
+  for (uint32_t v = 0; v < 12; v++)
+    EXPECT(!memcmp(x0 + 3 * v, m->xyz + 3 * (size_t)v, 24), "vertex %u moved", v);
+  tr_point a = tr_mesh_point(m, 8), b = tr_mesh_point(m, 10), d = tr_mesh_point(m, 9);
+  for (uint32_t v = 12; v < m->nv; v++) {
+    const double *x = m->xyz + 3 * (size_t)v;
+    EXPECT(!(m->vq && m->vq[v]), "new vertex %u is not a double", v);
+    for (int k = 0; k < 3; k++)
+      EXPECT(x[k] > 0 && x[k] < 1, "new vertex %u not strictly inside the box", v);
+    tr_point p = tr_pt_d(x);
+    EXPECT(tr_orient3d_p(&a, &b, &d, &p) != 0, "new vertex %u on the sub-face's plane", v);
+    EXPECT(m->v2t[v] != TR_NONE, "new vertex %u in no tet", v);
+  }
+  double after = min_dihedral(m);
+  EXPECT(after > before, "smallest dihedral angle %g -> %g: not raised", before, after);
+  valid_box("insertion", m);
+  tr_mesh_destroy(m);
+}
+
 /* The smallest dihedral angle of the tets at vertex v. */
 static double star_min(const tr_mesh *m, uint32_t v)
 {
@@ -213,10 +256,11 @@ static tr_mesh *mesh(const char *name, const tr_plc *plc, int level, unsigned ch
   return m;
 }
 
-/* Refined surfaces of tests/data with and without the stage: both validate, the stage adds
- * no point, keeps every input vertex where it was, never lowers the smallest dihedral
- * angle, leaves no more tets under 10 degrees, and keeps the ratio bound on the tets with
- * an angle under its bound. */
+/* Refined surfaces of tests/data with and without the stage: all validate, level 2 adds no
+ * point, keeps every input vertex where it was, never lowers the smallest dihedral angle,
+ * leaves no more tets under 10 degrees, and keeps the ratio bound on the tets with an angle
+ * under its bound; level 3 (new points) keeps the input vertices, the smallest angle and
+ * the ratio bound too. */
 static void refined_surfaces(const char *dir)
 {
   const char *files[] = {"schoenhardt.off", "cavity.off", "cube_facets.poly", "two_cubes.off",
@@ -231,10 +275,55 @@ static void refined_surfaces(const char *dir)
     }
     /* a cavity or two cubes are not a ball: no Euler check (the volume is checked exactly) */
     unsigned chk = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T;
-    tr_plc *u0 = NULL, *u2 = NULL;
-    tr_stats s0, s2;
+    tr_plc *u0 = NULL, *u2 = NULL, *u3 = NULL;
+    tr_stats s0, s2, s3;
     tr_mesh *m0 = mesh(files[i], p, 0, chk, &u0, &s0);
     tr_mesh *m2 = mesh(files[i], p, 2, chk, &u2, &s2);
+    tr_mesh *m3 = mesh(files[i], p, 3, chk, &u3, &s3);
+    if (m0 && m3) {
+      EXPECT(s3.min_dihedral >= s0.min_dihedral, "%s -O 3: smallest dihedral %g -> %g",
+             files[i], s0.min_dihedral, s3.min_dihedral);
+      EXPECT(s3.volume_nodes == s0.volume_nodes + s3.points_added_for_sliver,
+             "%s -O 3: %llu vertices, %llu without the stage and %llu points added", files[i],
+             (unsigned long long)s3.volume_nodes, (unsigned long long)s0.volume_nodes,
+             (unsigned long long)s3.points_added_for_sliver);
+      double worst0 = 0, worst3 = 0;
+      for (int k = 0; k < 2; k++) {
+        const tr_mesh *m = k ? m3 : m0;
+        for (uint32_t t = 0; t < m->nt; t++) {
+          double r = 0, q;
+          if (!tr_tet_is_real(m, t))
+            continue;
+          q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
+          if (!k)
+            worst0 = fmax(worst0, r);
+          else if (q < TR_SLIVER_BOUND)
+            worst3 = fmax(worst3, r);
+        }
+      }
+      EXPECT(worst3 <= fmax(1.414, worst0) * (1 + 1e-9),
+             "%s -O 3: a tet under %g degrees has ratio %g above max(1.414, %g)", files[i],
+             TR_SLIVER_BOUND, worst3, worst0);
+      for (uint32_t v = 0; v < m3->nv && v < m0->nv; v++) {
+        int k0, k3;
+        uint32_t x0, x3;
+        if (tr_mesh_vertex_origin(m0, v, &k0, &x0) != TR_OK ||
+            tr_mesh_vertex_origin(m3, v, &k3, &x3) != TR_OK) {
+          EXPECT(0, "%s: vertex origin %u: %s", files[i], v, tr_last_error());
+          break;
+        }
+        if (k0 == TR_VERTEX_INPUT || k3 == TR_VERTEX_INPUT)
+          EXPECT(k0 == k3 && !memcmp(m0->xyz + 3 * (size_t)v, m3->xyz + 3 * (size_t)v, 24),
+                 "%s -O 3: input vertex %u moved", files[i], v);
+      }
+      fprintf(stderr, "%s -O 3: min dihedral %.3f -> %.3f, under 10 deg %llu -> %llu, "
+              "%llu points added\n", files[i], s0.min_dihedral, s3.min_dihedral,
+              (unsigned long long)s0.tets_dihedral_below_10,
+              (unsigned long long)s3.tets_dihedral_below_10,
+              (unsigned long long)s3.points_added_for_sliver);
+    }
+    tr_mesh_destroy(m3);
+    tr_plc_destroy(u3);
     if (m0 && m2) {
       EXPECT(s2.points_added_for_sliver == 0 && s0.volume_nodes == s2.volume_nodes,
              "%s: the stage added points (%llu -> %llu vertices)", files[i],
@@ -306,8 +395,8 @@ static void deterministic_and_levels_checked(const char *dir)
   }
   tr_plc *u0 = NULL, *u1 = NULL;
   tr_stats st;
-  tr_mesh *m0 = mesh("determinism", p, 2, TR_CHK_TOPOLOGY, &u0, &st);
-  tr_mesh *m1 = mesh("determinism", p, 2, TR_CHK_TOPOLOGY, &u1, &st);
+  tr_mesh *m0 = mesh("determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY, &u0, &st);
+  tr_mesh *m1 = mesh("determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY, &u1, &st);
   if (m0 && m1) {
     EXPECT(m0->nv == m1->nv && m0->nt == m1->nt, "determinism: sizes differ");
     if (m0->nv == m1->nv && m0->nt == m1->nt)
@@ -317,12 +406,12 @@ static void deterministic_and_levels_checked(const char *dir)
   }
   tr_options opt;
   tr_options_default(&opt);
-  EXPECT(opt.optimize == TR_SLIVER_SMOOTH, "default level %d", opt.optimize);
+  EXPECT(opt.optimize == TR_SLIVER_INSERT, "default level %d", opt.optimize);
   opt.verbose = 0;
   opt.quality_ratio = 1.414;
-  opt.optimize = 3;
+  opt.optimize = TR_SLIVER_INSERT + 1;
   tr_mesh *bad = NULL;
-  EXPECT(tr_mesh_plc(p, &opt, &bad, NULL) == TR_ERR_USAGE && !bad, "level 3 accepted");
+  EXPECT(tr_mesh_plc(p, &opt, &bad, NULL) == TR_ERR_USAGE && !bad, "level 4 accepted");
   tr_mesh_destroy(m0);
   tr_mesh_destroy(m1);
   tr_plc_destroy(u0);
@@ -339,6 +428,8 @@ int main(int argc, char **argv)
     constraints_are_kept_and_their_vertices_stay();
   else if (!strcmp(c, "smoothing"))
     smoothing_moves_a_free_vertex_and_raises_the_angle();
+  else if (!strcmp(c, "insertion"))
+    a_sliver_is_removed_by_a_new_interior_point();
   else if (!strcmp(c, "passes"))
     no_pass_lowers_the_smallest_angle();
   else if (!strcmp(c, "surfaces") && argc > 2)

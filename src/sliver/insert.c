@@ -1,0 +1,331 @@
+/* Sliver removal by a new interior point (sliver.h): a sliver's four points lie near a
+ * small sphere, so flips and smoothing often cannot open it; a point at its circumcentre
+ * can (Shewchuk 1998; Si 2015: TetGen's -O adds points for the worst slivers). The point
+ * is the circumcentre computed in doubles, inserted as that exact double, by a
+ * Bowyer-Watson cavity that never crosses a sub-face, shrunk until every face it is coned
+ * from is strictly visible from the point. The cavity then is star-shaped about the point,
+ * which lies strictly inside it, so the point is on no constraint and every new tet is
+ * exactly positive. The insertion is kept only when the smallest dihedral angle of the new
+ * tets beats that of the cavity and the refinement's bounds hold, so the mesh's smallest
+ * angle never drops. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "predicates/predicates.h"
+#include "refine/quality.h"
+#include "sliver/sliver.h"
+
+#define SL_MAX_CAVITY 64 /* tets in a cavity: a sliver's is small, a big one is skipped */
+
+static int in_list(const uint32_t *a, uint32_t n, uint32_t x)
+{
+  for (uint32_t i = 0; i < n; i++)
+    if (a[i] == x)
+      return 1;
+  return 0;
+}
+
+/* p strictly inside the circumsphere of tet t: exact, or (screen) on the vertices'
+ * doubles, which only ranks the candidates. */
+static int conflicts(const struct tr_mesh *m, uint32_t t, const tr_point *p, int screen)
+{
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  if (screen) {
+    const double *x = m->xyz;
+    return tr_insphere(x + 3 * (size_t)v[0], x + 3 * (size_t)v[1], x + 3 * (size_t)v[2],
+                       x + 3 * (size_t)v[3], p->d) > 0;
+  }
+  tr_point q[4];
+  for (int i = 0; i < 4; i++)
+    q[i] = tr_mesh_point(m, v[i]);
+  return tr_insphere_p(&q[0], &q[1], &q[2], &q[3], p) > 0;
+}
+
+/* Face k of t with the point x in place of vertex k is strictly positive (exact, or on
+ * the doubles: screen). */
+static int sees(const struct tr_mesh *m, uint32_t t, int k, const tr_point *x, int screen)
+{
+  if (screen) {
+    const double *y[4];
+    for (int i = 0; i < 4; i++)
+      y[i] = i == k ? x->d : m->xyz + 3 * (size_t)m->tv[4 * (size_t)t + (size_t)i];
+    return tr_orient3d(y[0], y[1], y[2], y[3]) > 0;
+  }
+  tr_point q[4];
+  for (int i = 0; i < 4; i++)
+    q[i] = i == k ? *x : tr_mesh_point(m, m->tv[4 * (size_t)t + (size_t)i]);
+  return tr_orient3d_p(&q[0], &q[1], &q[2], &q[3]) > 0;
+}
+
+/* A face of the cavity's boundary: face k of cavity tet t is coned when the tet behind
+ * it is not in the cavity. */
+static int boundary(const struct tr_mesh *m, const uint32_t *cav, uint32_t n, uint32_t t, int k)
+{
+  uint32_t nb = TR_NEIG(m, t, k);
+  return nb == TR_NONE || !in_list(cav, n, nb);
+}
+
+/* The cavity of x from sliver t: t, grown through faces that are not sub-faces to real tets
+ * whose circumsphere strictly holds x and to those behind a face x does not strictly see,
+ * then shrunk (a tet with a coned face x does not strictly see leaves) until stable.
+ * *n = 0 when t itself would have to leave or the cavity grows too big. */
+static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int screen,
+                   uint32_t *cav, uint32_t *n)
+{
+  const struct tr_mesh *m = c->m;
+  *n = 0;
+  cav[(*n)++] = t; /* the sliver goes whether or not its sphere holds x */
+  for (uint32_t i = 0; i < *n; i++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)cav[i];
+    for (int k = 0; k < 4; k++) {
+      uint32_t nb = TR_NEIG(m, cav[i], k);
+      if (nb == TR_NONE || !tr_tet_is_real(m, nb) || in_list(cav, *n, nb))
+        continue;
+      uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
+      if (tr_sliver_protected(c, f, 3) || !conflicts(m, nb, x, screen))
+        continue;
+      if (*n == SL_MAX_CAVITY) {
+        *n = 0;
+        return;
+      }
+      cav[(*n)++] = nb;
+    }
+  }
+  /* a face x does not see, with a tet behind it that the cavity may take, grows the
+   * cavity: a point off the sliver (above a sub-face) lies in a tet next to it */
+  for (uint32_t i = 0; i < *n; i++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)cav[i];
+    for (int k = 0; k < 4; k++) {
+      uint32_t nb = TR_NEIG(m, cav[i], k);
+      if (nb == TR_NONE || !tr_tet_is_real(m, nb) || in_list(cav, *n, nb) ||
+          sees(m, cav[i], k, x, screen))
+        continue;
+      uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
+      if (tr_sliver_protected(c, f, 3))
+        continue;
+      if (*n == SL_MAX_CAVITY) {
+        *n = 0;
+        return;
+      }
+      cav[(*n)++] = nb;
+    }
+  }
+  /* then the faces it still does not see take their tet out */
+  for (int changed = 1; changed && *n;) {
+    changed = 0;
+    for (uint32_t i = 0; i < *n && !changed; i++)
+      for (int k = 0; k < 4; k++)
+        if (boundary(m, cav, *n, cav[i], k) && !sees(m, cav[i], k, x, screen)) {
+          if (cav[i] == t) {
+            *n = 0;
+            return;
+          }
+          cav[i] = cav[--*n];
+          changed = 1;
+          break;
+        }
+  }
+}
+
+static int cmp_u64(const void *a, const void *b)
+{
+  uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+  return x < y ? -1 : x > y;
+}
+
+/* Every edge of the coned faces (vertex k of each new tet is the new vertex) in exactly
+ * two of them: the boundary is a closed manifold surface, so the cone glues
+ * (tr_mesh_replace would refuse anything else, after the vertex was added). */
+static int manifold(const uint32_t *newv, const uint8_t *apex, uint32_t nf)
+{
+  uint64_t e[3 * 4 * SL_MAX_CAVITY];
+  uint32_t ne = 0;
+  for (uint32_t i = 0; i < nf; i++)
+    for (int j = 0; j < 3; j++) {
+      uint64_t a = newv[4 * i + tr_face_vtx[apex[i]][j]],
+               b = newv[4 * i + tr_face_vtx[apex[i]][(j + 1) % 3]];
+      e[ne++] = a < b ? a << 32 | b : b << 32 | a;
+    }
+  qsort(e, ne, sizeof *e, cmp_u64);
+  for (uint32_t i = 0; i < ne; i += 2)
+    if (i + 1 >= ne || e[i] != e[i + 1] || (i + 2 < ne && e[i + 2] == e[i]))
+      return 0;
+  return 1;
+}
+
+static tr_status grow_movable(tr_sliver_ctx *c, uint32_t nv)
+{
+  uint8_t *mv = realloc(c->movable, nv);
+  if (!mv)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u vertex flags", nv);
+  c->movable = mv;
+  return TR_OK;
+}
+
+/* A point under consideration: its cavity and cone (new vertex pid at x). */
+struct trial {
+  double x[3];
+  uint32_t cav[SL_MAX_CAVITY], n, nf;
+  uint32_t newv[4 * 4 * SL_MAX_CAVITY];
+  double newmin;
+};
+typedef struct trial trial;
+
+/* Every vertex of the cavity's tets on a coned face: the cavity swallows no vertex (the
+ * mesh is not Delaunay, and growth past the conflict tets may surround one). */
+static int keeps_vertices(const struct tr_mesh *m, const trial *z)
+{
+  for (uint32_t i = 0; i < z->n; i++)
+    for (int k = 0; k < 4; k++) {
+      uint32_t v = m->tv[4 * (size_t)z->cav[i] + (size_t)k];
+      if (!in_list(z->newv, 4 * z->nf, v))
+        return 0;
+    }
+  return 1;
+}
+
+
+/* The cavity and cone of x for sliver t; 1 when the new tets' smallest angle beats the
+ * cavity's and they keep the bounds. */
+static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int screen,
+                     trial *z)
+{
+  const struct tr_mesh *m = c->m;
+  memcpy(z->x, x, sizeof z->x);
+  tr_point px = tr_pt_d(x);
+  cavity(c, t, &px, screen, z->cav, &z->n);
+  if (!z->n)
+    return 0;
+  uint32_t pid = m->nv; /* tr_mesh_add_vertex appends */
+  uint8_t apex[4 * SL_MAX_CAVITY];
+  double oldmin = INFINITY, was = 0;
+  z->nf = 0;
+  for (uint32_t i = 0; i < z->n; i++) {
+    double rr;
+    const uint32_t *tv = m->tv + 4 * (size_t)z->cav[i];
+    oldmin = fmin(oldmin, tr_sliver_min_dihedral_at(m, tv, TR_NONE, NULL, &rr));
+    was = fmax(was, rr);
+    for (int k = 0; k < 4; k++)
+      if (boundary(m, z->cav, z->n, z->cav[i], k)) {
+        uint32_t *p = z->newv + 4 * (size_t)z->nf;
+        memcpy(p, tv, 4 * sizeof *p);
+        p[k] = pid;
+        apex[z->nf++] = (uint8_t)k;
+      }
+  }
+  double dih[4 * SL_MAX_CAVITY], rat[4 * SL_MAX_CAVITY];
+  z->newmin = INFINITY;
+  for (uint32_t i = 0; i < z->nf; i++) {
+    dih[i] = tr_sliver_min_dihedral_at(m, z->newv + 4 * (size_t)i, pid, x, &rat[i]);
+    z->newmin = fmin(z->newmin, dih[i]);
+  }
+  if (!(z->newmin > oldmin) || !manifold(z->newv, apex, z->nf) || !keeps_vertices(m, z))
+    return 0;
+  uint32_t region = m->region ? m->region[t] : 0; /* no sub-face inside the cavity */
+  for (uint32_t i = 0; i < z->nf; i++)
+    if (screen ? c->keep.ratio > 0 && rat[i] > fmax(c->keep.ratio, was) && !(dih[i] >= c->bound)
+               : !tr_sliver_keeps_bounds(c, z->newv + 4 * (size_t)i, pid, x, region, rat[i],
+                                         dih[i], was))
+      return 0; /* the screen: the ratio part only (the volume part is exact) */
+  return 1;
+}
+
+/* Tries the circumcentre of sliver t and points between it and the centroid (when the
+ * circumcentre lies beyond a constraint or its cone is worse); the best one that beats
+ * its cavity goes in (*done = 1). */
+static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, int *done)
+{
+  struct tr_mesh *m = c->m;
+  *done = 0;
+  const uint32_t *tv = m->tv + 4 * (size_t)t;
+  const double *q[4];
+  for (int i = 0; i < 4; i++)
+    q[i] = m->xyz + 3 * (size_t)tv[i];
+  double r, w, d[6], cc[3], g[3];
+  if (!tr_tet_shape(q[0], q[1], q[2], q[3], &r, &w, d, cc))
+    return TR_OK;
+  for (int j = 0; j < 3; j++)
+    g[j] = 0.25 * (q[0][j] + q[1][j] + q[2][j] + q[3][j]);
+  /* the candidates: the circumcentre and points between it and the centroid; above each
+   * sub-face of t, points at the height of a good tet on that face (a tet with a sub-face
+   * whose circumcentre lies outside the domain, e.g. a flat cap over a nearly flat input
+   * edge with two sub-faces, is opened from inside) */
+  double cand[4 + 8][3];
+  int nc = 0;
+  static const double frac[] = {1, 0.75, 0.5, 0.25};
+  for (int f = 0; f < 4; f++, nc++)
+    for (int j = 0; j < 3; j++)
+      cand[nc][j] = g[j] + frac[f] * (cc[j] - g[j]);
+  for (int k = 0; k < 4; k++) {
+    uint32_t fv[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
+    if (!tr_sliver_protected(c, fv, 3))
+      continue;
+    const double *a = m->xyz + 3 * (size_t)fv[0], *b = m->xyz + 3 * (size_t)fv[1],
+                 *e = m->xyz + 3 * (size_t)fv[2];
+    double u[3], v[3], nrm[3], fc[3], len = 0, nn;
+    for (int j = 0; j < 3; j++) {
+      u[j] = b[j] - a[j];
+      v[j] = e[j] - a[j];
+      fc[j] = (a[j] + b[j] + e[j]) / 3;
+    }
+    nrm[0] = u[1] * v[2] - u[2] * v[1];
+    nrm[1] = u[2] * v[0] - u[0] * v[2];
+    nrm[2] = u[0] * v[1] - u[1] * v[0];
+    nn = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    len = (sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) +
+           sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+           sqrt((e[0] - b[0]) * (e[0] - b[0]) + (e[1] - b[1]) * (e[1] - b[1]) +
+                (e[2] - b[2]) * (e[2] - b[2]))) / 3;
+    if (!(nn > 0) || !isfinite(nn))
+      continue;
+    /* the side of vertex k (inside the domain) */
+    const double *o = m->xyz + 3 * (size_t)tv[k];
+    double side = nrm[0] * (o[0] - a[0]) + nrm[1] * (o[1] - a[1]) + nrm[2] * (o[2] - a[2]);
+    double sg = side > 0 ? 1 : -1;
+    static const double height[] = {0.8, 0.5};
+    for (int h = 0; h < 2; h++, nc++)
+      for (int j = 0; j < 3; j++)
+        cand[nc][j] = fc[j] + sg * height[h] * len * nrm[j] / nn;
+  }
+  /* ranked on the doubles, then the best one decided exactly */
+  int have = -1;
+  double top = -1;
+  for (int f = 0; f < nc; f++)
+    if (try_point(c, t, cand[f], 1, z) && z->newmin > top)
+      top = z->newmin, have = f;
+  if (have < 0 || !try_point(c, t, cand[have], 0, best))
+    return TR_OK;
+  uint32_t v, ids[4 * SL_MAX_CAVITY];
+  uint32_t region = m->region ? m->region[t] : 0;
+  TR_CHECK(tr_mesh_add_vertex(m, best->x, &v));
+  TR_CHECK(grow_movable(c, m->nv));
+  c->movable[v] = 1; /* strictly inside a cavity no sub-face crosses: on no constraint */
+  TR_CHECK(tr_mesh_replace(m, best->cav, best->n, best->newv, best->nf, ids));
+  for (uint32_t i = 0; m->region && i < best->nf; i++)
+    m->region[ids[i]] = region;
+  *done = 1;
+  return TR_OK;
+}
+
+tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
+{
+  struct tr_mesh *m = c->m;
+  tr_status s = TR_OK;
+  trial *z = malloc(2 * sizeof *z);
+  if (!z)
+    return tr_error(TR_ERR_NOMEM, "out of memory for the sliver insertion");
+  uint32_t nt = m->nt; /* new tets in slots past nt wait for the next pass (freed slots
+                          below it are reused and visited: slot order, deterministic) */
+  for (uint32_t t = 0; t < nt && s == TR_OK && st->points < c->point_budget; t++) {
+    if (!tr_tet_is_real(m, t) || !(tr_sliver_min_dihedral(m, m->tv[4 * (size_t)t],
+                                     m->tv[4 * (size_t)t + 1], m->tv[4 * (size_t)t + 2],
+                                     m->tv[4 * (size_t)t + 3]) < c->insert_bound))
+      continue;
+    int done;
+    s = insert_at(c, t, &z[0], &z[1], &done);
+    st->points += (uint64_t)done;
+  }
+  free(z);
+  return s;
+}
