@@ -16,15 +16,11 @@ double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], u
   const double *p[4];
   for (int i = 0; i < 4; i++)
     p[i] = t[i] == v ? x : m->xyz + 3 * (size_t)t[i];
-  double r, w, d[6];
-  tr_tet_shape(p[0], p[1], p[2], p[3], &r, &w, d, NULL);
+  double r, w, lo = tr_tet_min_dihedral(p[0], p[1], p[2], p[3], &r, &w);
   if (ratio)
     *ratio = isnan(r) ? INFINITY : r;
   if (!(w != 0))
     return 0; /* flat in doubles: the worst there is */
-  double lo = d[0];
-  for (int e = 1; e < 6; e++)
-    lo = fmin(lo, d[e]);
   return isfinite(lo) ? lo : 0;
 }
 
