@@ -394,7 +394,7 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   /* on insertion ids: they follow the Hilbert curve, so the canonical order keeps the
    * locality of the build (input indices may be in any order), and they are a function
    * of the input alone, like the tetrahedralization */
-  if ((s = tr_delaunay_canonical(m)) != TR_OK)
+  if ((s = tr_delaunay_canonical_threads(m, nthreads)) != TR_OK)
     goto done;
   s = renumber(m, order, nu);
 done:
