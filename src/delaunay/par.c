@@ -382,13 +382,15 @@ static tr_status reserve(dt *D, shared *S, uint32_t npts, uint32_t nthreads)
     return tr_error(TR_ERR_NOMEM, "too many tets for the parallel Delaunay build");
   if (want > m->cap_t)
     TR_CHECK(tr_mesh_reserve_tets(m, (uint32_t)want));
-  if (m->cap_t > S->nown) { /* every owner word is 0 between passes: zero the new ones */
-    uint32_t *o = realloc(S->own, (size_t)m->cap_t * sizeof *o);
-    if (!o)
+  if (m->cap_t > S->nown) {
+    /* every owner word is 0 between passes: a fresh zeroed array, whose pages the
+     * threads fault in as they touch them (a realloc and memset here would zero
+     * hundreds of MB in serial on 10^7 points) */
+    free(S->own);
+    S->own = calloc(m->cap_t, sizeof *S->own);
+    S->nown = S->own ? m->cap_t : 0;
+    if (!S->own)
       return tr_error(TR_ERR_NOMEM, "out of memory for the tet owners");
-    memset(o + S->nown, 0, (size_t)(m->cap_t - S->nown) * sizeof *o);
-    S->own = o;
-    S->nown = m->cap_t;
   }
   S->next_fresh = m->nt;
   S->cap = m->cap_t;
