@@ -13,11 +13,18 @@
  *
  * Cost: one counting sort on the first vertex (a bucket holds ~6.7 tets on random points;
  * a bucket of a vertex with a huge star falls back to qsort), a pass to write the new
- * arrays. Linear in the number of tets. */
+ * arrays. Linear in the number of tets. With several threads every pass is cut into one
+ * range per thread (tets for the counting and the writing, buckets for the sorting; each
+ * thread counts into its own array, so a bucket holds thread 0's tets first): the
+ * records of a bucket end up sorted the same way whatever the cut, so the store is the
+ * same byte for byte. */
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "delaunay.h"
+
+#define CANON_MAX_THREADS 64
 
 /* PERM[r]: new slot j takes old slot PERM[r][j]. 0..11: real tets, r = 3k + s where k is
  * the old slot of the smallest vertex and s the rotation of the other three, listed from
@@ -73,50 +80,61 @@ static inline int skey_less(const skey *x, const skey *y)
   return x->v[2] < y->v[2];
 }
 
-tr_status tr_delaunay_canonical(struct tr_mesh *m)
+/* One thread's share of each phase: a range of old slots (phases A, B, D) and a range of
+ * buckets (phase C). cnt: its count of each bucket (A), then where its next record of
+ * each bucket goes (B). */
+typedef struct cjob {
+  struct tr_mesh *m;
+  uint8_t *rot;
+  uint32_t *newid, *end, *cnt, *tv, *tn;
+  skey *sk;
+  uint32_t nv, t0, t1;
+  size_t b0, b1;
+  int phase;
+} cjob;
+
+/* A: the rotation and bucket of each live tet (in newid, for now), counted. */
+static void phase_count(cjob *J)
 {
-  const uint32_t nt = m->nt, nv = m->nv;
-  const size_t nb = 2 * (size_t)nv + 1; /* buckets: real by first vertex, then ghosts */
-  uint8_t *rot = malloc(nt ? nt : 1);
-  uint32_t *start = calloc(nb + 1, sizeof *start);
-  uint32_t *newid = malloc((nt ? nt : 1) * sizeof *newid);
-  skey *sk = malloc((nt ? nt : 1) * sizeof *sk);
-  uint32_t *tv = malloc(4 * (size_t)(m->cap_t ? m->cap_t : 1) * sizeof *tv);
-  uint32_t *tn = malloc(4 * (size_t)(m->cap_t ? m->cap_t : 1) * sizeof *tn);
-  tr_status s = TR_OK;
-  if (!rot || !start || !newid || !sk || !tv || !tn) {
-    s = tr_error(TR_ERR_NOMEM, "out of memory ordering %u tets", nt);
-    goto done;
-  }
-  /* the bucket of each live tet (newid, for now) */
-  for (uint32_t t = 0; t < nt; t++) {
+  const struct tr_mesh *m = J->m;
+  for (uint32_t t = J->t0; t < J->t1; t++) {
     const uint32_t *v = m->tv + 4 * (size_t)t;
     if (v[0] == TR_NONE) {
-      newid[t] = TR_NONE;
+      J->newid[t] = TR_NONE;
       continue;
     }
     const uint8_t r = rotation(v);
-    rot[t] = r;
-    newid[t] = (r < 12 ? 0 : nv) + v[PERM[r][0]];
-    start[newid[t] + 1]++;
+    J->rot[t] = r;
+    J->newid[t] = (r < 12 ? 0 : J->nv) + v[PERM[r][0]];
+    J->cnt[J->newid[t]]++;
   }
-  for (size_t b = 0; b < nb; b++)
-    start[b + 1] += start[b];
-  const uint32_t nlive = start[nb];
-  for (uint32_t t = 0; t < nt; t++)
-    if (newid[t] != TR_NONE) {
+}
+
+/* B: each live tet's record into its bucket. */
+static void phase_scatter(cjob *J)
+{
+  const struct tr_mesh *m = J->m;
+  for (uint32_t t = J->t0; t < J->t1; t++)
+    if (J->newid[t] != TR_NONE) {
       const uint32_t *v = m->tv + 4 * (size_t)t;
-      const uint8_t *p = PERM[rot[t]];
-      skey *k = &sk[start[newid[t]]++];
+      const uint8_t *p = PERM[J->rot[t]];
+      skey *k = &J->sk[J->cnt[J->newid[t]]++];
       k->v[0] = v[p[1]];
       k->v[1] = v[p[2]];
       k->v[2] = v[p[3]];
       k->t = t;
     }
-  /* start[b] is now the end of bucket b: sort each bucket by the other three vertices */
-  uint32_t lo = 0;
-  for (size_t b = 0; b < nb; b++) {
-    const uint32_t hi = start[b];
+}
+
+/* C: each bucket sorted by the other three vertices (J->end[b]: the end of bucket b),
+ * then the new slot of each of its tets. */
+static void phase_sort(cjob *J)
+{
+  skey *sk = J->sk;
+  uint32_t lo = J->b0 ? J->end[J->b0 - 1] : 0;
+  const uint32_t first = lo;
+  for (size_t b = J->b0; b < J->b1; b++) {
+    const uint32_t hi = J->end[b];
     if (hi - lo > 32) {
       qsort(sk + lo, hi - lo, sizeof *sk, skey_cmp);
     } else {
@@ -132,21 +150,118 @@ tr_status tr_delaunay_canonical(struct tr_mesh *m)
     }
     lo = hi;
   }
-  for (uint32_t i = 0; i < nlive; i++)
-    newid[sk[i].t] = i;
-  /* in old slot order: the reads stream, the writes go to two lines per tet */
-  for (uint32_t t = 0; t < nt; t++) {
+  for (uint32_t i = first; i < lo; i++)
+    J->newid[sk[i].t] = i;
+}
+
+/* D: the tets written to their new slots, in old slot order (the reads stream, the
+ * writes go to two lines per tet). */
+static void phase_write(cjob *J)
+{
+  const struct tr_mesh *m = J->m;
+  const uint32_t *newid = J->newid;
+  for (uint32_t t = J->t0; t < J->t1; t++) {
     const uint32_t o = newid[t];
     if (o == TR_NONE)
       continue;
-    const uint8_t *p = PERM[rot[t]];
+    const uint8_t *p = PERM[J->rot[t]];
     for (int j = 0; j < 4; j++) {
-      tv[4 * (size_t)o + j] = m->tv[4 * (size_t)t + p[j]];
+      J->tv[4 * (size_t)o + j] = m->tv[4 * (size_t)t + p[j]];
       const uint32_t c = m->tn[4 * (size_t)t + p[j]];
       const uint32_t u = c >> 2;
-      tn[4 * (size_t)o + j] = 4 * newid[u] + INV[rot[u]][c & 3];
+      J->tn[4 * (size_t)o + j] = 4 * newid[u] + INV[J->rot[u]][c & 3];
     }
   }
+}
+
+static void *phase_run(void *arg)
+{
+  cjob *J = arg;
+  switch (J->phase) {
+  case 0: phase_count(J); break;
+  case 1: phase_scatter(J); break;
+  case 2: phase_sort(J); break;
+  default: phase_write(J); break;
+  }
+  return NULL;
+}
+
+/* Runs phase `phase` of every job, job 0 on the calling thread; a job whose thread
+ * cannot start runs here too, after the others (the phases' results do not depend on
+ * which thread ran a job). */
+static void run_phase(cjob *J, int nth, int phase)
+{
+  pthread_t th[CANON_MAX_THREADS];
+  int started[CANON_MAX_THREADS] = {0};
+  for (int j = 0; j < nth; j++)
+    J[j].phase = phase;
+  for (int j = 1; j < nth; j++)
+    started[j] = pthread_create(&th[j], NULL, phase_run, &J[j]) == 0;
+  phase_run(&J[0]);
+  for (int j = 1; j < nth; j++) {
+    if (started[j])
+      pthread_join(th[j], NULL);
+    else
+      phase_run(&J[j]);
+  }
+}
+
+tr_status tr_delaunay_canonical(struct tr_mesh *m)
+{
+  return tr_delaunay_canonical_threads(m, 1);
+}
+
+tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads)
+{
+  const uint32_t nt = m->nt, nv = m->nv;
+  const size_t nb = 2 * (size_t)nv + 1; /* buckets: real by first vertex, then ghosts */
+  /* a thread's counts cost 8 bytes per vertex: not worth it for a small mesh */
+  int nth = nthreads < 1 ? 1 : nthreads > CANON_MAX_THREADS ? CANON_MAX_THREADS : nthreads;
+  if (nt / 65536u < (uint32_t)nth)
+    nth = nt / 65536u ? (int)(nt / 65536u) : 1;
+  uint8_t *rot = malloc(nt ? nt : 1);
+  uint32_t *end = malloc(nb * sizeof *end);
+  uint32_t *cnt = calloc(nb * (size_t)nth, sizeof *cnt);
+  uint32_t *newid = malloc((nt ? nt : 1) * sizeof *newid);
+  skey *sk = malloc((nt ? nt : 1) * sizeof *sk);
+  uint32_t *tv = malloc(4 * (size_t)(m->cap_t ? m->cap_t : 1) * sizeof *tv);
+  uint32_t *tn = malloc(4 * (size_t)(m->cap_t ? m->cap_t : 1) * sizeof *tn);
+  tr_status s = TR_OK;
+  if (!rot || !end || !cnt || !newid || !sk || !tv || !tn) {
+    s = tr_error(TR_ERR_NOMEM, "out of memory ordering %u tets", nt);
+    goto done;
+  }
+  cjob J[CANON_MAX_THREADS];
+  for (int j = 0; j < nth; j++)
+    J[j] = (cjob){.m = m, .rot = rot, .newid = newid, .end = end,
+                  .cnt = cnt + nb * (size_t)j, .tv = tv, .tn = tn, .sk = sk, .nv = nv,
+                  .t0 = (uint32_t)((uint64_t)nt * (uint32_t)j / (uint32_t)nth),
+                  .t1 = (uint32_t)((uint64_t)nt * (uint32_t)(j + 1) / (uint32_t)nth)};
+  run_phase(J, nth, 0);
+  /* bucket b holds the records of thread 0, then 1, ...: cnt becomes where each
+   * thread's next record of b goes, end[b] the end of b */
+  uint32_t run = 0;
+  for (size_t b = 0; b < nb; b++) {
+    for (int j = 0; j < nth; j++) {
+      const uint32_t c = J[j].cnt[b];
+      J[j].cnt[b] = run;
+      run += c;
+    }
+    end[b] = run;
+  }
+  const uint32_t nlive = run;
+  run_phase(J, nth, 1);
+  /* the buckets cut into runs of about nlive / nth records */
+  size_t b = 0;
+  for (int j = 0; j < nth; j++) {
+    J[j].b0 = b;
+    const uint64_t want = (uint64_t)nlive * (uint32_t)(j + 1) / (uint32_t)nth;
+    while (b < nb && (j == nth - 1 || end[b] <= want))
+      b++;
+    J[j].b1 = b;
+  }
+  run_phase(J, nth, 2);
+  run_phase(J, nth, 3);
   free(m->tv);
   free(m->tn);
   m->tv = tv;
@@ -158,7 +273,8 @@ tr_status tr_delaunay_canonical(struct tr_mesh *m)
   memset(m->flags, 0, m->cap_t);
 done:
   free(rot);
-  free(start);
+  free(end);
+  free(cnt);
   free(newid);
   free(tv);
   free(tn);

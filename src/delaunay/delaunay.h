@@ -54,6 +54,8 @@ int tr_delaunay_thread_count(int threads);
  * The store then depends only on the tetrahedralization and the vertex numbering, not on
  * the order the tets were made in. */
 tr_status tr_delaunay_canonical(struct tr_mesh *m);
+/* The same with up to nthreads threads (at most one per 65536 tets); the same store. */
+tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads);
 
 /* Insertion order used by the builder: the distinct points (first of each duplicate
  * group), in BRIO rounds each sorted along a Hilbert curve. order gets *nuniq indices;
