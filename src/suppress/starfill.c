@@ -28,7 +28,7 @@
 #include "recover_facets/ldt.h"
 #include "suppress_int.h"
 
-/* the most link vertices a star may have (the local Delaunay is quadratic in them) */
+/* the most vertices a cavity may have (the local Delaunay is quadratic in them) */
 #define SUP_FILL_MAX_LINK 160
 
 static int cmp_u32(const void *a, const void *b)
