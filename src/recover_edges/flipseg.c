@@ -77,10 +77,10 @@ static tr_status list_cands(const struct tr_mesh *m, const tr_pipe *p, cand **ou
 }
 
 /* Applies candidate c (if its tet still holds it) through the journal: Swap23 for a face,
- * edge removal with recursion depth TR_FLIPSEG_DEPTH for an edge. */
+ * edge removal with recursion depth `depth` for an edge. */
 #define TR_FLIPSEG_DEPTH 3
 static tr_status apply(struct tr_mesh *m, const cand *c, const struct tr_edgeset *cons,
-                       tr_flip_journal *j, int *done)
+                       int depth, tr_flip_journal *j, int *done)
 {
   *done = 0;
   if (c->v[2] != TR_NONE) {
@@ -91,7 +91,7 @@ static tr_status apply(struct tr_mesh *m, const cand *c, const struct tr_edgeset
   uint32_t t0 = c->t;
   if (tr_tet_is_free(m, t0) || tr_tet_ecode(m, t0, c->v[0], c->v[1]) < 0)
     t0 = TR_NONE;
-  return tr_flip_remove_edge_nm(m, c->v[0], c->v[1], t0, TR_FLIPSEG_DEPTH,
+  return tr_flip_remove_edge_nm(m, c->v[0], c->v[1], t0, depth,
                                 cons ? cons_guard : NULL, (void *)cons, j, done);
 }
 
@@ -125,6 +125,13 @@ static int pipel_measure(void *ud, const struct tr_mesh *m, const uint32_t v[4])
 tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
                             const struct tr_edgeset *cons, tr_segmemo *memo,
                             tr_edge_stats *st, int *done)
+{
+  return tr_pipe_try_flips_depth(m, a, b, p, cons, memo, TR_FLIPSEG_DEPTH, st, done);
+}
+
+tr_status tr_pipe_try_flips_depth(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
+                                  const struct tr_edgeset *cons, tr_segmemo *memo, int depth,
+                                  tr_edge_stats *st, int *done)
 {
   *done = 0;
   cand *cs = NULL;
@@ -160,7 +167,7 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
         skipped = 1;
         continue;
       }
-      if ((s = apply(m, &cs[i], cons, &j, &ok)) != TR_OK)
+      if ((s = apply(m, &cs[i], cons, depth, &j, &ok)) != TR_OK)
         break;
       if (j.n && j.delta < 0) {
         count(&j, st);

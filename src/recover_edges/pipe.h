@@ -83,6 +83,10 @@ tr_status tr_pipe_try_swaps(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_
 tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
                             const struct tr_edgeset *cons, tr_segmemo *memo,
                             tr_edge_stats *st, int *done);
+/* The same with the edge removals' recursion depth given (tr_pipe_try_flips: 3). */
+tr_status tr_pipe_try_flips_depth(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
+                                  const struct tr_edgeset *cons, tr_segmemo *memo, int depth,
+                                  tr_edge_stats *st, int *done);
 
 /* Splits ab at one exact point M (midsplit.c): its midpoint, or, when that lies in the
  * pipels at a or at b, the first point nested midpoints would reach between them; the

@@ -1,234 +1,9 @@
 /* Missing-facet recovery by cavity retriangulation (see cavity.h). */
 #include "recover_facets/cavity.h"
+#include "recover_facets/ldt.h"
 
 #include <stdlib.h>
 #include <string.h>
-
-/* The vertex at infinity of the local Delaunay mesh's ghost tets. */
-#define LG (UINT32_MAX - 1)
-
-/* A face of a tet by its sorted vertices, with the tet and the face's code in it. */
-typedef struct fkey {
-  uint32_t k[3];
-  uint32_t tet;
-  uint32_t face;
-} fkey;
-
-static int cmp_fkey(const void *pa, const void *pb)
-{
-  const fkey *a = pa, *b = pb;
-  int c = tr_cmp_face_key(a->k, b->k);
-  if (c)
-    return c;
-  if (a->tet != b->tet)
-    return a->tet < b->tet ? -1 : 1;
-  return (a->face > b->face) - (a->face < b->face);
-}
-
-static void face_of(const uint32_t *t, int k, uint32_t out[3])
-{
-  for (int i = 0; i < 3; i++)
-    out[i] = t[tr_face_vtx[k][i]];
-}
-
-/* 1 iff (a, b, c) is a rotation of (x, y, z): the same face turning the same way. */
-static int same_turn(const uint32_t a[3], const uint32_t x[3])
-{
-  for (int r = 0; r < 3; r++)
-    if (a[0] == x[r] && a[1] == x[(r + 1) % 3] && a[2] == x[(r + 2) % 3])
-      return 1;
-  return 0;
-}
-
-/* ---- a small Delaunay tetrahedralization of the points p[0..n), local ids ---- */
-
-typedef struct ldt {
-  const tr_point *p;
-  uint32_t (*t)[4];
-  uint32_t n, cap;
-  uint8_t *cf;   /* per tet: in conflict (scratch) */
-  fkey *fk;      /* scratch: faces */
-  size_t capfk;
-} ldt;
-
-static void ldt_free(ldt *D)
-{
-  free(D->t);
-  free(D->cf);
-  free(D->fk);
-  memset(D, 0, sizeof *D);
-}
-
-static tr_status ldt_reserve(ldt *D, uint32_t n)
-{
-  if (n <= D->cap)
-    return TR_OK;
-  uint32_t nc = D->cap ? D->cap : 64;
-  while (nc < n)
-    nc *= 2;
-  void *t = realloc(D->t, nc * sizeof *D->t);
-  if (!t)
-    return tr_error(TR_ERR_NOMEM, "cavity: out of memory");
-  D->t = t;
-  void *c = realloc(D->cf, nc);
-  if (!c)
-    return tr_error(TR_ERR_NOMEM, "cavity: out of memory");
-  D->cf = c;
-  D->cap = nc;
-  return TR_OK;
-}
-
-static tr_status fk_reserve(ldt *D, size_t n)
-{
-  if (n <= D->capfk)
-    return TR_OK;
-  size_t nc = D->capfk ? D->capfk : 256;
-  while (nc < n)
-    nc *= 2;
-  fkey *f = realloc(D->fk, nc * sizeof *f);
-  if (!f)
-    return tr_error(TR_ERR_NOMEM, "cavity: out of memory");
-  D->fk = f;
-  D->capfk = nc;
-  return TR_OK;
-}
-
-static tr_status ldt_push(ldt *D, const uint32_t v[4])
-{
-  TR_CHECK(ldt_reserve(D, D->n + 1));
-  memcpy(D->t[D->n++], v, 4 * sizeof *v);
-  return TR_OK;
-}
-
-static int has_vertices(const uint32_t *t, const uint32_t k[3])
-{
-  int c = 0;
-  for (int i = 0; i < 3; i++)
-    for (int j = 0; j < 4; j++)
-      c += t[j] == k[i];
-  return c == 3;
-}
-
-/* Bowyer-Watson insertion of point i. The conflict region is every real tet whose open
- * circumball holds p (connected and star-shaped from p in any Delaunay mesh), and every
- * ghost whose hull face p sees strictly, or sees edge-on while the real tet behind the
- * face conflicts (then p is strictly inside that face's circumcircle: the new tet on it
- * would otherwise be flat). *ok = 0 when nothing conflicts (p repeats a point). */
-static tr_status ldt_insert(ldt *D, uint32_t i, int *ok)
-{
-  const tr_point *P = D->p, *pp = &D->p[i];
-  *ok = 0;
-  int any = 0;
-  for (uint32_t j = 0; j < D->n; j++) {
-    const uint32_t *t = D->t[j];
-    if (t[3] == LG) {
-      int o = tr_orient3d_p(&P[t[0]], &P[t[1]], &P[t[2]], pp);
-      D->cf[j] = o > 0 ? 1 : o == 0 ? 2 : 0;
-    } else {
-      D->cf[j] = tr_insphere_p(&P[t[0]], &P[t[1]], &P[t[2]], &P[t[3]], pp) > 0;
-    }
-  }
-  for (uint32_t j = 0; j < D->n; j++) {
-    if (D->cf[j] != 2)
-      continue;
-    D->cf[j] = 0;
-    for (uint32_t r = 0; r < D->n; r++)
-      if (D->t[r][3] != LG && has_vertices(D->t[r], D->t[j])) {
-        D->cf[j] = D->cf[r] == 1;
-        break;
-      }
-  }
-  size_t nf = 0;
-  for (uint32_t j = 0; j < D->n; j++)
-    nf += 4 * (D->cf[j] != 0);
-  TR_CHECK(fk_reserve(D, nf));
-  nf = 0;
-  for (uint32_t j = 0; j < D->n; j++) {
-    if (!D->cf[j])
-      continue;
-    any = 1;
-    for (uint32_t k = 0; k < 4; k++) {
-      face_of(D->t[j], (int)k, D->fk[nf].k);
-      tr_sort3(D->fk[nf].k);
-      D->fk[nf].tet = j;
-      D->fk[nf++].face = k;
-    }
-  }
-  if (!any)
-    return TR_OK;
-  qsort(D->fk, nf, sizeof *D->fk, cmp_fkey);
-  /* the new tets: each boundary face of the region (a face listed once) with its vertex
-   * opposite replaced by p, which keeps the orientation (p sees the face from that
-   * vertex's side); they go after the old tets, then the conflict tets are dropped */
-  uint32_t nold = D->n;
-  for (size_t a = 0; a < nf;) {
-    size_t b = a + 1;
-    while (b < nf && tr_cmp_face_key(D->fk[a].k, D->fk[b].k) == 0)
-      b++;
-    if (b == a + 1) {
-      uint32_t v[4];
-      memcpy(v, D->t[D->fk[a].tet], sizeof v);
-      v[D->fk[a].face] = i;
-      TR_CHECK(ldt_push(D, v));
-    }
-    a = b;
-  }
-  uint32_t keep = 0;
-  for (uint32_t j = 0; j < D->n; j++)
-    if (j >= nold || !D->cf[j])
-      memmove(D->t[keep++], D->t[j], sizeof D->t[j]);
-  D->n = keep;
-  *ok = 1;
-  return TR_OK;
-}
-
-static int collinear(const tr_point *a, const tr_point *b, const tr_point *c)
-{
-  return !tr_orient2d_proj_p(a, b, c, 0) && !tr_orient2d_proj_p(a, b, c, 1) &&
-         !tr_orient2d_proj_p(a, b, c, 2);
-}
-
-/* The Delaunay mesh of p[0..n) inserted in index order, from the first four points in
- * general position. *ok = 0 when the points span less than 3D or one repeats. */
-static tr_status ldt_build(ldt *D, const tr_point *p, uint32_t n, int *ok)
-{
-  D->p = p;
-  D->n = 0;
-  *ok = 0;
-  uint32_t c = 2, d;
-  while (c < n && collinear(&p[0], &p[1], &p[c]))
-    c++;
-  if (n < 4 || c == n)
-    return TR_OK;
-  int o = 0;
-  for (d = 2; d < n; d++)
-    if (d != c && (o = tr_orient3d_p(&p[0], &p[1], &p[c], &p[d])) != 0)
-      break;
-  if (d == n)
-    return TR_OK;
-  uint32_t t0[4] = {0, 1, c, d};
-  if (o < 0) {
-    t0[1] = c;
-    t0[2] = 1;
-  }
-  TR_CHECK(ldt_push(D, t0));
-  for (int k = 0; k < 4; k++) {
-    uint32_t f[3];
-    face_of(t0, k, f);
-    uint32_t gh[4] = {f[0], f[2], f[1], LG}; /* hull face turned outward */
-    TR_CHECK(ldt_push(D, gh));
-  }
-  for (uint32_t i = 1; i < n; i++) {
-    if (i == 1 || i == c || i == d)
-      continue;
-    int in;
-    TR_CHECK(ldt_insert(D, i, &in));
-    if (!in)
-      return TR_OK;
-  }
-  *ok = 1;
-  return TR_OK;
-}
 
 /* ---- the cavity ---- */
 
@@ -255,10 +30,10 @@ typedef struct cav {
   tr_u32buf newv;   /* 4 global ids per new tet */
   tr_u32buf plane[2]; /* sorted keys of the faces in F's plane, upper / lower side */
   tr_u32buf missing;  /* indices into bf of boundary faces the Delaunay mesh lacks */
-  ldt D;
+  tr_ldt D;
   tr_point *pts;
   uint32_t *gid;
-  fkey *ft;         /* faces of the real local tets, sorted */
+  tr_ldt_face *ft;         /* faces of the real local tets, sorted */
   uint8_t *seen;
   uint32_t *queue;
 } cav;
@@ -334,7 +109,7 @@ static tr_status collect_boundary(cav *c, int *ok)
       if (nb != TR_NONE && in_sorted(c->reg.a, c->reg.n, nb))
         continue;
       bface *b = &c->bf[c->nbf++];
-      face_of(m->tv + 4 * (size_t)t, k, b->v);
+      tr_ldt_face_of(m->tv + 4 * (size_t)t, k, b->v);
       b->t = t;
       b->k = k;
       int up = 0, lo = 0;
@@ -357,48 +132,13 @@ static tr_status collect_boundary(cav *c, int *ok)
  * vertex is on the positive side), or TR_NONE. */
 static uint32_t find_turned(const cav *c, uint32_t nft, const uint32_t loc[3])
 {
-  fkey k;
-  memcpy(k.k, loc, sizeof k.k);
-  tr_sort3(k.k);
-  k.tet = 0;
-  k.face = 0;
-  size_t lo = 0, hi = nft;
-  while (lo < hi) { /* first entry >= key */
-    size_t mid = (lo + hi) / 2;
-    if (tr_cmp_face_key(c->ft[mid].k, k.k) < 0)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  for (; lo < nft && tr_cmp_face_key(c->ft[lo].k, k.k) == 0; lo++) {
-    uint32_t f[3];
-    face_of(c->D.t[c->ft[lo].tet], (int)c->ft[lo].face, f);
-    if (same_turn(loc, f))
-      return c->ft[lo].tet;
-  }
-  return TR_NONE;
+  return tr_ldt_find_turned(&c->D, c->ft, nft, loc);
 }
 
 /* The other real local tet across face `face` of tet j, TR_NONE on the hull. */
 static uint32_t across(const cav *c, uint32_t nft, uint32_t j, uint32_t face)
 {
-  fkey k;
-  face_of(c->D.t[j], (int)face, k.k);
-  tr_sort3(k.k);
-  k.tet = 0;
-  k.face = 0;
-  size_t lo = 0, hi = nft;
-  while (lo < hi) {
-    size_t mid = (lo + hi) / 2;
-    if (tr_cmp_face_key(c->ft[mid].k, k.k) < 0)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  for (; lo < nft && tr_cmp_face_key(c->ft[lo].k, k.k) == 0; lo++)
-    if (c->ft[lo].tet != j)
-      return c->ft[lo].tet;
-  return TR_NONE;
+  return tr_ldt_across(&c->D, c->ft, nft, j, face);
 }
 
 static uint32_t local_id(const cav *c, uint32_t n, uint32_t v)
@@ -424,10 +164,10 @@ static tr_status one_side(cav *c, int s, int *res)
       c->pts[n++] = tr_mesh_point(c->m, c->vid[i]);
     }
   int ok;
-  TR_CHECK(ldt_build(&c->D, c->pts, n, &ok));
+  TR_CHECK(tr_ldt_build(&c->D, c->pts, n, &ok));
   if (!ok)
     return TR_OK;
-  ldt *D = &c->D;
+  tr_ldt *D = &c->D;
   uint32_t nft = 0;
   free(c->ft);
   c->ft = malloc(4 * (size_t)(D->n ? D->n : 1) * sizeof *c->ft);
@@ -438,19 +178,19 @@ static tr_status one_side(cav *c, int s, int *res)
   if (!c->ft || !c->seen || !c->queue)
     return tr_error(TR_ERR_NOMEM, "cavity: out of memory");
   for (uint32_t j = 0; j < D->n; j++) {
-    if (D->t[j][3] == LG)
+    if (D->t[j][3] == TR_LDT_GHOST)
       continue;
     for (uint32_t k = 0; k < 4; k++) {
-      face_of(D->t[j], (int)k, c->ft[nft].k);
+      tr_ldt_face_of(D->t[j], (int)k, c->ft[nft].k);
       tr_sort3(c->ft[nft].k);
       c->ft[nft].tet = j;
       c->ft[nft++].face = k;
     }
   }
-  qsort(c->ft, nft, sizeof *c->ft, cmp_fkey);
+  qsort(c->ft, nft, sizeof *c->ft, tr_ldt_cmp_face);
   /* every boundary face of this side, seen from the cavity, and the flood's seeds */
   uint32_t nq = 0;
-  fkey *wall = malloc((c->nbf ? c->nbf : 1) * sizeof *wall);
+  tr_ldt_face *wall = malloc((c->nbf ? c->nbf : 1) * sizeof *wall);
   if (!wall)
     return tr_error(TR_ERR_NOMEM, "cavity: out of memory");
   uint32_t nw = 0;
@@ -490,7 +230,7 @@ static tr_status one_side(cav *c, int s, int *res)
     uint32_t j = c->queue[h];
     for (uint32_t k = 0; k < 4 && !leak; k++) {
       uint32_t f[3];
-      face_of(D->t[j], (int)k, f);
+      tr_ldt_face_of(D->t[j], (int)k, f);
       int onplane = 1;
       for (int q = 0; q < 3; q++)
         onplane &= vside(c, c->gid[f[q]]) == 0;
@@ -532,7 +272,7 @@ static tr_status one_side(cav *c, int s, int *res)
       TR_CHECK(tr_u32buf_push(&c->newv, c->gid[t[q]]));
     for (int k = 0; k < 4; k++) {
       uint32_t f[3];
-      face_of(t, k, f);
+      tr_ldt_face_of(t, k, f);
       int onplane = 1;
       for (int q = 0; q < 3; q++) {
         f[q] = c->gid[f[q]];
@@ -604,7 +344,7 @@ static tr_status keeps_constraints(cav *c, int *ok)
     }
     for (int k = 0; k < 4 && st == TR_OK; k++) {
       uint32_t v[3];
-      face_of(t, k, v);
+      tr_ldt_face_of(t, k, v);
       if (tr_sxset_add(&sf, v) < 0)
         st = TR_ERR_NOMEM;
     }
@@ -618,7 +358,7 @@ static tr_status keeps_constraints(cav *c, int *ok)
     }
     for (int k = 0; k < 4 && *ok; k++) {
       uint32_t v[3];
-      face_of(t, k, v);
+      tr_ldt_face_of(t, k, v);
       if (c->guard(c->ud, v, 3) && !tr_sxset_has(&sf, v))
         *ok = 0;
     }
@@ -638,7 +378,7 @@ static void cav_free(cav *c)
   free(c->vid);
   free(c->vside);
   free(c->bf);
-  ldt_free(&c->D);
+  tr_ldt_free(&c->D);
   free(c->pts);
   free(c->gid);
   free(c->ft);

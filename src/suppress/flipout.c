@@ -128,7 +128,8 @@ static tr_status paint(struct tr_mesh *m, uint32_t t0, const tr_sxset *link, uin
   return st;
 }
 
-tr_status sup_flip_out(struct tr_mesh *m, uint32_t p, uint32_t region, int dbl, int *done)
+tr_status sup_flip_out(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t region,
+                       int dbl, int *done)
 {
   *done = 0;
   tr_u32buf ball = {0};
@@ -178,6 +179,20 @@ tr_status sup_flip_out(struct tr_mesh *m, uint32_t p, uint32_t region, int dbl, 
     }
     stuck = !gone;
   }
+  /* Stuck above four tets: the smaller star may be retriangulable without p, expanded
+   * like the whole star's (star.c). Its tets are painted first, while the link still
+   * bounds them (the flips reuse slots of other regions); the retriangulation paints its
+   * own, and the tets it expands over are of p's region. */
+  uint32_t tf = TR_NONE;
+  int filled = 0;
+  if (st == TR_OK && stuck && j.n && (st = tr_ball(m, p, 1, &ball)) == TR_OK) {
+    if (m->region && ball.n)
+      st = paint(m, ball.a[0], &link, region);
+    if (st == TR_OK)
+      st = sup_star_fill(m, c, p, region, dbl, SUP_FILL_EXPAND, &tf, &filled);
+    if (st == TR_OK && filled)
+      *done = 1;
+  }
   /* the 4-1 flip: the vertex of the link that t0 lacks takes p's place in t0 */
   uint32_t nv[4] = {0, 0, 0, 0};
   if (st == TR_OK && !stuck && ball.n == 4 && nl == 4) {
@@ -204,7 +219,7 @@ tr_status sup_flip_out(struct tr_mesh *m, uint32_t p, uint32_t region, int dbl, 
     if (m->region)
       st = paint(m, id, &link, region);
     *done = 1;
-  } else if (st == TR_OK && j.n) {
+  } else if (st == TR_OK && j.n && !filled) {
     /* the undo too puts tets into slots of other regions */
     st = tr_flip_journal_undo(m, &j, 0);
     if (st == TR_OK)

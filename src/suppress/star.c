@@ -402,6 +402,44 @@ static tr_status try_relocate(sup_ctx *c, uint32_t p, const tr_u32buf *star,
   return st;
 }
 
+static int cmp_face4(const void *pa, const void *pb)
+{
+  const uint32_t *a = pa, *b = pb;
+  for (int i = 0; i < 4; i++)
+    if (a[i] != b[i])
+      return a[i] < b[i] ? -1 : 1;
+  return 0;
+}
+
+/* A key of p's star (ball: its tets) for its retriangulation (which p's position does
+ * not matter to): the link faces as sorted triples, each with the vertex behind it (what
+ * the first expansion adds), in sorted order, and the flags, mixed into 64 bits (never
+ * 0). The expansion may look further than that: the chance a change there gives is
+ * given up. */
+static uint64_t star_key(const struct tr_mesh *m, uint32_t p, const tr_u32buf *ball,
+                         unsigned flags)
+{
+  uint64_t h = 0x9E3779B97F4A7C15ull ^ flags;
+  uint32_t *f = malloc(sizeof *f * 4 * (ball->n ? ball->n : 1));
+  if (!f)
+    return 0; /* no key: the point is tried */
+  for (size_t i = 0; i < ball->n; i++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
+    int k = tr_ncode(m, ball->a[i], p);
+    for (int a = 0; a < 3; a++)
+      f[4 * i + a] = k < 0 ? tv[a] : tv[tr_face_vtx[k][a]];
+    tr_sort3(f + 4 * i);
+    uint32_t nb = k < 0 ? TR_NONE : m->tn[4 * (size_t)ball->a[i] + (size_t)k];
+    f[4 * i + 3] = nb == TR_NONE ? TR_NONE : m->tv[nb];
+  }
+  qsort(f, ball->n, 4 * sizeof *f, cmp_face4);
+  for (size_t i = 0; i < 4 * ball->n; i++)
+    h = (h ^ f[i]) * 0xBF58476D1CE4E5B9ull;
+  free(f);
+  h ^= h >> 31;
+  return h ? h : 1;
+}
+
 tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
 {
   struct tr_mesh *m = c->m;
@@ -442,10 +480,22 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
     if (st == TR_OK && !*done && !inner && (flags & TR_SUP_RELOCATE))
       st = try_relocate(c, p, &star, &bf, &old, &merged, region, dbl, done);
   }
-  /* last, since its undo may move the star's tets to other slots */
+  /* the Delaunay retriangulation of the star, then the flips: last, since their undo may
+   * move the star's tets to other slots */
   for (int dbl = 1; dbl >= (flags & TR_SUP_REQUIRE ? 0 : 1) && !*done && st == TR_OK; dbl--)
-    if (inner && (flags & TR_SUP_REMOVE))
-      st = sup_flip_out(m, p, region, dbl, done);
+    if (inner && (flags & TR_SUP_REMOVE)) {
+      /* the passes retry every point left while anything changed: a retriangulation
+       * that failed on the same star (and the same tets behind it) would fail again */
+      uint64_t key = c->tried ? star_key(m, p, &star, (unsigned)dbl) : 0;
+      if (!key || c->tried[p] != key) {
+        uint32_t t;
+        st = sup_star_fill(m, c, p, region, dbl, SUP_FILL_EXPAND, &t, done);
+        if (st == TR_OK && !*done && key)
+          c->tried[p] = key;
+      }
+      if (st == TR_OK && !*done)
+        st = sup_flip_out(m, c, p, region, dbl, done);
+    }
   /* The edge removals' positivity depends on where p is: a point relocated off the
    * surface sits just inside it, where its star is flat. Moved into its kernel (the
    * centroid of its link or a point towards it, kept as a double, find_q), it is often
@@ -463,7 +513,7 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
     if (st == TR_OK && ok)
       st = try_relocate(c, p, &star, &bf, &old, &merged, region, 1, &moved);
     if (st == TR_OK && moved)
-      st = sup_flip_out(m, p, region, 1, done);
+      st = sup_flip_out(m, c, p, region, 1, done);
   }
 done:
   tr_u32buf_free(&old);

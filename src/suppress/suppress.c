@@ -217,6 +217,10 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
     return tr_error(TR_ERR_NOMEM, "out of memory for %u vertices", m->nv);
   for (uint32_t v = 0; v < m->nv; v++)
     c.head[v] = TR_NONE;
+  if (!(c.tried = calloc(m->nv ? m->nv : 1, sizeof *c.tried))) {
+    free(c.head);
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u vertices", m->nv);
+  }
   for (uint32_t i = 0; i < sub->n && st == TR_OK; i++)
     st = sup_add(&c, sub->v[3 * (size_t)i], sub->v[3 * (size_t)i + 1],
                  sub->v[3 * (size_t)i + 2], sub->tri[i]);
@@ -299,6 +303,7 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
   free(used);
   tr_u32buf_free(&f);
   free(c.head);
+  free(c.tried);
   free(c.v);
   free(c.tri);
   free(c.lnext);

@@ -25,8 +25,9 @@
  * rounding can repair is the vertices' rounding, not the shape); under --keep-surface a
  * last try asks only the exact test and leaves the rest to the rounding repair.
  * Otherwise p stays. An interior point (TR_SUP_INTERIOR) whose star no vertex sees is
- * removed by flips that only delete simplices on p (flipout.c). No tolerance decides
- * anything.
+ * removed by the Delaunay retriangulation of its star, expanded across non-constraint
+ * faces (starfill.c), else by flips that only delete simplices on p (flipout.c). No
+ * tolerance decides anything.
  *
  * The outer tets are taken out of the working mesh first (their faces on the domain side
  * become mesh boundary, neighbour TR_NONE): they are discarded by compaction anyway and
@@ -63,7 +64,9 @@ enum {
  * removal / relocation round and interior removal after it: 454 (1 on an edge), and
  * --keep-surface meshes all 84 (80 with three rounds); an interior point the flips
  * cannot remove moved into its kernel first, and the removal rounds repeated while they
- * remove something: 358 (none on the surface; 589 under --keep-surface). */
+ * remove something: 358 (none on the surface; 589 under --keep-surface). The star
+ * retriangulation (starfill.c) before the flips and on the star they get stuck on: 339;
+ * with edge recovery's deeper flips on short pipes (fewer points to remove): 315. */
 #define TR_SUP_DEFAULT (TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_INTERIOR)
 
 typedef struct tr_suppress_stats {

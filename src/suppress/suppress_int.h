@@ -16,6 +16,8 @@ typedef struct sup_ctx {
   uint32_t *head;              /* nv: first node of the vertex's list, TR_NONE */
   uint32_t nl, capl;
   uint32_t *lnext, *lsub;      /* nodes: next node, sub-face */
+  uint64_t *tried;             /* nv or NULL: per interior point, the key of its star at
+                                  its last failed retriangulation (star.c), 0 none */
 } sup_ctx;
 
 /* Appends sub-face (a,b,c) of input triangle tri and links it to its vertices. */
@@ -37,9 +39,21 @@ tr_status sup_unsplit(sup_ctx *c, uint32_t p, const tr_u32buf *old, tr_u32buf *m
 tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done);
 
 /* Removes interior point p (no constraint on its star, region: its tets' region) by flips
- * that bring it down to four tets, then a 4-1 flip (flipout.c). dbl: refuse a new tet that
+ * that bring it down to four tets, then a 4-1 flip, or, stuck above four, by the
+ * retriangulation of the smaller star (sup_star_fill, no expansion; c as there)
+ * (flipout.c). dbl: refuse a new tet that
  * is not positive with its vertices at their doubles too. *done = 1 if p is gone; else
  * the mesh is as it was. */
-tr_status sup_flip_out(struct tr_mesh *m, uint32_t p, uint32_t region, int dbl, int *done);
+tr_status sup_flip_out(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t region,
+                       int dbl, int *done);
+
+/* Removes interior point p (as sup_flip_out) by the Delaunay retriangulation of its star
+ * without it, the star expanded across missing non-constraint faces at most `rounds`
+ * times (starfill.c). c: the sub-faces, the constraints an expansion must not cross
+ * (NULL: none). *done = 1 if p is gone (*tnew: one of the new tets); else the mesh is
+ * untouched. */
+#define SUP_FILL_EXPAND 3
+tr_status sup_star_fill(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t region,
+                        int dbl, int rounds, uint32_t *tnew, int *done);
 
 #endif

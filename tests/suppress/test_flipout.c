@@ -126,7 +126,7 @@ static void remove_all(uint32_t n, uint32_t seed, int dbl)
       continue;
     int cone = cone_exists(m, p), done = -1;
     uint32_t n0 = 0, n1 = 0, *before = canon(m, &n0);
-    tr_status s = sup_flip_out(m, p, 7, dbl, &done);
+    tr_status s = sup_flip_out(m, NULL, p, 7, dbl, &done);
     EXPECT(s == TR_OK, "point %u: %s", p, tr_last_error());
     s = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, vol);
     EXPECT(s == TR_OK, "after point %u (done %d): %s", p, done, tr_last_error());

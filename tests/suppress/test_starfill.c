@@ -1,0 +1,242 @@
+/* Unit tests of the removal of an interior point by the Delaunay retriangulation of its
+ * star (src/suppress/starfill.c) on exact configurations: the Delaunay tetrahedralization
+ * of integer points (a fixed linear congruential sequence). After every call the mesh
+ * validator checks links, exact orientation and the exact volume (six times the box's,
+ * unchanged); a removed point has no tet left and every tet keeps its region; a point
+ * that stays leaves the mesh exactly as it was.
+ *   delaunay     removing a vertex from a Delaunay mesh: its star's link is a subcomplex
+ *                of the link vertices' Delaunay mesh, so every inner point goes without
+ *                any expansion
+ *   expanded     the mesh made non-Delaunay first (every third inner point removed by
+ *                flips, flipout.c); then the stars that need an expansion are retried
+ *                with every face beyond them a sub-face (the expansion must refuse:
+ *                the point stays, the mesh unchanged), then without constraints */
+#include <gmp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "delaunay/delaunay.h"
+#include "mesh/check.h"
+#include "suppress/suppress_int.h"
+
+#include "../pipeline/texpect.h"
+
+static int cmp_tet(const void *pa, const void *pb)
+{
+  const uint32_t *a = pa, *b = pb;
+  for (int i = 0; i < 4; i++)
+    if (a[i] != b[i])
+      return a[i] < b[i] ? -1 : 1;
+  return 0;
+}
+
+/* The real tets as sorted vertex lists, in sorted order: the mesh up to slot order. */
+static uint32_t *canon(const struct tr_mesh *m, uint32_t *n)
+{
+  uint32_t *t = NULL;
+  if (tr_mesh_export_tets(m, &t, n) != TR_OK)
+    return NULL;
+  for (uint32_t i = 0; i < *n; i++) {
+    uint32_t *v = t + 4 * (size_t)i;
+    for (int a = 1; a < 4; a++)
+      for (int b = a; b > 0 && v[b - 1] > v[b]; b--) {
+        uint32_t x = v[b];
+        v[b] = v[b - 1];
+        v[b - 1] = x;
+      }
+  }
+  qsort(t, *n, 4 * sizeof *t, cmp_tet);
+  return t;
+}
+
+/* n points: 8 corners of a box, then n - 8 points strictly inside it. */
+static double *points(uint32_t n, uint32_t seed)
+{
+  double *x = malloc(sizeof *x * 3 * (size_t)n);
+  if (!x)
+    return NULL;
+  for (uint32_t i = 0; i < 8; i++)
+    for (int k = 0; k < 3; k++)
+      x[3 * i + k] = (i >> k) & 1 ? 64 : 0;
+  uint32_t s = seed;
+  for (uint32_t i = 8; i < n; i++)
+    for (int k = 0; k < 3; k++) {
+      s = s * 1103515245u + 12345u;
+      x[3 * (size_t)i + k] = 1 + (double)((s >> 16) % 63);
+    }
+  return x;
+}
+
+static struct tr_mesh *mesh_of(uint32_t n, uint32_t seed)
+{
+  double *x = points(n, seed);
+  struct tr_mesh *m = NULL;
+  EXPECT(x && tr_delaunay_build(x, n, &m) == TR_OK, "delaunay: %s", tr_last_error());
+  free(x);
+  if (!m)
+    return NULL;
+  /* the inner points play the Steiner points the suppression removes: no duplicate map,
+   * whose rule is that every input point stays in some tet */
+  free(m->dup_map);
+  m->dup_map = NULL;
+  EXPECT(tr_mesh_enable_regions(m) == TR_OK, "regions");
+  for (uint32_t t = 0; t < m->nt; t++)
+    m->region[t] = 7;
+  return m;
+}
+
+/* Every face of the mesh not on p, as sub-faces of one pseudo input triangle. */
+static void all_faces_but(sup_ctx *c, struct tr_mesh *m, uint32_t p)
+{
+  memset(c, 0, sizeof *c);
+  c->m = m;
+  c->nv = m->nv;
+  c->head = malloc(sizeof *c->head * m->nv);
+  EXPECT(c->head != NULL, "out of memory");
+  for (uint32_t v = 0; v < m->nv; v++)
+    c->head[v] = TR_NONE;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    for (int k = 0; k < 4; k++) {
+      const uint32_t *tv = m->tv + 4 * (size_t)t;
+      uint32_t f[3];
+      for (int a = 0; a < 3; a++)
+        f[a] = tv[tr_face_vtx[k][a]];
+      if (f[0] != p && f[1] != p && f[2] != p)
+        EXPECT(sup_add(c, f[0], f[1], f[2], 0) == TR_OK, "sup_add");
+    }
+  }
+}
+
+static void ctx_free(sup_ctx *c)
+{
+  free(c->head);
+  free(c->v);
+  free(c->tri);
+  free(c->lnext);
+  free(c->lsub);
+}
+
+/* One call, then the checks of the file's header. Returns done. */
+static int fill_one(struct tr_mesh *m, const sup_ctx *c, uint32_t p, int dbl, int rounds,
+                    mpq_t vol)
+{
+  uint32_t n0 = 0, n1 = 0, *before = canon(m, &n0), t = TR_NONE;
+  int done = -1;
+  tr_status s = sup_star_fill(m, c, p, 7, dbl, rounds, &t, &done);
+  EXPECT(s == TR_OK, "point %u: %s", p, tr_last_error());
+  s = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, vol);
+  EXPECT(s == TR_OK, "after point %u (done %d): %s", p, done, tr_last_error());
+  uint32_t *after = canon(m, &n1);
+  if (done == 1) {
+    EXPECT(m->v2t[p] == TR_NONE, "point %u removed but still has a tet", p);
+    EXPECT(t != TR_NONE && tr_tet_is_real(m, t), "point %u: no new tet named", p);
+    for (uint32_t i = 0; i < 4 * n1; i++)
+      EXPECT(after[i] != p, "point %u removed but in tet %u", p, i / 4);
+  } else {
+    EXPECT(done == 0, "point %u: done = %d", p, done);
+    EXPECT(before && after && n0 == n1 && !memcmp(before, after, 16 * (size_t)n0),
+           "point %u stays but the mesh changed", p);
+  }
+  for (uint32_t k = 0; k < m->nt; k++)
+    if (tr_tet_is_real(m, k))
+      EXPECT(m->region[k] == 7, "point %u: tet %u has region %u", p, k, m->region[k]);
+  free(before);
+  free(after);
+  return done;
+}
+
+static int hull_vertex(struct tr_mesh *m, uint32_t p)
+{
+  tr_u32buf ball = {0};
+  int hull = tr_ball(m, p, 1, &ball) != TR_OK;
+  for (size_t i = 0; i < ball.n; i++)
+    hull |= !tr_tet_is_real(m, ball.a[i]);
+  tr_u32buf_free(&ball);
+  return hull;
+}
+
+static void delaunay_case(uint32_t n, uint32_t seed, int dbl)
+{
+  struct tr_mesh *m = mesh_of(n, seed);
+  if (!m)
+    return;
+  mpq_t vol;
+  mpq_init(vol);
+  mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
+  uint32_t removed = 0, inner = 0;
+  for (uint32_t p = 0; p < m->nv; p++) {
+    if (m->v2t[p] == TR_NONE || hull_vertex(m, p))
+      continue;
+    inner++;
+    removed += fill_one(m, NULL, p, dbl, 0, vol) == 1;
+  }
+  fprintf(stderr, "%u points (seed %u, dbl %d): %u of %u inner points removed\n", n, seed,
+          dbl, removed, inner);
+  EXPECT(inner >= n / 2 && removed == inner, "a Delaunay star was refused: %u of %u", removed,
+         inner);
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
+}
+
+static void expanded_case(uint32_t n, uint32_t seed)
+{
+  struct tr_mesh *m = mesh_of(n, seed);
+  if (!m)
+    return;
+  mpq_t vol;
+  mpq_init(vol);
+  mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
+  uint32_t flipped = 0, plain = 0, refused = 0, expanded = 0, stayed = 0, k = 0;
+  for (uint32_t p = 0; p < m->nv; p++) {
+    if (m->v2t[p] == TR_NONE || hull_vertex(m, p) || k++ % 3)
+      continue;
+    int done = 0;
+    EXPECT(sup_flip_out(m, NULL, p, 7, 0, &done) == TR_OK, "flips: %s", tr_last_error());
+    flipped += done == 1;
+  }
+  EXPECT(tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, vol) == TR_OK,
+         "after the flips: %s", tr_last_error());
+  for (uint32_t p = 0; p < m->nv; p++) {
+    if (m->v2t[p] == TR_NONE || hull_vertex(m, p))
+      continue;
+    if (fill_one(m, NULL, p, 0, 0, vol) == 1) {
+      plain++;
+      continue;
+    }
+    sup_ctx c;
+    all_faces_but(&c, m, p);
+    int done = fill_one(m, &c, p, 0, SUP_FILL_EXPAND, vol);
+    ctx_free(&c);
+    EXPECT(done == 0, "point %u: expanded across a sub-face", p);
+    refused++;
+    done = fill_one(m, NULL, p, 0, SUP_FILL_EXPAND, vol);
+    expanded += done == 1;
+    stayed += done != 1;
+  }
+  fprintf(stderr,
+          "%u points (seed %u): %u removed by flips first; then %u without expansion, %u "
+          "with (refused when every face beyond the star is a sub-face: %u), %u stayed\n",
+          n, seed, flipped, plain, expanded, refused, stayed);
+  EXPECT(expanded > 0, "no star needed an expansion: a test of nothing");
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
+}
+
+int main(int argc, char **argv)
+{
+  const char *c = argc > 1 ? argv[1] : "";
+  if (!strcmp(c, "delaunay"))
+    delaunay_case(120, 5, 0);
+  else if (!strcmp(c, "delaunay_doubles"))
+    delaunay_case(120, 6, 1);
+  else if (!strcmp(c, "expanded"))
+    expanded_case(200, 7);
+  else {
+    fprintf(stderr, "unknown case '%s'\n", c);
+    return 2;
+  }
+  return failures != 0;
+}
