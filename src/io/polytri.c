@@ -475,7 +475,7 @@ tr_status tr_plc_nonplanar(const struct tr_plc *plc, tr_nonplanar **out, uint32_
       }
     }
     const uint32_t *b = plc->tris + 3 * (size_t)big;
-    double lo[3], hi[3];
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}; /* set by the first point */
     for (uint32_t i = 3 * t0; i < 3 * t1; i++) {
       const double *p = x + 3 * (size_t)plc->tris[i];
       double d = plane_dist(x + 3 * (size_t)b[0], x + 3 * (size_t)b[1], x + 3 * (size_t)b[2], p,
