@@ -211,8 +211,9 @@ typedef struct tr_options {
                          with TR_ERR_INVALID_MESH (default 0: a warning on stderr) */
   /* quality refinement (src/refine/refine.h), off unless quality_ratio or max_volume > 0 */
   double quality_ratio;        /* radius-edge bound R (e.g. 1.414), 0: off */
-  double quality_min_dihedral; /* minimum dihedral target in degrees: not supported yet,
-                                  must be 0 (a nonzero value is refused, never ignored) */
+  double quality_min_dihedral; /* minimum dihedral target in degrees (0: none; at most 70):
+                                  sliver removal works on tets under it, which needs
+                                  optimize >= 1; a warning counts the tets left under it */
   double max_volume;           /* bound on every tet's volume, 0: none */
   uint64_t refine_budget;      /* points refinement may add (0: 100 per input point +
                                   100,000, + 20 per max_volume in the domain's volume) */

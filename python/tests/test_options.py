@@ -48,10 +48,15 @@ def test_optimize_levels_reach_the_library_and_add_no_point(unit_cube):
         tetrec.tetrahedralize(*unit_cube, quality=1.2, optimize=4)
 
 
-def test_quality_with_a_dihedral_target_is_refused(unit_cube):
+def test_quality_with_a_dihedral_target_is_worked_towards(unit_cube):
+    plain = tetrec.tetrahedralize(*unit_cube, quality=1.414, max_volume=0.01)
+    target = tetrec.tetrahedralize(*unit_cube, quality=(1.414, 25.0), max_volume=0.01)
+    for mesh in (plain, target):
+        check_mesh(mesh, *unit_cube)
+    assert target.stats["min_dihedral"] >= plain.stats["min_dihedral"]
     with pytest.raises(tetrec.Error) as e:
-        tetrec.tetrahedralize(*unit_cube, quality=(1.414, 15.0))
-    assert e.value.status == "TR_ERR_UNSUPPORTED"
+        tetrec.tetrahedralize(*unit_cube, quality=(1.414, 75.0))
+    assert e.value.status == "TR_ERR_USAGE"
 
 
 def test_hole_point_empties_its_cell():

@@ -194,8 +194,9 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     input triangles (tetrec.Error when that cannot be done). keep_steiner: the
     recovery's Steiner points stay on the input edges and facets (by default they are
     removed or moved inside where that can be done exactly). quality: R or (R, D), the
-    radius-edge bound of constrained Delaunay refinement (a dihedral D is refused as not
-    supported yet); max_volume: refinement until every tet's volume is at most it.
+    radius-edge bound of constrained Delaunay refinement and a minimum dihedral angle D in
+    degrees that sliver removal works towards (a warning counts the tets left under it);
+    max_volume: refinement until every tet's volume is at most it.
     optimize: sliver removal after refinement, 0 off, 1 flips, 2 flips and smoothing of
     interior points, 3 (default) also new interior points at slivers.
     Options the C library does not offer raise NotImplementedError

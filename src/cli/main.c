@@ -111,7 +111,9 @@ static const struct option {
     {"--quality", "R[/D]", C_MESH,
      "constrained Delaunay refinement until every tet's radius-\n"
      "edge ratio is at most R (>= 1; 1.414 is TetGen's default);\n"
-     "a minimum dihedral D is not supported yet (exit 11)"},
+     "D (degrees, at most 70): a minimum dihedral angle that sliver\n"
+     "removal works towards (tets under it get flips, moves and\n"
+     "points); a warning counts the tets left under it"},
     {"--max-volume", "V", C_MESH, "refinement until every tet's volume is at most V"},
     {"-a", "V", C_MESH, "the same as --max-volume (TetGen's switch)"},
     {"--refine-budget", "N", C_MESH,

@@ -7,6 +7,7 @@
  * written, so the tets that are discarded do not constrain where a Steiner point's double
  * may move, and its xyz is the array the writers print. */
 #define _DEFAULT_SOURCE
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +20,7 @@
 #include "output/flatflip.h"
 #include "output/round.h"
 #include "pipeline.h"
+#include "refine/quality.h"
 #include "refine/refine_stage.h"
 #include "sliver/sliver.h"
 #include "smooth/smooth.h"
@@ -255,7 +257,10 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv0, &vkind, &vindex);
     /* sliver removal: refinement bounds the radius-edge ratio, which slivers meet */
     if (st == TR_OK && opt.optimize > 0) {
-      tr_sliver_params sp = {opt.optimize, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS,
+      /* a dihedral target D raises both bounds to D where it is above them */
+      double dt = opt.quality_min_dihedral;
+      tr_sliver_params sp = {opt.optimize, fmax(TR_SLIVER_BOUND, dt), TR_SLIVER_ROUNDS,
+                             fmax(TR_SLIVER_INSERT_BOUND, dt),
                              {opt.quality_ratio, opt.max_volume, p}};
       tr_sliver_stats ss;
       uint32_t nv1 = m->nv;
@@ -333,6 +338,14 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     stats->volume_nodes = res->nv;
     stats->volume_elements = tr_mesh_num_tets(res);
     tr_quality_stats(res, stats);
+    /* a dihedral target is worked towards, not guaranteed (input angles, tets pinned
+     * between constraints): what is left under it is said, never passed over */
+    double dt = opt.quality_min_dihedral;
+    if (dt > 0 && stats->min_dihedral < dt && opt.verbose >= 1)
+      fprintf(stderr, "tetrec: warning: %llu of %llu tets keep a dihedral angle under the "
+              "target %g degrees (the smallest %.3g): sliver removal could not lift them\n",
+              (unsigned long long)tr_quality_count_below(res, dt),
+              (unsigned long long)stats->volume_elements, dt, stats->min_dihedral);
     if (opt.verbose >= 2)
       fprintf(stderr, "tetrec: %u regions\n", nreg);
   }

@@ -100,6 +100,21 @@ double tr_tet_min_dihedral(const double *a, const double *b, const double *c, co
   return 180.0 - acos(lo) * (180.0 / 3.14159265358979323846);
 }
 
+uint64_t tr_quality_count_below(const struct tr_mesh *m, double degrees)
+{
+  uint64_t n = 0;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t) || (m->flags[t] & TR_TF_OUTER))
+      continue;
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    double ratio, vol;
+    n += tr_tet_min_dihedral(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
+                             m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &ratio,
+                             &vol) < degrees;
+  }
+  return n;
+}
+
 void tr_quality_measure(const struct tr_mesh *m, tr_quality *q)
 {
   memset(q, 0, sizeof *q);

@@ -33,6 +33,8 @@ typedef struct tr_quality {
 
 /* Over the live, real, non-outer tets of m, on m->xyz (the doubles written). */
 void tr_quality_measure(const struct tr_mesh *m, tr_quality *q);
+/* The tets of tr_quality_measure with a dihedral angle under `degrees`. */
+uint64_t tr_quality_count_below(const struct tr_mesh *m, double degrees);
 /* A short human-readable summary: three lines, each starting with prefix. */
 void tr_quality_print(FILE *f, const char *prefix, const tr_quality *q);
 

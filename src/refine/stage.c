@@ -9,10 +9,16 @@
 
 tr_status tr_refine_check_options(const tr_options *opt)
 {
-  if (opt->quality_min_dihedral != 0)
-    return tr_error(TR_ERR_UNSUPPORTED, "a minimum dihedral target (-q R/D, D = %g) is not "
-                    "supported yet: refinement bounds the radius-edge ratio only",
-                    opt->quality_min_dihedral);
+  /* D is the sliver stage's target: it can only be worked towards by flips, moves and
+   * points (small input angles force smaller ones), so it needs that stage, and above
+   * the regular tet's 70.53 degrees no tet meets it */
+  if (opt->quality_min_dihedral != 0 &&
+      !(opt->quality_min_dihedral > 0 && opt->quality_min_dihedral <= 70))
+    return tr_error(TR_ERR_USAGE, "minimum dihedral target %g: it must be in (0, 70] degrees "
+                    "(the regular tet's angle is 70.53)", opt->quality_min_dihedral);
+  if (opt->quality_min_dihedral != 0 && opt->optimize <= 0)
+    return tr_error(TR_ERR_USAGE, "a minimum dihedral target (--quality R/D) is worked "
+                    "towards by sliver removal, which --optimize 0 turns off");
   if (opt->quality_ratio != 0 && !(opt->quality_ratio >= 1 && isfinite(opt->quality_ratio)))
     return tr_error(TR_ERR_USAGE, "radius-edge bound %g: it must be at least 1 (the regular "
                     "tet has 0.61; bounds below 1 cannot be met in general)",

@@ -133,6 +133,8 @@ tr_status tr_sliver_remove(struct tr_mesh *m, const tr_subfaces *sub, const uint
     return TR_OK;
   tr_sliver_ctx c;
   tr_status s = tr_sliver_ctx_init(&c, m, sub, vkind, npoints, par->bound);
+  if (par->insert_bound > 0)
+    c.insert_bound = par->insert_bound;
   c.keep = par->keep;
   uint64_t added = 0;
   for (int r = 0; s == TR_OK && r < par->rounds; r++) {

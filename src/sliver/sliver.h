@@ -63,6 +63,8 @@ typedef struct tr_sliver_params {
   int level;     /* TR_SLIVER_FLIPS, TR_SLIVER_SMOOTH or TR_SLIVER_INSERT */
   double bound;  /* degrees: tets with a smaller dihedral angle are worked on */
   int rounds;    /* rounds of (flip pass, smoothing pass) */
+  double insert_bound; /* degrees: tets under it get new points (level 3); 0: the default
+                          TR_SLIVER_INSERT_BOUND */
   tr_sliver_bounds keep;
 } tr_sliver_params;
 

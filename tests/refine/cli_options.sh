@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The refinement options of `tetrec mesh`: --quality R bounds the radius-edge ratio, a dihedral
-# target is refused as not supported (exit 11), bad bounds and the options on other
+# target D is worked towards by sliver removal (out of (0, 70] or with -O 0: exit 1; a
+# warning when tets stay under it), bad bounds and the options on other
 # commands are usage errors (exit 1), the point budget stops a run with exit 8 and a
 # message, and --stats carries the quality rows. Every mesh written is checked.
 # usage: cli_options.sh TETREC SURFACE WORKDIR
@@ -23,7 +24,11 @@ grep -q '"points_added_for_quality"' "$W/a.json" && grep -q '"min_dihedral"' "$W
   grep -q '"radius_edge_histogram": \[' "$W/a.json" || { echo "FAIL: stats rows"; fails=$((fails + 1)); }
 expect 0 "" -- mesh "$S" --quality 1.2 -a 0.05 -o "$W/b.node" --exact -q
 expect 0 "conforms exactly.*volume equals" -- check "$S" "$W/b.node"
-expect 11 "not supported yet" -- mesh "$S" --quality 1.2/15 -o "$W/c.node"
+expect 0 "" -- mesh "$S" --quality 1.2/15 -a 0.05 -o "$W/d.node" --exact --stats "$W/d.json"
+expect 0 "conforms exactly" -- check "$S" "$W/d.node"
+expect 0 "keep a dihedral angle under the target 70 degrees" -- mesh "$S" --quality 1.2/70 -o "$W/e.node"
+expect 1 "in \(0, 70\] degrees" -- mesh "$S" --quality 1.2/75 -o "$W/c.node"
+expect 1 "which .-optimize 0 turns off" -- mesh "$S" --quality 1.2/15 -O 0 -o "$W/c.node"
 expect 1 "at least 1" -- mesh "$S" --quality 0.5 -o "$W/c.node"
 expect 1 "positive volume" -- mesh "$S" -a -1 -o "$W/c.node"
 expect 1 "does not apply to 'delaunay'" -- delaunay "$S" --quality 1.414

@@ -78,7 +78,7 @@ static void a_sliver_is_removed_by_a_flip(void)
   double before = min_dihedral(m);
   EXPECT(before < 5, "the sliver's smallest angle %g is not small", before);
   tr_subfaces none = {0, NULL, NULL};
-  tr_sliver_params par = {TR_SLIVER_FLIPS, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, {0, 0, NULL}};
+  tr_sliver_params par = {TR_SLIVER_FLIPS, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL}};
   tr_sliver_stats st;
   tr_status s = tr_sliver_remove(m, &none, NULL, 8, &par, &st);
   EXPECT(s == TR_OK, "sliver stage: %s", tr_last_error());
@@ -109,7 +109,7 @@ static void constraints_are_kept_and_their_vertices_stay(void)
   double x0[36];
   memcpy(x0, m->xyz, sizeof x0);
   double before = min_dihedral(m);
-  tr_sliver_params par = {TR_SLIVER_SMOOTH, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, {0, 0, NULL}};
+  tr_sliver_params par = {TR_SLIVER_SMOOTH, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL}};
   tr_sliver_stats st;
   tr_status s = tr_sliver_remove(m, &sub, vkind, 8, &par, &st);
   EXPECT(s == TR_OK, "sliver stage: %s", tr_last_error());
