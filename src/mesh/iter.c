@@ -110,29 +110,42 @@ tr_status tr_ball_find_ex(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
   return s;
 }
 
-static uint32_t tri_hash(const uint32_t k[3], uint32_t mask)
-{
-  return (uint32_t)(tr_hash3(k) >> 32) & mask;
-}
+/* The triangles by sorted vertex triple: open addressing, the key held in the slot so a
+ * probe reads one cache line (re-reading and sorting tris on every probe was most of the
+ * time), and a bit table of 16 bits per triangle in front of it: most faces of the mesh
+ * are no triangle, and the bits, unlike the slots, stay in cache. A fixed hash: no run
+ * depends on addresses. */
+typedef struct {
+  uint32_t k[3], i; /* i == TR_NONE: empty */
+} face_slot;
 
 tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                              uint32_t *tet)
 {
-  uint32_t cap = 16;
+  uint32_t cap = 16, nb = 64;
   while (cap < 2 * (uint64_t)n)
     cap *= 2;
-  /* slot -> triangle index; the key is re-read from tris (sorted on the fly) */
-  uint32_t *slot = malloc(sizeof *slot * cap), mask = cap - 1;
-  if (!slot)
+  while (nb < 16 * (uint64_t)n)
+    nb *= 2;
+  uint32_t mask = cap - 1, bmask = nb - 1;
+  face_slot *slot = malloc(sizeof *slot * cap);
+  uint64_t *bits = calloc(nb / 64, sizeof *bits);
+  if (!slot || !bits) {
+    free(slot);
+    free(bits);
     return tr_error(TR_ERR_NOMEM, "out of memory for %u face keys", n);
+  }
   memset(slot, 0xff, sizeof *slot * cap);
   for (uint32_t i = 0; i < n; i++) {
     uint32_t k[3] = {tris[3 * (size_t)i], tris[3 * (size_t)i + 1], tris[3 * (size_t)i + 2]};
     tr_sort3(k);
-    uint32_t h = tri_hash(k, mask);
-    while (slot[h] != TR_NONE)
+    uint64_t hk = tr_hash3(k);
+    uint32_t h = (uint32_t)(hk >> 32) & mask, b = (uint32_t)hk & bmask;
+    while (slot[h].i != TR_NONE)
       h = (h + 1) & mask;
-    slot[h] = i;
+    memcpy(slot[h].k, k, sizeof k);
+    slot[h].i = i;
+    bits[b >> 6] |= 1ull << (b & 63);
     tet[i] = TR_NONE;
   }
   for (uint32_t t = 0; t < m->nt; t++) {
@@ -140,18 +153,25 @@ tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint
       continue;
     const uint32_t *tv = m->tv + 4 * (size_t)t;
     for (int f = 0; f < 4; f++) {
+      /* A face between two real tets is looked up from the smaller one only: that is the
+       * first tet in slot order to have it, the one the answer names. */
+      uint32_t o = TR_NEIG(m, t, f);
+      if (o != TR_NONE && o < t && tr_tet_is_real(m, o))
+        continue;
       uint32_t k[3] = {tv[tr_face_vtx[f][0]], tv[tr_face_vtx[f][1]], tv[tr_face_vtx[f][2]]};
       tr_sort3(k);
-      for (uint32_t h = tri_hash(k, mask); slot[h] != TR_NONE; h = (h + 1) & mask) {
-        uint32_t i = slot[h], w[3] = {tris[3 * (size_t)i], tris[3 * (size_t)i + 1],
-                                      tris[3 * (size_t)i + 2]};
-        tr_sort3(w);
-        if (w[0] == k[0] && w[1] == k[1] && w[2] == k[2] && tet[i] == TR_NONE)
-          tet[i] = t; /* the first tet in slot order: deterministic */
-      }
+      uint64_t hk = tr_hash3(k);
+      uint32_t b = (uint32_t)hk & bmask;
+      if (!(bits[b >> 6] & (1ull << (b & 63))))
+        continue;
+      for (uint32_t h = (uint32_t)(hk >> 32) & mask; slot[h].i != TR_NONE; h = (h + 1) & mask)
+        if (slot[h].k[0] == k[0] && slot[h].k[1] == k[1] && slot[h].k[2] == k[2] &&
+            tet[slot[h].i] == TR_NONE)
+          tet[slot[h].i] = t; /* the first tet in slot order: deterministic */
     }
   }
   free(slot);
+  free(bits);
   return TR_OK;
 }
 
