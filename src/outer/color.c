@@ -126,11 +126,18 @@ static int less4(const uint32_t *a, const uint32_t *b)
 tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
                          const uint8_t *sides, uint32_t *nregions)
 {
+  return tr_outer_color_ex(m, sub, keep_hull, sides, nregions, NULL);
+}
+
+tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
+                            const uint8_t *sides, uint32_t *nregions, uint32_t *subtet)
+{
   *nregions = 0;
   uint32_t ns = sub->n, nt = m->nt;
   fkey *keys = malloc(sizeof *keys * (ns ? ns : 1));
   uint8_t *cmask = calloc(nt ? nt : 1, 1);   /* bit k: face k is a constraint */
-  uint32_t *seen = calloc(ns ? ns : 1, sizeof *seen);
+  /* seen[j]: the first real tet in slot order with sub-face j as a face, TR_NONE: none */
+  uint32_t *seen = subtet ? subtet : malloc(sizeof *seen * (ns ? ns : 1));
   uint32_t *comp = malloc(sizeof *comp * (nt ? nt : 1));
   uint32_t *queue = malloc(sizeof *queue * (nt ? nt : 1));
   uint8_t *cflag = NULL;  /* per component: 1 ghost, 2 inner vote, 4 outer vote */
@@ -142,6 +149,8 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
     st = tr_error(TR_ERR_NOMEM, "out of memory coloring %u tets", nt);
     goto done;
   }
+  for (uint32_t j = 0; j < ns; j++)
+    seen[j] = TR_NONE;
   for (uint32_t j = 0; j < ns; j++) {
     memcpy(keys[j].k, sub->v + 3 * (size_t)j, 3 * sizeof(uint32_t));
     tr_sort3(keys[j].k);
@@ -169,14 +178,15 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
       /* Duplicated sub-faces (the same face listed twice) all mark the same face. */
       for (const fkey *g = f; g < keys + ns && g->k[0] == s[0] && g->k[1] == s[1] &&
                               g->k[2] == s[2]; g++)
-        seen[g->id] = 1;
+        if (seen[g->id] == TR_NONE) /* a face is looked up once, from its smaller tet */
+          seen[g->id] = t;
       cmask[t] |= (uint8_t)(1u << k);
       if (o != TR_NONE)
         cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
     }
   }
   for (uint32_t j = 0; j < ns; j++)
-    if (!seen[j]) {
+    if (seen[j] == TR_NONE) {
       st = tr_error(TR_ERR_INTERNAL,
                     "outer removal: sub-face %u (%u, %u, %u) of input triangle %u is not a "
                     "face of the mesh",
@@ -295,7 +305,8 @@ done:
   free(fh.bits);
   free(keys);
   free(cmask);
-  free(seen);
+  if (seen != subtet)
+    free(seen);
   free(comp);
   free(queue);
   free(cflag);
