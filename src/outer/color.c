@@ -245,25 +245,40 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
     sort4(v);
     if (less4(v, ck[c].v))
       memcpy(ck[c].v, v, sizeof v);
-    for (int k = 0; k < 4; k++) {
-      if (!(cmask[t] & (1u << k)) || (!sides && (cflag[c] & 2)))
+  }
+  /* The FLAGE votes, sub-face by sub-face (the first of each run of duplicates): its two
+   * tets are the one found above and the one across it, so no tet face is looked up
+   * again. The votes are OR-ed per component, in any order. */
+  for (uint32_t j = 0; j < ns; j++) {
+    if (j && memcmp(keys[j].k, keys[j - 1].k, sizeof keys[j].k) == 0)
+      continue;
+    uint32_t id = keys[j].id, t = seen[id];
+    const uint32_t *a = sub->v + 3 * (size_t)id;
+    int k = tr_fcode(m, t, a[0], a[1], a[2]);
+    if (k < 0) {
+      st = tr_error(TR_ERR_INTERNAL, "outer removal: tet %u lost sub-face %u", t, id);
+      goto done;
+    }
+    uint32_t side[2] = {t, TR_NEIG(m, t, k)};
+    int face[2] = {k, side[1] == TR_NONE ? 0 : (int)(m->tn[4 * (size_t)t + (size_t)k] & 3)};
+    for (int i = 0; i < 2; i++) {
+      uint32_t w = side[i];
+      if (w == TR_NONE || !tr_tet_is_real(m, w))
         continue;
-      uint32_t s[3];
-      for (int i = 0; i < 3; i++)
-        s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
-      tr_sort3(s);
-      const fkey *f = find_face(&fh, s);
-      const uint32_t *a = sub->v + 3 * (size_t)f->id;
+      uint32_t c = comp[w];
+      if (!sides && (cflag[c] & 2))
+        continue;
       /* FLAGE from the NCodes: the sub-face is ordered like its (outward) triangle. */
-      int e = tr_flage(tr_ncode(m, t, a[0]), tr_ncode(m, t, a[1]), tr_ncode(m, t, a[2]), k);
+      int e = tr_flage(tr_ncode(m, w, a[0]), tr_ncode(m, w, a[1]), tr_ncode(m, w, a[2]),
+                       face[i]);
       if (e < 0) {
-        st = tr_error(TR_ERR_INTERNAL, "outer removal: FLAGE undefined at tet %u face %d", t,
-                      k);
+        st = tr_error(TR_ERR_INTERNAL, "outer removal: FLAGE undefined at tet %u face %d", w,
+                      face[i]);
         goto done;
       }
       if (sides) {
-        /* FLAGE INNER: t is on the side opposite the triangle's right-hand normal (bit 1) */
-        uint8_t sd = sides[sub->tri[f->id]];
+        /* FLAGE INNER: w is on the side opposite the triangle's right-hand normal (bit 1) */
+        uint8_t sd = sides[sub->tri[id]];
         cflag[c] |= ((e == TR_INNER) ? (sd & 2) : (sd & 1)) ? 2 : 4;
       } else if (e == TR_INNER) {
         cflag[c] |= 2;
