@@ -317,6 +317,7 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
     ncell *= g.dim[d];
   }
   uint32_t *start = calloc(ncell + 1, sizeof *start), *list = NULL;
+  double *cb = NULL; /* one cell's boxes: lo[3] hi[3] per entry */
   tr_status st = TR_OK;
   if (!start)
     return tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
@@ -355,26 +356,42 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
   for (uint64_t c = ncell; c > 0; c--) /* back to starts */
     start[c] = start[c - 1];
   start[0] = 0;
+  /* Each cell's boxes copied side by side before its pairs are tested: k reads from the
+   * scattered box array per cell instead of k^2 (those reads were most of the time). */
+  uint32_t kmax = 0;
+  for (uint64_t c = 0; c < ncell; c++)
+    kmax = start[c + 1] - start[c] > kmax ? start[c + 1] - start[c] : kmax;
+  if (!(cb = malloc(sizeof *cb * 6 * (size_t)(kmax ? kmax : 1)))) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
+    goto done;
+  }
   for (uint64_t c = 0; c < ncell; c++) {
     uint32_t cx = (uint32_t)(c % g.dim[0]), cy = (uint32_t)(c / g.dim[0] % g.dim[1]),
-             cz = (uint32_t)(c / g.dim[0] / g.dim[1]);
-    for (uint32_t a = start[c]; a < start[c + 1]; a++)
-      for (uint32_t b = a + 1; b < start[c + 1]; b++) {
-        uint32_t i = list[a], j = list[b];
-        if (!boxes_meet(s, i, j))
-          continue;
+             cz = (uint32_t)(c / g.dim[0] / g.dim[1]), k = start[c + 1] - start[c];
+    const uint32_t *l = list + start[c];
+    for (uint32_t a = 0; a < k; a++)
+      for (int d = 0; d < 3; d++) {
+        cb[6 * (size_t)a + d] = s->lo[3 * (size_t)l[a] + d];
+        cb[6 * (size_t)a + 3 + d] = s->hi[3 * (size_t)l[a] + d];
+      }
+    for (uint32_t a = 0; a < k; a++)
+      for (uint32_t b = a + 1; b < k; b++) {
+        const double *bi = cb + 6 * (size_t)a, *bj = cb + 6 * (size_t)b;
+        if (bj[0] > bi[3] || bi[0] > bj[3] || bj[1] > bi[4] || bi[1] > bj[4] ||
+            bj[2] > bi[5] || bi[2] > bj[5])
+          continue; /* boxes_meet */
         /* the pair belongs to the cell of the low corner of the boxes' intersection */
-        const double *li = s->lo + 3 * (size_t)i, *lj = s->lo + 3 * (size_t)j;
-        if (cell_of(&g, 0, li[0] > lj[0] ? li[0] : lj[0]) != cx ||
-            cell_of(&g, 1, li[1] > lj[1] ? li[1] : lj[1]) != cy ||
-            cell_of(&g, 2, li[2] > lj[2] ? li[2] : lj[2]) != cz)
+        if (cell_of(&g, 0, bi[0] > bj[0] ? bi[0] : bj[0]) != cx ||
+            cell_of(&g, 1, bi[1] > bj[1] ? bi[1] : bj[1]) != cy ||
+            cell_of(&g, 2, bi[2] > bj[2] ? bi[2] : bj[2]) != cz)
           continue;
-        consider(s, i, j);
+        consider(s, l[a], l[b]);
       }
   }
 done:
   free(start);
   free(list);
+  free(cb);
   return st;
 }
 

@@ -130,6 +130,11 @@ tr_status tr_write_mesh_view(const struct tr_mesh_view *m, const char *path, int
  * fprintf("%lld ...") writes, without its format parsing, which was most of the time of
  * writing the element lists. */
 void tr_io_put_ints(FILE *f, const int64_t *x, int n);
+/* x as printf("%.17g") writes it, byte for byte (so it reads back to the same double),
+ * into out (at least 32 bytes), NUL-terminated; returns the length. */
+int tr_io_fmt_double(char *out, double x);
+/* "lead x y z" then tail (at most 16 bytes; lead < 0: none): the doubles as %.17g. */
+void tr_io_put_xyz(FILE *f, int64_t lead, const double x[3], const char *tail);
 
 /* 1 iff path ends with ext (ASCII case-insensitive, ext includes the dot). */
 int tr_io_has_ext(const char *path, const char *ext);

@@ -15,8 +15,7 @@ tr_status tr_write_medit(const struct tr_mesh_view *m, const char *path)
   fprintf(f, "MeshVersionFormatted 2\nDimension 3\n");
   fprintf(f, "Vertices\n%u\n", m->nverts);
   for (uint32_t i = 0; i < m->nverts; i++)
-    fprintf(f, "%.17g %.17g %.17g 0\n", m->xyz[3 * (size_t)i], m->xyz[3 * (size_t)i + 1],
-            m->xyz[3 * (size_t)i + 2]);
+    tr_io_put_xyz(f, -1, m->xyz + 3 * (size_t)i, " 0\n");
   if (m->ntets) {
     fprintf(f, "Tetrahedra\n%u\n", m->ntets);
     for (uint32_t t = 0; t < m->ntets; t++) {

@@ -87,7 +87,7 @@ static tr_status group(const int32_t *val, uint32_t n, int32_t dflt, struct grou
 /* Gmsh element types of the simplices of dimension 1, 2, 3: line, triangle, tetrahedron. */
 static const int type_of[4] = {15, 1, 2, 4};
 
-static void put_xyz(FILE *f, const double *x) { fprintf(f, "%.17g %.17g %.17g\n", x[0], x[1], x[2]); }
+static void put_xyz(FILE *f, const double *x) { tr_io_put_xyz(f, -1, x, "\n"); }
 
 static void write41(FILE *f, const struct tr_mesh_view *m, const struct tr_edge_view *ev,
                     const struct groups *g3)

@@ -49,6 +49,10 @@ tr_status tr_write_tetgen(const struct tr_mesh_view *m, const char *base, int ex
   fprintf(f, "%u 3 0 0\n", m->nverts);
   for (uint32_t i = 0; i < m->nverts; i++) {
     const tr_qpoint *q = exact && m->exact ? m->exact[i] : NULL;
+    if (!q) {
+      tr_io_put_xyz(f, (int64_t)i + 1, m->xyz + 3 * (size_t)i, "\n");
+      continue;
+    }
     fprintf(f, "%u", i + 1);
     for (int k = 0; k < 3; k++) {
       if (q) {

@@ -30,8 +30,7 @@ tr_status tr_write_vtk_edges(const struct tr_mesh_view *m, const struct tr_edge_
   fprintf(f, "# vtk DataFile Version 3.0\ntetrec mesh\nASCII\nDATASET UNSTRUCTURED_GRID\n"
              "POINTS %u double\n", m->nverts);
   for (uint32_t i = 0; i < m->nverts; i++)
-    fprintf(f, "%.17g %.17g %.17g\n", m->xyz[3 * (size_t)i], m->xyz[3 * (size_t)i + 1],
-            m->xyz[3 * (size_t)i + 2]);
+    tr_io_put_xyz(f, -1, m->xyz + 3 * (size_t)i, "\n");
   uint64_t size = (uint64_t)(per1 + 1) * n1 + (uint64_t)(per2 + 1) * n2;
   fprintf(f, "CELLS %u %llu\n", nc, (unsigned long long)size);
   for (uint32_t c = 0; c < nc; c++) {

@@ -24,8 +24,7 @@ tr_status tr_write_vtu(const struct tr_mesh_view *m, const char *path)
              "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
           m->nverts, nc);
   for (uint32_t i = 0; i < m->nverts; i++)
-    fprintf(f, "%.17g %.17g %.17g\n", m->xyz[3 * (size_t)i], m->xyz[3 * (size_t)i + 1],
-            m->xyz[3 * (size_t)i + 2]);
+    tr_io_put_xyz(f, -1, m->xyz + 3 * (size_t)i, "\n");
   fprintf(f, "        </DataArray>\n      </Points>\n      <Cells>\n"
              "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
   for (uint32_t c = 0; c < nt; c++) {

@@ -126,11 +126,18 @@ static int less4(const uint32_t *a, const uint32_t *b)
 tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
                          const uint8_t *sides, uint32_t *nregions)
 {
+  return tr_outer_color_ex(m, sub, keep_hull, sides, nregions, NULL);
+}
+
+tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
+                            const uint8_t *sides, uint32_t *nregions, uint32_t *subtet)
+{
   *nregions = 0;
   uint32_t ns = sub->n, nt = m->nt;
   fkey *keys = malloc(sizeof *keys * (ns ? ns : 1));
   uint8_t *cmask = calloc(nt ? nt : 1, 1);   /* bit k: face k is a constraint */
-  uint32_t *seen = calloc(ns ? ns : 1, sizeof *seen);
+  /* seen[j]: the first real tet in slot order with sub-face j as a face, TR_NONE: none */
+  uint32_t *seen = subtet ? subtet : malloc(sizeof *seen * (ns ? ns : 1));
   uint32_t *comp = malloc(sizeof *comp * (nt ? nt : 1));
   uint32_t *queue = malloc(sizeof *queue * (nt ? nt : 1));
   uint8_t *cflag = NULL;  /* per component: 1 ghost, 2 inner vote, 4 outer vote */
@@ -142,6 +149,8 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
     st = tr_error(TR_ERR_NOMEM, "out of memory coloring %u tets", nt);
     goto done;
   }
+  for (uint32_t j = 0; j < ns; j++)
+    seen[j] = TR_NONE;
   for (uint32_t j = 0; j < ns; j++) {
     memcpy(keys[j].k, sub->v + 3 * (size_t)j, 3 * sizeof(uint32_t));
     tr_sort3(keys[j].k);
@@ -169,14 +178,15 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
       /* Duplicated sub-faces (the same face listed twice) all mark the same face. */
       for (const fkey *g = f; g < keys + ns && g->k[0] == s[0] && g->k[1] == s[1] &&
                               g->k[2] == s[2]; g++)
-        seen[g->id] = 1;
+        if (seen[g->id] == TR_NONE) /* a face is looked up once, from its smaller tet */
+          seen[g->id] = t;
       cmask[t] |= (uint8_t)(1u << k);
       if (o != TR_NONE)
         cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
     }
   }
   for (uint32_t j = 0; j < ns; j++)
-    if (!seen[j]) {
+    if (seen[j] == TR_NONE) {
       st = tr_error(TR_ERR_INTERNAL,
                     "outer removal: sub-face %u (%u, %u, %u) of input triangle %u is not a "
                     "face of the mesh",
@@ -235,25 +245,40 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
     sort4(v);
     if (less4(v, ck[c].v))
       memcpy(ck[c].v, v, sizeof v);
-    for (int k = 0; k < 4; k++) {
-      if (!(cmask[t] & (1u << k)) || (!sides && (cflag[c] & 2)))
+  }
+  /* The FLAGE votes, sub-face by sub-face (the first of each run of duplicates): its two
+   * tets are the one found above and the one across it, so no tet face is looked up
+   * again. The votes are OR-ed per component, in any order. */
+  for (uint32_t j = 0; j < ns; j++) {
+    if (j && memcmp(keys[j].k, keys[j - 1].k, sizeof keys[j].k) == 0)
+      continue;
+    uint32_t id = keys[j].id, t = seen[id];
+    const uint32_t *a = sub->v + 3 * (size_t)id;
+    int k = tr_fcode(m, t, a[0], a[1], a[2]);
+    if (k < 0) {
+      st = tr_error(TR_ERR_INTERNAL, "outer removal: tet %u lost sub-face %u", t, id);
+      goto done;
+    }
+    uint32_t side[2] = {t, TR_NEIG(m, t, k)};
+    int face[2] = {k, side[1] == TR_NONE ? 0 : (int)(m->tn[4 * (size_t)t + (size_t)k] & 3)};
+    for (int i = 0; i < 2; i++) {
+      uint32_t w = side[i];
+      if (w == TR_NONE || !tr_tet_is_real(m, w))
         continue;
-      uint32_t s[3];
-      for (int i = 0; i < 3; i++)
-        s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
-      tr_sort3(s);
-      const fkey *f = find_face(&fh, s);
-      const uint32_t *a = sub->v + 3 * (size_t)f->id;
+      uint32_t c = comp[w];
+      if (!sides && (cflag[c] & 2))
+        continue;
       /* FLAGE from the NCodes: the sub-face is ordered like its (outward) triangle. */
-      int e = tr_flage(tr_ncode(m, t, a[0]), tr_ncode(m, t, a[1]), tr_ncode(m, t, a[2]), k);
+      int e = tr_flage(tr_ncode(m, w, a[0]), tr_ncode(m, w, a[1]), tr_ncode(m, w, a[2]),
+                       face[i]);
       if (e < 0) {
-        st = tr_error(TR_ERR_INTERNAL, "outer removal: FLAGE undefined at tet %u face %d", t,
-                      k);
+        st = tr_error(TR_ERR_INTERNAL, "outer removal: FLAGE undefined at tet %u face %d", w,
+                      face[i]);
         goto done;
       }
       if (sides) {
-        /* FLAGE INNER: t is on the side opposite the triangle's right-hand normal (bit 1) */
-        uint8_t sd = sides[sub->tri[f->id]];
+        /* FLAGE INNER: w is on the side opposite the triangle's right-hand normal (bit 1) */
+        uint8_t sd = sides[sub->tri[id]];
         cflag[c] |= ((e == TR_INNER) ? (sd & 2) : (sd & 1)) ? 2 : 4;
       } else if (e == TR_INNER) {
         cflag[c] |= 2;
@@ -295,7 +320,8 @@ done:
   free(fh.bits);
   free(keys);
   free(cmask);
-  free(seen);
+  if (seen != subtet)
+    free(seen);
   free(comp);
   free(queue);
   free(cflag);

@@ -34,5 +34,10 @@
  * TR_ERR_INTERNAL if a sub-face is not a face of the mesh. */
 tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
                          const uint8_t *sides, uint32_t *nregions);
+/* The same, and subtet[j] (sub->n entries, may be NULL) = the first real tet in slot
+ * order that has sub-face j as a face, what tr_mesh_find_faces would answer: compaction
+ * starts from it (tr_compact_in) instead of a second pass over every tet. */
+tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
+                            const uint8_t *sides, uint32_t *nregions, uint32_t *subtet);
 
 #endif

@@ -9,6 +9,29 @@ static int keep(const struct tr_mesh *m, uint32_t t)
   return tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER);
 }
 
+/* tet[f] = the first real tet in slot order with sub-face f, from the candidates: when
+ * candidate t still has the face, the face's only other tet is its neighbour u across it,
+ * so the answer is the smaller of the real ones among t and u, whatever changed since.
+ * 0 (tet unusable) if there are none or one no longer has its face. */
+static int from_candidates(const struct tr_mesh *m, const tr_subfaces *sub,
+                           const uint32_t *cand, uint32_t ncand, uint32_t *tet)
+{
+  if (!cand || ncand != sub->n)
+    return 0;
+  for (uint32_t f = 0; f < sub->n; f++) {
+    uint32_t t = cand[f];
+    const uint32_t *v = sub->v + 3 * (size_t)f;
+    if (t >= m->nt || !tr_tet_is_real(m, t))
+      return 0;
+    int k = tr_fcode(m, t, v[0], v[1], v[2]);
+    if (k < 0)
+      return 0;
+    uint32_t u = TR_NEIG(m, t, k);
+    tet[f] = u != TR_NONE && u < t && tr_tet_is_real(m, u) ? u : t;
+  }
+  return 1;
+}
+
 /* o->attrs from in, renumbered by vmap: the sub-faces that are faces of a kept tet (a
  * facet between two cavities has none), origins, input edges. */
 static tr_status attach(struct tr_mesh *o, const struct tr_mesh *m, const uint32_t *vmap,
@@ -23,7 +46,9 @@ static tr_status attach(struct tr_mesh *o, const struct tr_mesh *m, const uint32
   uint32_t *tet = malloc(sizeof *tet * (n ? n : 1));
   if (!tet)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u output faces", n);
-  tr_status st = n ? tr_mesh_find_faces(m, sub->v, n, tet) : TR_OK;
+  tr_status st = TR_OK;
+  if (n && !from_candidates(m, sub, in->subtet, in->nsubtet, tet))
+    st = tr_mesh_find_faces(m, sub->v, n, tet);
   for (uint32_t f = 0; f < n && st == TR_OK; f++) {
     uint32_t t = tet[f];
     /* In no tet: the suppression stage (src/suppress) frees the outer tets, so a facet

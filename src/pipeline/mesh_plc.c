@@ -149,7 +149,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   struct tr_mesh *m = NULL, *res = NULL;
   uint32_t *edges = NULL, ne = 0, nopen = 0, nmulti = 0, nreg = 0;
   uint8_t *sides = NULL, *vkind = NULL;
-  uint32_t *vindex = NULL;
+  uint32_t *vindex = NULL, *subtet = NULL, nsubtet = 0;
   tr_subfaces sub;
   memset(&sub, 0, sizeof sub);
   double secs[2];
@@ -231,8 +231,12 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     else
       st = tr_input_side_domains(p, sides);
   }
-  if (st == TR_OK)
-    st = tr_outer_color(m, &sub, keep_hull, sides, &nreg);
+  if (st == TR_OK && !(subtet = malloc(sizeof *subtet * (sub.n ? sub.n : 1))))
+    st = tr_error(TR_ERR_NOMEM, "out of memory for %u sub-face tets", sub.n);
+  if (st == TR_OK) {
+    st = tr_outer_color_ex(m, &sub, keep_hull, sides, &nreg, subtet);
+    nsubtet = sub.n;
+  }
   if (st == TR_OK) /* hole and region points: their cells emptied or named */
     st = tr_outer_points(m, p, opt.verbose, &nreg);
   free(sides);
@@ -291,7 +295,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     fprintf(stderr, "tetrec: %llu flips took away tets flat in doubles\n",
             (unsigned long long)stats->rounding_flips);
   if (st == TR_OK) {
-    tr_compact_in cin = {&sub, p->tri_marker, vkind, vindex, edges, ne};
+    tr_compact_in cin = {&sub, p->tri_marker, vkind, vindex, edges, ne, subtet, nsubtet};
     st = tr_pipeline_compact(m, &cin, &res);
   }
   if (st == TR_OK && (flags & TR_PIPE_KEEP_EXACT)) {
@@ -353,6 +357,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   free(edges);
   free(vkind);
   free(vindex);
+  free(subtet);
   tr_mesh_destroy(m);
   stats->total_seconds = tr_pipeline_now() - t0;
   struct rusage ru;

@@ -85,6 +85,11 @@ typedef struct tr_compact_in {
   const uint32_t *vindex;
   const uint32_t *edges;
   uint32_t nedges;
+  /* NULL, or nsubtet candidates: subtet[f] a tet that had sub-face f when the outer
+   * removal ran (tr_outer_color_ex); each is checked, and the tets are searched again
+   * when one no longer has its face or sub changed size */
+  const uint32_t *subtet;
+  uint32_t nsubtet;
 } tr_compact_in;
 /* A new store holding the non-outer real tets of m, vertices renumbered densely in
  * increasing old id (input points first, Steiner points in creation order), tets in slot

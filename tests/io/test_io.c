@@ -827,6 +827,62 @@ static void t_edge_sort(void)
   }
 }
 
+/* tr_io_fmt_double against the C library's %.17g, byte for byte, and strtod of its text
+ * against the double: random bit patterns, random magnitudes, short decimals as models
+ * have them, neighbours of powers of ten (where rounding carries into a new digit), and
+ * the exponent ends of the 128-bit path and beyond. */
+static uint64_t fd_rng = 0x9e3779b97f4a7c15ull;
+static uint64_t fd_next(void)
+{
+  fd_rng ^= fd_rng << 13;
+  fd_rng ^= fd_rng >> 7;
+  fd_rng ^= fd_rng << 17;
+  return fd_rng;
+}
+
+static void fd_check(double x)
+{
+  char a[40], b[40];
+  int n = tr_io_fmt_double(a, x);
+  snprintf(b, sizeof b, "%.17g", x);
+  EXPECT(strcmp(a, b) == 0 && n == (int)strlen(b), "%a: wrote %s, %%.17g is %s", x, a, b);
+  EXPECT(strtod(a, NULL) == x && signbit(strtod(a, NULL)) == signbit(x),
+         "%a: %s reads back as %a", x, a, strtod(a, NULL));
+}
+
+static void t_fmt_double(void)
+{
+  const double fixed[] = {0.0, -0.0, 1, -1, 0.1, 0.5, 1e-5, 1e-6, 1e-7, 9.9999999999999995e-7,
+                          1e16, 1e17, 123456789012345678.0, 0x1p52, 0x1p53, 0x1p-1074,
+                          1.7976931348623157e308, 2.2250738585072014e-308, 100, 1234.5};
+  for (size_t i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {
+    fd_check(fixed[i]);
+    fd_check(-fixed[i]);
+  }
+  for (int i = 0; i < 400000; i++) {
+    uint64_t r = fd_next();
+    double x;
+    switch (i % 4) {
+    case 0:
+      memcpy(&x, &r, sizeof x);
+      if (!isfinite(x))
+        continue;
+      break;
+    case 1:
+      x = ldexp((double)(r >> 11), (int)(fd_next() % 90) - 113);
+      break;
+    case 2:
+      x = (double)(int64_t)(r % 2000001 - 1000000) / pow(10, (double)(fd_next() % 12));
+      break;
+    default:
+      x = nextafter(pow(10, (double)((int)(fd_next() % 44) - 14)), (r & 1) ? 0 : INFINITY);
+      if (r & 2)
+        x = -x;
+    }
+    fd_check(x);
+  }
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 4) {
@@ -846,7 +902,8 @@ int main(int argc, char **argv)
                {"repairs", t_repairs},           {"selfint", t_selfint},
                {"selfint_broad", t_selfint_broad}, {"edge_sort", t_edge_sort},
                {"selfint_coplanar", t_selfint_coplanar},
-               {"cavity", t_cavity},             {"polygon_random", t_polygon_random}};
+               {"cavity", t_cavity},             {"polygon_random", t_polygon_random},
+               {"fmt_double", t_fmt_double}};
   for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++)
     if (!strcmp(argv[1], tests[i].name)) {
       tests[i].fn();
