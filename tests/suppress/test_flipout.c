@@ -14,38 +14,8 @@
 #include "mesh/check.h"
 #include "suppress/suppress_int.h"
 
-#include "../pipeline/texpect.h"
+#include "tstar.h"
 
-static int cmp_tet(const void *pa, const void *pb)
-{
-  const uint32_t *a = pa, *b = pb;
-  for (int i = 0; i < 4; i++)
-    if (a[i] != b[i])
-      return a[i] < b[i] ? -1 : 1;
-  return 0;
-}
-
-/* The real tets as sorted vertex lists, in sorted order: the mesh up to slot order. */
-static uint32_t *canon(const struct tr_mesh *m, uint32_t *n)
-{
-  uint32_t *t = NULL;
-  if (tr_mesh_export_tets(m, &t, n) != TR_OK)
-    return NULL;
-  for (uint32_t i = 0; i < *n; i++) {
-    uint32_t *v = t + 4 * (size_t)i;
-    for (int a = 1; a < 4; a++)
-      for (int b = a; b > 0 && v[b - 1] > v[b]; b--) {
-        uint32_t x = v[b];
-        v[b] = v[b - 1];
-        v[b - 1] = x;
-      }
-  }
-  qsort(t, *n, 4 * sizeof *t, cmp_tet);
-  return t;
-}
-
-/* 1 iff some vertex of p's link sees every link face not on it strictly: the cone from
- * that vertex (star.c's full removal) would do without flips. */
 static int cone_exists(struct tr_mesh *m, uint32_t p)
 {
   tr_u32buf ball = {0};
@@ -83,40 +53,11 @@ static int cone_exists(struct tr_mesh *m, uint32_t p)
   return found;
 }
 
-/* n points: 8 corners of a box, then n - 8 points strictly inside it. */
-static double *points(uint32_t n, uint32_t seed)
-{
-  double *x = malloc(sizeof *x * 3 * (size_t)n);
-  if (!x)
-    return NULL;
-  for (uint32_t i = 0; i < 8; i++)
-    for (int k = 0; k < 3; k++)
-      x[3 * i + k] = (i >> k) & 1 ? 64 : 0;
-  uint32_t s = seed;
-  for (uint32_t i = 8; i < n; i++)
-    for (int k = 0; k < 3; k++) {
-      s = s * 1103515245u + 12345u;
-      x[3 * (size_t)i + k] = 1 + (double)((s >> 16) % 63);
-    }
-  return x;
-}
-
 static void remove_all(uint32_t n, uint32_t seed, int dbl)
 {
-  double *x = points(n, seed);
-  struct tr_mesh *m = NULL;
-  EXPECT(x && tr_delaunay_build(x, n, &m) == TR_OK, "delaunay: %s", tr_last_error());
-  if (!m) {
-    free(x);
+  struct tr_mesh *m = mesh_of(n, seed);
+  if (!m)
     return;
-  }
-  /* the inner points play the Steiner points the suppression removes: no duplicate map,
-   * whose rule is that every input point stays in some tet */
-  free(m->dup_map);
-  m->dup_map = NULL;
-  EXPECT(tr_mesh_enable_regions(m) == TR_OK, "regions");
-  for (uint32_t t = 0; t < m->nt; t++)
-    m->region[t] = 7;
   mpq_t vol;
   mpq_init(vol);
   mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
@@ -156,7 +97,6 @@ static void remove_all(uint32_t n, uint32_t seed, int dbl)
   EXPECT(without_cone > 0, "no point needed the flips: a test of nothing");
   mpq_clear(vol);
   tr_mesh_destroy(m);
-  free(x);
 }
 
 int main(int argc, char **argv)
