@@ -37,6 +37,18 @@ static int cmp_u32(const void *a, const void *b)
   return (x > y) - (x < y);
 }
 
+/* Sorts b and drops its repeats (the region and the vertex list are sets, kept sorted
+ * for bsearch). */
+static void sort_unique(tr_u32buf *b)
+{
+  qsort(b->a, b->n, sizeof *b->a, cmp_u32);
+  size_t n = 0;
+  for (size_t i = 0; i < b->n; i++)
+    if (n == 0 || b->a[i] != b->a[n - 1])
+      b->a[n++] = b->a[i];
+  b->n = n;
+}
+
 static uint32_t local_id(const uint32_t *gid, uint32_t n, uint32_t v)
 {
   const uint32_t *r = bsearch(&v, gid, n, sizeof v, cmp_u32);
@@ -80,12 +92,7 @@ static tr_status collect(const struct tr_mesh *m, uint32_t p, fillcav *c)
         TR_CHECK(tr_u32buf_push(&c->bv, m->tv[4 * (size_t)t + tr_face_vtx[k][a]]));
     }
   }
-  qsort(c->gid.a, c->gid.n, sizeof *c->gid.a, cmp_u32);
-  size_t n = 0;
-  for (size_t i = 0; i < c->gid.n; i++)
-    if (n == 0 || c->gid.a[i] != c->gid.a[n - 1])
-      c->gid.a[n++] = c->gid.a[i];
-  c->gid.n = n;
+  sort_unique(&c->gid);
   return TR_OK;
 }
 
@@ -248,13 +255,8 @@ static tr_status expand(struct tr_mesh *m, const sup_ctx *sc, fillcav *c, uint32
   tr_u32buf_free(&tmp);
   if (st != TR_OK || !*ok)
     return st;
-  qsort(c->reg.a, c->reg.n, sizeof *c->reg.a, cmp_u32);
-  size_t n = 0;
-  for (size_t i = 0; i < c->reg.n; i++)
-    if (n == 0 || c->reg.a[i] != c->reg.a[n - 1])
-      c->reg.a[n++] = c->reg.a[i];
-  c->reg.n = n;
-  *ok = n > n0;
+  sort_unique(&c->reg);
+  *ok = c->reg.n > n0;
   return TR_OK;
 }
 
