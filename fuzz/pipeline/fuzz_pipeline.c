@@ -28,6 +28,15 @@
  * when no doubles keep every tet positive (TR_FUZZ_STRICT_ROUNDING=1 makes that a
  * finding too).
  *
+ * Built with TR_FUZZ_QUALITY (the target fuzz_pipeline_quality, issue 17), the first byte
+ * switches quality refinement on (the rest of the bytes are read as above): the radius-
+ * edge bound R in {1.414, 1.6, 2, 3} and sliver removal -O 0..3 (bits 0-3), with bit 4 a
+ * volume bound of 1/40 of the bounding box; the same validators run on the refined
+ * mesh, and with the volume bound every tet's exact volume must be at most it. The point
+ * budget is 500 (a box 2^-20 thin and 96 long needs ~10^15 points for R = 1.414, and the
+ * default budget of ~10^5 would take minutes under the sanitizers): stopping at it with
+ * its message is an expected outcome, any other error is a finding.
+ *
  * TR_FUZZ_DUMP=path writes the generated PLC (.off, .mesh, ...) before meshing, to turn
  * a finding into a regression file; TR_FUZZ_VERBOSE=1 prints one line per input. */
 #include <gmp.h>
@@ -102,6 +111,53 @@ static void add_quad(gen *g, bitrd *r, const uint32_t q[4])
   }
 }
 
+#ifdef TR_FUZZ_QUALITY
+/* the quality byte of this input (see the top comment) */
+static uint32_t quality_sel;
+
+/* Every real tet's exact volume is at most V: 6 V against the determinant. */
+static uint32_t count_over_volume(const tr_mesh *m, double V)
+{
+  mpq_t v6, lim, x, p[4][3];
+  mpq_inits(v6, lim, x, NULL);
+  for (int k = 0; k < 4; k++)
+    for (int i = 0; i < 3; i++)
+      mpq_init(p[k][i]);
+  mpq_set_d(lim, V);
+  mpq_set_ui(x, 6, 1);
+  mpq_mul(lim, lim, x);
+  uint32_t over = 0;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    for (int k = 0; k < 4; k++) {
+      tr_point q = tr_mesh_point(m, m->tv[4 * t + (uint32_t)k]);
+      for (int i = 0; i < 3; i++)
+        tr_point_get_q(&q, i, p[k][i]);
+    }
+    for (int k = 1; k < 4; k++)
+      for (int i = 0; i < 3; i++)
+        mpq_sub(p[k][i], p[k][i], p[0][i]);
+    static const int P[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
+    mpq_set_ui(v6, 0, 1);
+    for (int k = 0; k < 6; k++) {
+      mpq_mul(x, p[1][P[k][0]], p[2][P[k][1]]);
+      mpq_mul(x, x, p[3][P[k][2]]);
+      if (k < 3)
+        mpq_add(v6, v6, x);
+      else
+        mpq_sub(v6, v6, x);
+    }
+    over += mpq_cmp(v6, lim) > 0;
+  }
+  for (int k = 0; k < 4; k++)
+    for (int i = 0; i < 3; i++)
+      mpq_clear(p[k][i]);
+  mpq_clears(v6, lim, x, NULL);
+  return over;
+}
+#endif
+
 static void finding(const char *stage, tr_status st, const char *msg)
 {
   fprintf(stderr, "fuzz_pipeline: FINDING at %s: %s: %s\n", stage, tr_status_name(st),
@@ -126,6 +182,26 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
   tr_options_default(&opt);
   const char *verbose = getenv("TR_FUZZ_VERBOSE");
   opt.verbose = verbose && *verbose >= '2' ? 2 : 0;
+#ifdef TR_FUZZ_QUALITY
+  static const double R[4] = {1.414, 1.6, 2.0, 3.0};
+  opt.quality_ratio = R[quality_sel & 3];
+  opt.optimize = (int)(quality_sel >> 2 & 3);
+  double vmax = 0;
+  if (quality_sel >> 4 & 1) {
+    double lo[3] = {g->xyz[0], g->xyz[1], g->xyz[2]}, hi[3] = {lo[0], lo[1], lo[2]};
+    for (uint32_t i = 1; i < g->np; i++)
+      for (int k = 0; k < 3; k++) {
+        double c = g->xyz[3 * i + (uint32_t)k];
+        lo[k] = c < lo[k] ? c : lo[k];
+        hi[k] = c > hi[k] ? c : hi[k];
+      }
+    vmax = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]) / 40;
+    if (!(vmax > 0) || !isfinite(vmax))
+      vmax = 0;
+    opt.max_volume = vmax;
+  }
+  opt.refine_budget = 500;
+#endif
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
   tr_stats stats = {.size = sizeof stats};
@@ -142,6 +218,14 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
             (unsigned long long)stats.missing_edges, (unsigned long long)stats.missing_facets,
             (unsigned long long)stats.points_added_for_edges,
             (unsigned long long)stats.points_added_for_facets, 1e3 * stats.total_seconds);
+#ifdef TR_FUZZ_QUALITY
+  if (st == TR_ERR_NOMEM && strstr(tr_last_error(), "point budget")) {
+    tr_mesh_destroy(m);
+    tr_plc_destroy(used);
+    tr_plc_destroy(plc);
+    return;
+  }
+#endif
   if (st != TR_OK)
     finding("tr_mesh_plc", st, tr_last_error());
   /* Scrambled orientations can give a cavity mostly facing outward, which makes it an
@@ -175,6 +259,17 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
       finding("tr_check_conformity (generated PLC)", st, tr_last_error());
     mpq_clear(v);
   }
+#ifdef TR_FUZZ_QUALITY
+  if (vmax > 0) {
+    uint32_t over = count_over_volume(m, vmax);
+    if (over) {
+      char msg[160];
+      snprintf(msg, sizeof msg, "%u tets have an exact volume above the bound %.17g", over,
+               vmax);
+      finding("max_volume", TR_ERR_INVALID_MESH, msg);
+    }
+  }
+#endif
   uint32_t flat = TR_NONE;
   uint64_t nflat = tr_round_count_nonpositive(m, &flat);
   const char *strict = getenv("TR_FUZZ_STRICT_ROUNDING");
@@ -480,6 +575,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   if (size == 0 || size > 4096)
     return 0;
   bitrd r = {data, size, 0, 0, 0};
+#ifdef TR_FUZZ_QUALITY
+  quality_sel = bits(&r, 8);
+#endif
   uint32_t b0 = bits(&r, 8);
   if (b0 & 1)
     gen_star(&r, b0);
