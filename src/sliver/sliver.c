@@ -88,6 +88,7 @@ void tr_sliver_ctx_free(tr_sliver_ctx *c)
   free(c->faces);
   free(c->edges);
   free(c->movable);
+  tr_vtmap_free(&c->failed);
   memset(c, 0, sizeof *c);
 }
 

@@ -39,6 +39,7 @@
 
 #include <stdint.h>
 
+#include "core/vtmap.h"
 #include "mesh/mesh.h"
 #include "recover_facets/recover_facets.h"
 
@@ -97,6 +98,8 @@ typedef struct tr_sliver_ctx {
   double bound;
   double insert_bound;     /* insertion: tets with a smaller angle get a point */
   uint64_t point_budget;   /* insertion: points the stage may add */
+  tr_vtmap failed;         /* insertion: tets (sorted vertices) no candidate point opened;
+                              later passes skip them (most stay pinned) */
   tr_sliver_bounds keep;
 } tr_sliver_ctx;
 
