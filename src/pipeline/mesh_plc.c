@@ -269,7 +269,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       tr_sliver_stats ss;
       uint32_t nv1 = m->nv;
       st = tr_sliver_remove(m, &sub, vkind, p->npoints, &sp, &ss);
-      if (st == TR_OK) /* its points are interior */
+      if (st == TR_OK) /* its points: interior ones, and those on constraints under
+                          pinned tets */
         st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv1, &vkind, &vindex);
       stats->points_added_for_sliver = ss.points;
       stats->sliver_flips = ss.flips23 + ss.flips32 + ss.flips44 + ss.flipsn;

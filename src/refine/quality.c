@@ -45,7 +45,9 @@ static void dihedral_cosines(const double *const p[4], double cs[6])
           l = s;
       }
     double c = len[k] > 0 && len[l] > 0 ? dot3(n[k], n[l]) / (len[k] * len[l]) : 1;
-    cs[e] = fmax(-1.0, fmin(1.0, c));
+    /* clamped to [-1, 1], NaN to 1 (as fmax(-1, fmin(1, c))), without the libm calls
+     * (libm's fmin was 4.7% of couplingdown --quality 1.414) */
+    cs[e] = c >= 1 || c != c ? 1 : c <= -1 ? -1 : c;
   }
 }
 
@@ -94,7 +96,7 @@ double tr_tet_min_dihedral(const double *a, const double *b, const double *c, co
   double cs[6], lo = 1;
   dihedral_cosines(p, cs);
   for (int e = 0; e < 6; e++)
-    lo = fmin(lo, cs[e]);
+    lo = cs[e] < lo ? cs[e] : lo; /* no NaN here */
   /* the smallest angle has the smallest cosine of the normals' angle: one acos, the
    * same double as the smallest of the six (acos is correctly rounded, so monotone) */
   return 180.0 - acos(lo) * (180.0 / 3.14159265358979323846);

@@ -525,12 +525,10 @@ static void compact_queue(tr_u32buf *q, size_t *head)
   }
 }
 
+/* Serves the queues until they are empty; the caller seeds them. */
 static tr_status run(rf_ctx *c)
 {
   struct tr_mesh *m = c->m;
-  for (uint32_t t = 0; t < m->nt; t++)
-    if (!tr_tet_is_free(m, t))
-      TR_CHECK(push_tet(c, t));
   for (;;) {
     if (c->st->points >= c->par.budget && (left(&c->qseg, c->hseg, 1) || left(&c->qface, c->hface, 1) ||
                                             left(&c->qtet, c->htet, 5)))
@@ -567,6 +565,70 @@ static tr_status run(rf_ctx *c)
   }
 }
 
+static tr_status seed_all(rf_ctx *c)
+{
+  for (uint32_t t = 0; t < c->m->nt; t++)
+    if (!tr_tet_is_free(c->m, t))
+      TR_CHECK(push_tet(c, t));
+  return TR_OK;
+}
+
+static void ctx_setup(rf_ctx *c, struct tr_mesh *m, const struct tr_plc *plc,
+                      const tr_refine_params *par, tr_refine_stats *st)
+{
+  memset(st, 0, sizeof *st);
+  memset(c, 0, sizeof *c);
+  c->m = m;
+  c->plc = plc;
+  c->par = *par;
+  c->st = st;
+  c->split_seg = TR_NONE;
+  if (!c->par.budget)
+    c->par.budget = tr_refine_default_budget(plc->npoints, 0, 0);
+}
+
+/* A tet of the sliver stage's list: the pieces its own vertices encroach, else the
+ * sub-faces it lies on (a flat tet on a sub-face is opened only by a point on it; the
+ * split point, the sub-face's circumcentre, goes to a sub-segment it encroaches first,
+ * as any facet split does). */
+static tr_status open_pinned(rf_ctx *c, uint32_t t)
+{
+  int pushed;
+  TR_CHECK(own_encroached(c, t, &pushed));
+  if (pushed)
+    return TR_OK;
+  const uint32_t *v = c->m->tv + 4 * (size_t)t;
+  for (int k = 0; k < 4; k++) {
+    uint32_t f = rf_subface_of(c, v[tr_face_vtx[k][0]], v[tr_face_vtx[k][1]], v[tr_face_vtx[k][2]]);
+    if (f != TR_NONE && !c->sfnosplit[f] && !rf_protected(c, 0, f, v[k]))
+      TR_CHECK(tr_u32buf_push(&c->qface, f));
+  }
+  return TR_OK;
+}
+
+tr_status tr_refine_open_pinned(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
+                                const tr_refine_params *par, const uint32_t *tets,
+                                uint32_t ntets, tr_refine_stats *st)
+{
+  discard_outer(m); /* none after tr_refine; a mesh given directly may have them */
+  rf_ctx c;
+  ctx_setup(&c, m, plc, par, st);
+  tr_status s = rf_subs_init(&c, sub);
+  for (uint32_t i = 0; s == TR_OK && i < ntets; i++)
+    if (tets[i] < m->nt && !tr_tet_is_free(m, tets[i]))
+      s = open_pinned(&c, tets[i]);
+  if (s == TR_OK)
+    s = run(&c);
+  if (s == TR_ERR_NOMEM && st->points >= c.par.budget) {
+    tr_error_clear();
+    s = TR_OK; /* the budget is the sliver stage's: what was split stays */
+  }
+  if (s == TR_OK)
+    s = rf_subs_export(&c, sub);
+  ctx_free(&c);
+  return s;
+}
+
 tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
                     const tr_refine_params *par, tr_refine_stats *st)
 {
@@ -579,15 +641,10 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
                     "not supported yet (%u segments)", plc->nsegs);
   discard_outer(m);
   rf_ctx c;
-  memset(&c, 0, sizeof c);
-  c.m = m;
-  c.plc = plc;
-  c.par = *par;
-  c.st = st;
-  c.split_seg = TR_NONE;
-  if (!c.par.budget)
-    c.par.budget = tr_refine_default_budget(plc->npoints, 0, 0);
+  ctx_setup(&c, m, plc, par, st);
   tr_status s = rf_subs_init(&c, sub);
+  if (s == TR_OK)
+    s = seed_all(&c);
   if (s == TR_OK)
     s = run(&c);
   if (s == TR_OK)

@@ -69,4 +69,16 @@ uint64_t tr_refine_default_budget(uint32_t npoints, double domain_volume, double
 tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
                     const tr_refine_params *par, tr_refine_stats *st);
 
+/* The sliver stage's hook (issue 17): tets flips and moves cannot open because they are
+ * pinned between constraints (three or four vertices on input edges and triangles, a face
+ * on a sub-face) get points exactly on those constraints. For each listed tet (slots of m,
+ * which holds only inner tets, tr_refine's output, with its sub-faces sub): the pieces its
+ * own vertices encroach are split, or, when none is, the sub-faces it lies on, with the
+ * encroachment and small-angle rules of tr_refine; the new tets over the bounds are
+ * refined as there. par->budget caps the points (reaching it is no error: what was split
+ * stays, the mesh valid); sub is replaced by the new sub-faces. */
+tr_status tr_refine_open_pinned(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
+                                const tr_refine_params *par, const uint32_t *tets,
+                                uint32_t ntets, tr_refine_stats *st);
+
 #endif

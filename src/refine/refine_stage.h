@@ -11,6 +11,11 @@ tr_status tr_refine_check_options(const tr_options *opt);
  * domain's volume); *points = points added. keep_hull (open input in its hull): refused. */
 tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
                           const tr_options *opt, int keep_hull, uint64_t *points);
+/* The per-region volume bounds of plc's region points as tr_refine_params wants them
+ * (ids sorted, distinct, the smallest bound of a repeated id; malloc'ed); *least is lowered
+ * to the smallest (it is the caller's global bound, or 0 for none). */
+tr_status tr_refine_region_bounds(const struct tr_plc *plc, uint32_t **ids, double **bounds,
+                                  uint32_t *n, double *least);
 /* The shape rows of s (min/max dihedral, histograms, ...) measured on m's doubles. */
 void tr_quality_stats(const struct tr_mesh *m, tr_stats *s);
 

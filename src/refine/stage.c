@@ -39,6 +39,44 @@ static int cmp_region_bound(const void *pa, const void *pb)
   return a->id < b->id ? -1 : a->id > b->id;
 }
 
+tr_status tr_refine_region_bounds(const struct tr_plc *plc, uint32_t **ids, double **bounds,
+                                  uint32_t *n_out, double *least)
+{
+  /* Per-region bounds of the region points (src/outer/points.c gave each one's cell the
+   * attribute as its region id), sorted by id, the smallest where an id repeats */
+  region_bound *rb = malloc(sizeof *rb * (plc->nregions ? plc->nregions : 1));
+  uint32_t *id = malloc(sizeof *id * (plc->nregions ? plc->nregions : 1));
+  double *bound = malloc(sizeof *bound * (plc->nregions ? plc->nregions : 1));
+  if (!rb || !id || !bound) {
+    free(rb);
+    free(id);
+    free(bound);
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u region bounds", plc->nregions);
+  }
+  uint32_t nb = 0, n = 0;
+  for (uint32_t i = 0; i < plc->nregions; i++)
+    if (plc->region_maxvol[i] > 0) {
+      rb[nb].id = (uint32_t)plc->region_attr[i];
+      rb[nb++].bound = plc->region_maxvol[i];
+      if (!(*least > 0) || plc->region_maxvol[i] < *least)
+        *least = plc->region_maxvol[i];
+    }
+  qsort(rb, nb, sizeof *rb, cmp_region_bound);
+  for (uint32_t i = 0; i < nb; i++)
+    if (n && id[n - 1] == rb[i].id) {
+      if (rb[i].bound < bound[n - 1])
+        bound[n - 1] = rb[i].bound;
+    } else {
+      id[n] = rb[i].id;
+      bound[n++] = rb[i].bound;
+    }
+  free(rb);
+  *ids = id;
+  *bounds = bound;
+  *n_out = n;
+  return TR_OK;
+}
+
 tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
                           const tr_options *opt, int keep_hull, uint64_t *points)
 {
@@ -60,37 +98,11 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   par.ratio = opt->quality_ratio;
   par.max_volume = opt->max_volume;
   par.verbose = opt->verbose;
-  /* Per-region bounds of the region points (src/outer/points.c gave each one's cell the
-   * attribute as its region id), sorted by id, the smallest where an id repeats; the
-   * smallest bound of all sizes the default budget. */
-  region_bound *rb = malloc(sizeof *rb * (plc->nregions ? plc->nregions : 1));
-  uint32_t *id = malloc(sizeof *id * (plc->nregions ? plc->nregions : 1));
-  double *bound = malloc(sizeof *bound * (plc->nregions ? plc->nregions : 1));
-  if (!rb || !id || !bound) {
-    free(rb);
-    free(id);
-    free(bound);
-    return tr_error(TR_ERR_NOMEM, "out of memory for %u region bounds", plc->nregions);
-  }
-  uint32_t nb = 0, n = 0;
+  /* the smallest bound of all sizes the default budget */
   double least = opt->max_volume;
-  for (uint32_t i = 0; i < plc->nregions; i++)
-    if (plc->region_maxvol[i] > 0) {
-      rb[nb].id = (uint32_t)plc->region_attr[i];
-      rb[nb++].bound = plc->region_maxvol[i];
-      if (!(least > 0) || plc->region_maxvol[i] < least)
-        least = plc->region_maxvol[i];
-    }
-  qsort(rb, nb, sizeof *rb, cmp_region_bound);
-  for (uint32_t i = 0; i < nb; i++)
-    if (n && id[n - 1] == rb[i].id) {
-      if (rb[i].bound < bound[n - 1])
-        bound[n - 1] = rb[i].bound;
-    } else {
-      id[n] = rb[i].id;
-      bound[n++] = rb[i].bound;
-    }
-  free(rb);
+  uint32_t *id, n;
+  double *bound;
+  TR_CHECK(tr_refine_region_bounds(plc, &id, &bound, &n, &least));
   par.region_id = id;
   par.region_max_volume = bound;
   par.nregion_bounds = n;

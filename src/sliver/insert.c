@@ -322,9 +322,21 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
                                      m->tv[4 * (size_t)t + 1], m->tv[4 * (size_t)t + 2],
                                      m->tv[4 * (size_t)t + 3]) < c->insert_bound))
       continue;
+    uint32_t key[4];
+    memcpy(key, m->tv + 4 * (size_t)t, sizeof key);
+    for (int i = 1; i < 4; i++) /* sorted: the tet whatever its rotation */
+      for (int j = i; j > 0 && key[j - 1] > key[j]; j--) {
+        uint32_t x = key[j];
+        key[j] = key[j - 1];
+        key[j - 1] = x;
+      }
+    if (tr_vtmap_get(&c->failed, 4, key) != TR_VTMAP_NONE)
+      continue;
     int done;
     s = insert_at(c, t, &z[0], &z[1], &done);
     st->points += (uint64_t)done;
+    if (s == TR_OK && !done)
+      s = tr_vtmap_set(&c->failed, 4, key, 0);
   }
   free(z);
   return s;

@@ -8,6 +8,7 @@
 
 #include "refine/quality.h"
 #include "refine/refine_impl.h" /* rf_volume_above: the bound decided as refinement does */
+#include "refine/refine_stage.h"
 #include "tetrec.h"
 
 double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
@@ -87,6 +88,7 @@ void tr_sliver_ctx_free(tr_sliver_ctx *c)
   free(c->faces);
   free(c->edges);
   free(c->movable);
+  tr_vtmap_free(&c->failed);
   memset(c, 0, sizeof *c);
 }
 
@@ -125,7 +127,103 @@ tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfa
   return TR_OK;
 }
 
-tr_status tr_sliver_remove(struct tr_mesh *m, const tr_subfaces *sub, const uint8_t *vkind,
+/* The tets under SL_PINNED_BOUND (or the dihedral target, when one raised the insertion
+ * bound) with three or four vertices no move may touch and a face on a sub-face: what
+ * flips, moves and interior points leave of them is pinned there (bench/quality: most
+ * tets under 10 degrees on the CAD models), and only a point on the constraint opens it. */
+static tr_status pinned_tets(const tr_sliver_ctx *c, tr_u32buf *out)
+{
+  const struct tr_mesh *m = c->m;
+  double bound = c->insert_bound > TR_SLIVER_INSERT_BOUND ? c->insert_bound : SL_PINNED_BOUND;
+  out->n = 0;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (tr_tet_is_free(m, t))
+      continue;
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    int fixed = 0;
+    for (int i = 0; i < 4; i++)
+      fixed += !c->movable[v[i]];
+    if (fixed < 3 || !(tr_sliver_min_dihedral(m, v[0], v[1], v[2], v[3]) < bound))
+      continue;
+    int touches = 0;
+    for (int k = 0; k < 4 && !touches; k++) {
+      uint32_t f[3] = {v[tr_face_vtx[k][0]], v[tr_face_vtx[k][1]], v[tr_face_vtx[k][2]]};
+      touches = tr_sliver_protected(c, f, 3);
+    }
+    if (touches)
+      TR_CHECK(tr_u32buf_push(out, t));
+  }
+  return TR_OK;
+}
+
+/* Points on the constraints under the pinned tets (tr_refine_open_pinned, within what is
+ * left of the stage's budget), then the context again: the new sub-faces and their
+ * vertices fixed, refinement's new interior points movable. *added = points added. */
+static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoints,
+                             tr_sliver_stats *st, uint64_t *added)
+{
+  struct tr_mesh *m = c->m;
+  *added = 0;
+  tr_u32buf list = {0};
+  tr_status s = pinned_tets(c, &list);
+  if (s != TR_OK || !list.n) {
+    tr_u32buf_free(&list);
+    return s;
+  }
+  const struct tr_plc *plc = c->keep.plc;
+  tr_refine_params rp;
+  memset(&rp, 0, sizeof rp);
+  /* no ratio bound: the new tets around a split piece are not refined further (with it,
+   * rotor_small went from 93,635 to 190,864 tets against TetGen's 60,221); the flips,
+   * moves and points of the next round work on them */
+  rp.ratio = 0;
+  rp.max_volume = c->keep.max_volume;
+  rp.budget = TR_SLIVER_POINTS(m->nv); /* its own: the interior points may have used theirs */
+  uint32_t *id = NULL;
+  double *bound = NULL, least = 0;
+  s = tr_refine_region_bounds(plc, &id, &bound, &rp.nregion_bounds, &least);
+  rp.region_id = id;
+  rp.region_max_volume = bound;
+  tr_refine_stats rs;
+  uint32_t nv0 = m->nv;
+  if (s == TR_OK)
+    s = tr_refine_open_pinned(m, plc, sub, &rp, list.a, (uint32_t)list.n, &rs);
+  free(id);
+  free(bound);
+  TR_CHECK(s);
+  tr_u32buf_free(&list);
+  *added = rs.points;
+  st->points += rs.points;
+  st->on_constraints += rs.on_segments + rs.on_facets;
+  if (!rs.points)
+    return TR_OK;
+  uint8_t *was = c->movable;
+  c->movable = NULL;
+  tr_sliver_ctx keep = *c;
+  tr_sliver_ctx_free(c);
+  s = tr_sliver_ctx_init(c, m, sub, NULL, npoints, keep.bound);
+  if (s == TR_OK)
+    for (uint32_t v = 0; v < nv0; v++)
+      c->movable[v] &= was[v];
+  free(was);
+  c->insert_bound = keep.insert_bound;
+  /* the next insertion pass: as many interior points as went on the constraints */
+  c->point_budget = st->points + rs.points;
+  c->keep = keep.keep;
+  return s;
+}
+
+static tr_status round_of(tr_sliver_ctx *c, const tr_sliver_params *par, tr_sliver_stats *st)
+{
+  TR_CHECK(tr_sliver_flip_pass(c, st));
+  if (par->level >= TR_SLIVER_SMOOTH)
+    TR_CHECK(tr_sliver_smooth_pass(c, st));
+  if (par->level >= TR_SLIVER_INSERT)
+    TR_CHECK(tr_sliver_insert_pass(c, st));
+  return TR_OK;
+}
+
+tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *vkind,
                            uint32_t npoints, const tr_sliver_params *par, tr_sliver_stats *st)
 {
   memset(st, 0, sizeof *st);
@@ -139,15 +237,22 @@ tr_status tr_sliver_remove(struct tr_mesh *m, const tr_subfaces *sub, const uint
   uint64_t added = 0;
   for (int r = 0; s == TR_OK && r < par->rounds; r++) {
     tr_sliver_stats before = *st;
-    s = tr_sliver_flip_pass(&c, st);
-    if (s == TR_OK && par->level >= TR_SLIVER_SMOOTH)
-      s = tr_sliver_smooth_pass(&c, st);
     added = st->points;
-    if (s == TR_OK && par->level >= TR_SLIVER_INSERT)
-      s = tr_sliver_insert_pass(&c, st);
+    s = round_of(&c, par, st);
     added = st->points - added;
     if (!memcmp(&before, st, sizeof before))
       break; /* a round that changed nothing: the next would not either */
+  }
+  /* the tets left pinned between constraints get points on them, then a round of their
+   * own (a plc is needed: refinement's points are placed on its input edges and faces) */
+  for (int r = 0; s == TR_OK && c.keep.plc && par->level >= TR_SLIVER_INSERT &&
+                  r < SL_PINNED_ROUNDS; r++) {
+    uint64_t on;
+    s = open_pinned(&c, sub, npoints, st, &on);
+    if (s != TR_OK || !on)
+      break;
+    s = round_of(&c, par, st);
+    added = on;
   }
   if (s == TR_OK && added) { /* the last points' tets get their flips and moves too */
     s = tr_sliver_flip_pass(&c, st);

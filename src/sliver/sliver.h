@@ -20,17 +20,26 @@
  *    its circumcentre (a double), by a cavity that crosses no sub-face and is star-shaped
  *    about the point, kept when the new tets' smallest angle beats the cavity's; at most
  *    TR_SLIVER_POINTS(nv) points per stage.
+ *  - sliver.c, after the rounds (level 3, with the plc in keep): a tet still under
+ *    SL_PINNED_BOUND with three or four vertices on constraints and a face on a sub-face
+ *    is pinned there; refinement (tr_refine_open_pinned) splits the piece under it,
+ *    exactly on its input edge or triangle, and a round of flips, moves and points
+ *    follows, SL_PINNED_ROUNDS times at most. That refinement runs without the ratio
+ *    bound (the volume bounds hold), so its new tets may be over the ratio bound.
  *
  * Angles are measured in doubles (src/refine/quality.h, on m->xyz): they only rank
  * choices; every topological decision is exact. Both steps run in fixed passes in slot /
  * vertex index order with ties broken by order, so the result is deterministic. Since
- * every change strictly raises the minimum over the tets it touches and leaves the others
- * alone, the mesh's smallest dihedral angle never decreases. */
+ * every flip, move and interior point strictly raises the minimum over the tets it
+ * touches and leaves the others alone, they never lower the mesh's smallest dihedral
+ * angle; the pinned tets' points on constraints may (joint.off: 0.23 -> 0.0003 degrees,
+ * while its share of tets under 10 degrees went from 30% to 14%). */
 #ifndef TR_SLIVER_H
 #define TR_SLIVER_H
 
 #include <stdint.h>
 
+#include "core/vtmap.h"
 #include "mesh/mesh.h"
 #include "recover_facets/recover_facets.h"
 
@@ -47,6 +56,11 @@ enum { TR_SLIVER_OFF = 0, TR_SLIVER_FLIPS = 1, TR_SLIVER_SMOOTH = 2, TR_SLIVER_I
  * stage that grows with the mesh. */
 #define TR_SLIVER_INSERT_BOUND 15.0
 #define TR_SLIVER_POINTS(nv) ((uint64_t)(nv) / 4 + 100)
+
+/* Rounds of points on the constraints under pinned tets, each followed by a round of flips,
+ * moves and interior points (sliver.c). */
+#define SL_PINNED_ROUNDS 2
+#define SL_PINNED_BOUND 10.0 /* degrees: the pinned tets that get points on constraints */
 
 #define SL_MAX_RING 7 /* largest edge shell the flips remove (7 tets -> 10) */
 
@@ -71,7 +85,8 @@ typedef struct tr_sliver_params {
 typedef struct tr_sliver_stats {
   uint64_t flips23, flips32, flips44, flipsn; /* n: edge removal with a shell of 5+ */
   uint64_t smoothed;                          /* accepted vertex moves */
-  uint64_t points;                            /* points added (insert.c) */
+  uint64_t points;                            /* points added, all kinds */
+  uint64_t on_constraints; /* of them on input edges and triangles (pinned tets) */
 } tr_sliver_stats;
 
 /* What the steps may not touch, built once from the sub-faces. */
@@ -83,6 +98,8 @@ typedef struct tr_sliver_ctx {
   double bound;
   double insert_bound;     /* insertion: tets with a smaller angle get a point */
   uint64_t point_budget;   /* insertion: points the stage may add */
+  tr_vtmap failed;         /* insertion: tets (sorted vertices) no candidate point opened;
+                              later passes skip them (most stay pinned) */
   tr_sliver_bounds keep;
 } tr_sliver_ctx;
 
@@ -125,7 +142,7 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
 /* The stage: m holds only inner tets (tr_refine's output), sub their sub-faces, vkind the
  * vertex origins (tetrec.h's enum tr_vertex_origin; NULL: none known, so only vertices
  * above npoints on no sub-face move). */
-tr_status tr_sliver_remove(struct tr_mesh *m, const tr_subfaces *sub, const uint8_t *vkind,
+tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *vkind,
                            uint32_t npoints, const tr_sliver_params *par, tr_sliver_stats *st);
 
 #endif

@@ -8,10 +8,12 @@
 #include <string.h>
 
 #include "core/plc.h"
+#include "delaunay/delaunay.h"
 #include "mesh/check.h"
 #include "mesh/conform.h"
 #include "pipeline/pipeline.h"
 #include "refine/quality.h"
+#include "refine/refine.h"
 #include "../pipeline/texpect.h"
 
 static tr_plc *plc_of(const double *x, uint32_t np, const uint32_t *t, uint32_t nt)
@@ -504,6 +506,91 @@ static void min_dihedral_equals_smallest_of_six(void)
   }
 }
 
+/* The smallest dihedral angle over m's real tets (on its doubles). */
+static double smallest_dihedral(const tr_mesh *m)
+{
+  tr_quality q;
+  tr_quality_measure(m, &q);
+  return q.min_dihedral;
+}
+
+/* The tet A B C D with D a quarter above the base ABC (z = 0), over its circumcircle: one
+ * flat tet whose four faces are sub-faces and four vertices input points, which no flip
+ * or move changes. tr_refine_open_pinned puts points under it, each exactly on a face of
+ * the input (D encroaches the base and its edge AB): the flat tet is gone, the mesh
+ * validates with the exact volume, the worst radius-edge ratio drops (10.6 -> 4.8), and
+ * the smallest dihedral angle, the input's own at edge AC, is kept. */
+static void pinned_flat_tet_is_opened(void)
+{
+  const double x[12] = {0, 0, 0, 8, 0, 0, 4, 7, 0, 4, 3, 0.25};
+  tr_plc *plc = tet_surface(x, x + 3, x + 6, x + 9);
+  tr_mesh *m = NULL;
+  if (tr_delaunay_build(x, 4, &m) != TR_OK) {
+    EXPECT(0, "pinned: Delaunay failed: %s", tr_last_error());
+    tr_plc_destroy(plc);
+    return;
+  }
+  uint32_t t0 = TR_NONE;
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (tr_tet_is_real(m, t))
+      t0 = t;
+  tr_subfaces sub = {0, NULL, NULL};
+  sub.n = plc->ntris;
+  sub.v = malloc(3 * sizeof *sub.v * plc->ntris);
+  sub.tri = malloc(sizeof *sub.tri * plc->ntris);
+  for (uint32_t i = 0; i < plc->ntris; i++) {
+    memcpy(sub.v + 3 * i, plc->tris + 3 * i, 3 * sizeof *sub.v);
+    sub.tri[i] = i;
+  }
+  double before = smallest_dihedral(m);
+  double ratio_before = max_ratio(m);
+  tr_refine_params par;
+  memset(&par, 0, sizeof par);
+  par.budget = 50;
+  tr_refine_stats st;
+  tr_status s = tr_refine_open_pinned(m, plc, &sub, &par, &t0, 1, &st);
+  EXPECT(s == TR_OK, "pinned: %s", tr_last_error());
+  EXPECT(st.on_segments + st.on_facets >= 1 && st.inside == 0,
+         "pinned: %llu points on edges, %llu on facets, %llu inside",
+         (unsigned long long)st.on_segments, (unsigned long long)st.on_facets,
+         (unsigned long long)st.inside);
+  EXPECT(m->nv > 4, "pinned: no point added");
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (tr_tet_is_real(m, t)) {
+      int n = 0;
+      for (uint32_t v = 0; v < 4; v++)
+        n += tr_ncode(m, t, v) >= 0;
+      EXPECT(n < 4, "pinned: the flat tet is still there");
+    }
+  /* every new point on a face of the input, exactly */
+  tr_point P[4];
+  for (int i = 0; i < 4; i++)
+    P[i] = tr_mesh_point(m, (uint32_t)i);
+  for (uint32_t v = 4; v < m->nv; v++) {
+    tr_point q = tr_mesh_point(m, v);
+    int on = 0;
+    for (uint32_t f = 0; f < plc->ntris; f++) {
+      const uint32_t *T = plc->tris + 3 * f;
+      on |= tr_orient3d_p(&P[T[0]], &P[T[1]], &P[T[2]], &q) == 0;
+    }
+    EXPECT(on, "pinned: vertex %u lies on no input triangle", v);
+  }
+  mpq_t six_v; /* 6 V = base 28 times height 1/4 times 2 */
+  mpq_init(six_v);
+  mpq_set_ui(six_v, 14, 1);
+  s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v);
+  EXPECT(s == TR_OK, "pinned: mesh validator: %s", tr_last_error());
+  mpq_clear(six_v);
+  double after = smallest_dihedral(m);
+  EXPECT(after >= before, "pinned: smallest dihedral angle %g -> %g: lowered", before, after);
+  double ratio_after = max_ratio(m);
+  EXPECT(ratio_after < ratio_before, "pinned: worst radius-edge ratio %g -> %g: not lowered",
+         ratio_before, ratio_after);
+  tr_subfaces_free(&sub);
+  tr_mesh_destroy(m);
+  tr_plc_destroy(plc);
+}
+
 int main(int argc, char **argv)
 {
   const char *c = argc > 1 ? argv[1] : "";
@@ -529,6 +616,8 @@ int main(int argc, char **argv)
     shapes(argv[2]);
   else if (!strcmp(c, "determinism"))
     determinism();
+  else if (!strcmp(c, "pinned"))
+    pinned_flat_tet_is_opened();
   else if (!strcmp(c, "min_dihedral"))
     min_dihedral_equals_smallest_of_six();
   else {

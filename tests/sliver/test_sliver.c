@@ -14,6 +14,7 @@
 #include "mesh/conform.h"
 #include "pipeline/pipeline.h"
 #include "refine/quality.h"
+#include "refine/refine.h"
 #include "sliver/sliver.h"
 #include "../pipeline/texpect.h"
 
@@ -419,6 +420,69 @@ static void deterministic_and_levels_checked(const char *dir)
   tr_plc_destroy(p);
 }
 
+/* The flat tet of the tet surface A B C D (D a quarter above the base ABC, over its
+ * circumcircle): four input vertices, four sub-faces, so no flip, move or interior point
+ * opens it. With the plc given, the stage puts points on the constraints under it
+ * (sliver.c, pinned tets): it is gone, every new vertex lies exactly on an input
+ * triangle, the mesh validates with the exact volume (6 V = 14). */
+static void a_tet_pinned_between_sub_faces_gets_points_on_them(void)
+{
+  const double x[12] = {0, 0, 0, 8, 0, 0, 4, 7, 0, 4, 3, 0.25};
+  static const uint32_t tris[12] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
+  tr_plc *plc = NULL;
+  tr_mesh *m = NULL;
+  if (tr_plc_create(&plc) != TR_OK || tr_plc_set(plc, x, 4, tris, 4, NULL) != TR_OK ||
+      tr_delaunay_build(x, 4, &m) != TR_OK) {
+    EXPECT(0, "pinned: setup: %s", tr_last_error());
+    tr_plc_destroy(plc);
+    return;
+  }
+  uint32_t sv[12], tri[4] = {0, 1, 2, 3};
+  memcpy(sv, tris, sizeof sv);
+  tr_subfaces sub = {4, NULL, NULL};
+  sub.v = malloc(sizeof sv);
+  sub.tri = malloc(sizeof tri);
+  memcpy(sub.v, sv, sizeof sv);
+  memcpy(sub.tri, tri, sizeof tri);
+  /* the stage takes refinement's output, inner tets only: an empty list discards the
+   * ghosts and adds nothing */
+  tr_refine_params none;
+  memset(&none, 0, sizeof none);
+  tr_refine_stats rs;
+  tr_status s = tr_refine_open_pinned(m, plc, &sub, &none, NULL, 0, &rs);
+  EXPECT(s == TR_OK && rs.points == 0, "pinned: an empty list added points or failed");
+  const uint32_t flat[4] = {0, 1, 2, 3};
+  EXPECT(has_tet(m, flat), "pinned: the flat tet is not there to begin with");
+  tr_sliver_params par = {TR_SLIVER_INSERT, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, plc}};
+  tr_sliver_stats st;
+  s = tr_sliver_remove(m, &sub, NULL, 4, &par, &st);
+  EXPECT(s == TR_OK, "pinned: sliver stage: %s", tr_last_error());
+  EXPECT(st.on_constraints >= 1 && m->nv > 4, "pinned: no point on a constraint");
+  EXPECT(!has_tet(m, flat), "pinned: the flat tet is still there");
+  tr_point P[4];
+  for (uint32_t i = 0; i < 4; i++)
+    P[i] = tr_mesh_point(m, i);
+  uint64_t on = 0; /* the interior points lie strictly inside, the others exactly on */
+  for (uint32_t v = 4; v < m->nv; v++) {
+    tr_point q = tr_mesh_point(m, v);
+    int at = 0;
+    for (int f = 0; f < 4; f++)
+      at |= tr_orient3d_p(&P[tris[3 * f]], &P[tris[3 * f + 1]], &P[tris[3 * f + 2]], &q) == 0;
+    on += (uint64_t)at;
+  }
+  EXPECT(on == st.on_constraints, "pinned: %llu vertices on the input's faces, %llu counted",
+         (unsigned long long)on, (unsigned long long)st.on_constraints);
+  mpq_t six_v;
+  mpq_init(six_v);
+  mpq_set_ui(six_v, 14, 1);
+  s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v);
+  EXPECT(s == TR_OK, "pinned: mesh validator: %s", tr_last_error());
+  mpq_clear(six_v);
+  tr_subfaces_free(&sub);
+  tr_mesh_destroy(m);
+  tr_plc_destroy(plc);
+}
+
 int main(int argc, char **argv)
 {
   const char *c = argc > 1 ? argv[1] : "";
@@ -432,6 +496,8 @@ int main(int argc, char **argv)
     a_sliver_is_removed_by_a_new_interior_point();
   else if (!strcmp(c, "passes"))
     no_pass_lowers_the_smallest_angle();
+  else if (!strcmp(c, "pinned"))
+    a_tet_pinned_between_sub_faces_gets_points_on_them();
   else if (!strcmp(c, "surfaces") && argc > 2)
     refined_surfaces(argv[2]);
   else if (!strcmp(c, "determinism") && argc > 2)
