@@ -495,7 +495,9 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
       }
       if (st == TR_OK && !*done)
         st = sup_flip_out(m, c, p, region, dbl, done);
-      if (st == TR_OK && !*done && (flags & TR_SUP_MERGE))
+      /* at doubles only: a merge's cone left to the rounding repair is one whole
+       * union's worth of tets to repair, and the exact-only try doubles the time */
+      if (st == TR_OK && !*done && (flags & TR_SUP_MERGE) && dbl)
         st = sup_merge(m, c, p, region, dbl, done);
     }
   /* The edge removals' positivity depends on where p is: a point relocated off the

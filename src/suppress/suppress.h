@@ -70,8 +70,9 @@ enum {
  * remove something: 358 (none on the surface; 589 under --keep-surface). The star
  * retriangulation (starfill.c) before the flips and on the star they get stuck on: 339;
  * with edge recovery's deeper flips on short pipes (fewer points to remove): 315.
- * Merging the interior points left two into one after all that (merge.c): 286 (cheese
- * 175 -> 150), for about 10% more suppression time. */
+ * Merging the interior points left two into one after all that (merge.c, in a round of
+ * its own, at doubles only): 281 (cheese 175 -> 145); under --keep-surface cheese 238 ->
+ * 193, turbine 82 -> 75. */
 #define TR_SUP_DEFAULT (TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_INTERIOR | TR_SUP_MERGE)
 
 typedef struct tr_suppress_stats {
