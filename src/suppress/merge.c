@@ -22,9 +22,9 @@
 
 #include "suppress_int.h"
 
-/* the margins find_q's projections try for x (star.c): two, the wide ones; on CGAL's
- * models more find fewer merges (x lands where later merges cannot go) for more time */
-#define SUP_MERGE_RELAX 2
+/* the margins find_q's projections try for x (star.c), the widest first: on cheese 2
+ * leave 145 points, 4 leave 142 for 4% more time, 6 no fewer */
+#define SUP_MERGE_RELAX 4
 
 static int cmp_u32(const void *a, const void *b)
 {
