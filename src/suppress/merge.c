@@ -225,7 +225,7 @@ tr_status sup_merge(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t re
       if (v != p && m->vq[v])
         st = tr_u32buf_push(&nbr, v);
     }
-  if (st == TR_OK && ok) {
+  if (st == TR_OK && ok && nbr.n) {
     qsort(nbr.a, nbr.n, sizeof *nbr.a, cmp_u32);
     size_t n = 0;
     for (size_t i = 0; i < nbr.n; i++)
