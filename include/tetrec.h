@@ -168,8 +168,8 @@ tr_status tr_mesh_input_edge(const tr_mesh *mesh, uint32_t k, uint32_t *a, uint3
  * and writing are filled by the caller that reads and writes (the CLI does). */
 enum tr_stage {
   TR_STAGE_READ, TR_STAGE_VALIDATE, TR_STAGE_SELFINT, TR_STAGE_NESTING, TR_STAGE_SMOOTH,
-  TR_STAGE_DELAUNAY, TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR, TR_STAGE_REFINE,
-  TR_STAGE_ROUND, TR_STAGE_WRITE, TR_STAGE_COUNT
+  TR_STAGE_DELAUNAY, TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR, TR_STAGE_SUPPRESS,
+  TR_STAGE_REFINE, TR_STAGE_ROUND, TR_STAGE_WRITE, TR_STAGE_COUNT
 };
 /* Room in tr_stats.stage_seconds, so that a stage added later leaves the fields after the
  * array where they are (entries from TR_STAGE_COUNT on are 0). Before version 1.0 a new
@@ -177,7 +177,8 @@ enum tr_stage {
  * after it (as "refinement" did): use the enum names, not numbers. */
 #define TR_STAGE_SLOTS 24
 /* "reading", "validation", "self_intersection", "nesting", "smoothing", "delaunay",
- * "edge_recovery", "facet_recovery", "coloring", "refinement", "rounding", "writing";
+ * "edge_recovery", "facet_recovery", "coloring", "suppression", "refinement", "rounding",
+ * "writing";
  * NULL out of range.
  * Thread-safe. */
 const char *tr_stage_name(int stage);

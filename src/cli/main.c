@@ -191,7 +191,8 @@ static int stage_progress(void *user, const char *stage, double fraction)
 {
   /* tr_mesh_plc's stages in their order (include/tetrec.h, tr_options.progress) */
   static const char *const order[] = {"validation",     "smoothing", "delaunay",   "edge_recovery",
-                                      "facet_recovery", "coloring",  "refinement", "rounding"};
+                                      "facet_recovery", "coloring",  "suppression", "refinement",
+                                      "rounding"};
   const int n = (int)(sizeof order / sizeof *order);
   progress_line *p = user;
   if (now() - p->t0 < p->after)

@@ -27,6 +27,7 @@ const char *tr_stage_name(int stage)
 {
   static const char *const names[TR_STAGE_COUNT] = {
       "reading", "validation", "self_intersection", "nesting", "smoothing", "delaunay",
-      "edge_recovery", "facet_recovery", "coloring", "refinement", "rounding", "writing"};
+      "edge_recovery", "facet_recovery", "coloring", "suppression", "refinement", "rounding",
+      "writing"};
   return stage >= 0 && stage < TR_STAGE_COUNT ? names[stage] : NULL;
 }

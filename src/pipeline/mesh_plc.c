@@ -241,12 +241,17 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = tr_outer_points(m, p, opt.verbose, &nreg);
   free(sides);
   sides = NULL;
+  PROGRESS(TR_STAGE_COLOR, 1);
+  double t44 = tr_pipeline_now();
+  stage[TR_STAGE_COLOR] = t44 - t4;
+  say(&opt, TR_STAGE_COLOR, t44 - t4);
+  PROGRESS(TR_STAGE_SUPPRESS, 0);
   if (st == TR_OK)
     st = suppress(m, &sub, p, &opt, keep_hull, flags, stats, vkind);
-  PROGRESS(TR_STAGE_COLOR, 1);
+  PROGRESS(TR_STAGE_SUPPRESS, 1);
   double t45 = tr_pipeline_now();
-  stage[TR_STAGE_COLOR] = t45 - t4;
-  say(&opt, TR_STAGE_COLOR, t45 - t4);
+  stage[TR_STAGE_SUPPRESS] = t45 - t44;
+  say(&opt, TR_STAGE_SUPPRESS, t45 - t44);
   /* Quality refinement (off by default): inner tets only, before the flips and rounding. */
   int region_bounds = 0; /* a region point with a maximum volume */
   for (uint32_t i = 0; p && i < p->nregions; i++)

@@ -17,7 +17,7 @@ tr_status tr_pipeline_suppress(struct tr_mesh *m, tr_subfaces *sub, const struct
    * only the counts; the same with --keep-steiner. */
   unsigned flags = keep_hull || (pipe_flags & TR_PIPE_KEEP_STEINER) ? 0 : TR_SUP_DEFAULT;
   if (opt->keep_surface)
-    flags = TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_INTERIOR | TR_SUP_REQUIRE;
+    flags = TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_INTERIOR | TR_SUP_MERGE | TR_SUP_REQUIRE;
   tr_suppress_stats s;
   TR_CHECK(tr_suppress_steiner(m, sub, plc, flags, &s));
   stats->steiner_on_edges = s.on_edges;

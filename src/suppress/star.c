@@ -22,8 +22,8 @@ static void face_key(const uint32_t *tv, int k, uint32_t out[3])
 /* 1 iff every face (3 ids each) sees apex strictly positively, exactly and with every
  * point at its double (m->xyz); faces that contain apex are skipped, apex == TR_NONE:
  * the double point q. */
-static int sees_all(const struct tr_mesh *m, const uint32_t *f, size_t nf, uint32_t apex,
-                    const double *q, int dbl)
+int sup_sees_all(const struct tr_mesh *m, const uint32_t *f, size_t nf, uint32_t apex,
+                 const double *q, int dbl)
 {
   tr_point pq = apex == TR_NONE ? tr_pt_d(q) : tr_mesh_point(m, apex);
   for (size_t i = 0; i < nf; i++) {
@@ -260,9 +260,9 @@ static void relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const d
 /* A double point that sees every face of bf strictly (sees_all): from p's double p0
  * halfway towards g again and again, then projections into the kernel (relax), then the
  * centroids of the region's tets. */
-static int find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
-                  const double *p0, const double g[3], const double dir[4], int dbl,
-                  double q[3])
+int sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
+               const double *p0, const double g[3], const double dir[4], int dbl, int relaxes,
+               double q[3])
 {
   size_t nf = bf->n / 3;
   /* p moved off the surface along the sum of the merged triangles' inner unit normals:
@@ -273,20 +273,20 @@ static int find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf 
   for (int j = 0; j < 80 && step > 0; j++, step *= 0.5) {
     for (int k = 0; k < 3; k++)
       q[k] = p0[k] + step * dir[k];
-    if (sees_all(m, bf->a, nf, TR_NONE, q, dbl))
+    if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl))
       return 1;
   }
   double s = 1.0;
   for (int j = 0; j < 40; j++, s *= 0.5) {
     for (int k = 0; k < 3; k++)
       q[k] = p0[k] + (g[k] - p0[k]) * s;
-    if (sees_all(m, bf->a, nf, TR_NONE, q, dbl))
+    if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl))
       return 1;
   }
   /* a relaxed point that has not reached its margin may still see every face */
-  for (int pass = 0; pass < 6; pass++) {
+  for (int pass = 0; pass < relaxes; pass++) {
     relax(m, bf->a, nf, g, q, pass);
-    if (sees_all(m, bf->a, nf, TR_NONE, q, dbl))
+    if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl))
       return 1;
   }
   for (size_t i = 0; i < star->n; i++) {
@@ -294,7 +294,7 @@ static int find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf 
     for (int k = 0; k < 3; k++)
       q[k] = 0.25 * (m->xyz[3 * (size_t)tv[0] + k] + m->xyz[3 * (size_t)tv[1] + k] +
                      m->xyz[3 * (size_t)tv[2] + k] + m->xyz[3 * (size_t)tv[3] + k]);
-    if (sees_all(m, bf->a, nf, TR_NONE, q, dbl))
+    if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl))
       return 1;
   }
   return 0;
@@ -316,7 +316,7 @@ static tr_status try_remove(sup_ctx *c, uint32_t p, const tr_u32buf *star, const
     qsort(verts.a, verts.n, sizeof *verts.a, cmp_u32);
   for (size_t i = 0; i < verts.n && st == TR_OK && !*done; i++) {
     uint32_t v = verts.a[i];
-    if ((i && verts.a[i - 1] == v) || !sees_all(m, bf->a, nf, v, NULL, dbl))
+    if ((i && verts.a[i - 1] == v) || !sup_sees_all(m, bf->a, nf, v, NULL, dbl))
       continue;
     for (size_t j = 0; j < nf && st == TR_OK; j++) {
       const uint32_t *g = bf->a + 3 * j;
@@ -380,7 +380,7 @@ static tr_status try_relocate(sup_ctx *c, uint32_t p, const tr_u32buf *star,
     }
   if (nf == star->n)
     dir[3] = 0; /* an interior point: no surface to step away from */
-  if (!find_q(m, bf, star, p0, g, dir, dbl, q))
+  if (!sup_find_q(m, bf, star, p0, g, dir, dbl, SUP_RELAX_PASSES, q))
     return TR_OK;
   tr_u32buf nv = {0};
   tr_status st = TR_OK;
@@ -495,6 +495,10 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
       }
       if (st == TR_OK && !*done)
         st = sup_flip_out(m, c, p, region, dbl, done);
+      /* at doubles only: a merge's cone left to the rounding repair is one whole
+       * union's worth of tets to repair, and the exact-only try doubles the time */
+      if (st == TR_OK && !*done && (flags & TR_SUP_MERGE) && dbl)
+        st = sup_merge(m, c, p, region, dbl, done);
     }
   /* The edge removals' positivity depends on where p is: a point relocated off the
    * surface sits just inside it, where its star is flat. Moved into its kernel (the

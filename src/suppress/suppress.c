@@ -217,8 +217,12 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
     return tr_error(TR_ERR_NOMEM, "out of memory for %u vertices", m->nv);
   for (uint32_t v = 0; v < m->nv; v++)
     c.head[v] = TR_NONE;
-  if (!(c.tried = calloc(m->nv ? m->nv : 1, sizeof *c.tried))) {
+  c.tried = calloc(m->nv ? m->nv : 1, sizeof *c.tried);
+  c.mtried = calloc(m->nv ? m->nv : 1, sizeof *c.mtried);
+  if (!c.tried || !c.mtried) {
     free(c.head);
+    free(c.tried);
+    free(c.mtried);
     return tr_error(TR_ERR_NOMEM, "out of memory for %u vertices", m->nv);
   }
   for (uint32_t i = 0; i < sub->n && st == TR_OK; i++)
@@ -240,8 +244,12 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
      * second removal and relocation round, and then interior removal again, takes most
      * of them off (under --keep-surface, cheese, rotor, rotor_small and turbine of CGAL's
      * models failed with three rounds) */
-    unsigned rounds[5] = {TR_SUP_REMOVE, act, last, act, last};
-    int nr = (flags & TR_SUP_INTERIOR) ? 5 : 3;
+    /* then merging, once one by one nothing more goes: a merge moves the point that
+     * stays, which can block a removal one by one that would have come later (on
+     * chazelle_g8 merging in the earlier rounds left 9 points where they leave none) */
+    unsigned rounds[6] = {TR_SUP_REMOVE, act, last, act, last,
+                          last | (flags & TR_SUP_MERGE)};
+    int nr = (flags & TR_SUP_INTERIOR) ? ((flags & TR_SUP_MERGE) ? 6 : 5) : 3;
     for (int r = 0; r < nr && st == TR_OK; r++) {
       if (!(rounds[r] & act))
         continue;
@@ -304,6 +312,7 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
   tr_u32buf_free(&f);
   free(c.head);
   free(c.tried);
+  free(c.mtried);
   free(c.v);
   free(c.tri);
   free(c.lnext);

@@ -18,6 +18,7 @@ typedef struct sup_ctx {
   uint32_t *lnext, *lsub;      /* nodes: next node, sub-face */
   uint64_t *tried;             /* nv or NULL: per interior point, the key of its star at
                                   its last failed retriangulation (star.c), 0 none */
+  uint64_t *mtried;            /* nv or NULL: the same for its last failed merge (merge.c) */
 } sup_ctx;
 
 /* Appends sub-face (a,b,c) of input triangle tri and links it to its vertices. */
@@ -55,5 +56,27 @@ tr_status sup_flip_out(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t
 #define SUP_FILL_EXPAND 3
 tr_status sup_star_fill(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t region,
                         int dbl, int rounds, uint32_t *tnew, int *done);
+
+/* 1 iff every face of f (nf triples, right-hand normal pointing in) not on apex sees
+ * apex (a vertex; TR_NONE: the double point q) strictly positively, exactly and, with
+ * dbl, with every point at its double too (star.c). */
+int sup_sees_all(const struct tr_mesh *m, const uint32_t *f, size_t nf, uint32_t apex,
+                 const double *q, int dbl);
+/* A double point q that sees every face of bf (sup_sees_all): candidates from p0 along
+ * dir (dir[3] the step, 0: none), between p0 and g, projections into the kernel (with
+ * `relaxes` margins, the costly part), the centroids of the tets of star (star.c). 1 if
+ * found. */
+#define SUP_RELAX_PASSES 6
+int sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
+               const double *p0, const double g[3], const double dir[4], int dbl, int relaxes,
+               double q[3]);
+
+/* Two interior Steiner points become one (merge.c): for a neighbour q of interior point
+ * p that is an interior Steiner point too, the union of their stars is replaced by the
+ * cone from q, from p (then q is the one that goes), or from a double point in the
+ * union's kernel, where q moves. *done = 1 if one of them is gone; else the mesh is
+ * untouched. */
+tr_status sup_merge(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t region, int dbl,
+                    int *done);
 
 #endif

@@ -205,7 +205,7 @@ void t_progress(void)
   /* every stage the pipeline runs, in order, each opened (0) and closed (1) */
   static const int order[] = {TR_STAGE_VALIDATE, TR_STAGE_SMOOTH, TR_STAGE_DELAUNAY,
                               TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR,
-                              TR_STAGE_ROUND};
+                              TR_STAGE_SUPPRESS, TR_STAGE_ROUND};
   int n = (int)(sizeof order / sizeof *order);
   EXPECT(rec.calls == 2 * n, "progress: %d calls (%d expected)", rec.calls, 2 * n);
   for (int i = 0; i < rec.calls && i < 2 * n; i++)
@@ -255,7 +255,7 @@ void t_progress_refinement(void)
   }
   static const int order[] = {TR_STAGE_VALIDATE, TR_STAGE_SMOOTH, TR_STAGE_DELAUNAY,
                               TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR,
-                              TR_STAGE_REFINE, TR_STAGE_ROUND};
+                              TR_STAGE_SUPPRESS, TR_STAGE_REFINE, TR_STAGE_ROUND};
   int n = (int)(sizeof order / sizeof *order);
   EXPECT(rec.calls == 2 * n, "progress: %d calls (%d expected)", rec.calls, 2 * n);
   for (int i = 0; i < rec.calls && i < 2 * n; i++)
