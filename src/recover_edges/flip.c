@@ -361,9 +361,18 @@ tr_status tr_flip_journal_undo(struct tr_mesh *m, tr_flip_journal *j, uint32_t t
   return TR_OK;
 }
 
+static int spent(const tr_flip_journal *j)
+{
+  return j->budget && j->tries >= j->budget;
+}
+
 tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, void *ud,
                       tr_flip_journal *j, int *done)
 {
+  *done = 0;
+  if (spent(j))
+    return TR_OK;
+  j->tries++;
   TR_CHECK(journal_room(j));
   TR_CHECK(tr_flip23(m, t, k, guard, ud, &j->r[j->n], done));
   if (*done)
@@ -374,6 +383,10 @@ tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard,
 static tr_status remove_j(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                           tr_flip_guard guard, void *ud, tr_flip_journal *j, int *done)
 {
+  *done = 0;
+  if (spent(j))
+    return TR_OK;
+  j->tries++;
   TR_CHECK(journal_room(j));
   TR_CHECK(tr_flip_remove_edge(m, a, b, t0, guard, ud, &j->r[j->n], done));
   if (*done)
@@ -401,7 +414,7 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
                                  int *done)
 {
   TR_CHECK(remove_j(m, a, b, t0, guard, ud, j, done));
-  if (*done || depth <= 1)
+  if (*done || depth <= 1 || spent(j))
     return TR_OK;
   uint32_t e2[2] = {a, b};
   if (guard && guard(ud, e2, 2))
@@ -433,7 +446,7 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
      * try changes nothing (progress is any flip), so trying the same r again when the
      * next shell tet lists it would repeat the same work for the same answer. */
     uint32_t seen[64], nseen = 0;
-    for (size_t i = 0; i < sh.n && !progress && s == TR_OK; i++) {
+    for (size_t i = 0; i < sh.n && !progress && s == TR_OK && !spent(j); i++) {
       uint32_t tv[4];
       memcpy(tv, m->tv + 4 * (size_t)sh.a[i], sizeof tv); /* flips may move m->tv */
       for (int q = 0; q < 4 && !progress && s == TR_OK; q++) {
@@ -453,7 +466,7 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
         } else if (!shell_face(m, &sh, a, b, r, &t, &k))
           continue;
         s = tr_flip23_j(m, t, k, guard, ud, j, &ok);
-        if (s == TR_OK && !ok && depth > 2) {
+        if (s == TR_OK && !ok && depth > 2 && !spent(j)) {
           /* the Swap23 is blocked by edge a-r or b-r: try removing one of them */
           s = tr_flip_remove_edge_nm(m, a, r, TR_NONE, depth - 1, guard, ud, j, &ok);
           if (s == TR_OK && !ok)

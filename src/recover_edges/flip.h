@@ -79,6 +79,11 @@ typedef struct tr_flip_journal {
   uint32_t flips[5]; /* kept in the journal by kind: 2-3, 3-2, 4-4, n >= 5, hull */
   tr_flip_measure measure;
   void *mud;
+  /* Flip attempts (made or refused) allowed, 0 = no limit: the recursion of
+   * tr_flip_remove_edge_nm grows exponentially with its depth, and the deep searches of
+   * edge recovery stop when this many attempts were spent. `tries` counts them; the
+   * caller resets it. */
+  uint32_t budget, tries;
 } tr_flip_journal;
 void tr_flip_journal_free(tr_flip_journal *j);
 /* Undoes the journal's flips back to its first `to` entries (newest first). */
@@ -88,7 +93,8 @@ tr_status tr_flip_journal_undo(struct tr_mesh *m, tr_flip_journal *j, uint32_t t
  * it is, shrink its shell by Swap23 on the faces (a, b, r_i) and, with depth > 1, by
  * removing the edges a-r_i / b-r_i that block those Swap23s first, then retry. Every
  * flip made is appended to j (also when ab stays: the caller decides whether to keep
- * them, typically by j->delta). depth 1 = plain removal. */
+ * them, typically by j->delta). depth 1 = plain removal. Once j->budget attempts are
+ * spent (j->budget > 0), no further flip is tried and *done stays 0. */
 tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                                  int depth, tr_flip_guard guard, void *ud, tr_flip_journal *j,
                                  int *done);

@@ -87,6 +87,11 @@ tr_status tr_pipe_try_flips(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *
 tr_status tr_pipe_try_flips_depth(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
                                   const struct tr_edgeset *cons, tr_segmemo *memo, int depth,
                                   tr_edge_stats *st, int *done);
+/* The same with at most `budget` flip attempts (made or refused, over all candidates and
+ * rounds; 0 = no limit, flip.h's journal budget): the deep levels of edge recovery. */
+tr_status tr_pipe_try_flips_budget(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
+                                   const struct tr_edgeset *cons, tr_segmemo *memo, int depth,
+                                   uint32_t budget, tr_edge_stats *st, int *done);
 
 /* Splits ab at one exact point M (midsplit.c): its midpoint, or, when that lies in the
  * pipels at a or at b, the first point nested midpoints would reach between them; the

@@ -52,6 +52,20 @@
 #define TR_EDGE_DEEP_FLIP_TETS 8
 #define TR_EDGE_DEEP_FLIP_DEPTH 4
 
+/* The deepening pass between pass 1 and pass 2 (TetGen's way, Si 2015: the flip level
+ * rises one by one over all the edges left): levels TR_EDGE_DEEPEN_FROM (pass 1's depth
+ * again, now that other edges are in) to TR_EDGE_DEEPEN_MAX, at most
+ * TR_EDGE_DEEPEN_BUDGET flip attempts per sub-segment and level (the recursion grows
+ * exponentially with the depth; the budget keeps each level's cost linear in the number
+ * of edges left). */
+#ifndef TR_EDGE_DEEPEN_MAX
+#define TR_EDGE_DEEPEN_MAX 6
+#endif
+#define TR_EDGE_DEEPEN_FROM 3
+#ifndef TR_EDGE_DEEPEN_BUDGET
+#define TR_EDGE_DEEPEN_BUDGET 800
+#endif
+
 /* Midpoint splits allowed per input edge in pass 2 (0: the paper's pipels only). */
 #ifndef TR_EDGE_MIDPOINT_SPLITS
 #define TR_EDGE_MIDPOINT_SPLITS 64
@@ -74,6 +88,8 @@ typedef struct ctx {
   tr_edge_recovery_opts opt;
   tr_lawson law;        /* scratch of the Lawson flips */
   tr_lawson_stats lst;
+  int depth;            /* > 0: the deepening pass's flip depth (steiner == 0 only) */
+  uint32_t budget;      /* its flip attempts per sub-segment */
 } ctx;
 
 /* The Lawson flips may delete neither a constraint edge nor a pending sub-segment of the
@@ -248,7 +264,10 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
                       v0, v1);
     int done;
     TR_CHECK(tr_pipe_try_swaps(m, v0, v1, &c->pipe, &c->cons, &c->est, &done));
-    if (!done && !c->opt.no_flips)
+    if (!done && !c->opt.no_flips && c->depth > 0 && !steiner)
+      TR_CHECK(tr_pipe_try_flips_budget(m, v0, v1, &c->pipe, &c->cons, &c->memo, c->depth,
+                                        c->budget, &c->est, &done));
+    else if (!done && !c->opt.no_flips)
       TR_CHECK(tr_pipe_try_flips(m, v0, v1, &c->pipe, &c->cons, &c->memo, &c->est, &done));
     if (done) {
       TR_CHECK(tr_edgeset_put(&c->cons, v0, v1, i));
@@ -396,6 +415,27 @@ static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
     else if (complete)
       st->through_vertices++;
   }
+  /* the deepening pass: every edge still missing again, with deeper flips level by
+   * level (an edge recovered at one level can unblock another at the next) */
+  c->budget = TR_EDGE_DEEPEN_BUDGET;
+  for (int d = TR_EDGE_DEEPEN_FROM; d <= TR_EDGE_DEEPEN_MAX && !c->opt.no_flips && s == TR_OK;
+       d++) {
+    c->depth = d;
+    for (uint32_t k = 0; k < nmiss && s == TR_OK; k++) {
+      if (!left[k])
+        continue;
+      int complete;
+      uint32_t np;
+      if ((s = recover_one(c, missing[k], 0, &complete, &np)) != TR_OK) {
+        s = edge_fail(c, missing[k], s);
+        break;
+      }
+      left[k] = !complete;
+      if (complete)
+        st->recovered_by_swap++;
+    }
+  }
+  c->depth = 0;
   /* pass 2: Steiner points for the rest */
   for (uint32_t k = 0; k < nmiss && s == TR_OK; k++) {
     if (!left[k])

@@ -1,9 +1,10 @@
 #!/bin/sh
 # The rounding repair stops at its budget (once a fuzz_pipeline timeout: the search ran
 # for minutes on a cluster of Steiner points) with a clear error and exit status 9 for a
-# double output, while the exact output is written and passes the exact check. The star
-# (fuzz_pipeline's kind, n = 2) needs one repaired Steiner point: with --round-budget 1
-# the repair runs out; with the default budget the same input is written as doubles.
+# double output, while the exact output is written and passes the exact check. The surface
+# (tests/hard's chazelle_g4_ulps: Chazelle's grooves moved by ulps) needs one repaired
+# Steiner point: with --round-budget 1 the repair runs out; with the default budget the
+# same input is written as doubles.
 # --keep-steiner: the point stays on the surface (by default it is taken off it, and then
 # needs no repair).
 # usage: round_budget.sh TETREC SURFACE WORKDIR
@@ -30,7 +31,7 @@ grep -q 'conforms exactly' "$work/check.log" || say "check does not say it confo
 "$tetrec" mesh "$in" -o "$work/double.mesh" --keep-steiner --stats "$work/stats.json" 2>"$work/default.log" ||
   say "default budget: exit $?: $(tail -2 "$work/default.log")"
 grep -q '"rounding_repairs": 1,' "$work/stats.json" ||
-  say "the star no longer needs exactly one repair: pick another (fuzz_pipeline stars)"
+  say "the star no longer needs exactly one repair: pick another surface"
 "$tetrec" check "$in" "$work/double.mesh" 2>"$work/check2.log" ||
   say "check of the repaired double mesh exited $?: $(cat "$work/check2.log")"
 for bad in 0 -1 1e6 12x ""; do

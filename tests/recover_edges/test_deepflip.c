@@ -1,17 +1,24 @@
-/* The deeper flip search that edge recovery tries on a short pipe before a Steiner point
- * (tr_pipe_try_flips_depth, depth 4 of recover_edges.c).
- * Usage: test_deepflip <npoints> <seed> [coordinate range, default 1000]
+/* The deeper flip searches of edge recovery: depth 4 on a short pipe before a Steiner
+ * point, and the deepening pass's levels (tr_pipe_try_flips_budget, recover_edges.c).
+ * Usage: test_deepflip <npoints> <seed> [coordinate range, default 1000] [depth D, default
+ *        4] [flip budget, default 0 = none]
+ *        test_deepflip faceedge <npoints> <seed> <range>
  *
  * Two Delaunay meshes of the same random integer points, lattice points in a small range
  * (degenerate: cospherical and coplanar sets, the cases where depth 4 pays; the build is
  * deterministic, so the two are the same mesh). Segments are short, like a surface's
  * edges. In each, the segments that are not mesh edges (and pass through no vertex) are
- * recovered by flips alone, one after the other, the recovered ones protected: in the first mesh with depth 3 (what pass 1 does),
- * in the second with depth 3 and then, where that fails, depth 4. After every call the
- * validator runs (links, exact orientation, v2t, Euler, exact volume unchanged); a
- * segment reported recovered is a mesh edge, and every protected edge is still one. Depth
- * 4 must recover some segment that depth 3 could not, else the test shows nothing (the
- * two meshes are not compared segment by segment: they diverge once one has more). */
+ * recovered by flips alone, one after the other, the recovered ones protected: in the
+ * first mesh with depth 3 (what pass 1 does), then, where that fails, each depth from 4
+ * to D-1 in turn; in the second the same and then depth D. After every call the validator
+ * runs (links, exact orientation, v2t, Euler, exact volume unchanged); a segment reported
+ * recovered is a mesh edge, and every protected edge is still one. Depth D must recover
+ * some segment that depths 3..D-1 could not, else the test shows nothing (the two meshes
+ * are not compared segment by segment: they diverge once one has more).
+ *
+ * faceedge: segments whose pipe is three tets, ab crossing two faces, where the Swap23 of
+ * both faces is refused (tried, and undone if made); tr_pipe_try_flips must recover some
+ * of them (by removing an edge of a crossed face), validator after each. */
 #include <gmp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,8 +45,10 @@ static int has_edge(struct tr_mesh *m, uint32_t a, uint32_t b)
   return tr_mesh_has_edge(m, a, b, &yes) == TR_OK && yes;
 }
 
-/* Recovers the segments seg[0..2n) by flips; returns how many, or -1 on a failure. */
-static int run(struct tr_mesh *m, const uint32_t *seg, int n, int deep, mpq_t vol, int *extra)
+/* Recovers the segments seg[0..2n) by flips, depth 3, then 4 .. maxd where that fails;
+ * returns how many, or -1 on a failure; *extra: how many depth maxd recovered. */
+static int run(struct tr_mesh *m, const uint32_t *seg, int n, int maxd, uint32_t budget,
+               mpq_t vol, int *extra)
 {
   tr_edgeset cons;
   tr_pipe p;
@@ -57,15 +66,16 @@ static int run(struct tr_mesh *m, const uint32_t *seg, int n, int deep, mpq_t vo
     memset(&st, 0, sizeof st);
     int done = 0;
     tr_status s = tr_pipe_try_flips(m, a, b, &p, &cons, NULL, &st, &done);
-    if (s == TR_OK && !done && deep) {
-      s = tr_pipe_try_flips_depth(m, a, b, &p, &cons, NULL, 4, &st, &done);
-      *extra += done;
+    for (int d = 4; d <= maxd && s == TR_OK && !done; d++) {
+      s = tr_pipe_try_flips_budget(m, a, b, &p, &cons, NULL, d, budget, &st, &done);
+      if (d == maxd)
+        *extra += done;
     }
     if (s != TR_OK) {
       fprintf(stderr, "segment %u-%u: %s\n", a, b, tr_last_error());
       failures++;
     } else if (tr_check_mesh(m, CHECKS, vol) != TR_OK) {
-      fprintf(stderr, "segment %u-%u (deep %d): %s\n", a, b, deep, tr_last_error());
+      fprintf(stderr, "segment %u-%u (depth %d): %s\n", a, b, maxd, tr_last_error());
       failures++;
     } else if (done && !has_edge(m, a, b)) {
       fprintf(stderr, "segment %u-%u reported recovered but missing\n", a, b);
@@ -88,11 +98,114 @@ static int run(struct tr_mesh *m, const uint32_t *seg, int n, int deep, mpq_t vo
   return failures ? -1 : got;
 }
 
+/* 1 iff the Swap23 of face k of t is refused (when it is made, it is undone). */
+static int swap23_refused(struct tr_mesh *m, uint32_t t, int k)
+{
+  tr_flip_rec rec;
+  int done = 0;
+  if (tr_flip23(m, t, k, NULL, NULL, &rec, &done) != TR_OK) {
+    failures++;
+    return 0;
+  }
+  if (done && tr_flip_undo(m, &rec) != TR_OK)
+    failures++;
+  return !done;
+}
+
+static int faceedge(uint32_t np, uint32_t range)
+{
+  double *x = malloc(sizeof *x * 3 * np);
+  struct tr_mesh *m = NULL;
+  if (!x)
+    return 1;
+  for (uint32_t i = 0; i < 3 * np; i++)
+    x[i] = (double)(next_u32() % range);
+  if (tr_delaunay_build(x, np, &m) != TR_OK) {
+    fprintf(stderr, "delaunay: %s\n", tr_last_error());
+    return 1;
+  }
+  mpq_t vol;
+  mpq_init(vol);
+  if (tr_check_mesh(m, CHECKS, NULL) != TR_OK || tr_mesh_volume6(m, vol) != TR_OK) {
+    fprintf(stderr, "initial mesh: %s\n", tr_last_error());
+    return 1;
+  }
+  tr_edgeset cons;
+  tr_pipe p;
+  memset(&cons, 0, sizeof cons);
+  memset(&p, 0, sizeof p);
+  int cases = 0, got = 0;
+  for (uint32_t a = 0; a < np && !failures; a++)
+    for (uint32_t b = a + 1; b < np && !failures; b++) {
+      uint32_t via = TR_NONE;
+      if (has_edge(m, a, b) || tr_pipe_collect(m, a, b, &p, &via) != TR_OK || via != TR_NONE)
+        continue;
+      /* three real tets: a's (NOD_FAC), the middle one (FAC_FAC), b's (FAC_NOD) */
+      uint32_t nreal = 0, nfac = 0;
+      for (uint32_t i = 0; i < p.n; i++)
+        if (!p.pl[i].ghost) {
+          nreal++;
+          int ty = p.pl[i].type & 15;
+          nfac += ty == TR_PIPEL_TYPE(TR_NOD, TR_FAC) || ty == TR_PIPEL_TYPE(TR_FAC, TR_NOD);
+        }
+      if (nreal != 3 || nfac != 2)
+        continue;
+      int refused = 1;
+      for (uint32_t i = 0; i < p.n && refused; i++)
+        if (!p.pl[i].ghost && (p.pl[i].type & 15) == TR_PIPEL_TYPE(TR_NOD, TR_FAC))
+          refused = swap23_refused(m, p.pl[i].iEle, p.pl[i].iCod2);
+        else if (!p.pl[i].ghost && (p.pl[i].type & 15) == TR_PIPEL_TYPE(TR_FAC, TR_NOD))
+          refused = swap23_refused(m, p.pl[i].iEle, p.pl[i].iCod1);
+      if (!refused || failures)
+        continue;
+      if (tr_pipe_collect(m, a, b, &p, &via) != TR_OK)
+        failures++;
+      cases++;
+      tr_edge_stats st;
+      memset(&st, 0, sizeof st);
+      int done = 0;
+      if (!failures && tr_pipe_try_flips(m, a, b, &p, &cons, NULL, &st, &done) != TR_OK) {
+        fprintf(stderr, "segment %u-%u: %s\n", a, b, tr_last_error());
+        failures++;
+      } else if (tr_check_mesh(m, CHECKS, vol) != TR_OK) {
+        fprintf(stderr, "segment %u-%u: %s\n", a, b, tr_last_error());
+        failures++;
+      } else if (done && !has_edge(m, a, b)) {
+        fprintf(stderr, "segment %u-%u reported recovered but missing\n", a, b);
+        failures++;
+      } else if (done) {
+        got++;
+        if (tr_edgeset_put(&cons, a, b, 0) != TR_OK)
+          failures++;
+      }
+    }
+  printf("%u points: %d segments through two faces whose Swap23 is refused, %d recovered by "
+         "flips\n", np, cases, got);
+  if (!failures && got == 0) {
+    fprintf(stderr, "no such segment recovered: a test of nothing\n");
+    failures++;
+  }
+  tr_pipe_free(&p);
+  tr_edgeset_free(&cons);
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
+  free(x);
+  return failures != 0;
+}
+
 int main(int argc, char **argv)
 {
+  if (argc == 5 && strcmp(argv[1], "faceedge") == 0) {
+    rng = (uint64_t)atoll(argv[3]);
+    return faceedge((uint32_t)atoi(argv[2]), (uint32_t)atoi(argv[4]));
+  }
   if (argc < 3)
     return 2;
   uint32_t np = (uint32_t)atoi(argv[1]), range = argc > 3 ? (uint32_t)atoi(argv[3]) : 1000;
+  int maxd = argc > 4 ? atoi(argv[4]) : 4;
+  uint32_t budget = argc > 5 ? (uint32_t)atoi(argv[5]) : 0;
+  if (maxd < 4)
+    return 2;
   rng = (uint64_t)atoll(argv[2]);
   double *x = malloc(sizeof *x * 3 * np);
   if (!x)
@@ -131,13 +244,14 @@ int main(int argc, char **argv)
     return 1;
   }
   int e3, e4;
-  int r3 = run(m3, seg, nseg, 0, vol, &e3);
-  int r4 = run(m4, seg, nseg, 1, vol, &e4);
-  printf("%u points, %d segments: depth 3 recovers %d; depth 3 then 4 recovers %d (%d by "
-         "depth 4)\n",
-         np, nseg, r3, r4, e4);
+  int r3 = run(m3, seg, nseg, maxd - 1, budget, vol, &e3);
+  int r4 = run(m4, seg, nseg, maxd, budget, vol, &e4);
+  printf("%u points, %d segments: depths 3..%d recover %d; depths 3..%d recover %d (%d by "
+         "depth %d)\n",
+         np, nseg, maxd - 1, r3, maxd, r4, e4, maxd);
   if (!failures && e4 == 0) {
-    fprintf(stderr, "depth 4 recovered nothing depth 3 could not: a test of nothing\n");
+    fprintf(stderr, "depth %d recovered nothing depths 3..%d could not: a test of nothing\n",
+            maxd, maxd - 1);
     failures++;
   }
   mpq_clear(vol);
