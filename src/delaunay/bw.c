@@ -28,7 +28,6 @@
  * converted to tv/tn at the end (the pass and the larger lines cost more than the
  * misses saved); caching vertex - p differences per insertion.
  */
-#include <pthread.h>
 #include <stdlib.h>
 #include <math.h>
 #include <string.h>
@@ -280,74 +279,6 @@ static tr_status build(dt *D, uint32_t nthreads, uint32_t prefix)
   return TR_OK;
 }
 
-/* Back from insertion ids to input indices, and v2t[v]: the last tet in slot order that
- * has v (v2t is not needed while building: walks start from the last tet). With several
- * threads, each renumbers a range of slots and records its own last tets (thread 0 in
- * v2t itself); the merge keeps, for each vertex, the record of the last range that has
- * it: the same v2t as one pass. */
-typedef struct rjob {
-  struct tr_mesh *m;
-  const uint32_t *order;
-  uint32_t *v2t; /* this range's last tets (TR_NONE: none) */
-  uint32_t t0, t1;
-} rjob;
-
-static void *renumber_range(void *arg)
-{
-  rjob *J = arg;
-  uint32_t *v2t = J->v2t;
-  const uint32_t *order = J->order;
-  for (uint32_t i = 0; i < J->m->nv; i++)
-    v2t[i] = TR_NONE;
-  for (uint32_t t = J->t0; t < J->t1; t++) {
-    uint32_t *v = J->m->tv + 4 * (size_t)t;
-    if (v[0] == TR_NONE)
-      continue;
-    for (int k = 0; k < 3; k++) {
-      v[k] = order[v[k]];
-      v2t[v[k]] = t;
-    }
-    if (v[3] != TR_GHOST) {
-      v[3] = order[v[3]];
-      v2t[v[3]] = t;
-    }
-  }
-  return NULL;
-}
-
-static tr_status renumber(struct tr_mesh *m, const uint32_t *order, uint32_t nthreads)
-{
-  memset(m->flags, 0, m->nt); /* the build never sets flags; new slots were not cleared */
-  /* a range of at least 2^16 slots (~10^4 vertices) per thread: below that, starting a
-   * thread costs more than it saves */
-  uint32_t nth = nthreads < m->nt >> 16 ? nthreads : m->nt >> 16;
-  nth = nth < 1 ? 1 : nth > 64 ? 64 : nth;
-  uint32_t *loc = NULL;
-  if (nth > 1 && !(loc = malloc((size_t)(nth - 1) * m->nv * sizeof *loc)))
-    nth = 1; /* no room for the threads' records: one pass */
-  rjob J[64];
-  for (uint32_t j = 0; j < nth; j++)
-    J[j] = (rjob){m, order, j ? loc + (size_t)(j - 1) * m->nv : m->v2t,
-                  (uint32_t)((uint64_t)m->nt * j / nth), (uint32_t)((uint64_t)m->nt * (j + 1) / nth)};
-  pthread_t th[64];
-  int started[64] = {0};
-  for (uint32_t j = 1; j < nth; j++)
-    started[j] = pthread_create(&th[j], NULL, renumber_range, &J[j]) == 0;
-  renumber_range(&J[0]);
-  for (uint32_t j = 1; j < nth; j++) {
-    if (started[j])
-      pthread_join(th[j], NULL);
-    else
-      renumber_range(&J[j]);
-  }
-  for (uint32_t j = 1; j < nth; j++)
-    for (uint32_t i = 0; i < m->nv; i++)
-      if (J[j].v2t[i] != TR_NONE)
-        m->v2t[i] = J[j].v2t[i];
-  free(loc);
-  return TR_OK;
-}
-
 tr_status tr_delaunay_build(const double *xyz, uint32_t n, struct tr_mesh **out)
 {
   return tr_delaunay_build_ex(xyz, n, 1, 0, out);
@@ -436,10 +367,9 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
     goto done;
   /* on insertion ids: they follow the Hilbert curve, so the canonical order keeps the
    * locality of the build (input indices may be in any order), and they are a function
-   * of the input alone, like the tetrahedralization */
-  if ((s = tr_delaunay_canonical_threads(m, nthreads)) != TR_OK)
-    goto done;
-  s = renumber(m, order, nthreads > 1 ? (uint32_t)nthreads : 1);
+   * of the input alone, like the tetrahedralization; the tets are written back in input
+   * indices (and v2t set) as they are sorted */
+  s = tr_delaunay_canonical_map(m, nthreads, order);
 done:
   free(order);
   free(P);

@@ -9,13 +9,17 @@
  * three slots (TR_GHOST stays in slot 3); real tets first, sorted by vertex tuple, then
  * the ghosts sorted by their hull face; free slots dropped, neighbours renumbered.
  * tr_delaunay_build calls it on insertion ids (Hilbert order, a function of the input),
- * then maps the ids back to input indices.
+ * with the map back to input indices, applied as the sorted tets are written.
  *
  * Cost: one counting sort on the first vertex (a bucket holds ~6.7 tets on random points;
- * a bucket of a vertex with a huge star falls back to qsort), a pass to write the new
- * arrays. Linear in the number of tets. With several threads every pass is cut into one
- * range per thread (tets for the counting and the writing, buckets for the sorting; each
- * thread counts into its own array, so a bucket holds thread 0's tets first): the
+ * a bucket of a vertex with a huge star falls back to qsort), a pass to write the
+ * neighbours. Linear in the number of tets. No new tet arrays: a sorted bucket record
+ * (three vertices and the old slot, 16 bytes) is overwritten in place by the tet's
+ * vertices, so the records become the new tv, and the new tn goes where the old tv
+ * was (read for the last time by the scatter). Fresh pages cost about 1 us each to
+ * fault in, a quarter of this pass before. With several threads every pass is cut into
+ * one range per thread (tets for the counting and the writing, buckets for the sorting;
+ * each thread counts into its own array, so a bucket holds thread 0's tets first): the
  * records of a bucket end up sorted the same way whatever the cut, so the store is the
  * same byte for byte. */
 #include <pthread.h>
@@ -86,7 +90,9 @@ static inline int skey_less(const skey *x, const skey *y)
 typedef struct cjob {
   struct tr_mesh *m;
   uint8_t *rot;
-  uint32_t *newid, *end, *cnt, *tv, *tn;
+  uint32_t *newid, *end, *cnt, *tn;
+  const uint32_t *order; /* vertex id map (NULL: none) */
+  uint32_t *v2t;         /* C: the last new slot of each vertex in this job's range */
   skey *sk;
   uint32_t nv, t0, t1;
   size_t b0, b1;
@@ -126,13 +132,16 @@ static void phase_scatter(cjob *J)
     }
 }
 
-/* C: each bucket sorted by the other three vertices (J->end[b]: the end of bucket b),
- * then the new slot of each of its tets. */
+/* C: each bucket sorted by the other three vertices (J->end[b]: the end of bucket b);
+ * then each record, in order, becomes its tet's new slot: the old slot goes to newid,
+ * the four (mapped) vertices over the record. */
 static void phase_sort(cjob *J)
 {
   skey *sk = J->sk;
+  const uint32_t *order = J->order;
+  uint32_t *v2t = J->v2t, *newid = J->newid;
+  const uint32_t nv = J->nv;
   uint32_t lo = J->b0 ? J->end[J->b0 - 1] : 0;
-  const uint32_t first = lo;
   for (size_t b = J->b0; b < J->b1; b++) {
     const uint32_t hi = J->end[b];
     if (hi - lo > 32) {
@@ -148,28 +157,43 @@ static void phase_sort(cjob *J)
         sk[j] = x;
       }
     }
+    const int ghost = b >= nv;
+    const uint32_t v0 = (uint32_t)(ghost ? b - nv : b);
+    const uint32_t w0 = order ? order[v0] : v0;
+    for (uint32_t i = lo; i < hi; i++) {
+      const skey k = sk[i];
+      newid[k.t] = i;
+      skey w = {{w0, k.v[0], k.v[1]}, k.v[2]};
+      if (order) {
+        w.v[1] = order[w.v[1]];
+        w.v[2] = order[w.v[2]];
+        w.t = ghost ? TR_GHOST : order[w.t];
+      }
+      sk[i] = w;
+      v2t[w.v[0]] = v2t[w.v[1]] = v2t[w.v[2]] = i;
+      if (!ghost)
+        v2t[w.t] = i;
+    }
     lo = hi;
   }
-  for (uint32_t i = first; i < lo; i++)
-    J->newid[sk[i].t] = i;
 }
 
-/* D: the tets written to their new slots, in old slot order (the reads stream, the
- * writes go to two lines per tet). */
+/* D: the neighbours of each tet written to its new slot, in old slot order (the reads
+ * stream, the writes go to one line per tet). */
 static void phase_write(cjob *J)
 {
-  const struct tr_mesh *m = J->m;
-  const uint32_t *newid = J->newid;
+  const uint32_t *otn = J->m->tn, *newid = J->newid;
+  const uint8_t *rot = J->rot;
+  uint32_t *tn = J->tn;
   for (uint32_t t = J->t0; t < J->t1; t++) {
     const uint32_t o = newid[t];
     if (o == TR_NONE)
       continue;
-    const uint8_t *p = PERM[J->rot[t]];
+    const uint8_t *p = PERM[rot[t]];
     for (int j = 0; j < 4; j++) {
-      J->tv[4 * (size_t)o + j] = m->tv[4 * (size_t)t + p[j]];
-      const uint32_t c = m->tn[4 * (size_t)t + p[j]];
+      const uint32_t c = otn[4 * (size_t)t + p[j]];
       const uint32_t u = c >> 2;
-      J->tn[4 * (size_t)o + j] = 4 * newid[u] + INV[J->rot[u]][c & 3];
+      tn[4 * (size_t)o + j] = 4 * newid[u] + INV[rot[u]][c & 3];
     }
   }
 }
@@ -208,14 +232,19 @@ static void run_phase(cjob *J, int nth, int phase)
 
 tr_status tr_delaunay_canonical(struct tr_mesh *m)
 {
-  return tr_delaunay_canonical_threads(m, 1);
+  return tr_delaunay_canonical_map(m, 1, NULL);
 }
 
 tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads)
 {
+  return tr_delaunay_canonical_map(m, nthreads, NULL);
+}
+
+tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint32_t *order)
+{
   const uint32_t nt = m->nt, nv = m->nv;
   const size_t nb = 2 * (size_t)nv + 1; /* buckets: real by first vertex, then ghosts */
-  /* a thread's counts cost 8 bytes per vertex: not worth it for a small mesh */
+  /* a thread's counts and v2t cost 12 bytes per vertex: not worth it for a small mesh */
   int nth = nthreads < 1 ? 1 : nthreads > CANON_MAX_THREADS ? CANON_MAX_THREADS : nthreads;
   if (nt / 65536u < (uint32_t)nth)
     nth = nt / 65536u ? (int)(nt / 65536u) : 1;
@@ -223,20 +252,26 @@ tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads)
   uint32_t *end = malloc(nb * sizeof *end);
   uint32_t *cnt = calloc(nb * (size_t)nth, sizeof *cnt);
   uint32_t *newid = malloc((nt ? nt : 1) * sizeof *newid);
-  skey *sk = malloc((nt ? nt : 1) * sizeof *sk);
-  uint32_t *tv = malloc(4 * (size_t)(m->cap_t ? m->cap_t : 1) * sizeof *tv);
-  uint32_t *tn = malloc(4 * (size_t)(m->cap_t ? m->cap_t : 1) * sizeof *tn);
+  uint32_t *loc = nth > 1 ? malloc((size_t)(nth - 1) * (nv ? nv : 1) * sizeof *loc) : NULL;
+  /* the records, then the new tv: room for cap_t tets */
+  skey *sk = malloc((m->cap_t ? m->cap_t : 1) * sizeof *sk);
   tr_status s = TR_OK;
-  if (!rot || !end || !cnt || !newid || !sk || !tv || !tn) {
+  if (!rot || !end || !cnt || !newid || !sk || (nth > 1 && !loc)) {
     s = tr_error(TR_ERR_NOMEM, "out of memory ordering %u tets", nt);
     goto done;
   }
+  _Static_assert(sizeof(skey) == 4 * sizeof(uint32_t), "a record is a tv entry");
   cjob J[CANON_MAX_THREADS];
   for (int j = 0; j < nth; j++)
     J[j] = (cjob){.m = m, .rot = rot, .newid = newid, .end = end,
-                  .cnt = cnt + nb * (size_t)j, .tv = tv, .tn = tn, .sk = sk, .nv = nv,
+                  .cnt = cnt + nb * (size_t)j, .order = order, .sk = sk, .nv = nv,
+                  .v2t = j ? loc + (size_t)(j - 1) * nv : m->v2t,
                   .t0 = (uint32_t)((uint64_t)nt * (uint32_t)j / (uint32_t)nth),
                   .t1 = (uint32_t)((uint64_t)nt * (uint32_t)(j + 1) / (uint32_t)nth)};
+  for (uint32_t i = 0; i < nv; i++)
+    m->v2t[i] = TR_NONE;
+  for (size_t i = 0; i < (size_t)(nth - 1) * nv; i++)
+    loc[i] = TR_NONE;
   run_phase(J, nth, 0);
   /* bucket b holds the records of thread 0, then 1, ...: cnt becomes where each
    * thread's next record of b goes, end[b] the end of b */
@@ -261,23 +296,29 @@ tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads)
     J[j].b1 = b;
   }
   run_phase(J, nth, 2);
+  /* the old tv was last read by the scatter: the new tn goes there */
+  for (int j = 0; j < nth; j++)
+    J[j].tn = m->tv;
   run_phase(J, nth, 3);
-  free(m->tv);
   free(m->tn);
-  m->tv = tv;
-  m->tn = tn;
-  tv = tn = NULL;
+  m->tn = m->tv;
+  m->tv = (uint32_t *)sk;
+  sk = NULL;
   m->nt = nlive;
   m->free_head = TR_NONE;
   m->nfree = 0;
   memset(m->flags, 0, m->cap_t);
+  /* v2t: the last slot of each vertex; a later range's record is a later slot */
+  for (int j = 1; j < nth; j++)
+    for (uint32_t i = 0; i < nv; i++)
+      if (J[j].v2t[i] != TR_NONE)
+        m->v2t[i] = J[j].v2t[i];
 done:
   free(rot);
   free(end);
   free(cnt);
   free(newid);
-  free(tv);
-  free(tn);
+  free(loc);
   free(sk);
   return s;
 }

@@ -50,12 +50,16 @@ int tr_delaunay_thread_count(int threads);
 
 /* Puts the tet store in canonical order (canon.c): real tets first, sorted by vertex
  * tuple, each rotated (orientation kept) to its smallest vertex first, then the ghosts;
- * free slots dropped, neighbours renumbered, flags cleared; v2t is left to the caller.
+ * free slots dropped, neighbours renumbered, flags cleared, v2t[v] the last slot with v
+ * (TR_NONE: none).
  * The store then depends only on the tetrahedralization and the vertex numbering, not on
  * the order the tets were made in. */
 tr_status tr_delaunay_canonical(struct tr_mesh *m);
 /* The same with up to nthreads threads (at most one per 65536 tets); the same store. */
 tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads);
+/* The same, then every vertex id v replaced by order[v] (order NULL: kept; the sort is
+ * on the ids before the map, v2t after it). */
+tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint32_t *order);
 
 /* Insertion order used by the builder: the distinct points (first of each duplicate
  * group), in BRIO rounds each sorted along a Hilbert curve. order gets *nuniq indices;
