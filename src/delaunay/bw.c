@@ -270,6 +270,8 @@ static tr_status build(dt *D, uint32_t nthreads, uint32_t prefix)
   for (uint32_t i = 4; i < ser; i++)
     TR_CHECK(insert(D, i));
   if (ser < D->n)
+    STAT_LAP("prefix");
+  if (ser < D->n)
     TR_CHECK(tr_dt_insert_parallel(D, ser, nthreads));
 #ifdef TR_DT_STATS
   fprintf(stderr, "points %llu (%llu by the hash) insphere %.2f walk %.2f cavity %.2f boundary "
@@ -295,6 +297,7 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
                                struct tr_mesh **out)
 {
   *out = NULL;
+  STAT_LAP(NULL);
   for (uint32_t i = 0; i < n; i++)
     for (int c = 0; c < 3; c++) {
       double x = xyz[3 * (size_t)i + (size_t)c];
@@ -324,9 +327,11 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   for (uint32_t i = 0; i < n; i++)
     m->v2t[i] = TR_NONE;
   uint32_t nu = 0;
+  STAT_LAP("copy");
   if ((s = tr_spatial_order(xyz, n, order, &nu, m->dup_map)) != TR_OK)
     goto done;
   m->ndup = n - nu;
+  STAT_LAP("sort");
   if ((s = first_simplex(xyz, n, order, nu)) != TR_OK)
     goto done;
   P = malloc((size_t)nu * sizeof *P);
@@ -363,13 +368,16 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   if ((s = grow_buf((void **)&D.cav, &D.capcav, 256, sizeof *D.cav)) != TR_OK ||
       (s = grow_buf((void **)&D.bf, &D.capbf, 256, sizeof *D.bf)) != TR_OK)
     goto done;
+  STAT_LAP("points");
   if ((s = build(&D, nthreads > 1 ? (uint32_t)nthreads : 1, prefix)) != TR_OK)
     goto done;
+  STAT_LAP("insert");
   /* on insertion ids: they follow the Hilbert curve, so the canonical order keeps the
    * locality of the build (input indices may be in any order), and they are a function
    * of the input alone, like the tetrahedralization; the tets are written back in input
    * indices (and v2t set) as they are sorted */
   s = tr_delaunay_canonical_map(m, nthreads, order);
+  STAT_LAP("canonical");
 done:
   free(order);
   free(P);

@@ -30,6 +30,24 @@
 
 #define CANON_MAX_THREADS 64
 
+#ifdef TR_DT_STATS
+#include <stdio.h>
+#include <time.h>
+static void lap(const char *what)
+{
+  static double prev;
+  struct timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  const double now = (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+  if (what)
+    fprintf(stderr, "    canon %-8s %.3f s\n", what, now - prev);
+  prev = now;
+}
+#define LAP(what) lap(what)
+#else
+#define LAP(what) ((void)0)
+#endif
+
 /* PERM[r]: new slot j takes old slot PERM[r][j]. 0..11: real tets, r = 3k + s where k is
  * the old slot of the smallest vertex and s the rotation of the other three, listed from
  * OTH[k] (an order that makes (k, OTH[k]) even); 12..14: ghosts, rotations of slots
@@ -45,7 +63,7 @@ static const uint8_t INV[15][4] = {
     {3, 2, 1, 0}, {2, 1, 3, 0}, {0, 1, 2, 3}, {2, 0, 1, 3}, {1, 2, 0, 3}};
 
 /* The rotation of tet v (see PERM). */
-static uint8_t rotation(const uint32_t *v)
+static uint8_t rotation_slow(const uint32_t *v)
 {
   if (v[3] == TR_GHOST) {
     const int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
@@ -57,6 +75,30 @@ static uint8_t rotation(const uint32_t *v)
   const uint8_t *o = OTH[k];
   const int s = v[o[0]] < v[o[1]] ? (v[o[0]] < v[o[2]] ? 0 : 2) : (v[o[1]] < v[o[2]] ? 1 : 2);
   return (uint8_t)(3 * k + s);
+}
+
+/* rotation_slow as a lookup on the pairwise comparisons (bit i: the i-th of v0<v1,
+ * v0<v2, v0<v3, v1<v2, v1<v3, v2<v3; ghosts: v0<v1, v0<v2, v1<v2), computed from it for
+ * the 24 orders of four distinct vertices (255: no order, some vertices equal): which
+ * vertex is smallest follows no pattern, and the branches of rotation_slow mispredicted
+ * about twice per tet. */
+static const uint8_t ROT_REAL[64] = {
+    10,  10,  255, 9,   255, 255, 255, 2,   11,  255, 11,  9,   255, 255, 255, 2,
+    255, 255, 255, 255, 255, 255, 255, 255, 4,   255, 4,   255, 255, 255, 3,   0,
+    8,   8,   255, 255, 255, 6,   255, 1,   255, 255, 255, 255, 255, 255, 255, 255,
+    7,   255, 255, 255, 7,   6,   255, 1,   5,   255, 255, 255, 5,   255, 3,   0};
+static const uint8_t ROT_GHOST[8] = {14, 14, 255, 12, 13, 255, 13, 12};
+
+static inline uint8_t rotation(const uint32_t *v)
+{
+  uint8_t r;
+  if (v[3] == TR_GHOST) {
+    r = ROT_GHOST[(v[0] < v[1]) | (v[0] < v[2]) << 1 | (v[1] < v[2]) << 2];
+  } else {
+    r = ROT_REAL[(v[0] < v[1]) | (v[0] < v[2]) << 1 | (v[0] < v[3]) << 2 | (v[1] < v[2]) << 3 |
+                 (v[1] < v[3]) << 4 | (v[2] < v[3]) << 5];
+  }
+  return r != 255 ? r : rotation_slow(v);
 }
 
 /* A tet in the sort: its canonical slots 1..3 (slot 0 is the bucket) and old slot. The
@@ -75,13 +117,11 @@ static int skey_cmp(const void *a, const void *b)
   return 0;
 }
 
+/* skey_cmp(x, y) < 0 with the first two vertices in one comparison */
 static inline int skey_less(const skey *x, const skey *y)
 {
-  if (x->v[0] != y->v[0])
-    return x->v[0] < y->v[0];
-  if (x->v[1] != y->v[1])
-    return x->v[1] < y->v[1];
-  return x->v[2] < y->v[2];
+  const uint64_t a = (uint64_t)x->v[0] << 32 | x->v[1], b = (uint64_t)y->v[0] << 32 | y->v[1];
+  return a < b || (a == b && x->v[2] < y->v[2]);
 }
 
 /* One thread's share of each phase: a range of old slots (phases A, B, D) and a range of
@@ -272,7 +312,9 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
     m->v2t[i] = TR_NONE;
   for (size_t i = 0; i < (size_t)(nth - 1) * nv; i++)
     loc[i] = TR_NONE;
+  LAP(NULL);
   run_phase(J, nth, 0);
+  LAP("count");
   /* bucket b holds the records of thread 0, then 1, ...: cnt becomes where each
    * thread's next record of b goes, end[b] the end of b */
   uint32_t run = 0;
@@ -286,6 +328,7 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
   }
   const uint32_t nlive = run;
   run_phase(J, nth, 1);
+  LAP("scatter");
   /* the buckets cut into runs of about nlive / nth records */
   size_t b = 0;
   for (int j = 0; j < nth; j++) {
@@ -296,10 +339,12 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
     J[j].b1 = b;
   }
   run_phase(J, nth, 2);
+  LAP("sort");
   /* the old tv was last read by the scatter: the new tn goes there */
   for (int j = 0; j < nth; j++)
     J[j].tn = m->tv;
   run_phase(J, nth, 3);
+  LAP("write");
   free(m->tn);
   m->tn = m->tv;
   m->tv = (uint32_t *)sk;
