@@ -328,7 +328,7 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
     m->v2t[i] = TR_NONE;
   uint32_t nu = 0;
   STAT_LAP("copy");
-  if ((s = tr_spatial_order(xyz, n, order, &nu, m->dup_map)) != TR_OK)
+  if ((s = tr_spatial_order_threads(xyz, n, order, &nu, m->dup_map, nthreads)) != TR_OK)
     goto done;
   m->ndup = n - nu;
   STAT_LAP("sort");

@@ -66,6 +66,9 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
  * dup_map (n entries) receives the kept index of every point. Deterministic. */
 tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint32_t *nuniq,
                            uint32_t *dup_map);
+/* The same with up to nthreads threads (at most one per 65536 points); the same order. */
+tr_status tr_spatial_order_threads(const double *xyz, uint32_t n, uint32_t *order,
+                                   uint32_t *nuniq, uint32_t *dup_map, int nthreads);
 
 /* Hilbert index of an integer point with `bits` bits per coordinate (3*bits <= 64). */
 uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits);
