@@ -293,22 +293,95 @@ tr_status tr_delaunay_build_threads(const double *xyz, uint32_t n, int threads,
   return tr_delaunay_build_ex(xyz, n, nt, TR_DT_SERIAL_PREFIX * (uint32_t)nt, out);
 }
 
+/* One thread's range [i0, i1) of the per-point passes around the sort: phase 0 checks
+ * and copies the input points (bad: the first non-finite one, TR_NONE if none) and
+ * clears v2t; phase 1 gathers the points in insertion order (P) and their bounding box. */
+typedef struct pjob {
+  const double *xyz;
+  struct tr_mesh *m;
+  const uint32_t *order;
+  dvtx *P;
+  uint32_t i0, i1, bad;
+  int phase;
+  double lo[3], hi[3];
+} pjob;
+
+static void *points_job(void *arg)
+{
+  pjob *J = arg;
+  if (J->phase == 0) {
+    J->bad = TR_NONE;
+    for (uint32_t i = J->i0; i < J->i1 && J->bad == TR_NONE; i++)
+      for (int c = 0; c < 3; c++) {
+        const double x = J->xyz[3 * (size_t)i + (size_t)c];
+        if (!(x - x == 0))
+          J->bad = i;
+      }
+    memcpy(J->m->xyz + 3 * (size_t)J->i0, J->xyz + 3 * (size_t)J->i0,
+           3 * (size_t)(J->i1 - J->i0) * sizeof *J->xyz);
+    for (uint32_t i = J->i0; i < J->i1; i++)
+      J->m->v2t[i] = TR_NONE;
+    return NULL;
+  }
+  dvtx *P = J->P;
+  for (int c = 0; c < 3; c++)
+    J->lo[c] = J->hi[c] = J->xyz[3 * (size_t)J->order[J->i0] + (size_t)c];
+  for (uint32_t i = J->i0; i < J->i1; i++) {
+    memcpy(P[i].x, J->xyz + 3 * (size_t)J->order[i], sizeof P[i].x);
+    P[i].orig = J->order[i];
+    P[i].tag = 0;
+    for (int c = 0; c < 3; c++) {
+      J->lo[c] = P[i].x[c] < J->lo[c] ? P[i].x[c] : J->lo[c];
+      J->hi[c] = P[i].x[c] > J->hi[c] ? P[i].x[c] : J->hi[c];
+    }
+  }
+  return NULL;
+}
+
+/* Runs phase `phase` of the per-point passes on [0, n) with up to nthreads threads (one
+ * per 2^16 points at most). */
+static void points_pass(pjob *J, int nthreads, uint32_t n, int phase)
+{
+  int nth = nthreads < 1 ? 1 : nthreads > 64 ? 64 : nthreads;
+  if (n >> 16 < (uint32_t)nth)
+    nth = n >> 16 ? (int)(n >> 16) : 1;
+  for (int j = 0; j < nth; j++) {
+    J[j] = J[0];
+    J[j].phase = phase;
+    J[j].i0 = (uint32_t)((uint64_t)n * (uint32_t)j / (uint32_t)nth);
+    J[j].i1 = (uint32_t)((uint64_t)n * (uint32_t)(j + 1) / (uint32_t)nth);
+  }
+  tr_dt_run_jobs(points_job, J, sizeof *J, nth);
+  for (int j = 1; j < nth; j++) {
+    J[0].bad = J[0].bad != TR_NONE ? J[0].bad : J[j].bad; /* the first one */
+    for (int c = 0; c < 3; c++) {
+      J[0].lo[c] = J[j].lo[c] < J[0].lo[c] ? J[j].lo[c] : J[0].lo[c];
+      J[0].hi[c] = J[j].hi[c] > J[0].hi[c] ? J[j].hi[c] : J[0].hi[c];
+    }
+  }
+}
+
 tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint32_t prefix,
                                struct tr_mesh **out)
 {
   *out = NULL;
   STAT_LAP(NULL);
-  for (uint32_t i = 0; i < n; i++)
-    for (int c = 0; c < 3; c++) {
-      double x = xyz[3 * (size_t)i + (size_t)c];
-      if (!(x - x == 0))
-        return tr_error(TR_ERR_INPUT, "point %u has a non-finite coordinate (%g)", i, x);
-    }
   if (n >= (TR_GHOST - 1) || n > (UINT32_MAX / 4 - 64) / 7)
     return tr_error(TR_ERR_NOMEM, "too many points (%u)", n);
   struct tr_mesh *m;
   /* ~6.7 tets per point for uniform random points; growth covers the rest. */
   TR_CHECK(tr_mesh_create(n, 7 * n + 64, &m));
+  pjob PJ[64];
+  PJ[0] = (pjob){.xyz = xyz, .m = m};
+  if (n)
+    points_pass(PJ, nthreads, n, 0);
+  if (n && PJ[0].bad != TR_NONE) {
+    const uint32_t i = PJ[0].bad;
+    const double *x = xyz + 3 * (size_t)i;
+    tr_mesh_destroy(m);
+    return tr_error(TR_ERR_INPUT, "point %u has a non-finite coordinate (%g)", i,
+                    x[0] - x[0] != 0 ? x[0] : x[1] - x[1] != 0 ? x[1] : x[2]);
+  }
   tr_status s = TR_OK;
   dt D;
   memset(&D, 0, sizeof D);
@@ -321,11 +394,7 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
     s = tr_error(TR_ERR_NOMEM, "out of memory for %u points", n);
     goto done;
   }
-  if (n)
-    memcpy(m->xyz, xyz, 3 * (size_t)n * sizeof *xyz);
   m->nv = n;
-  for (uint32_t i = 0; i < n; i++)
-    m->v2t[i] = TR_NONE;
   uint32_t nu = 0;
   STAT_LAP("copy");
   if ((s = tr_spatial_order_threads(xyz, n, order, &nu, m->dup_map, nthreads)) != TR_OK)
@@ -342,24 +411,14 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   }
   for (uint32_t i = 0; i < LDIM * LDIM; i++)
     D.map[i] = TR_NONE;
-  for (uint32_t i = 0; i < nu; i++) {
-    memcpy(P[i].x, xyz + 3 * (size_t)order[i], sizeof P[i].x);
-    P[i].orig = order[i];
-    P[i].tag = 0;
-  }
+  PJ[0] = (pjob){.xyz = xyz, .order = order, .P = P};
+  points_pass(PJ, nthreads, nu, 1);
   D.pv = P;
   D.stamp = 1;
   {
-    double lo[3], hi[3], ext = 0;
+    double ext = 0;
     for (int c = 0; c < 3; c++)
-      lo[c] = hi[c] = P[0].x[c];
-    for (uint32_t i = 1; i < nu; i++)
-      for (int c = 0; c < 3; c++) {
-        lo[c] = P[i].x[c] < lo[c] ? P[i].x[c] : lo[c];
-        hi[c] = P[i].x[c] > hi[c] ? P[i].x[c] : hi[c];
-      }
-    for (int c = 0; c < 3; c++)
-      ext = hi[c] - lo[c] > ext ? hi[c] - lo[c] : ext;
+      ext = PJ[0].hi[c] - PJ[0].lo[c] > ext ? PJ[0].hi[c] - PJ[0].lo[c] : ext;
     D.is_bound = static_is_bound(ext);
     D.o3_bound = static_o3_bound(ext);
   }

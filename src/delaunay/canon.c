@@ -197,6 +197,8 @@ static void phase_sort(cjob *J)
         sk[j] = x;
       }
     }
+    if (hi == lo)
+      continue; /* also the last bucket, nv + nv, whose vertex does not exist */
     const int ghost = b >= nv;
     const uint32_t v0 = (uint32_t)(ghost ? b - nv : b);
     const uint32_t w0 = order ? order[v0] : v0;

@@ -70,6 +70,11 @@ tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint3
 tr_status tr_spatial_order_threads(const double *xyz, uint32_t n, uint32_t *order,
                                    uint32_t *nuniq, uint32_t *dup_map, int nthreads);
 
+/* Runs fn on the nth (at most 64) jobs at job, each `size` bytes, job 0 on the calling
+ * thread; a job whose thread cannot start runs on the calling thread after the others
+ * (so no job may depend on which thread runs it). */
+void tr_dt_run_jobs(void *(*fn)(void *), void *job, size_t size, int nth);
+
 /* Hilbert index of an integer point with `bits` bits per coordinate (3*bits <= 64). */
 uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits);
 

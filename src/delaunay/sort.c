@@ -174,10 +174,7 @@ static void radix_sort(kv *a, kv *tmp, size_t n)
     memcpy(a, src, n * sizeof *a);
 }
 
-/* Runs fn on job[0..nth) of size `size`, job 0 on the calling thread; a job whose
- * thread cannot start runs here after the others (no job depends on which thread ran
- * it). */
-static void run_jobs(void *(*fn)(void *), void *job, size_t size, int nth)
+void tr_dt_run_jobs(void *(*fn)(void *), void *job, size_t size, int nth)
 {
   pthread_t th[TR_SORT_MAX_THREADS];
   int started[TR_SORT_MAX_THREADS] = {0};
@@ -232,7 +229,7 @@ static void radix_sort_par(kv *a, kv *tmp, size_t n, int nth, uint64_t varying)
     for (int j = 0; j < nth; j++)
       J[j] = (rjob){src, dst, n * (size_t)j / (size_t)nth, n * (size_t)(j + 1) / (size_t)nth,
                     sh, 0, {0}};
-    run_jobs(radix_job, J, sizeof *J, nth);
+    tr_dt_run_jobs(radix_job, J, sizeof *J, nth);
     uint32_t sum = 0;
     for (int d = 0; d < 256; d++)
       for (int j = 0; j < nth; j++) {
@@ -242,7 +239,7 @@ static void radix_sort_par(kv *a, kv *tmp, size_t n, int nth, uint64_t varying)
       }
     for (int j = 0; j < nth; j++)
       J[j].phase = 1;
-    run_jobs(radix_job, J, sizeof *J, nth);
+    tr_dt_run_jobs(radix_job, J, sizeof *J, nth);
     kv *t = src;
     src = dst;
     dst = t;
@@ -396,7 +393,7 @@ tr_status tr_spatial_order_threads(const double *xyz, uint32_t n, uint32_t *orde
     K[j] = (kjob){.xyz = xyz, .a = a,
                   .p0 = (uint32_t)((uint64_t)n * (uint32_t)j / (uint32_t)nth),
                   .p1 = (uint32_t)((uint64_t)n * (uint32_t)(j + 1) / (uint32_t)nth)};
-  run_jobs(key_job, K, sizeof *K, nth);
+  tr_dt_run_jobs(key_job, K, sizeof *K, nth);
   double lo[3], hi[3];
   for (int i = 0; i < 3; i++) {
     lo[i] = K[0].lo[i];
@@ -426,7 +423,7 @@ tr_status tr_spatial_order_threads(const double *xyz, uint32_t n, uint32_t *orde
     K[j].cells = cells;
     K[j].last = last;
   }
-  run_jobs(key_job, K, sizeof *K, nth);
+  tr_dt_run_jobs(key_job, K, sizeof *K, nth);
   if (nth == 1) {
     radix_sort(a, tmp, n);
   } else {
