@@ -29,6 +29,7 @@
 #include "delaunay.h"
 
 #define CANON_MAX_THREADS 64
+#define NR_NONE UINT64_MAX
 
 #ifdef TR_DT_STATS
 #include <stdio.h>
@@ -129,8 +130,8 @@ static inline int skey_less(const skey *x, const skey *y)
  * each bucket goes (B). */
 typedef struct cjob {
   struct tr_mesh *m;
-  uint8_t *rot;
-  uint32_t *newid, *end, *cnt, *tn;
+  uint64_t *nr; /* per old slot: (bucket, then new slot) << 8 | rotation; NR_NONE: free */
+  uint32_t *end, *cnt, *tn;
   const uint32_t *order; /* vertex id map (NULL: none) */
   uint32_t *v2t;         /* C: the last new slot of each vertex in this job's range */
   skey *sk;
@@ -139,20 +140,20 @@ typedef struct cjob {
   int phase;
 } cjob;
 
-/* A: the rotation and bucket of each live tet (in newid, for now), counted. */
+/* A: the rotation and bucket of each live tet (in nr, for now), counted. */
 static void phase_count(cjob *J)
 {
   const struct tr_mesh *m = J->m;
   for (uint32_t t = J->t0; t < J->t1; t++) {
     const uint32_t *v = m->tv + 4 * (size_t)t;
     if (v[0] == TR_NONE) {
-      J->newid[t] = TR_NONE;
+      J->nr[t] = NR_NONE;
       continue;
     }
     const uint8_t r = rotation(v);
-    J->rot[t] = r;
-    J->newid[t] = (r < 12 ? 0 : J->nv) + v[PERM[r][0]];
-    J->cnt[J->newid[t]]++;
+    const uint32_t b = (r < 12 ? 0 : J->nv) + v[PERM[r][0]];
+    J->nr[t] = (uint64_t)b << 8 | r;
+    J->cnt[b]++;
   }
 }
 
@@ -161,10 +162,10 @@ static void phase_scatter(cjob *J)
 {
   const struct tr_mesh *m = J->m;
   for (uint32_t t = J->t0; t < J->t1; t++)
-    if (J->newid[t] != TR_NONE) {
+    if (J->nr[t] != NR_NONE) {
       const uint32_t *v = m->tv + 4 * (size_t)t;
-      const uint8_t *p = PERM[J->rot[t]];
-      skey *k = &J->sk[J->cnt[J->newid[t]]++];
+      const uint8_t *p = PERM[J->nr[t] & 255];
+      skey *k = &J->sk[J->cnt[J->nr[t] >> 8]++];
       k->v[0] = v[p[1]];
       k->v[1] = v[p[2]];
       k->v[2] = v[p[3]];
@@ -173,13 +174,14 @@ static void phase_scatter(cjob *J)
 }
 
 /* C: each bucket sorted by the other three vertices (J->end[b]: the end of bucket b);
- * then each record, in order, becomes its tet's new slot: the old slot goes to newid,
+ * then each record, in order, becomes its tet's new slot: the new slot goes to nr,
  * the four (mapped) vertices over the record. */
 static void phase_sort(cjob *J)
 {
   skey *sk = J->sk;
   const uint32_t *order = J->order;
-  uint32_t *v2t = J->v2t, *newid = J->newid;
+  uint32_t *v2t = J->v2t;
+  uint64_t *nr = J->nr;
   const uint32_t nv = J->nv;
   uint32_t lo = J->b0 ? J->end[J->b0 - 1] : 0;
   for (size_t b = J->b0; b < J->b1; b++) {
@@ -204,7 +206,7 @@ static void phase_sort(cjob *J)
     const uint32_t w0 = order ? order[v0] : v0;
     for (uint32_t i = lo; i < hi; i++) {
       const skey k = sk[i];
-      newid[k.t] = i;
+      nr[k.t] = (uint64_t)i << 8 | (nr[k.t] & 255);
       skey w = {{w0, k.v[0], k.v[1]}, k.v[2]};
       if (order) {
         w.v[1] = order[w.v[1]];
@@ -224,18 +226,19 @@ static void phase_sort(cjob *J)
  * stream, the writes go to one line per tet). */
 static void phase_write(cjob *J)
 {
-  const uint32_t *otn = J->m->tn, *newid = J->newid;
-  const uint8_t *rot = J->rot;
+  const uint32_t *otn = J->m->tn;
+  const uint64_t *nr = J->nr;
   uint32_t *tn = J->tn;
   for (uint32_t t = J->t0; t < J->t1; t++) {
-    const uint32_t o = newid[t];
-    if (o == TR_NONE)
+    const uint64_t x = nr[t];
+    if (x == NR_NONE)
       continue;
-    const uint8_t *p = PERM[rot[t]];
+    const uint32_t o = (uint32_t)(x >> 8);
+    const uint8_t *p = PERM[x & 255];
     for (int j = 0; j < 4; j++) {
       const uint32_t c = otn[4 * (size_t)t + p[j]];
-      const uint32_t u = c >> 2;
-      tn[4 * (size_t)o + j] = 4 * newid[u] + INV[rot[u]][c & 3];
+      const uint64_t y = nr[c >> 2]; /* slot and rotation in one load: one miss */
+      tn[4 * (size_t)o + j] = 4 * (uint32_t)(y >> 8) + INV[y & 255][c & 3];
     }
   }
 }
@@ -290,22 +293,21 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
   int nth = nthreads < 1 ? 1 : nthreads > CANON_MAX_THREADS ? CANON_MAX_THREADS : nthreads;
   if (nt / 65536u < (uint32_t)nth)
     nth = nt / 65536u ? (int)(nt / 65536u) : 1;
-  uint8_t *rot = malloc(nt ? nt : 1);
+  uint64_t *nr = malloc((nt ? nt : 1) * sizeof *nr);
   uint32_t *end = malloc(nb * sizeof *end);
   uint32_t *cnt = calloc(nb * (size_t)nth, sizeof *cnt);
-  uint32_t *newid = malloc((nt ? nt : 1) * sizeof *newid);
   uint32_t *loc = nth > 1 ? malloc((size_t)(nth - 1) * (nv ? nv : 1) * sizeof *loc) : NULL;
   /* the records, then the new tv: room for cap_t tets */
   skey *sk = malloc((m->cap_t ? m->cap_t : 1) * sizeof *sk);
   tr_status s = TR_OK;
-  if (!rot || !end || !cnt || !newid || !sk || (nth > 1 && !loc)) {
+  if (!nr || !end || !cnt || !sk || (nth > 1 && !loc)) {
     s = tr_error(TR_ERR_NOMEM, "out of memory ordering %u tets", nt);
     goto done;
   }
   _Static_assert(sizeof(skey) == 4 * sizeof(uint32_t), "a record is a tv entry");
   cjob J[CANON_MAX_THREADS];
   for (int j = 0; j < nth; j++)
-    J[j] = (cjob){.m = m, .rot = rot, .newid = newid, .end = end,
+    J[j] = (cjob){.m = m, .nr = nr, .end = end,
                   .cnt = cnt + nb * (size_t)j, .order = order, .sk = sk, .nv = nv,
                   .v2t = j ? loc + (size_t)(j - 1) * nv : m->v2t,
                   .t0 = (uint32_t)((uint64_t)nt * (uint32_t)j / (uint32_t)nth),
@@ -361,10 +363,9 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
       if (J[j].v2t[i] != TR_NONE)
         m->v2t[i] = J[j].v2t[i];
 done:
-  free(rot);
+  free(nr);
   free(end);
   free(cnt);
-  free(newid);
   free(loc);
   free(sk);
   return s;
