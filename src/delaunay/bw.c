@@ -28,7 +28,6 @@
  * converted to tv/tn at the end (the pass and the larger lines cost more than the
  * misses saved); caching vertex - p differences per insertion.
  */
-#include <pthread.h>
 #include <stdlib.h>
 #include <math.h>
 #include <string.h>
@@ -271,80 +270,14 @@ static tr_status build(dt *D, uint32_t nthreads, uint32_t prefix)
   for (uint32_t i = 4; i < ser; i++)
     TR_CHECK(insert(D, i));
   if (ser < D->n)
+    STAT_LAP("prefix");
+  if (ser < D->n)
     TR_CHECK(tr_dt_insert_parallel(D, ser, nthreads));
 #ifdef TR_DT_STATS
   fprintf(stderr, "points %llu (%llu by the hash) insphere %.2f walk %.2f cavity %.2f boundary "
           "%.2f per point\n", st_pts, st_big, (double)st_ins / st_pts,
           (double)st_walk / st_pts, (double)st_cav / st_pts, (double)st_bf / st_pts);
 #endif
-  return TR_OK;
-}
-
-/* Back from insertion ids to input indices, and v2t[v]: the last tet in slot order that
- * has v (v2t is not needed while building: walks start from the last tet). With several
- * threads, each renumbers a range of slots and records its own last tets (thread 0 in
- * v2t itself); the merge keeps, for each vertex, the record of the last range that has
- * it: the same v2t as one pass. */
-typedef struct rjob {
-  struct tr_mesh *m;
-  const uint32_t *order;
-  uint32_t *v2t; /* this range's last tets (TR_NONE: none) */
-  uint32_t t0, t1;
-} rjob;
-
-static void *renumber_range(void *arg)
-{
-  rjob *J = arg;
-  uint32_t *v2t = J->v2t;
-  const uint32_t *order = J->order;
-  for (uint32_t i = 0; i < J->m->nv; i++)
-    v2t[i] = TR_NONE;
-  for (uint32_t t = J->t0; t < J->t1; t++) {
-    uint32_t *v = J->m->tv + 4 * (size_t)t;
-    if (v[0] == TR_NONE)
-      continue;
-    for (int k = 0; k < 3; k++) {
-      v[k] = order[v[k]];
-      v2t[v[k]] = t;
-    }
-    if (v[3] != TR_GHOST) {
-      v[3] = order[v[3]];
-      v2t[v[3]] = t;
-    }
-  }
-  return NULL;
-}
-
-static tr_status renumber(struct tr_mesh *m, const uint32_t *order, uint32_t nthreads)
-{
-  memset(m->flags, 0, m->nt); /* the build never sets flags; new slots were not cleared */
-  /* a range of at least 2^16 slots (~10^4 vertices) per thread: below that, starting a
-   * thread costs more than it saves */
-  uint32_t nth = nthreads < m->nt >> 16 ? nthreads : m->nt >> 16;
-  nth = nth < 1 ? 1 : nth > 64 ? 64 : nth;
-  uint32_t *loc = NULL;
-  if (nth > 1 && !(loc = malloc((size_t)(nth - 1) * m->nv * sizeof *loc)))
-    nth = 1; /* no room for the threads' records: one pass */
-  rjob J[64];
-  for (uint32_t j = 0; j < nth; j++)
-    J[j] = (rjob){m, order, j ? loc + (size_t)(j - 1) * m->nv : m->v2t,
-                  (uint32_t)((uint64_t)m->nt * j / nth), (uint32_t)((uint64_t)m->nt * (j + 1) / nth)};
-  pthread_t th[64];
-  int started[64] = {0};
-  for (uint32_t j = 1; j < nth; j++)
-    started[j] = pthread_create(&th[j], NULL, renumber_range, &J[j]) == 0;
-  renumber_range(&J[0]);
-  for (uint32_t j = 1; j < nth; j++) {
-    if (started[j])
-      pthread_join(th[j], NULL);
-    else
-      renumber_range(&J[j]);
-  }
-  for (uint32_t j = 1; j < nth; j++)
-    for (uint32_t i = 0; i < m->nv; i++)
-      if (J[j].v2t[i] != TR_NONE)
-        m->v2t[i] = J[j].v2t[i];
-  free(loc);
   return TR_OK;
 }
 
@@ -360,21 +293,95 @@ tr_status tr_delaunay_build_threads(const double *xyz, uint32_t n, int threads,
   return tr_delaunay_build_ex(xyz, n, nt, TR_DT_SERIAL_PREFIX * (uint32_t)nt, out);
 }
 
+/* One thread's range [i0, i1) of the per-point passes around the sort: phase 0 checks
+ * and copies the input points (bad: the first non-finite one, TR_NONE if none) and
+ * clears v2t; phase 1 gathers the points in insertion order (P) and their bounding box. */
+typedef struct pjob {
+  const double *xyz;
+  struct tr_mesh *m;
+  const uint32_t *order;
+  dvtx *P;
+  uint32_t i0, i1, bad;
+  int phase;
+  double lo[3], hi[3];
+} pjob;
+
+static void *points_job(void *arg)
+{
+  pjob *J = arg;
+  if (J->phase == 0) {
+    J->bad = TR_NONE;
+    for (uint32_t i = J->i0; i < J->i1 && J->bad == TR_NONE; i++)
+      for (int c = 0; c < 3; c++) {
+        const double x = J->xyz[3 * (size_t)i + (size_t)c];
+        if (!(x - x == 0))
+          J->bad = i;
+      }
+    memcpy(J->m->xyz + 3 * (size_t)J->i0, J->xyz + 3 * (size_t)J->i0,
+           3 * (size_t)(J->i1 - J->i0) * sizeof *J->xyz);
+    for (uint32_t i = J->i0; i < J->i1; i++)
+      J->m->v2t[i] = TR_NONE;
+    return NULL;
+  }
+  dvtx *P = J->P;
+  for (int c = 0; c < 3; c++)
+    J->lo[c] = J->hi[c] = J->xyz[3 * (size_t)J->order[J->i0] + (size_t)c];
+  for (uint32_t i = J->i0; i < J->i1; i++) {
+    memcpy(P[i].x, J->xyz + 3 * (size_t)J->order[i], sizeof P[i].x);
+    P[i].orig = J->order[i];
+    P[i].tag = 0;
+    for (int c = 0; c < 3; c++) {
+      J->lo[c] = P[i].x[c] < J->lo[c] ? P[i].x[c] : J->lo[c];
+      J->hi[c] = P[i].x[c] > J->hi[c] ? P[i].x[c] : J->hi[c];
+    }
+  }
+  return NULL;
+}
+
+/* Runs phase `phase` of the per-point passes on [0, n) with up to nthreads threads (one
+ * per 2^16 points at most). */
+static void points_pass(pjob *J, int nthreads, uint32_t n, int phase)
+{
+  int nth = nthreads < 1 ? 1 : nthreads > 64 ? 64 : nthreads;
+  if (n >> 16 < (uint32_t)nth)
+    nth = n >> 16 ? (int)(n >> 16) : 1;
+  for (int j = 0; j < nth; j++) {
+    J[j] = J[0];
+    J[j].phase = phase;
+    J[j].i0 = (uint32_t)((uint64_t)n * (uint32_t)j / (uint32_t)nth);
+    J[j].i1 = (uint32_t)((uint64_t)n * (uint32_t)(j + 1) / (uint32_t)nth);
+  }
+  tr_dt_run_jobs(points_job, J, sizeof *J, nth);
+  for (int j = 1; j < nth; j++) {
+    J[0].bad = J[0].bad != TR_NONE ? J[0].bad : J[j].bad; /* the first one */
+    for (int c = 0; c < 3; c++) {
+      J[0].lo[c] = J[j].lo[c] < J[0].lo[c] ? J[j].lo[c] : J[0].lo[c];
+      J[0].hi[c] = J[j].hi[c] > J[0].hi[c] ? J[j].hi[c] : J[0].hi[c];
+    }
+  }
+}
+
 tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint32_t prefix,
                                struct tr_mesh **out)
 {
   *out = NULL;
-  for (uint32_t i = 0; i < n; i++)
-    for (int c = 0; c < 3; c++) {
-      double x = xyz[3 * (size_t)i + (size_t)c];
-      if (!(x - x == 0))
-        return tr_error(TR_ERR_INPUT, "point %u has a non-finite coordinate (%g)", i, x);
-    }
+  STAT_LAP(NULL);
   if (n >= (TR_GHOST - 1) || n > (UINT32_MAX / 4 - 64) / 7)
     return tr_error(TR_ERR_NOMEM, "too many points (%u)", n);
   struct tr_mesh *m;
   /* ~6.7 tets per point for uniform random points; growth covers the rest. */
   TR_CHECK(tr_mesh_create(n, 7 * n + 64, &m));
+  pjob PJ[64];
+  PJ[0] = (pjob){.xyz = xyz, .m = m};
+  if (n)
+    points_pass(PJ, nthreads, n, 0);
+  if (n && PJ[0].bad != TR_NONE) {
+    const uint32_t i = PJ[0].bad;
+    const double *x = xyz + 3 * (size_t)i;
+    tr_mesh_destroy(m);
+    return tr_error(TR_ERR_INPUT, "point %u has a non-finite coordinate (%g)", i,
+                    x[0] - x[0] != 0 ? x[0] : x[1] - x[1] != 0 ? x[1] : x[2]);
+  }
   tr_status s = TR_OK;
   dt D;
   memset(&D, 0, sizeof D);
@@ -387,15 +394,13 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
     s = tr_error(TR_ERR_NOMEM, "out of memory for %u points", n);
     goto done;
   }
-  if (n)
-    memcpy(m->xyz, xyz, 3 * (size_t)n * sizeof *xyz);
   m->nv = n;
-  for (uint32_t i = 0; i < n; i++)
-    m->v2t[i] = TR_NONE;
   uint32_t nu = 0;
-  if ((s = tr_spatial_order(xyz, n, order, &nu, m->dup_map)) != TR_OK)
+  STAT_LAP("copy");
+  if ((s = tr_spatial_order_threads(xyz, n, order, &nu, m->dup_map, nthreads)) != TR_OK)
     goto done;
   m->ndup = n - nu;
+  STAT_LAP("sort");
   if ((s = first_simplex(xyz, n, order, nu)) != TR_OK)
     goto done;
   P = malloc((size_t)nu * sizeof *P);
@@ -406,24 +411,14 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   }
   for (uint32_t i = 0; i < LDIM * LDIM; i++)
     D.map[i] = TR_NONE;
-  for (uint32_t i = 0; i < nu; i++) {
-    memcpy(P[i].x, xyz + 3 * (size_t)order[i], sizeof P[i].x);
-    P[i].orig = order[i];
-    P[i].tag = 0;
-  }
+  PJ[0] = (pjob){.xyz = xyz, .order = order, .P = P};
+  points_pass(PJ, nthreads, nu, 1);
   D.pv = P;
   D.stamp = 1;
   {
-    double lo[3], hi[3], ext = 0;
+    double ext = 0;
     for (int c = 0; c < 3; c++)
-      lo[c] = hi[c] = P[0].x[c];
-    for (uint32_t i = 1; i < nu; i++)
-      for (int c = 0; c < 3; c++) {
-        lo[c] = P[i].x[c] < lo[c] ? P[i].x[c] : lo[c];
-        hi[c] = P[i].x[c] > hi[c] ? P[i].x[c] : hi[c];
-      }
-    for (int c = 0; c < 3; c++)
-      ext = hi[c] - lo[c] > ext ? hi[c] - lo[c] : ext;
+      ext = PJ[0].hi[c] - PJ[0].lo[c] > ext ? PJ[0].hi[c] - PJ[0].lo[c] : ext;
     D.is_bound = static_is_bound(ext);
     D.o3_bound = static_o3_bound(ext);
   }
@@ -432,14 +427,16 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   if ((s = grow_buf((void **)&D.cav, &D.capcav, 256, sizeof *D.cav)) != TR_OK ||
       (s = grow_buf((void **)&D.bf, &D.capbf, 256, sizeof *D.bf)) != TR_OK)
     goto done;
+  STAT_LAP("points");
   if ((s = build(&D, nthreads > 1 ? (uint32_t)nthreads : 1, prefix)) != TR_OK)
     goto done;
+  STAT_LAP("insert");
   /* on insertion ids: they follow the Hilbert curve, so the canonical order keeps the
    * locality of the build (input indices may be in any order), and they are a function
-   * of the input alone, like the tetrahedralization */
-  if ((s = tr_delaunay_canonical_threads(m, nthreads)) != TR_OK)
-    goto done;
-  s = renumber(m, order, nthreads > 1 ? (uint32_t)nthreads : 1);
+   * of the input alone, like the tetrahedralization; the tets are written back in input
+   * indices (and v2t set) as they are sorted */
+  s = tr_delaunay_canonical_map(m, nthreads, order);
+  STAT_LAP("canonical");
 done:
   free(order);
   free(P);

@@ -9,13 +9,17 @@
  * three slots (TR_GHOST stays in slot 3); real tets first, sorted by vertex tuple, then
  * the ghosts sorted by their hull face; free slots dropped, neighbours renumbered.
  * tr_delaunay_build calls it on insertion ids (Hilbert order, a function of the input),
- * then maps the ids back to input indices.
+ * with the map back to input indices, applied as the sorted tets are written.
  *
  * Cost: one counting sort on the first vertex (a bucket holds ~6.7 tets on random points;
- * a bucket of a vertex with a huge star falls back to qsort), a pass to write the new
- * arrays. Linear in the number of tets. With several threads every pass is cut into one
- * range per thread (tets for the counting and the writing, buckets for the sorting; each
- * thread counts into its own array, so a bucket holds thread 0's tets first): the
+ * a bucket of a vertex with a huge star falls back to qsort), a pass to write the
+ * neighbours. Linear in the number of tets. No new tet arrays: a sorted bucket record
+ * (three vertices and the old slot, 16 bytes) is overwritten in place by the tet's
+ * vertices, so the records become the new tv, and the new tn goes where the old tv
+ * was (read for the last time by the scatter). Fresh pages cost about 1 us each to
+ * fault in, a quarter of this pass before. With several threads every pass is cut into
+ * one range per thread (tets for the counting and the writing, buckets for the sorting;
+ * each thread counts into its own array, so a bucket holds thread 0's tets first): the
  * records of a bucket end up sorted the same way whatever the cut, so the store is the
  * same byte for byte. */
 #include <pthread.h>
@@ -25,6 +29,25 @@
 #include "delaunay.h"
 
 #define CANON_MAX_THREADS 64
+#define NR_NONE UINT64_MAX
+
+#ifdef TR_DT_STATS
+#include <stdio.h>
+#include <time.h>
+static void lap(const char *what)
+{
+  static double prev;
+  struct timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  const double now = (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+  if (what)
+    fprintf(stderr, "    canon %-8s %.3f s\n", what, now - prev);
+  prev = now;
+}
+#define LAP(what) lap(what)
+#else
+#define LAP(what) ((void)0)
+#endif
 
 /* PERM[r]: new slot j takes old slot PERM[r][j]. 0..11: real tets, r = 3k + s where k is
  * the old slot of the smallest vertex and s the rotation of the other three, listed from
@@ -41,7 +64,7 @@ static const uint8_t INV[15][4] = {
     {3, 2, 1, 0}, {2, 1, 3, 0}, {0, 1, 2, 3}, {2, 0, 1, 3}, {1, 2, 0, 3}};
 
 /* The rotation of tet v (see PERM). */
-static uint8_t rotation(const uint32_t *v)
+static uint8_t rotation_slow(const uint32_t *v)
 {
   if (v[3] == TR_GHOST) {
     const int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
@@ -53,6 +76,30 @@ static uint8_t rotation(const uint32_t *v)
   const uint8_t *o = OTH[k];
   const int s = v[o[0]] < v[o[1]] ? (v[o[0]] < v[o[2]] ? 0 : 2) : (v[o[1]] < v[o[2]] ? 1 : 2);
   return (uint8_t)(3 * k + s);
+}
+
+/* rotation_slow as a lookup on the pairwise comparisons (bit i: the i-th of v0<v1,
+ * v0<v2, v0<v3, v1<v2, v1<v3, v2<v3; ghosts: v0<v1, v0<v2, v1<v2), computed from it for
+ * the 24 orders of four distinct vertices (255: no order, some vertices equal): which
+ * vertex is smallest follows no pattern, and the branches of rotation_slow mispredicted
+ * about twice per tet. */
+static const uint8_t ROT_REAL[64] = {
+    10,  10,  255, 9,   255, 255, 255, 2,   11,  255, 11,  9,   255, 255, 255, 2,
+    255, 255, 255, 255, 255, 255, 255, 255, 4,   255, 4,   255, 255, 255, 3,   0,
+    8,   8,   255, 255, 255, 6,   255, 1,   255, 255, 255, 255, 255, 255, 255, 255,
+    7,   255, 255, 255, 7,   6,   255, 1,   5,   255, 255, 255, 5,   255, 3,   0};
+static const uint8_t ROT_GHOST[8] = {14, 14, 255, 12, 13, 255, 13, 12};
+
+static inline uint8_t rotation(const uint32_t *v)
+{
+  uint8_t r;
+  if (v[3] == TR_GHOST) {
+    r = ROT_GHOST[(v[0] < v[1]) | (v[0] < v[2]) << 1 | (v[1] < v[2]) << 2];
+  } else {
+    r = ROT_REAL[(v[0] < v[1]) | (v[0] < v[2]) << 1 | (v[0] < v[3]) << 2 | (v[1] < v[2]) << 3 |
+                 (v[1] < v[3]) << 4 | (v[2] < v[3]) << 5];
+  }
+  return r != 255 ? r : rotation_slow(v);
 }
 
 /* A tet in the sort: its canonical slots 1..3 (slot 0 is the bucket) and old slot. The
@@ -71,13 +118,11 @@ static int skey_cmp(const void *a, const void *b)
   return 0;
 }
 
+/* skey_cmp(x, y) < 0 with the first two vertices in one comparison */
 static inline int skey_less(const skey *x, const skey *y)
 {
-  if (x->v[0] != y->v[0])
-    return x->v[0] < y->v[0];
-  if (x->v[1] != y->v[1])
-    return x->v[1] < y->v[1];
-  return x->v[2] < y->v[2];
+  const uint64_t a = (uint64_t)x->v[0] << 32 | x->v[1], b = (uint64_t)y->v[0] << 32 | y->v[1];
+  return a < b || (a == b && x->v[2] < y->v[2]);
 }
 
 /* One thread's share of each phase: a range of old slots (phases A, B, D) and a range of
@@ -85,28 +130,30 @@ static inline int skey_less(const skey *x, const skey *y)
  * each bucket goes (B). */
 typedef struct cjob {
   struct tr_mesh *m;
-  uint8_t *rot;
-  uint32_t *newid, *end, *cnt, *tv, *tn;
+  uint64_t *nr; /* per old slot: (bucket, then new slot) << 8 | rotation; NR_NONE: free */
+  uint32_t *end, *cnt, *tn;
+  const uint32_t *order; /* vertex id map (NULL: none) */
+  uint32_t *v2t;         /* C: the last new slot of each vertex in this job's range */
   skey *sk;
   uint32_t nv, t0, t1;
   size_t b0, b1;
   int phase;
 } cjob;
 
-/* A: the rotation and bucket of each live tet (in newid, for now), counted. */
+/* A: the rotation and bucket of each live tet (in nr, for now), counted. */
 static void phase_count(cjob *J)
 {
   const struct tr_mesh *m = J->m;
   for (uint32_t t = J->t0; t < J->t1; t++) {
     const uint32_t *v = m->tv + 4 * (size_t)t;
     if (v[0] == TR_NONE) {
-      J->newid[t] = TR_NONE;
+      J->nr[t] = NR_NONE;
       continue;
     }
     const uint8_t r = rotation(v);
-    J->rot[t] = r;
-    J->newid[t] = (r < 12 ? 0 : J->nv) + v[PERM[r][0]];
-    J->cnt[J->newid[t]]++;
+    const uint32_t b = (r < 12 ? 0 : J->nv) + v[PERM[r][0]];
+    J->nr[t] = (uint64_t)b << 8 | r;
+    J->cnt[b]++;
   }
 }
 
@@ -115,10 +162,10 @@ static void phase_scatter(cjob *J)
 {
   const struct tr_mesh *m = J->m;
   for (uint32_t t = J->t0; t < J->t1; t++)
-    if (J->newid[t] != TR_NONE) {
+    if (J->nr[t] != NR_NONE) {
       const uint32_t *v = m->tv + 4 * (size_t)t;
-      const uint8_t *p = PERM[J->rot[t]];
-      skey *k = &J->sk[J->cnt[J->newid[t]]++];
+      const uint8_t *p = PERM[J->nr[t] & 255];
+      skey *k = &J->sk[J->cnt[J->nr[t] >> 8]++];
       k->v[0] = v[p[1]];
       k->v[1] = v[p[2]];
       k->v[2] = v[p[3]];
@@ -126,13 +173,17 @@ static void phase_scatter(cjob *J)
     }
 }
 
-/* C: each bucket sorted by the other three vertices (J->end[b]: the end of bucket b),
- * then the new slot of each of its tets. */
+/* C: each bucket sorted by the other three vertices (J->end[b]: the end of bucket b);
+ * then each record, in order, becomes its tet's new slot: the new slot goes to nr,
+ * the four (mapped) vertices over the record. */
 static void phase_sort(cjob *J)
 {
   skey *sk = J->sk;
+  const uint32_t *order = J->order;
+  uint32_t *v2t = J->v2t;
+  uint64_t *nr = J->nr;
+  const uint32_t nv = J->nv;
   uint32_t lo = J->b0 ? J->end[J->b0 - 1] : 0;
-  const uint32_t first = lo;
   for (size_t b = J->b0; b < J->b1; b++) {
     const uint32_t hi = J->end[b];
     if (hi - lo > 32) {
@@ -148,28 +199,46 @@ static void phase_sort(cjob *J)
         sk[j] = x;
       }
     }
+    if (hi == lo)
+      continue; /* also the last bucket, nv + nv, whose vertex does not exist */
+    const int ghost = b >= nv;
+    const uint32_t v0 = (uint32_t)(ghost ? b - nv : b);
+    const uint32_t w0 = order ? order[v0] : v0;
+    for (uint32_t i = lo; i < hi; i++) {
+      const skey k = sk[i];
+      nr[k.t] = (uint64_t)i << 8 | (nr[k.t] & 255);
+      skey w = {{w0, k.v[0], k.v[1]}, k.v[2]};
+      if (order) {
+        w.v[1] = order[w.v[1]];
+        w.v[2] = order[w.v[2]];
+        w.t = ghost ? TR_GHOST : order[w.t];
+      }
+      sk[i] = w;
+      v2t[w.v[0]] = v2t[w.v[1]] = v2t[w.v[2]] = i;
+      if (!ghost)
+        v2t[w.t] = i;
+    }
     lo = hi;
   }
-  for (uint32_t i = first; i < lo; i++)
-    J->newid[sk[i].t] = i;
 }
 
-/* D: the tets written to their new slots, in old slot order (the reads stream, the
- * writes go to two lines per tet). */
+/* D: the neighbours of each tet written to its new slot, in old slot order (the reads
+ * stream, the writes go to one line per tet). */
 static void phase_write(cjob *J)
 {
-  const struct tr_mesh *m = J->m;
-  const uint32_t *newid = J->newid;
+  const uint32_t *otn = J->m->tn;
+  const uint64_t *nr = J->nr;
+  uint32_t *tn = J->tn;
   for (uint32_t t = J->t0; t < J->t1; t++) {
-    const uint32_t o = newid[t];
-    if (o == TR_NONE)
+    const uint64_t x = nr[t];
+    if (x == NR_NONE)
       continue;
-    const uint8_t *p = PERM[J->rot[t]];
+    const uint32_t o = (uint32_t)(x >> 8);
+    const uint8_t *p = PERM[x & 255];
     for (int j = 0; j < 4; j++) {
-      J->tv[4 * (size_t)o + j] = m->tv[4 * (size_t)t + p[j]];
-      const uint32_t c = m->tn[4 * (size_t)t + p[j]];
-      const uint32_t u = c >> 2;
-      J->tn[4 * (size_t)o + j] = 4 * newid[u] + INV[J->rot[u]][c & 3];
+      const uint32_t c = otn[4 * (size_t)t + p[j]];
+      const uint64_t y = nr[c >> 2]; /* slot and rotation in one load: one miss */
+      tn[4 * (size_t)o + j] = 4 * (uint32_t)(y >> 8) + INV[y & 255][c & 3];
     }
   }
 }
@@ -208,36 +277,48 @@ static void run_phase(cjob *J, int nth, int phase)
 
 tr_status tr_delaunay_canonical(struct tr_mesh *m)
 {
-  return tr_delaunay_canonical_threads(m, 1);
+  return tr_delaunay_canonical_map(m, 1, NULL);
 }
 
 tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads)
 {
+  return tr_delaunay_canonical_map(m, nthreads, NULL);
+}
+
+tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint32_t *order)
+{
   const uint32_t nt = m->nt, nv = m->nv;
   const size_t nb = 2 * (size_t)nv + 1; /* buckets: real by first vertex, then ghosts */
-  /* a thread's counts cost 8 bytes per vertex: not worth it for a small mesh */
+  /* a thread's counts and v2t cost 12 bytes per vertex: not worth it for a small mesh */
   int nth = nthreads < 1 ? 1 : nthreads > CANON_MAX_THREADS ? CANON_MAX_THREADS : nthreads;
   if (nt / 65536u < (uint32_t)nth)
     nth = nt / 65536u ? (int)(nt / 65536u) : 1;
-  uint8_t *rot = malloc(nt ? nt : 1);
+  uint64_t *nr = malloc((nt ? nt : 1) * sizeof *nr);
   uint32_t *end = malloc(nb * sizeof *end);
   uint32_t *cnt = calloc(nb * (size_t)nth, sizeof *cnt);
-  uint32_t *newid = malloc((nt ? nt : 1) * sizeof *newid);
-  skey *sk = malloc((nt ? nt : 1) * sizeof *sk);
-  uint32_t *tv = malloc(4 * (size_t)(m->cap_t ? m->cap_t : 1) * sizeof *tv);
-  uint32_t *tn = malloc(4 * (size_t)(m->cap_t ? m->cap_t : 1) * sizeof *tn);
+  uint32_t *loc = nth > 1 ? malloc((size_t)(nth - 1) * (nv ? nv : 1) * sizeof *loc) : NULL;
+  /* the records, then the new tv: room for cap_t tets */
+  skey *sk = malloc((m->cap_t ? m->cap_t : 1) * sizeof *sk);
   tr_status s = TR_OK;
-  if (!rot || !end || !cnt || !newid || !sk || !tv || !tn) {
+  if (!nr || !end || !cnt || !sk || (nth > 1 && !loc)) {
     s = tr_error(TR_ERR_NOMEM, "out of memory ordering %u tets", nt);
     goto done;
   }
+  _Static_assert(sizeof(skey) == 4 * sizeof(uint32_t), "a record is a tv entry");
   cjob J[CANON_MAX_THREADS];
   for (int j = 0; j < nth; j++)
-    J[j] = (cjob){.m = m, .rot = rot, .newid = newid, .end = end,
-                  .cnt = cnt + nb * (size_t)j, .tv = tv, .tn = tn, .sk = sk, .nv = nv,
+    J[j] = (cjob){.m = m, .nr = nr, .end = end,
+                  .cnt = cnt + nb * (size_t)j, .order = order, .sk = sk, .nv = nv,
+                  .v2t = j ? loc + (size_t)(j - 1) * nv : m->v2t,
                   .t0 = (uint32_t)((uint64_t)nt * (uint32_t)j / (uint32_t)nth),
                   .t1 = (uint32_t)((uint64_t)nt * (uint32_t)(j + 1) / (uint32_t)nth)};
+  for (uint32_t i = 0; i < nv; i++)
+    m->v2t[i] = TR_NONE;
+  for (size_t i = 0; i < (size_t)(nth - 1) * nv; i++)
+    loc[i] = TR_NONE;
+  LAP(NULL);
   run_phase(J, nth, 0);
+  LAP("count");
   /* bucket b holds the records of thread 0, then 1, ...: cnt becomes where each
    * thread's next record of b goes, end[b] the end of b */
   uint32_t run = 0;
@@ -251,6 +332,7 @@ tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads)
   }
   const uint32_t nlive = run;
   run_phase(J, nth, 1);
+  LAP("scatter");
   /* the buckets cut into runs of about nlive / nth records */
   size_t b = 0;
   for (int j = 0; j < nth; j++) {
@@ -261,23 +343,30 @@ tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads)
     J[j].b1 = b;
   }
   run_phase(J, nth, 2);
+  LAP("sort");
+  /* the old tv was last read by the scatter: the new tn goes there */
+  for (int j = 0; j < nth; j++)
+    J[j].tn = m->tv;
   run_phase(J, nth, 3);
-  free(m->tv);
+  LAP("write");
   free(m->tn);
-  m->tv = tv;
-  m->tn = tn;
-  tv = tn = NULL;
+  m->tn = m->tv;
+  m->tv = (uint32_t *)sk;
+  sk = NULL;
   m->nt = nlive;
   m->free_head = TR_NONE;
   m->nfree = 0;
   memset(m->flags, 0, m->cap_t);
+  /* v2t: the last slot of each vertex; a later range's record is a later slot */
+  for (int j = 1; j < nth; j++)
+    for (uint32_t i = 0; i < nv; i++)
+      if (J[j].v2t[i] != TR_NONE)
+        m->v2t[i] = J[j].v2t[i];
 done:
-  free(rot);
+  free(nr);
   free(end);
   free(cnt);
-  free(newid);
-  free(tv);
-  free(tn);
+  free(loc);
   free(sk);
   return s;
 }

@@ -50,18 +50,30 @@ int tr_delaunay_thread_count(int threads);
 
 /* Puts the tet store in canonical order (canon.c): real tets first, sorted by vertex
  * tuple, each rotated (orientation kept) to its smallest vertex first, then the ghosts;
- * free slots dropped, neighbours renumbered, flags cleared; v2t is left to the caller.
+ * free slots dropped, neighbours renumbered, flags cleared, v2t[v] the last slot with v
+ * (TR_NONE: none).
  * The store then depends only on the tetrahedralization and the vertex numbering, not on
  * the order the tets were made in. */
 tr_status tr_delaunay_canonical(struct tr_mesh *m);
 /* The same with up to nthreads threads (at most one per 65536 tets); the same store. */
 tr_status tr_delaunay_canonical_threads(struct tr_mesh *m, int nthreads);
+/* The same, then every vertex id v replaced by order[v] (order NULL: kept; the sort is
+ * on the ids before the map, v2t after it). */
+tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint32_t *order);
 
 /* Insertion order used by the builder: the distinct points (first of each duplicate
  * group), in BRIO rounds each sorted along a Hilbert curve. order gets *nuniq indices;
  * dup_map (n entries) receives the kept index of every point. Deterministic. */
 tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint32_t *nuniq,
                            uint32_t *dup_map);
+/* The same with up to nthreads threads (at most one per 65536 points); the same order. */
+tr_status tr_spatial_order_threads(const double *xyz, uint32_t n, uint32_t *order,
+                                   uint32_t *nuniq, uint32_t *dup_map, int nthreads);
+
+/* Runs fn on the nth (at most 64) jobs at job, each `size` bytes, job 0 on the calling
+ * thread; a job whose thread cannot start runs on the calling thread after the others
+ * (so no job may depend on which thread runs it). */
+void tr_dt_run_jobs(void *(*fn)(void *), void *job, size_t size, int nth);
 
 /* Hilbert index of an integer point with `bits` bits per coordinate (3*bits <= 64). */
 uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits);

@@ -7,10 +7,17 @@
  * (round r from the end with probability 7/8^(r+1), the BRIO sample), and the key is
  * (round, Hilbert index). Equal points hash alike, so they share round and key and end
  * up next to each other, where the duplicates are found. The hash is of the coordinate
- * bits: same input, same order, on every machine. */
+ * bits: same input, same order, on every machine.
+ *
+ * With several threads the bounding box, the keys and every radix pass are cut into one
+ * range of points per thread (each pass: each thread counts its range's digits, then
+ * scatters it after the lower threads' entries of each digit, which is the stable order
+ * of one pass); the duplicate scan stays serial. The order is the same for any number
+ * of threads. */
 #include "delaunay.h"
 
 #include <assert.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -18,6 +25,7 @@
 #define ROUND_SHIFT 48   /* the round above them: at most 7 radix passes of 8 bits */
 #define BRIO_RATIO 8     /* each round is 1/8 of the points that follow it */
 #define BRIO_MIN 64      /* the first round holds about this many points or fewer */
+#define TR_SORT_MAX_THREADS 64
 
 /* Skilling's transposed Hilbert index ("Programming the Hilbert curve", 2004), read from
  * the top bit down as a state machine. His loop, at bit level Q, looks at the three
@@ -166,6 +174,80 @@ static void radix_sort(kv *a, kv *tmp, size_t n)
     memcpy(a, src, n * sizeof *a);
 }
 
+void tr_dt_run_jobs(void *(*fn)(void *), void *job, size_t size, int nth)
+{
+  pthread_t th[TR_SORT_MAX_THREADS];
+  int started[TR_SORT_MAX_THREADS] = {0};
+  for (int j = 1; j < nth; j++)
+    started[j] = pthread_create(&th[j], NULL, fn, (char *)job + (size_t)j * size) == 0;
+  fn(job);
+  for (int j = 1; j < nth; j++) {
+    if (started[j])
+      pthread_join(th[j], NULL);
+    else
+      fn((char *)job + (size_t)j * size);
+  }
+}
+
+/* One thread's range [i0, i1) of a radix pass: cnt counts its digits, then holds where
+ * its next entry of each digit goes. */
+typedef struct rjob {
+  const kv *src;
+  kv *dst;
+  size_t i0, i1;
+  int sh, phase;
+  uint32_t cnt[256];
+} rjob;
+
+static void *radix_job(void *arg)
+{
+  rjob *J = arg;
+  const kv *src = J->src;
+  const int sh = J->sh;
+  if (J->phase == 0) {
+    memset(J->cnt, 0, sizeof J->cnt);
+    for (size_t i = J->i0; i < J->i1; i++)
+      J->cnt[(src[i].key >> sh) & 255]++;
+  } else {
+    kv *dst = J->dst;
+    for (size_t i = J->i0; i < J->i1; i++)
+      dst[J->cnt[(src[i].key >> sh) & 255]++] = src[i];
+  }
+  return NULL;
+}
+
+/* radix_sort with nth threads (same result). */
+static void radix_sort_par(kv *a, kv *tmp, size_t n, int nth, uint64_t varying)
+{
+  enum { PASSES = 7 };
+  rjob J[TR_SORT_MAX_THREADS];
+  kv *src = a, *dst = tmp;
+  for (int pass = 0; pass < PASSES; pass++) {
+    const int sh = 8 * pass;
+    if (!((varying >> sh) & 255))
+      continue; /* every key has the same digit here */
+    for (int j = 0; j < nth; j++)
+      J[j] = (rjob){src, dst, n * (size_t)j / (size_t)nth, n * (size_t)(j + 1) / (size_t)nth,
+                    sh, 0, {0}};
+    tr_dt_run_jobs(radix_job, J, sizeof *J, nth);
+    uint32_t sum = 0;
+    for (int d = 0; d < 256; d++)
+      for (int j = 0; j < nth; j++) {
+        const uint32_t c = J[j].cnt[d];
+        J[j].cnt[d] = sum;
+        sum += c;
+      }
+    for (int j = 0; j < nth; j++)
+      J[j].phase = 1;
+    tr_dt_run_jobs(radix_job, J, sizeof *J, nth);
+    kv *t = src;
+    src = dst;
+    dst = t;
+  }
+  if (src != a)
+    memcpy(a, src, n * sizeof *a);
+}
+
 /* Lexicographic (x, y, z, index) order, for grouping exact duplicates. */
 static int less_xyz(const double *xyz, uint32_t a, uint32_t b)
 {
@@ -228,8 +310,69 @@ static inline uint64_t point_hash(const double *p)
   return h;
 }
 
+/* One thread's range of points: its bounding box (phase 0), then its keys (phase 1);
+ * `varying` collects the key bits that differ from the range's first key. */
+typedef struct kjob {
+  const double *xyz;
+  kv *a;
+  uint32_t p0, p1, last;
+  int phase;
+  double lo[3], hi[3], scale, cells;
+  uint64_t varying;
+} kjob;
+
+static void *key_job(void *arg)
+{
+  kjob *J = arg;
+  const double *xyz = J->xyz;
+  if (J->phase == 0) {
+    for (int i = 0; i < 3; i++)
+      J->lo[i] = J->hi[i] = xyz[3 * (size_t)J->p0 + (size_t)i];
+    for (uint32_t p = J->p0; p < J->p1; p++)
+      for (int i = 0; i < 3; i++) {
+        const double x = xyz[3 * (size_t)p + (size_t)i];
+        if (x < J->lo[i])
+          J->lo[i] = x;
+        if (x > J->hi[i])
+          J->hi[i] = x;
+      }
+    return NULL;
+  }
+  const double scale = J->scale, cells = J->cells;
+  const uint32_t last = J->last;
+  uint64_t first = 0, varying = 0;
+  for (uint32_t p = J->p0; p < J->p1; p++) {
+    const double *c = xyz + 3 * (size_t)p;
+    uint32_t q[3];
+    for (int i = 0; i < 3; i++) {
+      double t = (c[i] - J->lo[i]) * scale;
+      q[i] = t <= 0 ? 0 : t >= cells ? (uint32_t)cells : (uint32_t)t;
+    }
+    /* round r from the end iff the hash ends in exactly r zero octal digits: probability
+     * 7/8^(r+1) (the first round, r = last, takes every longer run of zeros too) */
+    const uint64_t h = point_hash(c);
+    uint32_t r = 0;
+    while (r < last && ((h >> 3 * r) & 7) == 0)
+      r++;
+    const uint64_t key =
+        (uint64_t)(last - r) << ROUND_SHIFT | hilbert_key(q[0], q[1], q[2], KEY_BITS);
+    first = p == J->p0 ? key : first;
+    varying |= key ^ first;
+    J->a[p].key = key;
+    J->a[p].idx = p;
+  }
+  J->varying = varying;
+  return NULL;
+}
+
 tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint32_t *nuniq,
                            uint32_t *dup_map)
+{
+  return tr_spatial_order_threads(xyz, n, order, nuniq, dup_map, 1);
+}
+
+tr_status tr_spatial_order_threads(const double *xyz, uint32_t n, uint32_t *order,
+                                   uint32_t *nuniq, uint32_t *dup_map, int nthreads)
 {
   *nuniq = 0;
   if (n == 0)
@@ -240,17 +383,26 @@ tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint3
     free(tmp);
     return tr_error(TR_ERR_NOMEM, "out of memory sorting %u points", n);
   }
+  /* a range of at least 2^16 points per thread: below that a thread costs more than it
+   * saves */
+  int nth = nthreads < 1 ? 1 : nthreads > TR_SORT_MAX_THREADS ? TR_SORT_MAX_THREADS : nthreads;
+  if (n >> 16 < (uint32_t)nth)
+    nth = n >> 16 ? (int)(n >> 16) : 1;
+  kjob K[TR_SORT_MAX_THREADS];
+  for (int j = 0; j < nth; j++)
+    K[j] = (kjob){.xyz = xyz, .a = a,
+                  .p0 = (uint32_t)((uint64_t)n * (uint32_t)j / (uint32_t)nth),
+                  .p1 = (uint32_t)((uint64_t)n * (uint32_t)(j + 1) / (uint32_t)nth)};
+  tr_dt_run_jobs(key_job, K, sizeof *K, nth);
   double lo[3], hi[3];
-  for (int i = 0; i < 3; i++)
-    lo[i] = hi[i] = xyz[i];
-  for (uint32_t p = 1; p < n; p++)
-    for (int i = 0; i < 3; i++) {
-      double x = xyz[3 * (size_t)p + (size_t)i];
-      if (x < lo[i])
-        lo[i] = x;
-      if (x > hi[i])
-        hi[i] = x;
+  for (int i = 0; i < 3; i++) {
+    lo[i] = K[0].lo[i];
+    hi[i] = K[0].hi[i];
+    for (int j = 1; j < nth; j++) {
+      lo[i] = K[j].lo[i] < lo[i] ? K[j].lo[i] : lo[i];
+      hi[i] = K[j].hi[i] > hi[i] ? K[j].hi[i] : hi[i];
     }
+  }
   /* One scale for all axes keeps the curve's cells cubes in space. The quantisation only
    * steers the order: exactness never depends on it. */
   double ext = 0;
@@ -264,23 +416,22 @@ tr_status tr_spatial_order(const double *xyz, uint32_t n, uint32_t *order, uint3
   uint32_t last = 0;
   for (uint64_t s = n; s > BRIO_MIN; s /= BRIO_RATIO)
     last++;
-  for (uint32_t p = 0; p < n; p++) {
-    const double *c = xyz + 3 * (size_t)p;
-    uint32_t q[3];
-    for (int i = 0; i < 3; i++) {
-      double t = (c[i] - lo[i]) * scale;
-      q[i] = t <= 0 ? 0 : t >= cells ? (uint32_t)cells : (uint32_t)t;
-    }
-    /* round r from the end iff the hash ends in exactly r zero octal digits: probability
-     * 7/8^(r+1) (the first round, r = last, takes every longer run of zeros too) */
-    const uint64_t h = point_hash(c);
-    uint32_t r = 0;
-    while (r < last && ((h >> 3 * r) & 7) == 0)
-      r++;
-    a[p].key = (uint64_t)(last - r) << ROUND_SHIFT | hilbert_key(q[0], q[1], q[2], KEY_BITS);
-    a[p].idx = p;
+  for (int j = 0; j < nth; j++) {
+    K[j].phase = 1;
+    memcpy(K[j].lo, lo, sizeof lo);
+    K[j].scale = scale;
+    K[j].cells = cells;
+    K[j].last = last;
   }
-  radix_sort(a, tmp, n);
+  tr_dt_run_jobs(key_job, K, sizeof *K, nth);
+  if (nth == 1) {
+    radix_sort(a, tmp, n);
+  } else {
+    uint64_t varying = 0;
+    for (int j = 0; j < nth; j++)
+      varying |= K[j].varying | (a[K[j].p0].key ^ a[0].key);
+    radix_sort_par(a, tmp, n, nth, varying);
+  }
 
   /* Exact duplicates share a key: group each run of equal keys by coordinates. The run
    * is sorted by (x, y, z, index) so the lowest index of a group comes first and is kept. */

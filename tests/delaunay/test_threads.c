@@ -3,7 +3,8 @@
  * store (tets, neighbours, vertex->tet map, duplicate map) is byte for byte the one of
  * the serial build, and valid (links, exact orientation, Euler, perturbed Delaunay
  * property). Point sets: uniform, on a sphere (nearly cospherical everywhere), an integer
- * grid (exactly cospherical: the perturbation decides), and uniform with duplicates.
+ * grid (exactly cospherical: the perturbation decides), and uniform with duplicates; and
+ * the parallel insertion order alone on a set large enough for its threads.
  * Usage: test_threads <case>. scripts/tsan.sh runs it under ThreadSanitizer. */
 #include <math.h>
 #include <stdlib.h>
@@ -106,6 +107,36 @@ static int duplicates(uint32_t n)
   return r;
 }
 
+/* The insertion order alone (tr_spatial_order_threads: the keys and radix passes cut
+ * into one range per thread from 2^16 points per thread): for 1..4 threads the same
+ * order, count and duplicate map as the serial sort. Uniform points, every seventh a
+ * copy of an earlier one, and a run of equal keys (points closer than a Hilbert cell). */
+static int sort_order(uint32_t n)
+{
+  double *p = malloc(3 * (size_t)n * sizeof *p);
+  uint32_t *o1 = malloc(n * sizeof *o1), *d1 = malloc(n * sizeof *d1);
+  uint32_t *o = malloc(n * sizeof *o), *d = malloc(n * sizeof *d);
+  for (uint32_t i = 0; i < n; i++) {
+    const uint32_t j = i % 7 == 6 ? (uint32_t)(t_unif() * i) : i;
+    for (int c = 0; c < 3; c++)
+      p[3 * i + c] = j != i ? p[3 * j + c] : i % 11 == 3 ? 0.5 + 1e-9 * t_unif() : t_unif();
+  }
+  uint32_t nu1, nu;
+  EXPECT_OK(tr_spatial_order(p, n, o1, &nu1, d1), "sort: serial");
+  for (int th = 1; th <= 4; th++) {
+    EXPECT_OK(tr_spatial_order_threads(p, n, o, &nu, d, th), "sort: threads");
+    EXPECT(nu == nu1 && !memcmp(o, o1, nu * sizeof *o) && !memcmp(d, d1, n * sizeof *d),
+           "sort, %d threads: order or duplicate map differs from the serial sort", th);
+  }
+  printf("sort: %u points, %u distinct, the same order for 1-4 threads\n", n, nu1);
+  free(p);
+  free(o1);
+  free(d1);
+  free(o);
+  free(d);
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2)
@@ -119,10 +150,12 @@ int main(int argc, char **argv)
     return grid(22);
   if (!strcmp(c, "duplicates"))
     return duplicates(20000);
+  if (!strcmp(c, "sort"))
+    return sort_order(300000);
   /* scripts/tsan.sh: smaller sets, every kind; the uniform one large enough (> 2^17
    * tets) that the canonical order and the renumbering run on 2 threads */
   if (!strcmp(c, "all"))
-    return uniform(20000) | sphere(6000) | grid(14) | duplicates(6000);
+    return uniform(20000) | sphere(6000) | grid(14) | duplicates(6000) | sort_order(140000);
   fprintf(stderr, "unknown case %s\n", c);
   return 2;
 }
