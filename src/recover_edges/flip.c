@@ -487,62 +487,27 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
 
 void tr_sxset_clear(tr_sxset *s)
 {
-  if (s->cap)
-    memset(s->k, 0xff, s->cap * sizeof *s->k);
-  s->n = 0;
+  tr_vtmap_clear(&s->map);
 }
 
 void tr_sxset_free(tr_sxset *s)
 {
-  free(s->k);
-  memset(s, 0, sizeof *s);
+  tr_vtmap_free(&s->map);
 }
 
-/* Keys are sorted, so TR_NONE (an edge's v[2]) comes last and k[0] = TR_NONE marks an
- * empty slot. */
-static uint32_t sx_slot(const tr_sxset *s, const uint32_t o[3])
-{
-  uint64_t h = ((o[0] * 0x9E3779B97F4A7C15ull ^ o[1]) * 0xC2B2AE3D27D4EB4Full ^ o[2]) *
-               0x165667B19E3779F9ull;
-  uint32_t i = (uint32_t)(h >> 32) & (s->cap - 1);
-  while (s->k[i][0] != TR_NONE && memcmp(s->k[i], o, 3 * sizeof *o) != 0)
-    i = (i + 1) & (s->cap - 1);
-  return i;
-}
-
+/* Keys are sorted, so TR_NONE (an edge's v[2]) comes last and never starts a key. */
 int tr_sxset_has(const tr_sxset *s, const uint32_t v[3])
 {
-  if (!s->n)
-    return 0;
   uint32_t o[3] = {v[0], v[1], v[2]};
   tr_sort3(o);
-  return s->k[sx_slot(s, o)][0] != TR_NONE;
+  return tr_vtmap_get(&s->map, 3, o) != TR_VTMAP_NONE;
 }
 
 int tr_sxset_add(tr_sxset *s, const uint32_t v[3])
 {
-  if (2 * (s->n + 1) > s->cap) {
-    uint32_t nc = s->cap ? 2 * s->cap : 64;
-    tr_sxset g = {malloc(nc * sizeof *g.k), nc, 0};
-    if (!g.k) {
-      tr_error(TR_ERR_NOMEM, "out of memory for a simplex set");
-      return -1;
-    }
-    memset(g.k, 0xff, nc * sizeof *g.k);
-    for (uint32_t i = 0; i < s->cap; i++)
-      if (s->k[i][0] != TR_NONE) {
-        memcpy(g.k[sx_slot(&g, s->k[i])], s->k[i], sizeof *g.k);
-        g.n++;
-      }
-    free(s->k);
-    *s = g;
-  }
-  uint32_t o[3] = {v[0], v[1], v[2]};
+  uint32_t o[3] = {v[0], v[1], v[2]}, n = s->map.n;
   tr_sort3(o);
-  uint32_t i = sx_slot(s, o);
-  if (s->k[i][0] != TR_NONE)
-    return 0;
-  memcpy(s->k[i], o, sizeof o);
-  s->n++;
-  return 1;
+  if (tr_vtmap_put(&s->map, 3, o, 1, NULL) != TR_OK)
+    return -1;
+  return s->map.n > n;
 }

@@ -28,6 +28,7 @@
 #ifndef TR_RECOVER_EDGES_FLIP_H
 #define TR_RECOVER_EDGES_FLIP_H
 
+#include "core/vtmap.h"
 #include "mesh/mesh.h"
 
 /* The largest shell edge removal handles. */
@@ -104,10 +105,10 @@ tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard,
 
 /* A set of edges / triangles by vertex ids (any order; an edge has v[2] = TR_NONE): the
  * flip drivers list each crossed simplex once, and comparing every new candidate with
- * all earlier ones was quadratic in the pipe / cluster size. Zero-initialise. */
+ * all earlier ones was quadratic in the pipe / cluster size. The shared vertex-tuple map
+ * (core/vtmap.h) on the sorted triple. Zero-initialise. */
 typedef struct tr_sxset {
-  uint32_t (*k)[3];
-  uint32_t cap, n;
+  tr_vtmap map;
 } tr_sxset;
 /* Empties the set (keeps its memory). */
 void tr_sxset_clear(tr_sxset *s);

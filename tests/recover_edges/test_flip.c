@@ -369,8 +369,8 @@ static int test_sxset(void)
       if (tr_sxset_add(&s, f) != 0 || tr_sxset_add(&s, e) != 0)
         FAIL("sxset round %d key %u: lost after growth", round, i);
     }
-    if (s.n != 1000)
-      FAIL("sxset round %d: %u keys, want 1000", round, s.n);
+    if (s.map.n != 1000)
+      FAIL("sxset round %d: %u keys, want 1000", round, s.map.n);
     tr_sxset_clear(&s);
   }
   tr_sxset_free(&s);
