@@ -161,13 +161,21 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
     goto done;
   /* Constraint faces, marked on both sides; the FLAGE votes are taken after the
    * components are known. */
+  /* Each face is looked up once, from the lower of its two tets, and marked on both.
+   * Ghosts take part so that the neighbour's kind is never read (a random access per
+   * face): a ghost looks up its one real face, the hull face opposite its ghost vertex
+   * (slot 3); seen[] takes the real tet of the two, the first in slot order if both are. */
   for (uint32_t t = 0; t < nt; t++) {
-    if (!tr_tet_is_real(m, t))
+    if (tr_tet_is_free(m, t))
       continue;
-    for (int k = 0; k < 4; k++) {
+    int ghost = tr_tet_is_ghost(m, t);
+    for (int k = ghost ? 3 : 0; k < 4; k++) {
       uint32_t o = TR_NEIG(m, t, k);
-      if (o != TR_NONE && o < t && tr_tet_is_real(m, o))
+      if (o != TR_NONE && o < t)
         continue; /* looked up from o's side, which marks both */
+      uint32_t real = ghost ? o : t;
+      if (real == TR_NONE)
+        continue;
       uint32_t s[3];
       for (int i = 0; i < 3; i++)
         s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
@@ -178,8 +186,8 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
       /* Duplicated sub-faces (the same face listed twice) all mark the same face. */
       for (const fkey *g = f; g < keys + ns && g->k[0] == s[0] && g->k[1] == s[1] &&
                               g->k[2] == s[2]; g++)
-        if (seen[g->id] == TR_NONE) /* a face is looked up once, from its smaller tet */
-          seen[g->id] = t;
+        if (seen[g->id] == TR_NONE)
+          seen[g->id] = real;
       cmask[t] |= (uint8_t)(1u << k);
       if (o != TR_NONE)
         cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
