@@ -202,32 +202,47 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
                     sub->v[3 * (size_t)j + 2], sub->tri[j]);
       goto done;
     }
-  /* Components across non-constraint faces, in slot order (deterministic). */
-  uint32_t nc = 0;
-  for (uint32_t t = 0; t < nt; t++)
-    comp[t] = TR_NONE;
-  for (uint32_t s0 = 0; s0 < nt; s0++) {
-    if (tr_tet_is_free(m, s0) || comp[s0] != TR_NONE)
+  /* Components across non-constraint faces: union-find in one streaming pass over the
+   * slots (a breadth-first search reads the tets in a scattered order), each root the
+   * smallest slot of its set, then numbered in slot order, which is the order of their
+   * smallest slots (deterministic). queue[] holds the parents; TR_NONE: a free slot. */
+  uint32_t nc = 0, *up = queue;
+  for (uint32_t t = 0; t < nt; t++) {
+    if (tr_tet_is_free(m, t)) {
+      up[t] = TR_NONE;
       continue;
-    uint32_t qh = 0, qt = 0;
-    comp[s0] = nc;
-    queue[qt++] = s0;
-    while (qh < qt) {
-      uint32_t t = queue[qh++];
-      for (int k = 0; k < 4; k++) {
-        if (cmask[t] & (1u << k))
-          continue;
-        uint32_t o = TR_NEIG(m, t, k);
-        if (o == TR_NONE || comp[o] != TR_NONE || tr_tet_is_free(m, o))
-          continue;
-        /* keep_hull: the hull is a barrier, so the outside is the ghosts alone */
-        if (keep_hull && tr_tet_is_ghost(m, o) != tr_tet_is_ghost(m, t))
-          continue;
-        comp[o] = nc;
-        queue[qt++] = o;
-      }
     }
-    nc++;
+    up[t] = t;
+    int ghost = keep_hull && tr_tet_is_ghost(m, t);
+    for (int k = 0; k < 4; k++) {
+      if (cmask[t] & (1u << k))
+        continue;
+      uint32_t o = TR_NEIG(m, t, k);
+      if (o == TR_NONE || o > t || up[o] == TR_NONE)
+        continue; /* a later slot joins from its own side */
+      /* keep_hull: the hull is a barrier, so the outside is the ghosts alone */
+      if (keep_hull && tr_tet_is_ghost(m, o) != ghost)
+        continue;
+      uint32_t a = t, b = o;
+      while (up[a] != a)
+        a = up[a] = up[up[a]];
+      while (up[b] != b)
+        b = up[b] = up[up[b]];
+      if (a < b)
+        up[b] = a;
+      else if (b < a)
+        up[a] = b;
+    }
+  }
+  for (uint32_t t = 0; t < nt; t++) {
+    if (up[t] == TR_NONE) {
+      comp[t] = TR_NONE;
+      continue;
+    }
+    uint32_t r = t;
+    while (up[r] != r)
+      r = up[r];
+    comp[t] = r == t ? nc++ : comp[r];
   }
   cflag = calloc(nc ? nc : 1, 1);
   ck = malloc(sizeof *ck * (nc ? nc : 1));
