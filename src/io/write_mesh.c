@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "io.h"
+#include "core/vtmap.h"
 #include "mesh/mesh.h"
 #include "output/round.h"
 
@@ -42,58 +43,69 @@ static int keep(const struct tr_mesh *m, uint32_t t)
 /* The faces a tr_mesh_plc mesh writes: the faces on input triangles with their markers
  * (m->attrs, include/tetrec.h's boundary faces), then any other face on the boundary of
  * the kept tets (the convex hull of an open input meshed with allow_open) with marker
- * 0, as seen from its tet. */
-static tr_status input_faces(const struct tr_mesh *m, uint32_t **tris, int32_t **mark,
-                             uint32_t *nf)
+ * 0, as seen from its tet. kept[t] = keep(m, t), read for the tet across each face: one
+ * byte per tet stays in cache where the neighbour's own fields do not. */
+static tr_status input_faces(const struct tr_mesh *m, const uint8_t *kept, uint32_t **tris,
+                             int32_t **mark, uint32_t *nf)
 {
   const struct tr_mesh_attrs *a = m->attrs;
-  uint32_t n = a->nfaces, extra = 0;
-  uint32_t *key = malloc(sizeof *key * 3 * (size_t)(n ? n : 1));
-  if (!key)
-    return tr_error(TR_ERR_NOMEM, "out of memory for %u faces", n);
-  memcpy(key, a->faces, sizeof *key * 3 * (size_t)n);
-  for (uint32_t f = 0; f < n; f++)
-    tr_sort3(key + 3 * (size_t)f);
-  qsort(key, n, 3 * sizeof *key, tr_cmp_face_key);
-  for (int pass = 0; pass < 2; pass++) {
-    if (pass) {
-      *tris = malloc(sizeof **tris * 3 * (size_t)(n + extra ? n + extra : 1));
-      *mark = malloc(sizeof **mark * (n + extra ? n + extra : 1));
-      if (!*tris || !*mark) {
-        free(*tris);
-        free(*mark);
-        free(key);
-        return tr_error(TR_ERR_NOMEM, "out of memory for %u faces", n + extra);
-      }
-      memcpy(*tris, a->faces, sizeof **tris * 3 * (size_t)n);
-      memcpy(*mark, a->face_marker, sizeof **mark * n);
-      extra = 0;
-    }
-    for (uint32_t t = 0; t < m->nt; t++) {
-      if (!keep(m, t))
+  uint32_t n = a->nfaces;
+  tr_vtmap key = {0}; /* the input faces, unoriented: a set */
+  tr_u32buf extra = {0};
+  tr_status st = tr_vtmap_reserve(&key, 3, n);
+  if (st == TR_OK)
+    st = tr_vtmap_filter(&key); /* most boundary faces are input faces, but not all */
+  for (uint32_t f = 0; f < n && st == TR_OK; f++) {
+    uint32_t q[3];
+    tr_vtkey_face(a->faces[3 * (size_t)f], a->faces[3 * (size_t)f + 1],
+                  a->faces[3 * (size_t)f + 2], q);
+    st = tr_vtmap_put(&key, 3, q, 0, NULL);
+  }
+  for (uint32_t t = 0; t < m->nt && st == TR_OK; t++) {
+    if (!kept[t])
+      continue;
+    for (int k = 0; k < 4 && st == TR_OK; k++) {
+      uint32_t o = TR_NEIG(m, t, k);
+      if (o != TR_NONE && kept[o])
         continue;
-      for (int k = 0; k < 4; k++) {
-        uint32_t o = TR_NEIG(m, t, k);
-        if (o != TR_NONE && keep(m, o))
-          continue;
-        /* tr_face_vtx order has the normal pointing into the tet: reverse it. */
-        uint32_t w[3] = {m->tv[4 * (size_t)t + tr_face_vtx[k][0]],
-                         m->tv[4 * (size_t)t + tr_face_vtx[k][2]],
-                         m->tv[4 * (size_t)t + tr_face_vtx[k][1]]};
-        uint32_t q[3] = {w[0], w[1], w[2]};
-        tr_sort3(q);
-        if (bsearch(q, key, n, 3 * sizeof *key, tr_cmp_face_key))
-          continue;
-        if (pass) {
-          memcpy(*tris + 3 * (size_t)(n + extra), w, sizeof w);
-          (*mark)[n + extra] = 0;
-        }
-        extra++;
-      }
+      /* tr_face_vtx order has the normal pointing into the tet: reverse it. */
+      uint32_t w[3] = {m->tv[4 * (size_t)t + tr_face_vtx[k][0]],
+                       m->tv[4 * (size_t)t + tr_face_vtx[k][2]],
+                       m->tv[4 * (size_t)t + tr_face_vtx[k][1]]};
+      uint32_t q[3];
+      tr_vtkey_face(w[0], w[1], w[2], q);
+      if (tr_vtmap_get(&key, 3, q) != TR_VTMAP_NONE)
+        continue;
+      for (int i = 0; i < 3 && st == TR_OK; i++)
+        st = tr_u32buf_push(&extra, w[i]);
     }
   }
-  free(key);
-  *nf = n + extra;
+  tr_vtmap_free(&key);
+  uint32_t ne = (uint32_t)(extra.n / 3);
+  *tris = NULL;
+  *mark = NULL;
+  if (st == TR_OK) {
+    *tris = malloc(sizeof **tris * 3 * (size_t)(n + ne ? n + ne : 1));
+    *mark = malloc(sizeof **mark * (n + ne ? n + ne : 1));
+    if (!*tris || !*mark)
+      st = tr_error(TR_ERR_NOMEM, "out of memory for %u faces", n + ne);
+  }
+  if (st != TR_OK) {
+    free(*tris);
+    free(*mark);
+    *tris = NULL;
+    *mark = NULL;
+    tr_u32buf_free(&extra);
+    return st;
+  }
+  memcpy(*tris, a->faces, sizeof **tris * 3 * (size_t)n);
+  memcpy(*mark, a->face_marker, sizeof **mark * n);
+  if (ne)
+    memcpy(*tris + 3 * (size_t)n, extra.a, sizeof **tris * 3 * (size_t)ne);
+  for (uint32_t f = 0; f < ne; f++)
+    (*mark)[n + f] = 0;
+  tr_u32buf_free(&extra);
+  *nf = n + ne;
   return TR_OK;
 }
 
@@ -120,14 +132,16 @@ tr_status tr_mesh_write_ex(const tr_mesh *mesh, const char *path, int exact, int
                     path, bad);
   uint32_t nt = 0, nf = 0;
   int from_input = m->attrs && m->attrs->faces;
+  uint8_t *kept = malloc(m->nt ? m->nt : 1);
+  if (!kept)
+    return tr_error(TR_ERR_NOMEM, "out of memory writing %s", path);
   for (uint32_t t = 0; t < m->nt; t++)
-    if (keep(m, t)) {
-      nt++;
-      for (int k = 0; k < 4 && !from_input; k++) {
-        uint32_t o = TR_NEIG(m, t, k);
-        if (o == TR_NONE || !keep(m, o) || (m->region && m->region[o] != m->region[t] && o > t))
-          nf++;
-      }
+    nt += kept[t] = (uint8_t)keep(m, t);
+  for (uint32_t t = 0; t < m->nt && !from_input; t++)
+    for (int k = 0; k < 4 && kept[t]; k++) {
+      uint32_t o = TR_NEIG(m, t, k);
+      if (o == TR_NONE || !kept[o] || (m->region && m->region[o] != m->region[t] && o > t))
+        nf++;
     }
   uint32_t *tets = malloc(sizeof *tets * 4 * (size_t)(nt ? nt : 1));
   int32_t *reg = m->region ? malloc(sizeof *reg * (nt ? nt : 1)) : NULL;
@@ -135,12 +149,13 @@ tr_status tr_mesh_write_ex(const tr_mesh *mesh, const char *path, int exact, int
   int32_t *mark = NULL;
   tr_status st = TR_OK;
   if (from_input)
-    st = input_faces(m, &tris, &mark, &nf);
+    st = input_faces(m, kept, &tris, &mark, &nf);
   else {
     tris = malloc(sizeof *tris * 3 * (size_t)(nf ? nf : 1));
     mark = calloc(nf ? nf : 1, sizeof *mark);
   }
   if (st != TR_OK || !tets || (m->region && !reg) || !tris || !mark) {
+    free(kept);
     free(tets);
     free(reg);
     free(tris);
@@ -149,7 +164,7 @@ tr_status tr_mesh_write_ex(const tr_mesh *mesh, const char *path, int exact, int
   }
   uint32_t i = 0, f = 0;
   for (uint32_t t = 0; t < m->nt; t++) {
-    if (!keep(m, t))
+    if (!kept[t])
       continue;
     memcpy(tets + 4 * (size_t)i, m->tv + 4 * (size_t)t, 4 * sizeof *tets);
     if (reg)
@@ -157,7 +172,7 @@ tr_status tr_mesh_write_ex(const tr_mesh *mesh, const char *path, int exact, int
     i++;
     for (int k = 0; k < 4 && !from_input; k++) {
       uint32_t o = TR_NEIG(m, t, k);
-      if (o == TR_NONE || !keep(m, o) || (m->region && m->region[o] != m->region[t] && o > t)) {
+      if (o == TR_NONE || !kept[o] || (m->region && m->region[o] != m->region[t] && o > t)) {
         /* tr_face_vtx order has the normal pointing into the tet: reverse it. */
         tris[3 * (size_t)f] = m->tv[4 * (size_t)t + tr_face_vtx[k][0]];
         tris[3 * (size_t)f + 1] = m->tv[4 * (size_t)t + tr_face_vtx[k][2]];
@@ -170,6 +185,7 @@ tr_status tr_mesh_write_ex(const tr_mesh *mesh, const char *path, int exact, int
   struct tr_mesh_view v = {m->nv, m->xyz, (const tr_qpoint *const *)m->vq, nt, tets, reg,
                            nf, tris, mark};
   st = tr_write_mesh_view_as(&v, path, exact, msh_version);
+  free(kept);
   free(tets);
   free(reg);
   free(tris);

@@ -126,21 +126,28 @@ tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint
     st = tr_vtmap_put(&faces, 3, k, i, NULL);
     tet[i] = TR_NONE;
   }
+  /* Each face is looked up once, from the lower of its two tets, which halves the
+   * probes. Ghosts take part so that the neighbour's kind never has to be read (a random
+   * access per face, most of this loop's time): a ghost looks up its one real face, the
+   * hull face opposite its ghost vertex (slot 3), for the real tet across it. The tet
+   * found for a face is its first real tet in slot order: deterministic. */
   for (uint32_t t = 0; t < m->nt && st == TR_OK; t++) {
-    if (!tr_tet_is_real(m, t))
+    if (tr_tet_is_free(m, t))
       continue;
     const uint32_t *tv = m->tv + 4 * (size_t)t;
-    for (int f = 0; f < 4; f++) {
-      /* A face between two real tets is looked up from the lower one only: that is the
-       * first of the two in slot order anyway, and it halves the probes. */
+    int ghost = tr_tet_is_ghost(m, t);
+    for (int f = ghost ? 3 : 0; f < 4; f++) {
       uint32_t nb = m->tn[4 * (size_t)t + f];
-      if (nb != TR_NONE && nb / 4 < t && tr_tet_is_real(m, nb / 4))
+      if (nb != TR_NONE && nb / 4 < t)
+        continue;
+      uint32_t real = ghost ? (nb == TR_NONE ? TR_NONE : nb / 4) : t;
+      if (real == TR_NONE)
         continue;
       uint32_t k[3];
       tr_vtkey_face(tv[tr_face_vtx[f][0]], tv[tr_face_vtx[f][1]], tv[tr_face_vtx[f][2]], k);
       uint32_t i = tr_vtmap_get(&faces, 3, k);
       if (i != TR_VTMAP_NONE && tet[i] == TR_NONE)
-        tet[i] = t; /* the first tet in slot order: deterministic */
+        tet[i] = real;
     }
   }
   for (uint32_t i = 0; i < n && st == TR_OK; i++) {
@@ -152,6 +159,68 @@ tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint
   }
   tr_vtmap_free(&faces);
   return st;
+}
+
+tr_status tr_mesh_find_edges(const struct tr_mesh *m, const uint32_t *edges, uint32_t n,
+                             uint8_t *present)
+{
+  for (uint32_t i = 0; i < n; i++) {
+    uint32_t a = edges[2 * (size_t)i], b = edges[2 * (size_t)i + 1];
+    if (a == b || a >= m->nv || b >= m->nv)
+      return tr_error(TR_ERR_INTERNAL, "edge %u (%u-%u): not two vertices of the mesh (%u)",
+                      i, a, b, m->nv);
+  }
+  /* up[start[u] .. start[u + 1]): the higher ends of u's edges, one entry per real tet
+   * with the edge (a few repeats each, cheaper to scan than to remove) */
+  size_t total = 0;
+  uint32_t *start = calloc((size_t)m->nv + 2, sizeof *start), *up = NULL;
+  if (!start)
+    return tr_error(TR_ERR_NOMEM, "out of memory for the edges of %u vertices", m->nv);
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)t;
+    for (int e = 0; e < 6; e++) {
+      uint32_t u = tv[tr_edge_vtx[e][0]], w = tv[tr_edge_vtx[e][1]];
+      start[(u < w ? u : w) + 2]++;
+    }
+    total += 6;
+  }
+  if (total >= UINT32_MAX || !(up = malloc(sizeof *up * (total ? total : 1)))) {
+    free(start);
+    return tr_error(TR_ERR_NOMEM, "out of memory for the %zu tet edges of the mesh", total);
+  }
+  /* counted at u + 2, summed: start[u + 1] is where u's entries begin; filling moves it
+   * to where they end, so that u's range is [start[u], start[u + 1]) */
+  for (uint32_t v = 2; v <= m->nv; v++)
+    start[v] += start[v - 1];
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)t;
+    for (int e = 0; e < 6; e++) {
+      uint32_t u = tv[tr_edge_vtx[e][0]], w = tv[tr_edge_vtx[e][1]];
+      if (u < w)
+        up[start[u + 1]++] = w;
+      else
+        up[start[w + 1]++] = u;
+    }
+  }
+  for (uint32_t i = 0; i < n; i++) {
+    uint32_t a = edges[2 * (size_t)i], b = edges[2 * (size_t)i + 1];
+    if (a > b) {
+      uint32_t x = a;
+      a = b;
+      b = x;
+    }
+    uint8_t yes = 0;
+    for (uint32_t j = start[a]; j < start[a + 1] && !yes; j++)
+      yes = up[j] == b;
+    present[i] = yes;
+  }
+  free(start);
+  free(up);
+  return TR_OK;
 }
 
 /* For tet t containing a (slot i) and b (slot j): the slots c, d such that (a,b,c,d) is

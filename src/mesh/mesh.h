@@ -257,6 +257,12 @@ tr_status tr_ball_find_ex(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
  * triangles: for many triangles, much cheaper than a tr_ball_find each. */
 tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                              uint32_t *tet);
+/* All at once: present[i] = 1 if {edges[2i], edges[2i+1]} (two distinct vertex ids below
+ * nv, either order) is an edge of a real tet, else 0. One pass over the tets listing each
+ * vertex's higher neighbours (with repeats) and one scan of a short list per edge: for
+ * many edges, much cheaper than a tr_ball_find each. */
+tr_status tr_mesh_find_edges(const struct tr_mesh *m, const uint32_t *edges, uint32_t n,
+                             uint8_t *present);
 /* Shell(E): the tets around edge {a,b} in rotational order, starting with t0 (a tet that
  * has edge ab; TR_NONE = find one through Ball(a)). Rotation is right-handed about a->b:
  * for consecutive tets the third vertices turn counter-clockwise seen from b towards a.

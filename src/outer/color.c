@@ -31,10 +31,12 @@ static void sort4(uint32_t *s)
 }
 
 /* The sub-faces by vertex triple: open addressing, each slot holding the sorted triple and
- * the index of its first key in the sorted keys (duplicates follow it there), so a probe
- * touches one cache line; a fixed hash, so no run depends on addresses. Every tet face is
- * looked up: a binary search over the keys was a tenth of the time of a mesh without
- * Steiner points. */
+ * the sub-face's id, or for a triple listed more than once FSLOT_RUN | the index of its
+ * first key in the sorted keys (the others follow it there), so a probe touches one cache
+ * line and a hit needs no key; a fixed hash, so no run depends on addresses. Every tet
+ * face is looked up: a binary search over the keys was a tenth of the time of a mesh
+ * without Steiner points. */
+#define FSLOT_RUN 0x80000000u
 typedef struct {
   uint32_t k[3], first; /* first == TR_NONE: empty */
 } fslot;
@@ -59,17 +61,16 @@ static uint32_t fhash_bit(const fhash *h, const uint32_t s[3])
   return (uint32_t)tr_hash3(s) & h->bmask;
 }
 
-static const fkey *find_face(const fhash *h, const uint32_t s[3])
+/* The slot's value for triple s (see fslot), TR_NONE if s is no sub-face. */
+static uint32_t find_face(const fhash *h, const uint32_t s[3])
 {
   uint32_t b = fhash_bit(h, s);
   if (!(h->bits[b >> 6] & (1ull << (b & 63))))
-    return NULL;
+    return TR_NONE;
   for (uint32_t i = fhash_start(h, s);; i = (i + 1) & h->mask) {
     const fslot *e = h->slot + i;
-    if (e->first == TR_NONE)
-      return NULL;
-    if (e->k[0] == s[0] && e->k[1] == s[1] && e->k[2] == s[2])
-      return h->keys + e->first;
+    if (e->first == TR_NONE || (e->k[0] == s[0] && e->k[1] == s[1] && e->k[2] == s[2]))
+      return e->first;
   }
 }
 
@@ -78,6 +79,8 @@ static tr_status fhash_build(fhash *h, const fkey *keys, uint32_t n)
   uint32_t cap = 16;
   while (cap < 2 * (uint64_t)n)
     cap *= 2;
+  if (n >= FSLOT_RUN - 1)
+    return tr_error(TR_ERR_NOMEM, "%u sub-faces: more than the coloring can index", n);
   h->keys = keys;
   h->mask = cap - 1;
   uint32_t nb = 64;
@@ -94,7 +97,8 @@ static tr_status fhash_build(fhash *h, const fkey *keys, uint32_t n)
     while (h->slot[i].first != TR_NONE)
       i = (i + 1) & h->mask;
     memcpy(h->slot[i].k, keys[j].k, sizeof keys[j].k);
-    h->slot[i].first = j;
+    int run = j + 1 < n && memcmp(keys[j].k, keys[j + 1].k, sizeof keys[j].k) == 0;
+    h->slot[i].first = run ? FSLOT_RUN | j : keys[j].id;
     uint32_t b = fhash_bit(h, keys[j].k);
     h->bits[b >> 6] |= 1ull << (b & 63);
   }
@@ -161,25 +165,36 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
     goto done;
   /* Constraint faces, marked on both sides; the FLAGE votes are taken after the
    * components are known. */
+  /* Each face is looked up once, from the lower of its two tets, and marked on both.
+   * Ghosts take part so that the neighbour's kind is never read (a random access per
+   * face): a ghost looks up its one real face, the hull face opposite its ghost vertex
+   * (slot 3); seen[] takes the real tet of the two, the first in slot order if both are. */
   for (uint32_t t = 0; t < nt; t++) {
-    if (!tr_tet_is_real(m, t))
+    if (tr_tet_is_free(m, t))
       continue;
-    for (int k = 0; k < 4; k++) {
+    int ghost = tr_tet_is_ghost(m, t);
+    for (int k = ghost ? 3 : 0; k < 4; k++) {
       uint32_t o = TR_NEIG(m, t, k);
-      if (o != TR_NONE && o < t && tr_tet_is_real(m, o))
+      if (o != TR_NONE && o < t)
         continue; /* looked up from o's side, which marks both */
+      uint32_t real = ghost ? o : t;
+      if (real == TR_NONE)
+        continue;
       uint32_t s[3];
       for (int i = 0; i < 3; i++)
         s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
       tr_sort3(s);
-      const fkey *f = find_face(&fh, s);
-      if (!f)
+      uint32_t f = find_face(&fh, s);
+      if (f == TR_NONE)
         continue;
+      if (!(f & FSLOT_RUN) && seen[f] == TR_NONE)
+        seen[f] = real;
       /* Duplicated sub-faces (the same face listed twice) all mark the same face. */
-      for (const fkey *g = f; g < keys + ns && g->k[0] == s[0] && g->k[1] == s[1] &&
-                              g->k[2] == s[2]; g++)
-        if (seen[g->id] == TR_NONE) /* a face is looked up once, from its smaller tet */
-          seen[g->id] = t;
+      for (const fkey *g = keys + (f & ~FSLOT_RUN); (f & FSLOT_RUN) && g < keys + ns &&
+                                                    g->k[0] == s[0] && g->k[1] == s[1] &&
+                                                    g->k[2] == s[2]; g++)
+        if (seen[g->id] == TR_NONE)
+          seen[g->id] = real;
       cmask[t] |= (uint8_t)(1u << k);
       if (o != TR_NONE)
         cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
@@ -194,32 +209,47 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
                     sub->v[3 * (size_t)j + 2], sub->tri[j]);
       goto done;
     }
-  /* Components across non-constraint faces, in slot order (deterministic). */
-  uint32_t nc = 0;
-  for (uint32_t t = 0; t < nt; t++)
-    comp[t] = TR_NONE;
-  for (uint32_t s0 = 0; s0 < nt; s0++) {
-    if (tr_tet_is_free(m, s0) || comp[s0] != TR_NONE)
+  /* Components across non-constraint faces: union-find in one streaming pass over the
+   * slots (a breadth-first search reads the tets in a scattered order), each root the
+   * smallest slot of its set, then numbered in slot order, which is the order of their
+   * smallest slots (deterministic). queue[] holds the parents; TR_NONE: a free slot. */
+  uint32_t nc = 0, *up = queue;
+  for (uint32_t t = 0; t < nt; t++) {
+    if (tr_tet_is_free(m, t)) {
+      up[t] = TR_NONE;
       continue;
-    uint32_t qh = 0, qt = 0;
-    comp[s0] = nc;
-    queue[qt++] = s0;
-    while (qh < qt) {
-      uint32_t t = queue[qh++];
-      for (int k = 0; k < 4; k++) {
-        if (cmask[t] & (1u << k))
-          continue;
-        uint32_t o = TR_NEIG(m, t, k);
-        if (o == TR_NONE || comp[o] != TR_NONE || tr_tet_is_free(m, o))
-          continue;
-        /* keep_hull: the hull is a barrier, so the outside is the ghosts alone */
-        if (keep_hull && tr_tet_is_ghost(m, o) != tr_tet_is_ghost(m, t))
-          continue;
-        comp[o] = nc;
-        queue[qt++] = o;
-      }
     }
-    nc++;
+    up[t] = t;
+    int ghost = keep_hull && tr_tet_is_ghost(m, t);
+    for (int k = 0; k < 4; k++) {
+      if (cmask[t] & (1u << k))
+        continue;
+      uint32_t o = TR_NEIG(m, t, k);
+      if (o == TR_NONE || o > t || up[o] == TR_NONE)
+        continue; /* a later slot joins from its own side */
+      /* keep_hull: the hull is a barrier, so the outside is the ghosts alone */
+      if (keep_hull && tr_tet_is_ghost(m, o) != ghost)
+        continue;
+      uint32_t a = t, b = o;
+      while (up[a] != a)
+        a = up[a] = up[up[a]];
+      while (up[b] != b)
+        b = up[b] = up[up[b]];
+      if (a < b)
+        up[b] = a;
+      else if (b < a)
+        up[a] = b;
+    }
+  }
+  for (uint32_t t = 0; t < nt; t++) {
+    if (up[t] == TR_NONE) {
+      comp[t] = TR_NONE;
+      continue;
+    }
+    uint32_t r = t;
+    while (up[r] != r)
+      r = up[r];
+    comp[t] = r == t ? nc++ : comp[r];
   }
   cflag = calloc(nc ? nc : 1, 1);
   ck = malloc(sizeof *ck * (nc ? nc : 1));

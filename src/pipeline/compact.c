@@ -9,12 +9,12 @@ static int keep(const struct tr_mesh *m, uint32_t t)
   return tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER);
 }
 
-/* tet[f] = the first real tet in slot order with sub-face f, from the candidates: when
+/* written[f] = 1 if sub-face f is a face of a kept tet, from the candidates: when
  * candidate t still has the face, the face's only other tet is its neighbour u across it,
- * so the answer is the smaller of the real ones among t and u, whatever changed since.
- * 0 (tet unusable) if there are none or one no longer has its face. */
+ * whatever changed since, so the two are looked at once. 0 (unusable) if there are none
+ * or one is no longer a real tet with its face. */
 static int from_candidates(const struct tr_mesh *m, const tr_subfaces *sub,
-                           const uint32_t *cand, uint32_t ncand, uint32_t *tet)
+                           const uint32_t *cand, uint32_t ncand, uint32_t *written)
 {
   if (!cand || ncand != sub->n)
     return 0;
@@ -27,7 +27,7 @@ static int from_candidates(const struct tr_mesh *m, const tr_subfaces *sub,
     if (k < 0)
       return 0;
     uint32_t u = TR_NEIG(m, t, k);
-    tet[f] = u != TR_NONE && u < t && tr_tet_is_real(m, u) ? u : t;
+    written[f] = keep(m, t) || (u != TR_NONE && keep(m, u));
   }
   return 1;
 }
@@ -47,9 +47,10 @@ static tr_status attach(struct tr_mesh *o, const struct tr_mesh *m, const uint32
   if (!tet)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u output faces", n);
   tr_status st = TR_OK;
-  if (n && !from_candidates(m, sub, in->subtet, in->nsubtet, tet))
+  int done = !n || from_candidates(m, sub, in->subtet, in->nsubtet, tet);
+  if (!done)
     st = tr_mesh_find_faces(m, sub->v, n, tet);
-  for (uint32_t f = 0; f < n && st == TR_OK; f++) {
+  for (uint32_t f = 0; f < n && st == TR_OK && !done; f++) {
     uint32_t t = tet[f];
     /* In no tet: the suppression stage (src/suppress) frees the outer tets, so a facet
      * between two cavities is no mesh face at all; it is written by no kept tet either. */

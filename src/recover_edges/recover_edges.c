@@ -351,26 +351,41 @@ static tr_status build_chains(ctx *c, tr_edge_chains *ch)
   ch->v = malloc(cap * sizeof *ch->v);
   if (!ch->start || !ch->v)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u edge chains", c->n);
-  for (uint32_t i = 0; i < c->n; i++) {
+  /* most input edges are one mesh edge at the end: found in one pass, not a walk each */
+  uint8_t *present = malloc(c->n ? c->n : 1);
+  if (!present)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u input edges", c->n);
+  tr_status fs = tr_mesh_find_edges(c->m, c->edges, c->n, present);
+  for (uint32_t i = 0; i < c->n && fs == TR_OK; i++) {
     ch->start[i] = (uint32_t)nv;
-    tr_status s = walk_chain(c, c->edges[2 * (size_t)i], c->edges[2 * (size_t)i + 1], &c->walk);
-    if (s != TR_OK)
-      return edge_fail(c, i, s);
+    uint32_t a = c->edges[2 * (size_t)i], b = c->edges[2 * (size_t)i + 1];
+    c->walk.n = 0;
+    if (present[i]) {
+      if ((fs = tr_u32buf_push(&c->walk, a)) == TR_OK)
+        fs = tr_u32buf_push(&c->walk, b);
+    } else if ((fs = walk_chain(c, a, b, &c->walk)) != TR_OK) {
+      fs = edge_fail(c, i, fs);
+    }
+    if (fs != TR_OK)
+      break;
     if (nv + c->walk.n > cap) {
       while (nv + c->walk.n > cap)
         cap *= 2;
       uint32_t *q = realloc(ch->v, cap * sizeof *q);
-      if (!q)
-        return tr_error(TR_ERR_NOMEM, "out of memory for edge chains");
+      if (!q) {
+        fs = tr_error(TR_ERR_NOMEM, "out of memory for edge chains");
+        break;
+      }
       ch->v = q;
     }
     memcpy(ch->v + nv, c->walk.a, c->walk.n * sizeof *ch->v);
     nv += c->walk.n;
     if (nv >= UINT32_MAX)
-      return tr_error(TR_ERR_NOMEM, "edge chains: more than 2^32 entries");
+      fs = tr_error(TR_ERR_NOMEM, "edge chains: more than 2^32 entries");
   }
+  free(present);
   ch->start[c->n] = (uint32_t)nv;
-  return TR_OK;
+  return fs;
 }
 
 static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
@@ -387,18 +402,18 @@ static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
       goto done;
     }
   }
-  /* the constraints first: pass 1 must not swap away an edge that is already there */
+  /* the constraints first: pass 1 must not swap away an edge that is already there
+   * (left[] holds which are, found in one pass) */
+  if (c->n)
+    s = tr_mesh_find_edges(m, c->edges, c->n, left);
   for (uint32_t i = 0; i < c->n && s == TR_OK; i++) {
-    int yes;
-    uint32_t a = c->edges[2 * (size_t)i], b = c->edges[2 * (size_t)i + 1];
-    if ((s = tr_mesh_has_edge(m, a, b, &yes)) != TR_OK) {
-      s = edge_fail(c, i, s);
-    } else if (yes) {
-      s = tr_edgeset_put(&c->cons, a, b, i);
-    } else {
+    if (left[i])
+      s = tr_edgeset_put(&c->cons, c->edges[2 * (size_t)i], c->edges[2 * (size_t)i + 1], i);
+    else
       missing[nmiss++] = i;
-    }
   }
+  if (c->n)
+    memset(left, 0, c->n);
   st->missing_edges = nmiss;
   /* pass 1: swaps only */
   for (uint32_t k = 0; k < nmiss && s == TR_OK; k++) {

@@ -348,6 +348,11 @@ static int ball_find_matches_brute_force(void)
     if (t != TR_NONE)
       EXPECT(tr_tet_is_real(m, t) && tr_fcode(m, t, tri[3 * i], tri[3 * i + 1], tri[3 * i + 2]) >= 0,
              "find_faces names a real tet with the face");
+    /* and the first such tet in slot order (what makes the callers deterministic) */
+    for (uint32_t u = 0; t != TR_NONE && u < t; u++)
+      EXPECT(!tr_tet_is_real(m, u) || tr_fcode(m, u, tri[3 * i], tri[3 * i + 1], tri[3 * i + 2]) < 0,
+             "find_faces(%u %u %u) names tet %u, but real tet %u before it has the face",
+             tri[3 * i], tri[3 * i + 1], tri[3 * i + 2], t, u);
   }
   EXPECT(ntri > 1000, "triples sampled: %u", ntri);
   free(tet);
@@ -357,6 +362,46 @@ static int ball_find_matches_brute_force(void)
     EXPECT(!(m->flags[t] & TR_TF_MARK), "tet %u left marked", t);
   EXPECT(found > 1000 && absent > 1000, "both answers exercised (%u found, %u absent)", found,
          absent);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
+/* tr_mesh_find_edges against brute force on the same mesh: every ordered vertex pair at
+ * once, present iff some real tet has both ends; a pair that is not two vertices of the
+ * mesh is refused. */
+static int find_edges_matches_brute_force(void)
+{
+  uint32_t n = 64;
+  struct tr_mesh *m = grid4_delaunay();
+  EXPECT(m != NULL, "Delaunay mesh of the 4x4x4 grid, valid: %s", tr_last_error());
+  uint32_t *e = malloc(sizeof *e * 2 * n * n), ne = 0, found = 0;
+  uint8_t *yes = malloc(n * n);
+  EXPECT(e && yes, "malloc");
+  for (uint32_t a = 0; a < n; a++)
+    for (uint32_t b = 0; b < n; b++)
+      if (a != b) {
+        e[2 * ne] = a;
+        e[2 * ne + 1] = b;
+        ne++;
+      }
+  EXPECT_OK(tr_mesh_find_edges(m, e, ne, yes), "find_edges");
+  for (uint32_t i = 0; i < ne; i++) {
+    int want = 0;
+    for (uint32_t t = 0; t < m->nt && !want; t++)
+      want = tr_tet_is_real(m, t) && tr_ncode(m, t, e[2 * i]) >= 0 &&
+             tr_ncode(m, t, e[2 * i + 1]) >= 0;
+    EXPECT(yes[i] == want, "find_edges(%u, %u): %d, brute force %d", e[2 * i], e[2 * i + 1],
+           yes[i], want);
+    found += want;
+  }
+  EXPECT(found > 100 && found < ne - 100, "both answers exercised (%u of %u present)", found,
+         ne);
+  uint32_t bad[2][2] = {{3, 3}, {5, 64}};
+  for (int k = 0; k < 2; k++)
+    EXPECT(tr_mesh_find_edges(m, bad[k], 1, yes) == TR_ERR_INTERNAL,
+           "pair %u-%u refused", bad[k][0], bad[k][1]);
+  free(e);
+  free(yes);
   tr_mesh_destroy(m);
   return 0;
 }
@@ -414,6 +459,8 @@ int main(int argc, char **argv)
     return ball_and_shell_match_brute_force();
   if (!strcmp(c, "ball_find"))
     return ball_find_matches_brute_force();
+  if (!strcmp(c, "find_edges"))
+    return find_edges_matches_brute_force();
   if (!strcmp(c, "steiner_guard"))
     return steiner_size_guard_refuses_past_the_limit();
   if (!strcmp(c, "hilbert"))

@@ -7,6 +7,8 @@
 #include <string.h>
 
 #include "core/plc.h"
+#include "delaunay/delaunay.h"
+#include "outer/color.h"
 #include "input/validate.h"
 #include "mesh/check.h"
 #include "mesh/conform.h"
@@ -256,6 +258,91 @@ static void t_two_boxes(void)
   tr_plc_destroy(p);
 }
 
+/* Outer removal with sub-faces listed more than once (the first and a shared one, twice
+ * and three times): the same regions as with each listed once, and every copy answered
+ * with the same tet, the first real one in slot order with the face. Two boxes sharing a
+ * face, so the repeated faces separate two regions and the outside. */
+static void t_color_repeats(void)
+{
+  builder b = {0};
+  double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, lo2[3] = {1, 0, 0}, hi2[3] = {2, 1, 1};
+  box(&b, lo, hi, 1, -1);
+  box(&b, lo2, hi2, 1, 0);
+  tr_plc *plc = make(&b);
+  tr_status s = tr_plc_validate(plc, NULL);
+  EXPECT(s == TR_OK, "color_repeats: validate: %s", tr_last_error());
+  uint32_t *edges = NULL, ne = 0, nopen = 0, nmulti = 0;
+  struct tr_mesh *m = NULL;
+  tr_subfaces sub;
+  memset(&sub, 0, sizeof sub);
+  tr_stats st;
+  memset(&st, 0, sizeof st);
+  double secs[2];
+  tr_options opt;
+  tr_options_default(&opt);
+  uint8_t *vkind = NULL;
+  uint32_t *vindex = NULL;
+  if (s == TR_OK)
+    s = tr_pipeline_edges(plc, &edges, &ne, &nopen, &nmulti);
+  if (s == TR_OK)
+    s = tr_delaunay_build(plc->xyz, plc->npoints, &m);
+  if (s == TR_OK)
+    s = tr_pipeline_recover(m, plc, edges, ne, &sub, &st, secs, &opt, &vkind, &vindex);
+  EXPECT(s == TR_OK && sub.n > 2, "color_repeats: recovery: %s", tr_last_error());
+  if (s != TR_OK || sub.n <= 2)
+    return;
+  /* the shared face x = 1 is the one with all three vertices at x = 1 in both boxes */
+  uint32_t shared = sub.n;
+  for (uint32_t f = 0; f < sub.n && shared == sub.n; f++) {
+    int on = 1;
+    for (int i = 0; i < 3; i++)
+      on &= m->xyz[3 * (size_t)sub.v[3 * f + i]] == 1.0;
+    shared = on ? f : shared;
+  }
+  EXPECT(shared < sub.n, "color_repeats: a sub-face on the shared face");
+  uint32_t extra[3] = {0, shared, shared}, n2 = sub.n + 3;
+  tr_subfaces rep = {n2, malloc(sizeof(uint32_t) * 3 * n2), malloc(sizeof(uint32_t) * n2)};
+  uint32_t *seen1 = malloc(sizeof *seen1 * sub.n), *seen2 = malloc(sizeof *seen2 * n2);
+  uint32_t *reg1 = malloc(sizeof *reg1 * m->nt), nreg1 = 0, nreg2 = 0;
+  memcpy(rep.v, sub.v, sizeof(uint32_t) * 3 * sub.n);
+  memcpy(rep.tri, sub.tri, sizeof(uint32_t) * sub.n);
+  for (int k = 0; k < 3; k++) {
+    memcpy(rep.v + 3 * (size_t)(sub.n + k), sub.v + 3 * (size_t)extra[k], 3 * sizeof(uint32_t));
+    rep.tri[sub.n + k] = sub.tri[extra[k]];
+  }
+  s = tr_outer_color_ex(m, &sub, 0, NULL, &nreg1, seen1);
+  EXPECT(s == TR_OK && nreg1 == 2, "color_repeats: once each: %u regions: %s", nreg1,
+         tr_last_error());
+  memcpy(reg1, m->region, sizeof *reg1 * m->nt);
+  s = tr_outer_color_ex(m, &rep, 0, NULL, &nreg2, seen2);
+  EXPECT(s == TR_OK && nreg2 == nreg1, "color_repeats: repeated: %u regions: %s", nreg2,
+         tr_last_error());
+  for (uint32_t t = 0; t < m->nt; t++)
+    EXPECT(tr_tet_is_free(m, t) || m->region[t] == reg1[t], "color_repeats: tet %u region %u, "
+           "once each %u", t, m->region[t], reg1[t]);
+  for (uint32_t f = 0; f < n2; f++) {
+    uint32_t g = f < sub.n ? f : extra[f - sub.n], t = seen2[f];
+    EXPECT(t == seen1[g], "color_repeats: sub-face %u: tet %u, once each %u", f, t, seen1[g]);
+    for (uint32_t u = 0; u < t; u++)
+      EXPECT(!tr_tet_is_real(m, u) || tr_fcode(m, u, rep.v[3 * f], rep.v[3 * f + 1],
+                                              rep.v[3 * f + 2]) < 0,
+             "color_repeats: sub-face %u: real tet %u before tet %u has it", f, u, t);
+  }
+  EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, NULL) == TR_OK, "color_repeats: mesh validator: %s",
+         tr_last_error());
+  free(rep.v);
+  free(rep.tri);
+  free(seen1);
+  free(seen2);
+  free(reg1);
+  tr_pipeline_subfaces_free(&sub);
+  free(edges);
+  free(vkind);
+  free(vindex);
+  tr_mesh_destroy(m);
+  tr_plc_destroy(plc);
+}
+
 static void t_fin(void)
 {
   builder b = {0};
@@ -495,6 +582,8 @@ int main(int argc, char **argv)
     t_two_boxes();
   if (all || !strcmp(w, "fin"))
     t_fin();
+  if (all || !strcmp(w, "color_repeats"))
+    t_color_repeats();
   if (all || !strcmp(w, "incircle"))
     t_incircle();
   if (all || !strcmp(w, "smooth"))
