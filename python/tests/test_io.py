@@ -69,7 +69,7 @@ def exact_coordinate(token):
 @pytest.mark.parametrize("how", ["exact_mesh", "exact_write"])
 def test_exact_node_file_holds_the_exact_points(tmp_path, how):
     # its Steiner points, kept on the surface, are rationals that are not doubles
-    surface = tetrec.read(DATA / "star_rounding_budget.off")
+    surface = tetrec.read(DATA / "chazelle_rounding_budget.off")
     path = tmp_path / "exact.node"
     if how == "exact_mesh":
         mesh = tetrec.tetrahedralize(surface, exact=True, keep_steiner=True)
