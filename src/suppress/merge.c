@@ -37,22 +37,6 @@ static int in_set(const tr_u32buf *s, uint32_t t)
   return bsearch(&t, s->a, s->n, sizeof t, cmp_u32) != NULL;
 }
 
-/* 1 iff the face (3 vertex ids) is a live sub-face. */
-static tr_status is_sub(const sup_ctx *c, const uint32_t w0[3], tr_u32buf *tmp, int *yes)
-{
-  uint32_t w[3] = {w0[0], w0[1], w0[2]};
-  tr_sort3(w);
-  *yes = 0;
-  TR_CHECK(sup_faces_of(c, w[0], tmp));
-  for (size_t i = 0; i < tmp->n && !*yes; i++) {
-    uint32_t f[3];
-    memcpy(f, c->v + 3 * (size_t)tmp->a[i], sizeof f);
-    tr_sort3(f);
-    *yes = !memcmp(f, w, sizeof f);
-  }
-  return TR_OK;
-}
-
 /* An interior Steiner point whose tets are real, of region `region`, with no constraint
  * face on it and no mesh boundary face on it. */
 static tr_status inner_point(struct tr_mesh *m, const sup_ctx *c, uint32_t v, uint32_t region,
@@ -107,7 +91,7 @@ static tr_status union_of(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint3
       if (nb != TR_NONE && in_set(u, nb)) {
         int sub = 0;
         if (!onpq && t < nb) {
-          TR_CHECK(is_sub(c, w, tmp, &sub));
+          TR_CHECK(sup_is_sub(c, w, tmp, &sub));
           *ok = !sub;
         }
         continue;

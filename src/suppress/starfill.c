@@ -217,16 +217,7 @@ static tr_status is_subface(const sup_ctx *c, const struct tr_mesh *m, uint32_t 
   uint32_t w[3];
   for (int a = 0; a < 3; a++)
     w[a] = m->tv[4 * (size_t)t + tr_face_vtx[k][a]];
-  tr_sort3(w);
-  *yes = 0;
-  TR_CHECK(sup_faces_of(c, w[0], tmp));
-  for (size_t i = 0; i < tmp->n && !*yes; i++) {
-    uint32_t f[3];
-    memcpy(f, c->v + 3 * (size_t)tmp->a[i], sizeof f);
-    tr_sort3(f);
-    *yes = !memcmp(f, w, sizeof f);
-  }
-  return TR_OK;
+  return sup_is_sub(c, w, tmp, yes);
 }
 
 /* Si's expansion: the tet behind each missing boundary face joins the cavity, unless

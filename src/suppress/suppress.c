@@ -57,6 +57,21 @@ tr_status sup_faces_of(const sup_ctx *c, uint32_t p, tr_u32buf *out)
   return TR_OK;
 }
 
+tr_status sup_is_sub(const sup_ctx *c, const uint32_t w0[3], tr_u32buf *tmp, int *yes)
+{
+  uint32_t w[3] = {w0[0], w0[1], w0[2]};
+  tr_sort3(w);
+  *yes = 0;
+  TR_CHECK(sup_faces_of(c, w[0], tmp));
+  for (size_t i = 0; i < tmp->n && !*yes; i++) {
+    uint32_t f[3];
+    memcpy(f, c->v + 3 * (size_t)tmp->a[i], sizeof f);
+    tr_sort3(f);
+    *yes = !memcmp(f, w, sizeof f);
+  }
+  return TR_OK;
+}
+
 static int steiner(const struct tr_mesh *m, uint32_t v)
 {
   return m->vq && m->vq[v];

@@ -25,6 +25,8 @@ typedef struct sup_ctx {
 tr_status sup_add(sup_ctx *c, uint32_t a, uint32_t b, uint32_t cc, uint32_t tri);
 /* The live sub-faces on vertex p (reset first). */
 tr_status sup_faces_of(const sup_ctx *c, uint32_t p, tr_u32buf *out);
+/* *yes = 1 iff (w[0], w[1], w[2]), in any order, is a live sub-face; tmp is scratch. */
+tr_status sup_is_sub(const sup_ctx *c, const uint32_t w[3], tr_u32buf *tmp, int *yes);
 
 /* The un-split of p: for each input triangle, its fan around p retriangulated without p.
  * old: the sub-faces on p (ids in c); merged: 4 per triangle (a,b,c,input triangle),

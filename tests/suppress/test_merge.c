@@ -19,59 +19,7 @@
 #include "suppress/suppress_int.h"
 
 #include "tstar.h"
-
-static int hull_vertex(struct tr_mesh *m, uint32_t p)
-{
-  tr_u32buf ball = {0};
-  int hull = tr_ball(m, p, 1, &ball) != TR_OK;
-  for (size_t i = 0; i < ball.n; i++)
-    hull |= !tr_tet_is_real(m, ball.a[i]);
-  tr_u32buf_free(&ball);
-  return hull;
-}
-
-/* Every face of the mesh on neither p nor q as a sub-face of pseudo input triangle 0;
- * their vertex triples (sorted) in *faces. */
-static void constraints(sup_ctx *c, struct tr_mesh *m, uint32_t p, uint32_t q,
-                        tr_u32buf *faces)
-{
-  memset(c, 0, sizeof *c);
-  c->m = m;
-  c->nv = m->nv;
-  c->head = malloc(sizeof *c->head * m->nv);
-  EXPECT(c->head != NULL, "out of memory");
-  for (uint32_t v = 0; v < m->nv; v++)
-    c->head[v] = TR_NONE;
-  faces->n = 0;
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t))
-      continue;
-    for (int k = 0; k < 4; k++) {
-      const uint32_t *tv = m->tv + 4 * (size_t)t;
-      uint32_t f[3];
-      for (int a = 0; a < 3; a++)
-        f[a] = tv[tr_face_vtx[k][a]];
-      if (f[0] == p || f[1] == p || f[2] == p || f[0] == q || f[1] == q || f[2] == q)
-        continue;
-      uint32_t nb = TR_NEIG(m, t, k);
-      if (nb != TR_NONE && tr_tet_is_real(m, nb) && nb < t)
-        continue; /* each face once */
-      EXPECT(sup_add(c, f[0], f[1], f[2], 0) == TR_OK, "sup_add");
-      tr_sort3(f);
-      for (int a = 0; a < 3; a++)
-        EXPECT(tr_u32buf_push(faces, f[a]) == TR_OK, "push");
-    }
-  }
-}
-
-static void ctx_free(sup_ctx *c)
-{
-  free(c->head);
-  free(c->v);
-  free(c->tri);
-  free(c->lnext);
-  free(c->lsub);
-}
+#include "tsup.h"
 
 /* The checks of the file's header after a call on p (and q) that reported done. */
 static void check(struct tr_mesh *m, const char *what, uint32_t p, uint32_t q, int done,
@@ -114,7 +62,7 @@ static void merge_case(uint32_t n, uint32_t seed, int dbl)
   uint32_t k = 0;
   for (uint32_t p = 0; p < m->nv; p++) {
     int done = 0;
-    if (m->v2t[p] == TR_NONE || hull_vertex(m, p) || k++ % 3)
+    if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p) || k++ % 3)
       continue;
     EXPECT(sup_flip_out(m, NULL, p, 7, 0, &done) == TR_OK, "flips: %s", tr_last_error());
   }
@@ -122,7 +70,7 @@ static void merge_case(uint32_t n, uint32_t seed, int dbl)
   m->vq = calloc(m->cap_v, sizeof *m->vq);
   EXPECT(m->vq != NULL, "out of memory");
   for (uint32_t v = 0; m->vq && v < m->nv; v++) {
-    if (m->v2t[v] == TR_NONE || hull_vertex(m, v))
+    if (m->v2t[v] == TR_NONE || tsup_hull_vertex(m, v))
       continue;
     m->vq[v] = malloc(sizeof *m->vq[v]);
     EXPECT(m->vq[v] != NULL, "out of memory");
@@ -147,7 +95,7 @@ static void merge_case(uint32_t n, uint32_t seed, int dbl)
       continue;
     pairs++;
     sup_ctx c;
-    constraints(&c, m, p, q, &faces);
+    tsup_constrain_all_but(&c, m, p, q, &faces);
     uint32_t n0 = 0, *before = canon(m, &n0);
     int done = 0;
     EXPECT(sup_merge(m, &c, p, 7, dbl, &done) == TR_OK, "merge: %s", tr_last_error());
@@ -155,7 +103,7 @@ static void merge_case(uint32_t n, uint32_t seed, int dbl)
     merged += done == 1;
     stayed += done != 1;
     free(before);
-    ctx_free(&c);
+    tsup_ctx_free(&c);
   }
   fprintf(stderr,
           "%u points (seed %u, dbl %d): %u points with a Steiner neighbour; %u merged into "

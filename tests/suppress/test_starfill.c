@@ -21,39 +21,7 @@
 #include "suppress/suppress_int.h"
 
 #include "tstar.h"
-
-/* Every face of the mesh not on p, as sub-faces of one pseudo input triangle. */
-static void all_faces_but(sup_ctx *c, struct tr_mesh *m, uint32_t p)
-{
-  memset(c, 0, sizeof *c);
-  c->m = m;
-  c->nv = m->nv;
-  c->head = malloc(sizeof *c->head * m->nv);
-  EXPECT(c->head != NULL, "out of memory");
-  for (uint32_t v = 0; v < m->nv; v++)
-    c->head[v] = TR_NONE;
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t))
-      continue;
-    for (int k = 0; k < 4; k++) {
-      const uint32_t *tv = m->tv + 4 * (size_t)t;
-      uint32_t f[3];
-      for (int a = 0; a < 3; a++)
-        f[a] = tv[tr_face_vtx[k][a]];
-      if (f[0] != p && f[1] != p && f[2] != p)
-        EXPECT(sup_add(c, f[0], f[1], f[2], 0) == TR_OK, "sup_add");
-    }
-  }
-}
-
-static void ctx_free(sup_ctx *c)
-{
-  free(c->head);
-  free(c->v);
-  free(c->tri);
-  free(c->lnext);
-  free(c->lsub);
-}
+#include "tsup.h"
 
 /* One call, then the checks of the file's header. Returns done. */
 static int fill_one(struct tr_mesh *m, const sup_ctx *c, uint32_t p, int dbl, int rounds,
@@ -84,16 +52,6 @@ static int fill_one(struct tr_mesh *m, const sup_ctx *c, uint32_t p, int dbl, in
   return done;
 }
 
-static int hull_vertex(struct tr_mesh *m, uint32_t p)
-{
-  tr_u32buf ball = {0};
-  int hull = tr_ball(m, p, 1, &ball) != TR_OK;
-  for (size_t i = 0; i < ball.n; i++)
-    hull |= !tr_tet_is_real(m, ball.a[i]);
-  tr_u32buf_free(&ball);
-  return hull;
-}
-
 static void delaunay_case(uint32_t n, uint32_t seed, int dbl)
 {
   struct tr_mesh *m = mesh_of(n, seed);
@@ -104,7 +62,7 @@ static void delaunay_case(uint32_t n, uint32_t seed, int dbl)
   mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
   uint32_t removed = 0, inner = 0;
   for (uint32_t p = 0; p < m->nv; p++) {
-    if (m->v2t[p] == TR_NONE || hull_vertex(m, p))
+    if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p))
       continue;
     inner++;
     removed += fill_one(m, NULL, p, dbl, 0, vol) == 1;
@@ -127,7 +85,7 @@ static void expanded_case(uint32_t n, uint32_t seed)
   mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
   uint32_t flipped = 0, plain = 0, refused = 0, expanded = 0, stayed = 0, k = 0;
   for (uint32_t p = 0; p < m->nv; p++) {
-    if (m->v2t[p] == TR_NONE || hull_vertex(m, p) || k++ % 3)
+    if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p) || k++ % 3)
       continue;
     int done = 0;
     EXPECT(sup_flip_out(m, NULL, p, 7, 0, &done) == TR_OK, "flips: %s", tr_last_error());
@@ -136,16 +94,16 @@ static void expanded_case(uint32_t n, uint32_t seed)
   EXPECT(tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, vol) == TR_OK,
          "after the flips: %s", tr_last_error());
   for (uint32_t p = 0; p < m->nv; p++) {
-    if (m->v2t[p] == TR_NONE || hull_vertex(m, p))
+    if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p))
       continue;
     if (fill_one(m, NULL, p, 0, 0, vol) == 1) {
       plain++;
       continue;
     }
     sup_ctx c;
-    all_faces_but(&c, m, p);
+    tsup_constrain_all_but(&c, m, p, TR_NONE, NULL);
     int done = fill_one(m, &c, p, 0, SUP_FILL_EXPAND, vol);
-    ctx_free(&c);
+    tsup_ctx_free(&c);
     EXPECT(done == 0, "point %u: expanded across a sub-face", p);
     refused++;
     done = fill_one(m, NULL, p, 0, SUP_FILL_EXPAND, vol);
