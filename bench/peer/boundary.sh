@@ -24,8 +24,14 @@ FNR == 1 { f++; head = 0 }
 { sub(/#.*/, "") }
 NF == 0 { next }
 !head { head = 1; next }
-f == 1 { inp[sprintf("%.17g %.17g %.17g", $2 + 0, $3 + 0, $4 + 0)] = $1; next }
-f == 2 { tri[++nt] = $2 SUBSEP $3 SUBSEP $4; next }
+f == 1 {
+  # duplicate input points (both programs merge them) take the id of the first
+  k = sprintf("%.17g %.17g %.17g", $2 + 0, $3 + 0, $4 + 0)
+  if (!(k in inp)) inp[k] = $1
+  same[$1] = inp[k]
+  next
+}
+f == 2 { tri[++nt] = same[$2] SUBSEP same[$3] SUBSEP same[$4]; next }
 f == 3 {
   k = sprintf("%.17g %.17g %.17g", $2 + 0, $3 + 0, $4 + 0)
   if (k in inp) in2out[inp[k]] = $1; else steiner[$1] = 1
