@@ -16,6 +16,7 @@
 #include "smooth/smooth.h"
 
 #include "texpect.h"
+#include "trecover.h"
 
 /* What tr_check_mesh checks; the Euler test assumes a ball (not true with a cavity). */
 static unsigned chk_what = TR_CHK_TOPOLOGY;
@@ -269,28 +270,16 @@ static void t_color_repeats(void)
   box(&b, lo, hi, 1, -1);
   box(&b, lo2, hi2, 1, 0);
   tr_plc *plc = make(&b);
-  tr_status s = tr_plc_validate(plc, NULL);
-  EXPECT(s == TR_OK, "color_repeats: validate: %s", tr_last_error());
-  uint32_t *edges = NULL, ne = 0, nopen = 0, nmulti = 0;
-  struct tr_mesh *m = NULL;
-  tr_subfaces sub;
-  memset(&sub, 0, sizeof sub);
-  tr_stats st;
-  memset(&st, 0, sizeof st);
-  double secs[2];
-  tr_options opt;
-  tr_options_default(&opt);
-  uint8_t *vkind = NULL;
-  uint32_t *vindex = NULL;
-  if (s == TR_OK)
-    s = tr_pipeline_edges(plc, &edges, &ne, &nopen, &nmulti);
-  if (s == TR_OK)
-    s = tr_delaunay_build(plc->xyz, plc->npoints, &m);
-  if (s == TR_OK)
-    s = tr_pipeline_recover(m, plc, edges, ne, &sub, &st, secs, &opt, &vkind, &vindex);
-  EXPECT(s == TR_OK && sub.n > 2, "color_repeats: recovery: %s", tr_last_error());
-  if (s != TR_OK || sub.n <= 2)
+  trec_run r;
+  tr_status s = trec_to_recovery(plc, &r);
+  struct tr_mesh *m = r.m;
+  tr_subfaces sub = r.sub;
+  EXPECT(s == TR_OK && sub.n > 2, "color_repeats: up to recovery: %s", tr_last_error());
+  if (s != TR_OK || sub.n <= 2) {
+    trec_free(&r);
+    tr_plc_destroy(plc);
     return;
+  }
   /* the shared face x = 1 is the one with all three vertices at x = 1 in both boxes */
   uint32_t shared = sub.n;
   for (uint32_t f = 0; f < sub.n && shared == sub.n; f++) {
@@ -335,11 +324,7 @@ static void t_color_repeats(void)
   free(seen1);
   free(seen2);
   free(reg1);
-  tr_pipeline_subfaces_free(&sub);
-  free(edges);
-  free(vkind);
-  free(vindex);
-  tr_mesh_destroy(m);
+  trec_free(&r);
   tr_plc_destroy(plc);
 }
 
