@@ -49,13 +49,16 @@ tr_status tr_recover_facets(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                             const tr_edge_chains *chains, tr_subfaces *sub,
                             tr_facet_recovery_stats *st)
 {
-  return tr_recover_facets_ex(m, tris, n, chains, NULL, sub, st);
+  return tr_recover_facets_ex(m, tris, n, chains, NULL, sub, st, NULL);
 }
 
 tr_status tr_recover_facets_ex(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                                const tr_edge_chains *chains, const tr_facet_recovery_opts *fo,
-                               tr_subfaces *sub, tr_facet_recovery_stats *st)
+                               tr_subfaces *sub, tr_facet_recovery_stats *st,
+                               uint32_t **hint_out)
 {
+  if (hint_out)
+    *hint_out = NULL;
   tr_facet_detail d = {0};
   tr_facet_opts opt = {0};
   opt.no_flips = opt.no_cavity = fo && fo->paper;
@@ -98,15 +101,12 @@ tr_status tr_recover_facets_ex(struct tr_mesh *m, const uint32_t *tris, uint32_t
   }
   opt.hint = hint;
   tr_facet_recovery_stats s = {0};
-  if (sub) {
-    sub->n = 0;
-    sub->v = NULL;
-    sub->tri = NULL;
-  }
+  if (sub)
+    memset(sub, 0, sizeof *sub);
   /* Each facet's faces are listed right after its recovery: a later facet never splits
    * them (its Steiner points lie in its own open interior, which meets no other input
    * triangle), and the tests check the final listing against the final mesh. */
-  tr_u32buf v = {0}, tri = {0};
+  tr_u32buf v = {0}, tri = {0}, tet = {0};
   tr_status r = TR_OK;
   for (uint32_t i = 0; i < n && r == TR_OK; i++) {
     int outcome;
@@ -123,6 +123,9 @@ tr_status tr_recover_facets_ex(struct tr_mesh *m, const uint32_t *tris, uint32_t
       s.recovered_by_cavity++;
     for (size_t k = before; k < v.n && r == TR_OK; k += 3) {
       r = tr_u32buf_push(&tri, i);
+      /* a facet present from the start is the face the one pass over the tets found */
+      if (r == TR_OK && hint_out)
+        r = tr_u32buf_push(&tet, outcome == TR_FACET_PRESENT ? hint[i] : TR_NONE);
       if (r == TR_OK)
         r = keep_face(&kp, v.a + k);
     }
@@ -144,10 +147,13 @@ tr_status tr_recover_facets_ex(struct tr_mesh *m, const uint32_t *tris, uint32_t
   if (r != TR_OK || !sub) {
     tr_u32buf_free(&v);
     tr_u32buf_free(&tri);
+    tr_u32buf_free(&tet);
     return r;
   }
   sub->n = (uint32_t)tri.n;
   sub->v = v.a;
   sub->tri = tri.a;
+  if (hint_out)
+    *hint_out = tet.a;
   return TR_OK;
 }

@@ -18,6 +18,7 @@ typedef struct {
   uint32_t *edges, ne, nopen, nmulti;
   uint8_t *vkind;
   uint32_t *vindex;
+  uint32_t *hint; /* the sub-faces' tet hints for tr_outer_color_ex (NULL: none) */
   tr_stats st;
 } trec_run;
 
@@ -36,7 +37,7 @@ static inline tr_status trec_to_recovery(tr_plc *plc, trec_run *r)
     s = tr_delaunay_build(plc->xyz, plc->npoints, &r->m);
   if (s == TR_OK)
     s = tr_pipeline_recover(r->m, plc, r->edges, r->ne, &r->sub, &r->st, secs, &opt,
-                            &r->vkind, &r->vindex);
+                            &r->vkind, &r->vindex, &r->hint);
   return s;
 }
 
@@ -46,6 +47,7 @@ static inline void trec_free(trec_run *r)
   free(r->edges);
   free(r->vkind);
   free(r->vindex);
+  free(r->hint);
   tr_mesh_destroy(r->m);
   memset(r, 0, sizeof *r);
 }
