@@ -14,7 +14,12 @@
  * Otherwise the intersection of two closed triangles, when not empty, contains a point
  * of an edge of one of them, so classifying the six edges against the other triangle
  * (classify.h, exact, coplanar overlaps included) finds it; a hit is allowed only at a
- * vertex the two triangles share. */
+ * vertex the two triangles share.
+ * Shortcuts, each exact and checked against the general path by the tests (method
+ * TR_SELFINT_REFERENCE): a triangle lying in a plane x, y or z = const (most faces of CAD
+ * models, where orient3d is exactly 0 and its adaptive stages run to the end) takes the
+ * side of a point from one coordinate comparison; and two triangles sharing one vertex,
+ * each strictly across the other's plane, are decided by two orient3d (straddle()). */
 #include <math.h>
 #include <stdlib.h>
 
@@ -26,6 +31,9 @@ typedef struct {
   const struct tr_plc *plc;
   double *lo, *hi; /* 3 per triangle */
   int axis;        /* sweep axis: the longest extent of the input, fewest overlaps */
+  /* plane[t] != 0: triangle t lies in the plane {x_k = const}, k = (plane[t] & 3) - 1,
+   * and bit 2 is set when its normal points to -x_k; NULL: the reference path */
+  uint8_t *plane;
   uint32_t bx, by; /* the improper pair found first in (x, y) order, x < y; bx = n: none */
   /* collect mode (tr_input_self_intersection_pairs): every improper pair, 2 per pair */
   int collect, oom;
@@ -51,19 +59,62 @@ static int boxes_meet(const sweep *s, uint32_t i, uint32_t j)
 
 static const double *P(const struct tr_plc *plc, uint32_t v) { return plc->xyz + 3 * (size_t)v; }
 
-/* Non-shared corners of u strictly on one side of the plane of t. */
-static int one_side(const struct tr_plc *plc, const uint32_t *t, const uint32_t *u)
+/* Sign of tr_orient3d(t0, t1, t2, v) for triangle it = (t0, t1, t2). On a plane
+ * x_k = c, det[t1-t0; t2-t0; v-t0] expands along column k, whose only nonzero entry is
+ * v_k - c, into (v_k - c) times the cofactor, which is tr_orient2d_proj(t0, t1, t2, k)
+ * (its kept axes are in cyclic order): the sign of that is cached in plane[]. */
+static int side(const sweep *s, uint32_t it, uint32_t v)
 {
-  int side = 0;
+  const uint32_t *t = s->plc->tris + 3 * (size_t)it;
+  uint8_t c = s->plane ? s->plane[it] : 0;
+  if (c) {
+    double x = P(s->plc, v)[(c & 3) - 1], o = P(s->plc, t[0])[(c & 3) - 1];
+    int sg = (x > o) - (x < o);
+    return c & 4 ? -sg : sg;
+  }
+  return tr_sign(tr_orient3d(P(s->plc, t[0]), P(s->plc, t[1]), P(s->plc, t[2]), P(s->plc, v)));
+}
+
+/* The non-shared corners of triangle iu against the plane of triangle it: counts of
+ * the signs +, - and 0 of side(). */
+static void sides(const sweep *s, uint32_t it, uint32_t iu, int cnt[3])
+{
+  const uint32_t *t = s->plc->tris + 3 * (size_t)it, *u = s->plc->tris + 3 * (size_t)iu;
+  cnt[0] = cnt[1] = cnt[2] = 0;
   for (int k = 0; k < 3; k++) {
     if (u[k] == t[0] || u[k] == t[1] || u[k] == t[2])
       continue;
-    int s = tr_sign(tr_orient3d(P(plc, t[0]), P(plc, t[1]), P(plc, t[2]), P(plc, u[k])));
-    if (s == 0 || (side && s != side))
-      return 0;
-    side = s;
+    int sg = side(s, it, u[k]);
+    cnt[sg > 0 ? 0 : sg < 0 ? 1 : 2]++;
   }
-  return side != 0;
+}
+
+/* Non-shared corners of u strictly on one side of the plane of t. */
+static int one_side(const sweep *s, uint32_t it, uint32_t iu)
+{
+  int c[3];
+  sides(s, it, iu, c);
+  return !c[2] && (!c[0] || !c[1]) && c[0] + c[1] > 0;
+}
+
+/* t = (v, a, b) and u = (v, c, d) share only v; a and b lie strictly on opposite sides
+ * of the plane of u, c and d of the plane of t. Each triangle then meets the line L
+ * where the planes meet (through v) in a segment from v: t in [v, p], p inside ab; u in
+ * [v, q], q inside cd. The triangles meet only in v iff the segments point opposite
+ * ways. In the plane of t, the ray from v through p lies on b's side of the line va and
+ * the opposite ray on the other side (q is not on va: that would put a on L, in the
+ * plane of u). The plane (v, a, c) cuts the plane of t along va, so q's side is the
+ * sign of orient3d(v, a, c, q) = s * orient3d(v, a, c, d) (q = c + s (d - c), affine in
+ * the last point), nonzero as q is not on va. Returns 1 (improper), 0, or -1 when a
+ * sign is 0, which the above excludes for a non-degenerate t. */
+static int straddle(const struct tr_plc *plc, uint32_t v, uint32_t a, uint32_t b, uint32_t c,
+                    uint32_t d)
+{
+  int sd = tr_sign(tr_orient3d(P(plc, v), P(plc, a), P(plc, c), P(plc, d)));
+  int sb = tr_sign(tr_orient3d(P(plc, v), P(plc, a), P(plc, c), P(plc, b)));
+  if (!sd || !sb)
+    return -1;
+  return sd == sb;
 }
 
 /* Edges of t against triangle u: 1 if some hit is not at a shared vertex. */
@@ -91,10 +142,12 @@ static int edges_hit(const struct tr_plc *plc, const uint32_t *t, const uint32_t
  * (neither corner is on the line: zero-area triangles were rejected before). On CAD
  * surfaces most neighbours are coplanar, where the general test classifies six
  * segments; this decides them with one orient3d and two orient2d. */
-static int edge_pair_improper(const struct tr_plc *plc, uint32_t a, uint32_t b, uint32_t p,
+static int edge_pair_improper(const sweep *s, uint32_t it, uint32_t a, uint32_t b, uint32_t p,
                               uint32_t q)
 {
-  if (tr_orient3d(P(plc, a), P(plc, b), P(plc, p), P(plc, q)) != 0)
+  const struct tr_plc *plc = s->plc;
+  /* (a, b, p) is an even permutation of triangle it: the same plane and side */
+  if (side(s, it, q) != 0)
     return 0;
   for (int ax = 0; ax < 3; ax++) {
     int sp = tr_sign(tr_orient2d_proj(P(plc, a), P(plc, b), P(plc, p), ax));
@@ -154,8 +207,9 @@ static int coplanar_improper(const struct tr_plc *plc, const uint32_t *t, const 
   return 0;
 }
 
-static int improper(const struct tr_plc *plc, uint32_t i, uint32_t j)
+static int improper(const sweep *s, uint32_t i, uint32_t j)
 {
+  const struct tr_plc *plc = s->plc;
   const uint32_t *t = plc->tris + 3 * (size_t)i, *u = plc->tris + 3 * (size_t)j;
   int shared = 0, tp = -1, uq = -1;
   for (int k = 0; k < 3; k++) {
@@ -168,32 +222,36 @@ static int improper(const struct tr_plc *plc, uint32_t i, uint32_t j)
       uq = k;
   }
   if (shared == 2)
-    return edge_pair_improper(plc, t[(tp + 1) % 3], t[(tp + 2) % 3], t[tp], u[uq]);
+    return edge_pair_improper(s, i, t[(tp + 1) % 3], t[(tp + 2) % 3], t[tp], u[uq]);
   if (shared < 2) {
     /* the non-shared corners of u against the plane of t: all on one side, the pair is
      * fine; all on it, the coplanar test */
-    int pos = 0, neg = 0, zero = 0;
-    for (int k = 0; k < 3; k++) {
-      if (u[k] == t[0] || u[k] == t[1] || u[k] == t[2])
-        continue;
-      int sg = tr_sign(tr_orient3d(P(plc, t[0]), P(plc, t[1]), P(plc, t[2]), P(plc, u[k])));
-      pos += sg > 0;
-      neg += sg < 0;
-      zero += sg == 0;
-    }
-    if (!zero && (!pos || !neg))
+    int cu[3], ct[3];
+    sides(s, i, j, cu);
+    if (!cu[2] && (!cu[0] || !cu[1]))
       return 0;
-    if (!pos && !neg)
+    if (!cu[0] && !cu[1])
       return coplanar_improper(plc, t, u);
-    if (one_side(plc, u, t))
+    sides(s, j, i, ct);
+    if (!ct[2] && (!ct[0] || !ct[1]))
       return 0;
-  } else if (one_side(plc, t, u) || one_side(plc, u, t)) {
+    if (shared == 1 && s->plane && cu[0] == 1 && cu[1] == 1 && ct[0] == 1 && ct[1] == 1) {
+      int kv = 0, ku = 0;
+      while (t[kv] != u[0] && t[kv] != u[1] && t[kv] != u[2])
+        kv++;
+      while (u[ku] != t[kv])
+        ku++;
+      int r = straddle(plc, t[kv], t[(kv + 1) % 3], t[(kv + 2) % 3], u[(ku + 1) % 3],
+                       u[(ku + 2) % 3]);
+      if (r >= 0)
+        return r;
+    }
+  } else if (one_side(s, i, j) || one_side(s, j, i)) {
     return 0;
   }
   return edges_hit(plc, t, u) || edges_hit(plc, u, t);
 }
 
-static int improper(const struct tr_plc *plc, uint32_t i, uint32_t j);
 
 /* Every pair is tested (no early exit) and the reported one is the least (x, y): the
  * message does not depend on the broad phase. */
@@ -201,7 +259,7 @@ static void consider(sweep *s, uint32_t i, uint32_t j)
 {
   uint32_t x = i < j ? i : j, y = i < j ? j : i;
   if (s->collect) {
-    if (s->oom || !improper(s->plc, x, y))
+    if (s->oom || !improper(s, x, y))
       return;
     if (s->npairs == s->cap) {
       size_t nc = s->cap ? 2 * s->cap : 64;
@@ -219,7 +277,7 @@ static void consider(sweep *s, uint32_t i, uint32_t j)
   }
   if (x > s->bx || (x == s->bx && y >= s->by))
     return;
-  if (improper(s->plc, x, y)) {
+  if (improper(s, x, y)) {
     s->bx = x;
     s->by = y;
   }
@@ -416,9 +474,23 @@ static tr_status run(sweep *sw, int method)
   sweep s = *sw;
   uint32_t n = plc->ntris;
   s.lo = malloc(sizeof(double) * 6 * (size_t)(n ? n : 1));
+  s.plane = method == TR_SELFINT_REFERENCE ? NULL : malloc(n ? n : 1);
   tr_status st = TR_OK;
-  if (!s.lo)
+  if (!s.lo || (method != TR_SELFINT_REFERENCE && !s.plane)) {
+    free(s.lo);
+    free(s.plane);
     return tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
+  }
+  for (uint32_t t = 0; t < n && s.plane; t++) {
+    const uint32_t *v = plc->tris + 3 * (size_t)t;
+    const double *a = P(plc, v[0]), *b = P(plc, v[1]), *c = P(plc, v[2]);
+    s.plane[t] = 0;
+    for (int k = 0; k < 3 && !s.plane[t]; k++)
+      if (a[k] == b[k] && b[k] == c[k]) {
+        int o = tr_sign(tr_orient2d_proj(a, b, c, k));
+        s.plane[t] = o ? (uint8_t)((k + 1) | (o < 0 ? 4 : 0)) : 0;
+      }
+  }
   s.hi = s.lo + 3 * (size_t)n;
   for (uint32_t t = 0; t < n; t++)
     for (int d = 0; d < 3; d++) {
@@ -443,7 +515,7 @@ static tr_status run(sweep *sw, int method)
   s.axis = ext[1] > ext[s.axis] ? 1 : s.axis;
   s.axis = ext[2] > ext[s.axis] ? 2 : s.axis;
   int fallback = 1;
-  if (method == TR_SELFINT_ALL_PAIRS) {
+  if (method == TR_SELFINT_ALL_PAIRS || method == TR_SELFINT_REFERENCE) {
     all_pairs(&s, n);
     fallback = 0;
   } else if (method != TR_SELFINT_SWEEP && n > 1 && isfinite(ext[0] + ext[1] + ext[2]))
@@ -451,7 +523,9 @@ static tr_status run(sweep *sw, int method)
   if (st == TR_OK && fallback)
     st = by_sweep(&s, n);
   free(s.lo);
+  free(s.plane);
   s.lo = s.hi = NULL;
+  s.plane = NULL;
   *sw = s;
   return st;
 }
@@ -468,7 +542,7 @@ tr_status tr_input_self_intersection_pairs(const struct tr_plc *plc, int method,
                                            uint32_t **pairs, size_t *npairs)
 {
   uint32_t n = plc->ntris;
-  sweep s = {plc, NULL, NULL, 0, n, n, 1, 0, NULL, 0, 0};
+  sweep s = {plc, NULL, NULL, 0, NULL, n, n, 1, 0, NULL, 0, 0};
   *pairs = NULL;
   *npairs = 0;
   tr_status st = run(&s, method);
@@ -490,7 +564,7 @@ tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_
                                          int method)
 {
   uint32_t n = plc->ntris;
-  sweep s = {plc, NULL, NULL, 0, n, n, 0, 0, NULL, 0, 0};
+  sweep s = {plc, NULL, NULL, 0, NULL, n, n, 0, 0, NULL, 0, 0};
   tr_status st = run(&s, method);
   if (st == TR_OK && s.bx < n) {
     uint32_t x = s.bx, y = s.by;

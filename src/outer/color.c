@@ -130,15 +130,16 @@ static int less4(const uint32_t *a, const uint32_t *b)
 tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
                          const uint8_t *sides, uint32_t *nregions)
 {
-  return tr_outer_color_ex(m, sub, keep_hull, sides, nregions, NULL);
+  return tr_outer_color_ex(m, sub, keep_hull, sides, nregions, NULL, NULL, 0);
 }
 
 tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
-                            const uint8_t *sides, uint32_t *nregions, uint32_t *subtet)
+                            const uint8_t *sides, uint32_t *nregions, uint32_t *subtet,
+                            const uint32_t *hint, uint32_t nhint)
 {
   *nregions = 0;
-  uint32_t ns = sub->n, nt = m->nt;
-  fkey *keys = malloc(sizeof *keys * (ns ? ns : 1));
+  uint32_t ns = sub->n, nt = m->nt, nk = 0;
+  fkey *keys = malloc(sizeof *keys * (ns ? ns : 1)); /* the sub-faces without a hint */
   uint8_t *cmask = calloc(nt ? nt : 1, 1);   /* bit k: face k is a constraint */
   /* seen[j]: the first real tet in slot order with sub-face j as a face, TR_NONE: none */
   uint32_t *seen = subtet ? subtet : malloc(sizeof *seen * (ns ? ns : 1));
@@ -153,15 +154,29 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
     st = tr_error(TR_ERR_NOMEM, "out of memory coloring %u tets", nt);
     goto done;
   }
-  for (uint32_t j = 0; j < ns; j++)
-    seen[j] = TR_NONE;
+  /* A sub-face whose hint still has it as a face is marked on both sides here,
+   * and seen[] takes the real tet of the two, the lower slot if both are, as the pass over
+   * the tets below would: one random access per sub-face instead of a hash probe per tet
+   * face (most of the coloring's time on a fine surface). The others are looked up. */
   for (uint32_t j = 0; j < ns; j++) {
-    memcpy(keys[j].k, sub->v + 3 * (size_t)j, 3 * sizeof(uint32_t));
-    tr_sort3(keys[j].k);
-    keys[j].id = j;
+    seen[j] = TR_NONE;
+    uint32_t t = hint && j < nhint ? hint[j] : TR_NONE;
+    const uint32_t *a = sub->v + 3 * (size_t)j;
+    int k = t < nt && tr_tet_is_real(m, t) ? tr_fcode(m, t, a[0], a[1], a[2]) : -1;
+    if (k >= 0) {
+      uint32_t o = TR_NEIG(m, t, k);
+      seen[j] = o != TR_NONE && o < t && tr_tet_is_real(m, o) ? o : t;
+      cmask[t] |= (uint8_t)(1u << k);
+      if (o != TR_NONE)
+        cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
+      continue;
+    }
+    memcpy(keys[nk].k, a, 3 * sizeof(uint32_t));
+    tr_sort3(keys[nk].k);
+    keys[nk++].id = j;
   }
-  qsort(keys, ns, sizeof *keys, cmp_fkey);
-  if ((st = fhash_build(&fh, keys, ns)) != TR_OK)
+  qsort(keys, nk, sizeof *keys, cmp_fkey);
+  if ((st = fhash_build(&fh, keys, nk)) != TR_OK)
     goto done;
   /* Constraint faces, marked on both sides; the FLAGE votes are taken after the
    * components are known. */
@@ -169,7 +184,7 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
    * Ghosts take part so that the neighbour's kind is never read (a random access per
    * face): a ghost looks up its one real face, the hull face opposite its ghost vertex
    * (slot 3); seen[] takes the real tet of the two, the first in slot order if both are. */
-  for (uint32_t t = 0; t < nt; t++) {
+  for (uint32_t t = 0; t < nt && nk; t++) {
     if (tr_tet_is_free(m, t))
       continue;
     int ghost = tr_tet_is_ghost(m, t);
@@ -190,7 +205,7 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
       if (!(f & FSLOT_RUN) && seen[f] == TR_NONE)
         seen[f] = real;
       /* Duplicated sub-faces (the same face listed twice) all mark the same face. */
-      for (const fkey *g = keys + (f & ~FSLOT_RUN); (f & FSLOT_RUN) && g < keys + ns &&
+      for (const fkey *g = keys + (f & ~FSLOT_RUN); (f & FSLOT_RUN) && g < keys + nk &&
                                                     g->k[0] == s[0] && g->k[1] == s[1] &&
                                                     g->k[2] == s[2]; g++)
         if (seen[g->id] == TR_NONE)
@@ -276,19 +291,23 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
     if (less4(v, ck[c].v))
       memcpy(ck[c].v, v, sizeof v);
   }
-  /* The FLAGE votes, sub-face by sub-face (the first of each run of duplicates): its two
-   * tets are the one found above and the one across it, so no tet face is looked up
-   * again. The votes are OR-ed per component, in any order. */
-  for (uint32_t j = 0; j < ns; j++) {
-    if (j && memcmp(keys[j].k, keys[j - 1].k, sizeof keys[j].k) == 0)
-      continue;
-    uint32_t id = keys[j].id, t = seen[id];
+  /* The FLAGE votes, sub-face by sub-face (of a face listed more than once, the least
+   * index: the first to take face k of its seen tet, vmask[t] bit k): its two tets are the
+   * one found above and the one across it, so no tet face is looked up again. The votes
+   * are OR-ed per component, in any order. cmask is done with: it becomes vmask. */
+  uint8_t *vmask = cmask;
+  memset(vmask, 0, nt ? nt : 1);
+  for (uint32_t id = 0; id < ns; id++) {
+    uint32_t t = seen[id];
     const uint32_t *a = sub->v + 3 * (size_t)id;
     int k = tr_fcode(m, t, a[0], a[1], a[2]);
     if (k < 0) {
       st = tr_error(TR_ERR_INTERNAL, "outer removal: tet %u lost sub-face %u", t, id);
       goto done;
     }
+    if (vmask[t] & (1u << k))
+      continue;
+    vmask[t] |= (uint8_t)(1u << k);
     uint32_t side[2] = {t, TR_NEIG(m, t, k)};
     int face[2] = {k, side[1] == TR_NONE ? 0 : (int)(m->tn[4 * (size_t)t + (size_t)k] & 3)};
     for (int i = 0; i < 2; i++) {

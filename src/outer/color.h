@@ -36,8 +36,11 @@ tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hul
                          const uint8_t *sides, uint32_t *nregions);
 /* The same, and subtet[j] (sub->n entries, may be NULL) = the first real tet in slot
  * order that has sub-face j as a face, what tr_mesh_find_faces would answer: compaction
- * starts from it (tr_compact_in) instead of a second pass over every tet. */
+ * starts from it (tr_compact_in) instead of a second pass over every tet. hint (may be
+ * NULL; nhint entries, nhint <= sub->n): hint[j] a tet that may have sub-face j as a
+ * face (tr_recover_facets_ex's hint_out), checked; any value gives the same answer. */
 tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
-                            const uint8_t *sides, uint32_t *nregions, uint32_t *subtet);
+                            const uint8_t *sides, uint32_t *nregions, uint32_t *subtet,
+                            const uint32_t *hint, uint32_t nhint);
 
 #endif

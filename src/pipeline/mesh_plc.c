@@ -149,7 +149,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   struct tr_mesh *m = NULL, *res = NULL;
   uint32_t *edges = NULL, ne = 0, nopen = 0, nmulti = 0, nreg = 0;
   uint8_t *sides = NULL, *vkind = NULL;
-  uint32_t *vindex = NULL, *subtet = NULL, nsubtet = 0;
+  uint32_t *vindex = NULL, *subtet = NULL, nsubtet = 0, *subhint = NULL;
   tr_subfaces sub;
   memset(&sub, 0, sizeof sub);
   double secs[2];
@@ -212,7 +212,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK && m->ndup)
     st = tr_error(TR_ERR_INTERNAL, "duplicate points survived validation");
   if (st == TR_OK) {
-    st = tr_pipeline_recover(m, p, edges, ne, &sub, stats, secs, &opt, &vkind, &vindex);
+    st = tr_pipeline_recover(m, p, edges, ne, &sub, stats, secs, &opt, &vkind, &vindex,
+                             &subhint);
     stats->recovery_seconds = secs[0] + secs[1];
     stage[TR_STAGE_EDGES] = secs[0];
     stage[TR_STAGE_FACETS] = secs[1];
@@ -234,13 +235,16 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK && !(subtet = malloc(sizeof *subtet * (sub.n ? sub.n : 1))))
     st = tr_error(TR_ERR_NOMEM, "out of memory for %u sub-face tets", sub.n);
   if (st == TR_OK) {
-    st = tr_outer_color_ex(m, &sub, keep_hull, sides, &nreg, subtet);
+    st = tr_outer_color_ex(m, &sub, keep_hull, sides, &nreg, subtet, subhint,
+                           subhint ? sub.n : 0);
     nsubtet = sub.n;
   }
   if (st == TR_OK) /* hole and region points: their cells emptied or named */
     st = tr_outer_points(m, p, opt.verbose, &nreg);
   free(sides);
   sides = NULL;
+  free(subhint); /* the mesh changes from here on */
+  subhint = NULL;
   PROGRESS(TR_STAGE_COLOR, 1);
   double t44 = tr_pipeline_now();
   stage[TR_STAGE_COLOR] = t44 - t4;
@@ -364,6 +368,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   free(vkind);
   free(vindex);
   free(subtet);
+  free(subhint);
   tr_mesh_destroy(m);
   stats->total_seconds = tr_pipeline_now() - t0;
   struct rusage ru;

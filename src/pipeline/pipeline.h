@@ -48,11 +48,13 @@ tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t
  * and *vkind, *vindex (tr_pipeline_origins; NULL when the build has no recovery stages,
  * so every vertex is an input vertex); secs[0], secs[1] = time of each stage. Reports
  * both stages to opt->progress (TR_ERR_CANCELLED when it asks to stop). opt->recovery
- * picks the steps (1: the paper's only; 2: no facet flips). */
+ * picks the steps (1: the paper's only; 2: no facet flips). subhint (may be NULL):
+ * *subhint = the sub-faces' tet hints for tr_outer_color_ex (tr_recover_facets_ex's
+ * hint_out; NULL: none), freed by the caller. */
 tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
                               const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
                               tr_stats *stats, double secs[2], const tr_options *opt,
-                              uint8_t **vkind, uint32_t **vindex);
+                              uint8_t **vkind, uint32_t **vindex, uint32_t **subhint);
 /* opt->progress(user, tr_stage_name(stage), fraction) if set; TR_ERR_CANCELLED with a
  * message naming the stage when it returns non-zero. */
 tr_status tr_pipeline_progress(const tr_options *opt, int stage, double fraction);

@@ -223,9 +223,11 @@ tr_status tr_pipeline_progress(const tr_options *opt, int stage, double fraction
 tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
                               const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
                               tr_stats *stats, double secs[2], const tr_options *opt,
-                              uint8_t **vkind, uint32_t **vindex)
+                              uint8_t **vkind, uint32_t **vindex, uint32_t **subhint)
 {
   memset(sub, 0, sizeof *sub);
+  if (subhint)
+    *subhint = NULL;
   secs[0] = secs[1] = 0;
   *vkind = NULL;
   *vindex = NULL;
@@ -259,7 +261,7 @@ tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
     st = tr_pipeline_progress(opt, TR_STAGE_FACETS, 0);
   if (st == TR_OK) {
     t1 = tr_pipeline_now();
-    st = tr_recover_facets_ex(m, plc->tris, plc->ntris, &chains, &fo, sub, &fs);
+    st = tr_recover_facets_ex(m, plc->tris, plc->ntris, &chains, &fo, sub, &fs, subhint);
     secs[1] = tr_pipeline_now() - t1;
     stats->missing_facets = fs.missing_facets;
     stats->facets_recovered_by_swap = fs.recovered_by_swap;

@@ -46,9 +46,13 @@ typedef struct tr_facet_recovery_opts {
 tr_status tr_recover_facets(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                             const tr_edge_chains *chains, tr_subfaces *sub,
                             tr_facet_recovery_stats *st);
-/* The same with options (opt may be NULL: the default). */
+/* The same with options (opt may be NULL: the default). hint_out (may be NULL; needs
+ * sub): *hint_out[j] (sub->n entries, freed by the caller) = a tet that had sub-face j
+ * as a face when it was listed, TR_NONE: none; later flips may have taken it away (the
+ * outer removal checks it: tr_outer_color_ex). */
 tr_status tr_recover_facets_ex(struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                                const tr_edge_chains *chains, const tr_facet_recovery_opts *fo,
-                               tr_subfaces *sub, tr_facet_recovery_stats *st);
+                               tr_subfaces *sub, tr_facet_recovery_stats *st,
+                               uint32_t **hint_out);
 
 #endif

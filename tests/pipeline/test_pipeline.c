@@ -16,6 +16,7 @@
 #include "smooth/smooth.h"
 
 #include "texpect.h"
+#include "trecover.h"
 
 /* What tr_check_mesh checks; the Euler test assumes a ball (not true with a cavity). */
 static unsigned chk_what = TR_CHK_TOPOLOGY;
@@ -258,6 +259,91 @@ static void t_two_boxes(void)
   tr_plc_destroy(p);
 }
 
+/* Outer removal with the hints of facet recovery, without them, with hints that are
+ * wrong (any slot, some past the end: tets without the face, ghosts, free slots), with
+ * hints for only the first half and with the other real tet of each face: the same regions and, for every
+ * sub-face, the same tet, the first real one in slot order with the face. A box with a
+ * cavity and two boxes sharing a face (two regions). */
+static void t_color_hints(void)
+{
+  for (int c = 0; c < 2; c++) {
+    builder b = {0};
+    double lo[3] = {0, 0, 0}, hi[3] = {4, 4, 4}, lo2[3] = {1, 1, 1}, hi2[3] = {3, 3, 3};
+    double lo3[3] = {4, 0, 0}, hi3[3] = {6, 4, 4};
+    box(&b, lo, hi, 2, -1);
+    if (c == 0)
+      box(&b, lo2, hi2, 1, -1);
+    else
+      box(&b, lo3, hi3, 2, 0);
+    tr_plc *plc = make(&b);
+    trec_run r;
+    tr_status s = trec_to_recovery(plc, &r);
+    EXPECT(s == TR_OK && r.sub.n > 0 && r.hint, "color_hints %d: up to recovery, with hints: %s",
+           c, tr_last_error());
+    if (s != TR_OK || !r.hint) {
+      trec_free(&r);
+      tr_plc_destroy(plc);
+      continue;
+    }
+    struct tr_mesh *m = r.m;
+    uint32_t n = r.sub.n, nt = m->nt, used = 0;
+    for (uint32_t j = 0; j < n; j++)
+      used += r.hint[j] < nt && tr_tet_is_real(m, r.hint[j]) &&
+              tr_fcode(m, r.hint[j], r.sub.v[3 * j], r.sub.v[3 * j + 1], r.sub.v[3 * j + 2]) >= 0;
+    /* most facets are faces after edge recovery; the flips for the others may take
+     * away some of their faces' tets (then the hint is stale, and looked past) */
+    EXPECT(2 * used > n, "color_hints %d: only %u of %u hints name a tet with the face", c,
+           used, n);
+    /* bad: any slot; other: the tet across the face from the hinted one, when real */
+    uint32_t *bad = malloc(sizeof *bad * n), *other = malloc(sizeof *other * n), *seen[5],
+             nreg[5], *reg[5];
+    for (uint32_t j = 0; j < n; j++) {
+      bad[j] = (uint32_t)(((uint64_t)j * 2654435761u) % (nt + 3));
+      uint32_t t = r.hint[j];
+      int k = t < nt && tr_tet_is_real(m, t)
+                  ? tr_fcode(m, t, r.sub.v[3 * j], r.sub.v[3 * j + 1], r.sub.v[3 * j + 2])
+                  : -1;
+      uint32_t o = k >= 0 ? TR_NEIG(m, t, k) : TR_NONE;
+      other[j] = o != TR_NONE && tr_tet_is_real(m, o) ? o : t;
+    }
+    for (int h = 0; h < 5; h++) {
+      const uint32_t *hint = h == 1 ? NULL : h == 2 ? bad : h == 4 ? other : r.hint;
+      seen[h] = malloc(sizeof *seen[h] * n);
+      reg[h] = malloc(sizeof *reg[h] * nt);
+      s = tr_outer_color_ex(m, &r.sub, 0, NULL, &nreg[h], seen[h], hint, h == 3 ? n / 2 : n);
+      EXPECT(s == TR_OK && nreg[h] == 1u + (c == 1), "color_hints %d/%d: %u regions: %s", c, h,
+             nreg[h], tr_last_error());
+      memcpy(reg[h], m->region, sizeof *reg[h] * nt);
+    }
+    for (int h = 1; h < 5; h++) {
+      int same = nreg[h] == nreg[0] && !memcmp(seen[h], seen[0], sizeof *seen[0] * n);
+      for (uint32_t t = 0; t < nt; t++)
+        same = same && (tr_tet_is_free(m, t) || reg[h][t] == reg[0][t]);
+      EXPECT(same, "color_hints %d: hints %d give other regions or tets than the right ones",
+             c, h);
+    }
+    for (uint32_t j = 0; j < n; j++) {
+      const uint32_t *a = r.sub.v + 3 * j;
+      uint32_t t = seen[0][j];
+      EXPECT(t < nt && tr_tet_is_real(m, t) && tr_fcode(m, t, a[0], a[1], a[2]) >= 0,
+             "color_hints %d: sub-face %u: tet %u lacks it", c, j, t);
+      for (uint32_t u = 0; u < t && u < nt; u++)
+        EXPECT(!tr_tet_is_real(m, u) || tr_fcode(m, u, a[0], a[1], a[2]) < 0,
+               "color_hints %d: sub-face %u: real tet %u before tet %u has it", c, j, u, t);
+    }
+    EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, NULL) == TR_OK,
+           "color_hints %d: mesh validator: %s", c, tr_last_error());
+    for (int h = 0; h < 5; h++) {
+      free(seen[h]);
+      free(reg[h]);
+    }
+    free(bad);
+    free(other);
+    trec_free(&r);
+    tr_plc_destroy(plc);
+  }
+}
+
 /* Outer removal with sub-faces listed more than once (the first and a shared one, twice
  * and three times): the same regions as with each listed once, and every copy answered
  * with the same tet, the first real one in slot order with the face. Two boxes sharing a
@@ -269,28 +355,16 @@ static void t_color_repeats(void)
   box(&b, lo, hi, 1, -1);
   box(&b, lo2, hi2, 1, 0);
   tr_plc *plc = make(&b);
-  tr_status s = tr_plc_validate(plc, NULL);
-  EXPECT(s == TR_OK, "color_repeats: validate: %s", tr_last_error());
-  uint32_t *edges = NULL, ne = 0, nopen = 0, nmulti = 0;
-  struct tr_mesh *m = NULL;
-  tr_subfaces sub;
-  memset(&sub, 0, sizeof sub);
-  tr_stats st;
-  memset(&st, 0, sizeof st);
-  double secs[2];
-  tr_options opt;
-  tr_options_default(&opt);
-  uint8_t *vkind = NULL;
-  uint32_t *vindex = NULL;
-  if (s == TR_OK)
-    s = tr_pipeline_edges(plc, &edges, &ne, &nopen, &nmulti);
-  if (s == TR_OK)
-    s = tr_delaunay_build(plc->xyz, plc->npoints, &m);
-  if (s == TR_OK)
-    s = tr_pipeline_recover(m, plc, edges, ne, &sub, &st, secs, &opt, &vkind, &vindex);
-  EXPECT(s == TR_OK && sub.n > 2, "color_repeats: recovery: %s", tr_last_error());
-  if (s != TR_OK || sub.n <= 2)
+  trec_run r;
+  tr_status s = trec_to_recovery(plc, &r);
+  struct tr_mesh *m = r.m;
+  tr_subfaces sub = r.sub;
+  EXPECT(s == TR_OK && sub.n > 2, "color_repeats: up to recovery: %s", tr_last_error());
+  if (s != TR_OK || sub.n <= 2) {
+    trec_free(&r);
+    tr_plc_destroy(plc);
     return;
+  }
   /* the shared face x = 1 is the one with all three vertices at x = 1 in both boxes */
   uint32_t shared = sub.n;
   for (uint32_t f = 0; f < sub.n && shared == sub.n; f++) {
@@ -310,11 +384,11 @@ static void t_color_repeats(void)
     memcpy(rep.v + 3 * (size_t)(sub.n + k), sub.v + 3 * (size_t)extra[k], 3 * sizeof(uint32_t));
     rep.tri[sub.n + k] = sub.tri[extra[k]];
   }
-  s = tr_outer_color_ex(m, &sub, 0, NULL, &nreg1, seen1);
+  s = tr_outer_color_ex(m, &sub, 0, NULL, &nreg1, seen1, r.hint, r.hint ? sub.n : 0);
   EXPECT(s == TR_OK && nreg1 == 2, "color_repeats: once each: %u regions: %s", nreg1,
          tr_last_error());
   memcpy(reg1, m->region, sizeof *reg1 * m->nt);
-  s = tr_outer_color_ex(m, &rep, 0, NULL, &nreg2, seen2);
+  s = tr_outer_color_ex(m, &rep, 0, NULL, &nreg2, seen2, NULL, 0);
   EXPECT(s == TR_OK && nreg2 == nreg1, "color_repeats: repeated: %u regions: %s", nreg2,
          tr_last_error());
   for (uint32_t t = 0; t < m->nt; t++)
@@ -335,11 +409,7 @@ static void t_color_repeats(void)
   free(seen1);
   free(seen2);
   free(reg1);
-  tr_pipeline_subfaces_free(&sub);
-  free(edges);
-  free(vkind);
-  free(vindex);
-  tr_mesh_destroy(m);
+  trec_free(&r);
   tr_plc_destroy(plc);
 }
 
@@ -584,6 +654,8 @@ int main(int argc, char **argv)
     t_fin();
   if (all || !strcmp(w, "color_repeats"))
     t_color_repeats();
+  if (all || !strcmp(w, "color_hints"))
+    t_color_hints();
   if (all || !strcmp(w, "incircle"))
     t_incircle();
   if (all || !strcmp(w, "smooth"))

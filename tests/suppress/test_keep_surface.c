@@ -26,6 +26,7 @@
 
 #include "../hard/hard_cases.h"
 #include "../pipeline/texpect.h"
+#include "../pipeline/trecover.h"
 #include "keepcheck.h"
 
 static void run(const char *name, tr_plc *plc, double vol6, int ball, const char *mode)
@@ -96,45 +97,26 @@ static void run(const char *name, tr_plc *plc, double vol6, int ball, const char
  * suppression with every change validated. */
 static void steps(const char *name, tr_plc *plc)
 {
-  tr_status s = tr_plc_validate(plc, NULL);
-  EXPECT(s == TR_OK, "%s: validate: %s", name, tr_last_error());
-  uint32_t *edges = NULL, ne = 0, nopen = 0, nmulti = 0, nreg = 0;
-  struct tr_mesh *m = NULL;
-  tr_subfaces sub;
-  memset(&sub, 0, sizeof sub);
-  tr_stats st;
-  memset(&st, 0, sizeof st);
-  double secs[2];
-  tr_options opt;
-  tr_options_default(&opt);
-  uint8_t *vkind = NULL;
-  uint32_t *vindex = NULL;
+  trec_run r;
+  tr_status s = trec_to_recovery(plc, &r);
+  EXPECT(s != TR_OK || (r.nopen == 0 && r.nmulti == 0), "%s: not a closed manifold", name);
+  struct tr_mesh *m = r.m;
+  uint32_t nreg = 0;
   if (s == TR_OK)
-    s = tr_pipeline_edges(plc, &edges, &ne, &nopen, &nmulti);
-  EXPECT(s == TR_OK && nopen == 0 && nmulti == 0, "%s: not a closed manifold", name);
-  if (s == TR_OK)
-    s = tr_delaunay_build(plc->xyz, plc->npoints, &m);
-  if (s == TR_OK)
-    s = tr_pipeline_recover(m, plc, edges, ne, &sub, &st, secs, &opt, &vkind, &vindex);
-  if (s == TR_OK)
-    s = tr_outer_color(m, &sub, 0, NULL, &nreg);
+    s = tr_outer_color(m, &r.sub, 0, NULL, &nreg);
   EXPECT(s == TR_OK, "%s: stages: %s", name, tr_last_error());
   tr_suppress_stats ss;
   memset(&ss, 0, sizeof ss);
   if (s == TR_OK) {
     unsigned flags = TR_SUP_REMOVE | TR_SUP_RELOCATE | TR_SUP_INTERIOR | TR_SUP_REQUIRE |
                      TR_SUP_CHECK;
-    s = tr_suppress_steiner(m, &sub, plc, flags, &ss);
+    s = tr_suppress_steiner(m, &r.sub, plc, flags, &ss);
     EXPECT(s == TR_OK, "%s: suppression: %s", name, tr_last_error());
   }
   EXPECT(ss.removed + ss.relocated > 0, "%s: nothing to suppress: a test of nothing", name);
   fprintf(stderr, "%s (steps): %llu removed, %llu relocated, each change validated\n", name,
           (unsigned long long)ss.removed, (unsigned long long)ss.relocated);
-  tr_pipeline_subfaces_free(&sub);
-  free(edges);
-  free(vkind);
-  free(vindex);
-  tr_mesh_destroy(m);
+  trec_free(&r);
 }
 
 int main(int argc, char **argv)
