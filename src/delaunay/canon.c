@@ -129,6 +129,8 @@ typedef struct cjob {
   uint32_t *v2t;         /* C: the last new slot of each vertex in this job's range */
   skey *sk;
   uint32_t nv, t0, t1;
+  uint32_t v0, v1; /* A: the range of m->v2t it clears (its own v2t, if not that, whole) */
+  size_t f0, f1;   /* D: the range of flags it clears */
   size_t b0, b1;
   int phase;
 } cjob;
@@ -137,6 +139,13 @@ typedef struct cjob {
 static void phase_count(cjob *J)
 {
   const struct tr_mesh *m = J->m;
+  /* the clearing of the v2t arrays for C, here to spread it (and the first touch of
+   * a thread's own array) over the threads */
+  for (uint32_t i = J->v0; i < J->v1; i++)
+    m->v2t[i] = TR_NONE;
+  if (J->v2t != m->v2t)
+    for (uint32_t i = 0; i < J->nv; i++)
+      J->v2t[i] = TR_NONE;
   for (uint32_t t = J->t0; t < J->t1; t++) {
     const uint32_t *v = m->tv + 4 * (size_t)t;
     if (v[0] == TR_NONE) {
@@ -241,6 +250,8 @@ static void phase_write(cjob *J)
   const uint32_t *otn = J->m->tn;
   const uint64_t *nr = J->nr;
   uint32_t *tn = J->tn;
+  if (J->f1 > J->f0) /* the flags cleared here, spread over the threads */
+    memset(J->m->flags + J->f0, 0, J->f1 - J->f0);
   for (uint32_t t = J->t0; t < J->t1; t++) {
     /* the four neighbour entries of nr are random reads: start those of a later live
      * tet (the old tn streams; a free slot's tn is not a neighbour list) */
@@ -331,11 +342,11 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
                   .cnt = cnt + nb * (size_t)j, .order = order, .sk = sk, .nv = nv,
                   .v2t = j ? loc + (size_t)(j - 1) * nv : m->v2t,
                   .t0 = (uint32_t)((uint64_t)nt * (uint32_t)j / (uint32_t)nth),
-                  .t1 = (uint32_t)((uint64_t)nt * (uint32_t)(j + 1) / (uint32_t)nth)};
-  for (uint32_t i = 0; i < nv; i++)
-    m->v2t[i] = TR_NONE;
-  for (size_t i = 0; i < (size_t)(nth - 1) * nv; i++)
-    loc[i] = TR_NONE;
+                  .t1 = (uint32_t)((uint64_t)nt * (uint32_t)(j + 1) / (uint32_t)nth),
+                  .v0 = (uint32_t)((uint64_t)nv * (uint32_t)j / (uint32_t)nth),
+                  .v1 = (uint32_t)((uint64_t)nv * (uint32_t)(j + 1) / (uint32_t)nth),
+                  .f0 = (size_t)m->cap_t * (size_t)j / (size_t)nth,
+                  .f1 = (size_t)m->cap_t * (size_t)(j + 1) / (size_t)nth};
   STAT_LAP(NULL);
   run_phase(J, nth, 0);
   STAT_LAP("canon count");
@@ -376,7 +387,6 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
   m->nt = nlive;
   m->free_head = TR_NONE;
   m->nfree = 0;
-  memset(m->flags, 0, m->cap_t);
   /* v2t: the last slot of each vertex; a later range's record is a later slot */
   for (int j = 1; j < nth; j++)
     for (uint32_t i = 0; i < nv; i++)
