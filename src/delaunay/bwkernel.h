@@ -11,6 +11,7 @@
 
 #include "delaunay.h"
 #include "det2.h"
+#include "dtstat.h"
 #include "predicates.h"
 
 /* The cavity mark is the top bit of vertex slot 0 of the tet itself: the conflict test
@@ -25,11 +26,6 @@
 #define PREFETCH(p) __builtin_prefetch(p)
 #else
 #define PREFETCH(p) ((void)(p))
-/* The serial insertion of bw.c, for par.c's leftovers; par.c's parallel insertion of the
- * points from..D->n-1 (insertion ids) with nthreads threads (at most 64). */
-tr_status tr_dt_insert_serial(dt *D, uint32_t pi);
-tr_status tr_dt_insert_parallel(dt *D, uint32_t from, uint32_t nthreads);
-
 #endif
 
 typedef struct bface {
@@ -130,32 +126,13 @@ static inline tr_status grow_bufs(dt *D, uint32_t n)
 }
 
 /* -DTR_DT_STATS prints per-point averages (insphere tests, walk steps, cavity and
- * boundary sizes) after a build: the numbers to look at when tuning. */
+ * boundary sizes) after a build: the numbers to look at when tuning; and the phase
+ * timers (dtstat.h). */
 #ifdef TR_DT_STATS
-#include <stdio.h>
-#include <time.h>
 __attribute__((unused)) static unsigned long long st_ins, st_walk, st_cav, st_bf, st_pts, st_big;
 #define STAT(x) (x)
-/* process CPU time since the previous STAT_LAP, printed with the stage's name */
-static inline void stat_lap(const char *what)
-{
-  static double prev;
-  struct timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  const double now = (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-  if (what)
-    fprintf(stderr, "  %-10s %.3f s\n", what, now - prev);
-  prev = now;
-}
-#define STAT_LAP(what) stat_lap(what)
 #else
 #define STAT(x) ((void)0)
-#define STAT_LAP(what) ((void)0)
-/* The serial insertion of bw.c, for par.c's leftovers; par.c's parallel insertion of the
- * points from..D->n-1 (insertion ids) with nthreads threads (at most 64). */
-tr_status tr_dt_insert_serial(dt *D, uint32_t pi);
-tr_status tr_dt_insert_parallel(dt *D, uint32_t from, uint32_t nthreads);
-
 #endif
 
 /* Real tet t: does p lie strictly inside its (perturbed) circumsphere?

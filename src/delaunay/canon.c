@@ -27,27 +27,20 @@
 #include <string.h>
 
 #include "delaunay.h"
+#include "dtstat.h"
 
 #define CANON_MAX_THREADS 64
+/* records or tets ahead whose random accesses are started early (a hint) */
+#define AHEAD 16
+#if defined(__GNUC__) || defined(__clang__)
+#define PREFETCH(p) __builtin_prefetch(p)
+#define PREFETCH_W(p) __builtin_prefetch(p, 1)
+#else
+#define PREFETCH(p) ((void)(p))
+#define PREFETCH_W(p) ((void)(p))
+#endif
 #define NR_NONE UINT64_MAX
 
-#ifdef TR_DT_STATS
-#include <stdio.h>
-#include <time.h>
-static void lap(const char *what)
-{
-  static double prev;
-  struct timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  const double now = (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-  if (what)
-    fprintf(stderr, "    canon %-8s %.3f s\n", what, now - prev);
-  prev = now;
-}
-#define LAP(what) lap(what)
-#else
-#define LAP(what) ((void)0)
-#endif
 
 /* PERM[r]: new slot j takes old slot PERM[r][j]. 0..11: real tets, r = 3k + s where k is
  * the old slot of the smallest vertex and s the rotation of the other three, listed from
@@ -136,6 +129,8 @@ typedef struct cjob {
   uint32_t *v2t;         /* C: the last new slot of each vertex in this job's range */
   skey *sk;
   uint32_t nv, t0, t1;
+  uint32_t v0, v1; /* A: the range of m->v2t it clears (its own v2t, if not that, whole) */
+  size_t f0, f1;   /* D: the range of flags it clears */
   size_t b0, b1;
   int phase;
 } cjob;
@@ -144,6 +139,13 @@ typedef struct cjob {
 static void phase_count(cjob *J)
 {
   const struct tr_mesh *m = J->m;
+  /* the clearing of the v2t arrays for C, here to spread it (and the first touch of
+   * a thread's own array) over the threads */
+  for (uint32_t i = J->v0; i < J->v1; i++)
+    m->v2t[i] = TR_NONE;
+  if (J->v2t != m->v2t)
+    for (uint32_t i = 0; i < J->nv; i++)
+      J->v2t[i] = TR_NONE;
   for (uint32_t t = J->t0; t < J->t1; t++) {
     const uint32_t *v = m->tv + 4 * (size_t)t;
     if (v[0] == TR_NONE) {
@@ -161,7 +163,14 @@ static void phase_count(cjob *J)
 static void phase_scatter(cjob *J)
 {
   const struct tr_mesh *m = J->m;
-  for (uint32_t t = J->t0; t < J->t1; t++)
+  for (uint32_t t = J->t0; t < J->t1; t++) {
+    /* the bucket counter and the record's place are random: start the counter's miss
+     * two distances ahead, the record's (where it would go if nothing came between)
+     * one distance ahead, once the counter is in cache */
+    if (t + 2 * AHEAD < J->t1 && J->nr[t + 2 * AHEAD] != NR_NONE)
+      PREFETCH(&J->cnt[J->nr[t + 2 * AHEAD] >> 8]);
+    if (t + AHEAD < J->t1 && J->nr[t + AHEAD] != NR_NONE)
+      PREFETCH_W(&J->sk[J->cnt[J->nr[t + AHEAD] >> 8]]);
     if (J->nr[t] != NR_NONE) {
       const uint32_t *v = m->tv + 4 * (size_t)t;
       const uint8_t *p = PERM[J->nr[t] & 255];
@@ -171,6 +180,7 @@ static void phase_scatter(cjob *J)
       k->v[2] = v[p[3]];
       k->t = t;
     }
+  }
 }
 
 /* C: each bucket sorted by the other three vertices (J->end[b]: the end of bucket b);
@@ -182,7 +192,7 @@ static void phase_sort(cjob *J)
   const uint32_t *order = J->order;
   uint32_t *v2t = J->v2t;
   uint64_t *nr = J->nr;
-  const uint32_t nv = J->nv;
+  const uint32_t nv = J->nv, rend = J->b1 > J->b0 ? J->end[J->b1 - 1] : 0;
   uint32_t lo = J->b0 ? J->end[J->b0 - 1] : 0;
   for (size_t b = J->b0; b < J->b1; b++) {
     const uint32_t hi = J->end[b];
@@ -206,6 +216,17 @@ static void phase_sort(cjob *J)
     const uint32_t w0 = order ? order[v0] : v0;
     for (uint32_t i = lo; i < hi; i++) {
       const skey k = sk[i];
+      /* nr[k.t] is a random read-modify-write (the old slots of a bucket are scattered):
+       * start the miss of a later record's entry (in a later bucket of this job's range:
+       * not sorted yet, but its old slot all the same; past the range, none) */
+      if (i + AHEAD < rend) {
+        const skey *a = &sk[i + AHEAD];
+        PREFETCH_W(&nr[a->t]);
+        /* and the v2t entries it will set (input indices: random on a random input) */
+        if (order)
+          for (int j = 0; j < 3; j++)
+            PREFETCH_W(&v2t[order[a->v[j] < nv ? a->v[j] : 0]]);
+      }
       nr[k.t] = (uint64_t)i << 8 | (nr[k.t] & 255);
       skey w = {{w0, k.v[0], k.v[1]}, k.v[2]};
       if (order) {
@@ -229,7 +250,17 @@ static void phase_write(cjob *J)
   const uint32_t *otn = J->m->tn;
   const uint64_t *nr = J->nr;
   uint32_t *tn = J->tn;
+  if (J->f1 > J->f0) /* the flags cleared here, spread over the threads */
+    memset(J->m->flags + J->f0, 0, J->f1 - J->f0);
   for (uint32_t t = J->t0; t < J->t1; t++) {
+    /* the four neighbour entries of nr are random reads: start those of a later live
+     * tet (the old tn streams; a free slot's tn is not a neighbour list) */
+    if (t + AHEAD < J->t1 && nr[t + AHEAD] != NR_NONE) {
+      const uint32_t *ta = otn + 4 * (size_t)(t + AHEAD);
+      for (int j = 0; j < 4; j++)
+        PREFETCH(&nr[ta[j] >> 2]);
+      PREFETCH_W(&tn[4 * (size_t)(nr[t + AHEAD] >> 8)]); /* its new slot: random too */
+    }
     const uint64_t x = nr[t];
     if (x == NR_NONE)
       continue;
@@ -311,14 +342,14 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
                   .cnt = cnt + nb * (size_t)j, .order = order, .sk = sk, .nv = nv,
                   .v2t = j ? loc + (size_t)(j - 1) * nv : m->v2t,
                   .t0 = (uint32_t)((uint64_t)nt * (uint32_t)j / (uint32_t)nth),
-                  .t1 = (uint32_t)((uint64_t)nt * (uint32_t)(j + 1) / (uint32_t)nth)};
-  for (uint32_t i = 0; i < nv; i++)
-    m->v2t[i] = TR_NONE;
-  for (size_t i = 0; i < (size_t)(nth - 1) * nv; i++)
-    loc[i] = TR_NONE;
-  LAP(NULL);
+                  .t1 = (uint32_t)((uint64_t)nt * (uint32_t)(j + 1) / (uint32_t)nth),
+                  .v0 = (uint32_t)((uint64_t)nv * (uint32_t)j / (uint32_t)nth),
+                  .v1 = (uint32_t)((uint64_t)nv * (uint32_t)(j + 1) / (uint32_t)nth),
+                  .f0 = (size_t)m->cap_t * (size_t)j / (size_t)nth,
+                  .f1 = (size_t)m->cap_t * (size_t)(j + 1) / (size_t)nth};
+  STAT_LAP(NULL);
   run_phase(J, nth, 0);
-  LAP("count");
+  STAT_LAP("canon count");
   /* bucket b holds the records of thread 0, then 1, ...: cnt becomes where each
    * thread's next record of b goes, end[b] the end of b */
   uint32_t run = 0;
@@ -332,7 +363,7 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
   }
   const uint32_t nlive = run;
   run_phase(J, nth, 1);
-  LAP("scatter");
+  STAT_LAP("canon scatter");
   /* the buckets cut into runs of about nlive / nth records */
   size_t b = 0;
   for (int j = 0; j < nth; j++) {
@@ -343,12 +374,12 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
     J[j].b1 = b;
   }
   run_phase(J, nth, 2);
-  LAP("sort");
+  STAT_LAP("canon sort");
   /* the old tv was last read by the scatter: the new tn goes there */
   for (int j = 0; j < nth; j++)
     J[j].tn = m->tv;
   run_phase(J, nth, 3);
-  LAP("write");
+  STAT_LAP("canon write");
   free(m->tn);
   m->tn = m->tv;
   m->tv = (uint32_t *)sk;
@@ -356,7 +387,6 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
   m->nt = nlive;
   m->free_head = TR_NONE;
   m->nfree = 0;
-  memset(m->flags, 0, m->cap_t);
   /* v2t: the last slot of each vertex; a later range's record is a later slot */
   for (int j = 1; j < nth; j++)
     for (uint32_t i = 0; i < nv; i++)

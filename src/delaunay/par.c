@@ -528,6 +528,7 @@ tr_status tr_dt_insert_parallel(dt *D, uint32_t from, uint32_t nthreads)
         (st = grow_buf((void **)&w->D.bf, &w->D.capbf, 256, sizeof *w->D.bf)) != TR_OK)
       break;
   }
+  STAT_LAP(NULL);
   /* blocks about the size of the mesh so far */
   uint32_t done = from;
   while (st == TR_OK && done < D->n) {
@@ -543,6 +544,7 @@ tr_status tr_dt_insert_parallel(dt *D, uint32_t from, uint32_t nthreads)
 #ifdef TR_DT_STATS
       fprintf(stderr, "pass: %u points from %u, %u deferred\n", kk, done - k, (uint32_t)left.n);
 #endif
+      STAT_LAP("pass");
       const tr_u32buf t = cur;
       cur = left;
       left = t;
@@ -551,6 +553,7 @@ tr_status tr_dt_insert_parallel(dt *D, uint32_t from, uint32_t nthreads)
         for (size_t i = 0; i < cur.n && st == TR_OK; i++)
           st = tr_dt_insert_serial(D, cur.a[i]);
         cur.n = 0;
+        STAT_LAP("serial rest");
       }
     }
   }
