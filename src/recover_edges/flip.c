@@ -470,7 +470,11 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
           /* the Swap23 is blocked by edge a-r or b-r: try removing one of them */
           s = tr_flip_remove_edge_nm(m, a, r, TR_NONE, depth - 1, guard, ud, j, &ok);
           if (s == TR_OK && !ok)
+            s = tr_flip_journal_undo(m, j, n0);
+          if (s == TR_OK && !ok)
             s = tr_flip_remove_edge_nm(m, b, r, TR_NONE, depth - 1, guard, ud, j, &ok);
+          if (s == TR_OK && !ok)
+            s = tr_flip_journal_undo(m, j, n0);
         }
         progress = ok || j->n != n0;
       }

@@ -10,12 +10,14 @@
 #include "mesh/conform.h"
 #include "pipeline/pipeline.h"
 
-/* star_far.off (a star-shaped polyhedron of fuzz_pipeline's kind) moved by 2^40 along
- * every axis: the recovery's Steiner points on its surface are rationals whose nearest
+/* schoenhardt_rotated.off (Schoenhardt's prism, which has no tetrahedralization without a
+ * Steiner point, rotated so that no edge is along an axis; star_far.off, a star-shaped
+ * polyhedron, needs no point since flipnm undoes its failed nested removals) moved by 2^40
+ * along every axis: the recovery's Steiner points on its surface are rationals whose nearest
  * doubles, 2^-12 apart out there, lie far off it relative to the model's size. */
 static tr_plc *far_star(double shift)
 {
-  tr_plc *p = read_plc("tests/data/star_far.off"), *q = NULL;
+  tr_plc *p = read_plc("tests/data/schoenhardt_rotated.off"), *q = NULL;
   if (!p)
     return NULL;
   double *x = malloc(sizeof *x * 3 * (size_t)p->npoints);
