@@ -23,10 +23,10 @@ static int positive(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c,
 }
 
 /* Tet t's smallest dihedral angle; its ratio raises *ratio to at least it. */
-static double tet_min(const struct tr_mesh *m, uint32_t t, double *ratio)
+static double tet_min(const tr_sliver_ctx *c, uint32_t t, double *ratio)
 {
   double r;
-  double q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
+  double q = tr_sliver_tet_min(c, t, &r);
   if (ratio && r > *ratio)
     *ratio = r;
   return q;
@@ -63,7 +63,7 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, cand *x)
   x->old[0] = t;
   x->old[1] = nb >> 2;
   x->nold = 2;
-  x->oldmin = fmin(tet_min(m, t, &was), tet_min(m, nb >> 2, &was));
+  x->oldmin = fmin(tet_min(c, t, &was), tet_min(c, nb >> 2, &was));
   if (!(x->newmin > x->oldmin))
     return 0; /* the exact tests only for a flip worth making */
   for (int i = 0; i < 3; i++) {
@@ -158,7 +158,7 @@ static tr_status edge_cand(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint3
     if (!tr_tet_is_real(m, u))
       return TR_OK;
     x->old[i] = u;
-    x->oldmin = fmin(x->oldmin, tet_min(m, u, &R.was));
+    x->oldmin = fmin(x->oldmin, tet_min(c, u, &R.was));
     /* the vertex u shares with the next tet besides a and b */
     R.r[i] = TR_NONE;
     for (int s = 0; s < 4; s++) {
@@ -219,7 +219,7 @@ tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
   cand best, x;
   uint32_t nt = m->nt; /* tets made by this pass wait for the next */
   for (uint32_t t = 0; t < nt && s == TR_OK; t++) {
-    if (!tr_tet_is_real(m, t) || !(tet_min(m, t, NULL) < c->bound))
+    if (!tr_tet_is_real(m, t) || !(tet_min(c, t, NULL) < c->bound))
       continue;
     int have = 0;
     best.newmin = -1;

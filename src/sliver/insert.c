@@ -249,7 +249,7 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
   for (uint32_t i = 0; i < z->n; i++) {
     double rr;
     const uint32_t *tv = m->tv + 4 * (size_t)z->cav[i];
-    oldmin = fmin(oldmin, tr_sliver_min_dihedral_at(m, tv, TR_NONE, NULL, &rr));
+    oldmin = fmin(oldmin, tr_sliver_tet_min(c, z->cav[i], &rr));
     was = fmax(was, rr);
     for (int k = 0; k < 4; k++)
       if (boundary(m, &z->in, z->cav[i], k)) {
@@ -363,9 +363,7 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
   uint32_t nt = m->nt; /* new tets in slots past nt wait for the next pass (freed slots
                           below it are reused and visited: slot order, deterministic) */
   for (uint32_t t = 0; t < nt && s == TR_OK && st->points < c->point_budget; t++) {
-    if (!tr_tet_is_real(m, t) || !(tr_sliver_min_dihedral(m, m->tv[4 * (size_t)t],
-                                     m->tv[4 * (size_t)t + 1], m->tv[4 * (size_t)t + 2],
-                                     m->tv[4 * (size_t)t + 3]) < c->insert_bound))
+    if (!tr_tet_is_real(m, t) || !(tr_sliver_tet_min(c, t, NULL) < c->insert_bound))
       continue;
     uint32_t key[4];
     memcpy(key, m->tv + 4 * (size_t)t, sizeof key);
