@@ -88,18 +88,37 @@ int tr_tet_shape(const double *a, const double *b, const double *c, const double
   return isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]);
 }
 
-double tr_tet_min_dihedral(const double *a, const double *b, const double *c, const double *d,
-                           double *ratio, double *volume)
+double tr_tet_min_cos(const double *a, const double *b, const double *c, const double *d,
+                      double *volume)
 {
   const double *p[4] = {a, b, c, d};
-  tr_tet_shape(a, b, c, d, ratio, volume, NULL, NULL);
+  /* the volume as tr_tet_shape computes it, the same operations in the same order */
+  double u[3], v[3], w[3], vw[3];
+  sub3(b, a, u);
+  sub3(c, a, v);
+  sub3(d, a, w);
+  cross3(v, w, vw);
+  *volume = dot3(u, vw) / 6;
   double cs[6], lo = 1;
   dihedral_cosines(p, cs);
   for (int e = 0; e < 6; e++)
     lo = cs[e] < lo ? cs[e] : lo; /* no NaN here */
+  return lo;
+}
+
+double tr_dihedral_of_cos(double lo)
+{
+  return 180.0 - acos(lo) * (180.0 / 3.14159265358979323846);
+}
+
+double tr_tet_min_dihedral(const double *a, const double *b, const double *c, const double *d,
+                           double *ratio, double *volume)
+{
+  tr_tet_shape(a, b, c, d, ratio, volume, NULL, NULL);
+  double w;
   /* the smallest angle has the smallest cosine of the normals' angle: one acos, the
    * same double as the smallest of the six (acos is correctly rounded, so monotone) */
-  return 180.0 - acos(lo) * (180.0 / 3.14159265358979323846);
+  return tr_dihedral_of_cos(tr_tet_min_cos(a, b, c, d, &w));
 }
 
 uint64_t tr_quality_count_below(const struct tr_mesh *m, double degrees)

@@ -21,6 +21,14 @@ int tr_tet_shape(const double *a, const double *b, const double *c, const double
 double tr_tet_min_dihedral(const double *a, const double *b, const double *c, const double *d,
                            double *ratio, double *volume);
 
+/* The pieces of tr_tet_min_dihedral for callers that rank many tets: the smallest of the
+ * six cosines (the angle is tr_dihedral_of_cos of it, a non-decreasing function, so the
+ * smallest cosine of a set of tets gives its smallest angle) and the volume, as
+ * tr_tet_shape computes it, without the circumsphere. */
+double tr_tet_min_cos(const double *a, const double *b, const double *c, const double *d,
+                      double *volume);
+double tr_dihedral_of_cos(double lo);
+
 #define TR_QUALITY_DIH_BINS 18   /* dihedral angles, 10 degrees each */
 #define TR_QUALITY_RATIO_BINS 7  /* radius-edge: <1, <1.414, <2, <4, <10, <100, >=100 */
 typedef struct tr_quality {

@@ -23,13 +23,24 @@ static int positive(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c,
 }
 
 /* Tet t's smallest dihedral angle; its ratio raises *ratio to at least it. */
-static double tet_min(const struct tr_mesh *m, uint32_t t, double *ratio)
+static double tet_min(const tr_sliver_ctx *c, uint32_t t, double *ratio)
 {
   double r;
-  double q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
+  double q = tr_sliver_tet_min(c, t, &r);
   if (ratio && r > *ratio)
     *ratio = r;
   return q;
+}
+
+/* The ratio of new tet p (vertex order as created) where tr_sliver_keeps_bounds looks at
+ * it, 0 where it does not (no ratio bound, or an angle at least the bound): most
+ * candidates need no circumsphere. */
+static double ratio_of(const tr_sliver_ctx *c, const uint32_t p[4], double dih)
+{
+  double r = 0;
+  if (c->keep.ratio > 0 && !(dih >= c->bound))
+    tr_sliver_min_dihedral_at(c->m, p, TR_NONE, NULL, &r);
+  return r;
 }
 
 static uint32_t region_of(const struct tr_mesh *m, uint32_t t)
@@ -37,8 +48,10 @@ static uint32_t region_of(const struct tr_mesh *m, uint32_t t)
   return m->region ? m->region[t] : 0;
 }
 
-/* Swap23 on face k of t: the face goes, the segment between the two apexes comes. */
-static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, cand *x)
+/* Swap23 on face k of t: the face goes, the segment between the two apexes comes. Only a
+ * flip whose new tets' smallest angle beats `floor` too (the best candidate so far) is
+ * of use, so the others stop at their first tet that does not. */
+static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, double floor, cand *x)
 {
   const struct tr_mesh *m = c->m;
   uint32_t nb = m->tn[4 * (size_t)t + (size_t)k];
@@ -49,27 +62,29 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, cand *x)
   if (tr_sliver_protected(c, f, 3))
     return 0;
   uint32_t a = tv[k], b = m->tv[4 * (size_t)(nb >> 2) + (nb & 3)];
+  double dih[3], was = 0;
+  x->oldmin = fmin(tet_min(c, t, &was), tet_min(c, nb >> 2, &was));
+  double beat = fmax(floor, x->oldmin);
   /* (f_i, f_i+1, b, a) positive for all three exactly when ab crosses the open face:
    * f is listed so that (f0, f1, f2, a) is positive */
   x->newmin = INFINITY;
-  double ratio[3], dih[3], was = 0;
   for (int i = 0; i < 3; i++) {
     uint32_t *p = x->newv + 4 * i;
     p[0] = f[i], p[1] = f[(i + 1) % 3], p[2] = b, p[3] = a;
-    dih[i] = tr_sliver_min_dihedral_at(m, p, TR_NONE, NULL, &ratio[i]);
+    dih[i] = tr_sliver_min_dihedral_at(m, p, TR_NONE, NULL, NULL);
     x->newmin = fmin(x->newmin, dih[i]);
+    if (!(x->newmin > beat))
+      return 0; /* the exact tests only for a flip worth making */
   }
   x->nnew = 3;
   x->old[0] = t;
   x->old[1] = nb >> 2;
   x->nold = 2;
-  x->oldmin = fmin(tet_min(m, t, &was), tet_min(m, nb >> 2, &was));
-  if (!(x->newmin > x->oldmin))
-    return 0; /* the exact tests only for a flip worth making */
   for (int i = 0; i < 3; i++) {
     const uint32_t *p = x->newv + 4 * i;
     if (!positive(m, p[0], p[1], p[2], p[3]) ||
-        !tr_sliver_keeps_bounds(c, p, TR_NONE, NULL, region_of(m, t), ratio[i], dih[i], was))
+        !tr_sliver_keeps_bounds(c, p, TR_NONE, NULL, region_of(m, t), ratio_of(c, p, dih[i]),
+                                dih[i], was))
       return 0;
   }
   return 1;
@@ -81,6 +96,7 @@ typedef struct ring {
   const struct tr_mesh *m;
   uint32_t region;
   double was; /* the largest ratio of the shell's tets */
+  double floor; /* what the triangulation must beat: no sub-polygon at or under it helps */
   uint32_t A, B, r[SL_MAX_RING];
   int n;
   double val[SL_MAX_RING][SL_MAX_RING]; /* best smallest angle of r[i..j], -1: none */
@@ -95,20 +111,26 @@ static void ring_dp(ring *R)
   for (int len = 2; len < n; len++)
     for (int i = 0; i + len < n; i++) {
       int j = i + len, bk = -1;
-      double best = -1;
+      /* a sub-polygon whose best is at or under the floor spoils every triangulation that
+       * holds it: it counts as none (-1), and the ones over the floor come out the same */
+      double best = R->floor;
       for (int k = i + 1; k < j; k++) {
         double q = fmin(R->val[i][k], R->val[k][j]);
         if (q < 0 || q <= best)
           continue;
         uint32_t pa[4] = {R->A, R->r[i], R->r[k], R->r[j]};
         uint32_t pb[4] = {R->B, R->r[j], R->r[k], R->r[i]};
-        double ra, rb, qa = tr_sliver_min_dihedral_at(R->m, pa, TR_NONE, NULL, &ra),
-                       qb = tr_sliver_min_dihedral_at(R->m, pb, TR_NONE, NULL, &rb);
+        double qa = tr_sliver_min_dihedral_at(R->m, pa, TR_NONE, NULL, NULL);
+        if (fmin(q, qa) <= best)
+          continue;
+        double qb = tr_sliver_min_dihedral_at(R->m, pb, TR_NONE, NULL, NULL);
         q = fmin(q, fmin(qa, qb));
         if (q <= best || !positive(R->m, pa[0], pa[1], pa[2], pa[3]) ||
             !positive(R->m, pb[0], pb[1], pb[2], pb[3]) ||
-            !tr_sliver_keeps_bounds(R->c, pa, TR_NONE, NULL, R->region, ra, qa, R->was) ||
-            !tr_sliver_keeps_bounds(R->c, pb, TR_NONE, NULL, R->region, rb, qb, R->was))
+            !tr_sliver_keeps_bounds(R->c, pa, TR_NONE, NULL, R->region, ratio_of(R->c, pa, qa),
+                                    qa, R->was) ||
+            !tr_sliver_keeps_bounds(R->c, pb, TR_NONE, NULL, R->region, ratio_of(R->c, pb, qb),
+                                    qb, R->was))
           continue;
         best = q;
         bk = k;
@@ -134,7 +156,7 @@ static void ring_emit(const ring *R, int i, int j, cand *x)
 /* Removal of edge ab of t: its shell (closed, real, 3..SL_MAX_RING tets, no protected
  * face around ab) replaced by the best triangulation of its ring. */
 static tr_status edge_cand(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint32_t b,
-                           tr_u32buf *sh, cand *x, int *ok)
+                           double floor, tr_u32buf *sh, cand *x, int *ok)
 {
   struct tr_mesh *m = c->m;
   *ok = 0;
@@ -158,7 +180,7 @@ static tr_status edge_cand(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint3
     if (!tr_tet_is_real(m, u))
       return TR_OK;
     x->old[i] = u;
-    x->oldmin = fmin(x->oldmin, tet_min(m, u, &R.was));
+    x->oldmin = fmin(x->oldmin, tet_min(c, u, &R.was));
     /* the vertex u shares with the next tet besides a and b */
     R.r[i] = TR_NONE;
     for (int s = 0; s < 4; s++) {
@@ -182,6 +204,7 @@ static tr_status edge_cand(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint3
     return TR_OK;
   R.A = even ? a : b;
   R.B = even ? b : a;
+  R.floor = fmax(floor, x->oldmin);
   ring_dp(&R);
   if (!(R.val[0][n - 1] > x->oldmin))
     return TR_OK;
@@ -219,19 +242,20 @@ tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
   cand best, x;
   uint32_t nt = m->nt; /* tets made by this pass wait for the next */
   for (uint32_t t = 0; t < nt && s == TR_OK; t++) {
-    if (!tr_tet_is_real(m, t) || !(tet_min(m, t, NULL) < c->bound))
+    if (!tr_tet_is_real(m, t) || !(tet_min(c, t, NULL) < c->bound))
       continue;
     int have = 0;
     best.newmin = -1;
     for (int e = 0; e < 6 && s == TR_OK; e++) {
       const uint32_t *v = m->tv + 4 * (size_t)t;
       int ok;
-      s = edge_cand(c, t, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]], &sh, &x, &ok);
+      s = edge_cand(c, t, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]], best.newmin, &sh, &x,
+                    &ok);
       if (ok && x.newmin > best.newmin)
         best = x, have = 1;
     }
     for (int k = 0; k < 4 && s == TR_OK; k++)
-      if (face_cand(c, t, k, &x) && x.newmin > best.newmin)
+      if (face_cand(c, t, k, best.newmin, &x) && x.newmin > best.newmin)
         best = x, have = 1;
     if (have && s == TR_OK)
       s = apply(c, &best, st);

@@ -232,9 +232,9 @@ static int keeps_vertices(const struct tr_mesh *m, trial *z)
 
 
 /* The cavity and cone of x for sliver t; 1 when the new tets' smallest angle beats the
- * cavity's and they keep the bounds. */
+ * cavity's and `floor` (the best screened candidate so far) and they keep the bounds. */
 static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int screen,
-                     trial *z)
+                     double floor, trial *z)
 {
   const struct tr_mesh *m = c->m;
   memcpy(z->x, x, sizeof z->x);
@@ -249,7 +249,7 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
   for (uint32_t i = 0; i < z->n; i++) {
     double rr;
     const uint32_t *tv = m->tv + 4 * (size_t)z->cav[i];
-    oldmin = fmin(oldmin, tr_sliver_min_dihedral_at(m, tv, TR_NONE, NULL, &rr));
+    oldmin = fmin(oldmin, tr_sliver_tet_min(c, z->cav[i], &rr));
     was = fmax(was, rr);
     for (int k = 0; k < 4; k++)
       if (boundary(m, &z->in, z->cav[i], k)) {
@@ -262,11 +262,19 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
   double dih[4 * SL_MAX_CAVITY], rat[4 * SL_MAX_CAVITY];
   z->newmin = INFINITY;
   for (uint32_t i = 0; i < z->nf; i++) {
-    dih[i] = tr_sliver_min_dihedral_at(m, z->newv + 4 * (size_t)i, pid, x, &rat[i]);
+    dih[i] = tr_sliver_min_dihedral_at(m, z->newv + 4 * (size_t)i, pid, x, NULL);
     z->newmin = fmin(z->newmin, dih[i]);
+    if (!(z->newmin > oldmin) || !(z->newmin > floor))
+      return 0;
   }
-  if (!(z->newmin > oldmin) || !manifold(z->newv, apex, z->nf) || !keeps_vertices(m, z))
+  if (!manifold(z->newv, apex, z->nf) || !keeps_vertices(m, z))
     return 0;
+  /* the ratios only where the bound looks at them (the circumsphere costs) */
+  for (uint32_t i = 0; i < z->nf; i++) {
+    rat[i] = 0;
+    if (c->keep.ratio > 0 && !(dih[i] >= c->bound))
+      tr_sliver_min_dihedral_at(m, z->newv + 4 * (size_t)i, pid, x, &rat[i]);
+  }
   uint32_t region = m->region ? m->region[t] : 0; /* no sub-face inside the cavity */
   for (uint32_t i = 0; i < z->nf; i++)
     if (screen ? c->keep.ratio > 0 && rat[i] > fmax(c->keep.ratio, was) && !(dih[i] >= c->bound)
@@ -337,9 +345,9 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, 
   int have = -1;
   double top = -1;
   for (int f = 0; f < nc; f++)
-    if (try_point(c, t, cand[f], 1, z) && z->newmin > top)
+    if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
       top = z->newmin, have = f;
-  if (have < 0 || !try_point(c, t, cand[have], 0, best))
+  if (have < 0 || !try_point(c, t, cand[have], 0, -INFINITY, best))
     return TR_OK;
   uint32_t v, ids[4 * SL_MAX_CAVITY];
   uint32_t region = m->region ? m->region[t] : 0;
@@ -363,9 +371,7 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
   uint32_t nt = m->nt; /* new tets in slots past nt wait for the next pass (freed slots
                           below it are reused and visited: slot order, deterministic) */
   for (uint32_t t = 0; t < nt && s == TR_OK && st->points < c->point_budget; t++) {
-    if (!tr_tet_is_real(m, t) || !(tr_sliver_min_dihedral(m, m->tv[4 * (size_t)t],
-                                     m->tv[4 * (size_t)t + 1], m->tv[4 * (size_t)t + 2],
-                                     m->tv[4 * (size_t)t + 3]) < c->insert_bound))
+    if (!tr_tet_is_real(m, t) || !(tr_sliver_tet_min(c, t, NULL) < c->insert_bound))
       continue;
     uint32_t key[4];
     memcpy(key, m->tv + 4 * (size_t)t, sizeof key);

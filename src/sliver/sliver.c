@@ -17,9 +17,12 @@ double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], u
   const double *p[4];
   for (int i = 0; i < 4; i++)
     p[i] = t[i] == v ? x : m->xyz + 3 * (size_t)t[i];
-  double r, w, lo = tr_tet_min_dihedral(p[0], p[1], p[2], p[3], &r, &w);
-  if (ratio)
+  double r, w, lo;
+  if (ratio) {
+    lo = tr_tet_min_dihedral(p[0], p[1], p[2], p[3], &r, &w);
     *ratio = isnan(r) ? INFINITY : r;
+  } else /* no circumsphere needed */
+    lo = tr_dihedral_of_cos(tr_tet_min_cos(p[0], p[1], p[2], p[3], &w));
   if (!(w != 0))
     return 0; /* flat in doubles: the worst there is */
   return isfinite(lo) ? lo : 0;
@@ -60,33 +63,75 @@ int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t
 
 int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv)
 {
+  uint32_t k[3];
   if (nv == 3) {
-    uint32_t k[3] = {v[0], v[1], v[2]};
-    tr_sort3(k);
-    return bsearch(k, c->faces, c->nfaces, 3 * sizeof *k, tr_cmp_face_key) != NULL;
+    tr_vtkey_face(v[0], v[1], v[2], k);
+    return tr_vtmap_get(&c->faces, 3, k) != TR_VTMAP_NONE;
   }
-  uint32_t k[2] = {v[0] < v[1] ? v[0] : v[1], v[0] < v[1] ? v[1] : v[0]};
-  return bsearch(k, c->edges, c->nedges, 2 * sizeof *k, tr_cmp_edge_key) != NULL;
+  tr_vtkey_edge(v[0], v[1], k);
+  return tr_vtmap_get(&c->edges, 2, k) != TR_VTMAP_NONE;
 }
 
-/* Sorts n keys of w ids each and drops repeats; returns the number kept. */
-static uint32_t sort_unique(uint32_t *k, uint32_t n, size_t w,
-                            int (*cmp)(const void *, const void *))
+/* One slot's measure; an entry whose ids are all TR_NONE holds nothing (a real tet has
+ * real vertices). */
+typedef struct sl_shape {
+  uint32_t v[4];
+  double dih, ratio;
+} sl_shape;
+
+struct tr_sliver_shapes {
+  sl_shape *e;
+  uint32_t cap;
+};
+
+double tr_sliver_tet_min(const tr_sliver_ctx *c, uint32_t t, double *ratio)
 {
-  if (!n)
-    return 0;
-  qsort(k, n, w * sizeof *k, cmp);
-  uint32_t o = 1;
-  for (uint32_t i = 1; i < n; i++)
-    if (cmp(k + w * i, k + w * (o - 1)) != 0)
-      memmove(k + w * o++, k + w * i, w * sizeof *k);
-  return o;
+  const uint32_t *tv = c->m->tv + 4 * (size_t)t;
+  struct tr_sliver_shapes *S = c->shapes;
+  if (S && t >= S->cap) {
+    uint32_t cap = S->cap ? S->cap : 1024;
+    while (cap <= t && cap < UINT32_MAX / 2)
+      cap *= 2;
+    if (cap < c->m->nt)
+      cap = c->m->nt;
+    sl_shape *e = realloc(S->e, sizeof *e * (size_t)cap);
+    if (e) {
+      memset(e + S->cap, 0xff, sizeof *e * (size_t)(cap - S->cap));
+      S->e = e;
+      S->cap = cap;
+    }
+  }
+  if (!S || t >= S->cap) /* no memory for the cache: measured every time */
+    return tr_sliver_min_dihedral_at(c->m, tv, TR_NONE, NULL, ratio);
+  sl_shape *e = S->e + t;
+  if (e->v[0] != tv[0] || e->v[1] != tv[1] || e->v[2] != tv[2] || e->v[3] != tv[3]) {
+    e->dih = tr_sliver_min_dihedral_at(c->m, tv, TR_NONE, NULL, &e->ratio);
+    memcpy(e->v, tv, sizeof e->v);
+  }
+  if (ratio)
+    *ratio = e->ratio;
+  return e->dih;
+}
+
+void tr_sliver_forget(const tr_sliver_ctx *c, uint32_t t)
+{
+  if (c->shapes && t < c->shapes->cap)
+    memset(c->shapes->e[t].v, 0xff, sizeof c->shapes->e[t].v);
+}
+
+void tr_sliver_forget_all(const tr_sliver_ctx *c)
+{
+  if (c->shapes && c->shapes->cap)
+    memset(c->shapes->e, 0xff, sizeof *c->shapes->e * (size_t)c->shapes->cap);
 }
 
 void tr_sliver_ctx_free(tr_sliver_ctx *c)
 {
-  free(c->faces);
-  free(c->edges);
+  tr_vtmap_free(&c->faces);
+  tr_vtmap_free(&c->edges);
+  if (c->shapes)
+    free(c->shapes->e);
+  free(c->shapes);
   free(c->movable);
   tr_vtmap_free(&c->failed);
   memset(c, 0, sizeof *c);
@@ -102,28 +147,31 @@ tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfa
   c->point_budget = TR_SLIVER_POINTS(m->nv);
   if (sub->n > UINT32_MAX / 3)
     return tr_error(TR_ERR_UNSUPPORTED, "%u sub-faces: too many for the sliver stage", sub->n);
-  size_t n = sub->n;
-  c->faces = malloc(3 * sizeof *c->faces * (n ? n : 1));
-  c->edges = malloc(6 * sizeof *c->edges * (n ? n : 1));
+  uint32_t n = sub->n;
   c->movable = malloc(m->nv ? m->nv : 1);
-  if (!c->faces || !c->edges || !c->movable)
-    return tr_error(TR_ERR_NOMEM, "out of memory for the constraints of %zu sub-faces", n);
+  c->shapes = calloc(1, sizeof *c->shapes);
+  if (!c->movable || !c->shapes)
+    return tr_error(TR_ERR_NOMEM, "out of memory for the sliver stage of %u vertices", m->nv);
+  TR_CHECK(tr_vtmap_reserve(&c->faces, 3, n));
+  TR_CHECK(tr_vtmap_reserve(&c->edges, 2, 3 * n / 2 + 1));
+  /* most probes ask about a face or an edge that is no constraint */
+  TR_CHECK(tr_vtmap_filter(&c->faces));
+  TR_CHECK(tr_vtmap_filter(&c->edges));
   for (uint32_t v = 0; v < m->nv; v++)
     c->movable[v] = v >= npoints && m->v2t[v] != TR_NONE &&
                     (!vkind || vkind[v] == TR_VERTEX_INTERIOR);
-  for (size_t f = 0; f < n; f++) {
-    const uint32_t *s = sub->v + 3 * f;
-    memcpy(c->faces + 3 * f, s, 3 * sizeof *s);
-    tr_sort3(c->faces + 3 * f);
+  for (uint32_t f = 0; f < n; f++) {
+    const uint32_t *s = sub->v + 3 * (size_t)f;
+    uint32_t k[3];
+    tr_vtkey_face(s[0], s[1], s[2], k);
+    TR_CHECK(tr_vtmap_put(&c->faces, 3, k, f, NULL));
     for (int j = 0; j < 3; j++) {
       uint32_t a = s[j], b = s[(j + 1) % 3];
-      c->edges[6 * f + 2 * (size_t)j] = a < b ? a : b;
-      c->edges[6 * f + 2 * (size_t)j + 1] = a < b ? b : a;
+      tr_vtkey_edge(a, b, k);
+      TR_CHECK(tr_vtmap_put(&c->edges, 2, k, f, NULL));
       c->movable[a] = 0; /* whatever vkind says: a sub-face vertex lies on a constraint */
     }
   }
-  c->nfaces = sort_unique(c->faces, (uint32_t)n, 3, tr_cmp_face_key);
-  c->nedges = sort_unique(c->edges, (uint32_t)(3 * n), 2, tr_cmp_edge_key);
   return TR_OK;
 }
 
@@ -143,7 +191,7 @@ static tr_status pinned_tets(const tr_sliver_ctx *c, tr_u32buf *out)
     int fixed = 0;
     for (int i = 0; i < 4; i++)
       fixed += !c->movable[v[i]];
-    if (fixed < 3 || !(tr_sliver_min_dihedral(m, v[0], v[1], v[2], v[3]) < bound))
+    if (fixed < 3 || !(tr_sliver_tet_min(c, t, NULL) < bound))
       continue;
     int touches = 0;
     for (int k = 0; k < 4 && !touches; k++) {
@@ -190,6 +238,7 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
     s = tr_refine_open_pinned(m, plc, sub, &rp, list.a, (uint32_t)list.n, &rs);
   free(id);
   free(bound);
+  tr_sliver_forget_all(c); /* refinement may have changed any tet */
   TR_CHECK(s);
   tr_u32buf_free(&list);
   *added = rs.points;

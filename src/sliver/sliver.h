@@ -90,10 +90,13 @@ typedef struct tr_sliver_stats {
 } tr_sliver_stats;
 
 /* What the steps may not touch, built once from the sub-faces. */
+struct tr_sliver_shapes; /* sliver.c: the cache of tr_sliver_tet_min */
+
 typedef struct tr_sliver_ctx {
   struct tr_mesh *m;
-  uint32_t *faces, nfaces; /* sorted face keys (tr_cmp_face_key) of the sub-faces */
-  uint32_t *edges, nedges; /* sorted edge keys (tr_cmp_edge_key) of their edges */
+  tr_vtmap faces;          /* the sub-faces (sorted vertices, tr_vtkey_face) */
+  tr_vtmap edges;          /* their edges (tr_vtkey_edge) */
+  struct tr_sliver_shapes *shapes; /* per tet slot: its smallest angle and ratio */
   uint8_t *movable;        /* nv: 1 for a vertex smoothing may move */
   double bound;
   double insert_bound;     /* insertion: tets with a smaller angle get a point */
@@ -119,6 +122,15 @@ double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, u
  * be NULL) = its radius-edge ratio. */
 double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
                                  const double x[3], double *ratio);
+/* tr_sliver_min_dihedral_at(m, m->tv + 4 * t, TR_NONE, NULL, ratio) (the same doubles),
+ * remembered per slot: every pass measures every tet, and most did not change since the
+ * last. A slot's entry holds its vertex ids, so a tet a flip or a point replaced is
+ * measured again; a vertex move must call tr_sliver_forget on the tets of its star, and
+ * any other change of coordinates tr_sliver_forget_all. */
+double tr_sliver_tet_min(const tr_sliver_ctx *c, uint32_t t, double *ratio);
+void tr_sliver_forget(const tr_sliver_ctx *c, uint32_t t);
+void tr_sliver_forget_all(const tr_sliver_ctx *c);
+
 /* 1 iff tet p (positive, exact points; vertex v at the double x when v is one of them) of
  * region `region` keeps c->keep: its exact volume at most the region's bound, and its ratio
  * (given) at most max(c->keep.ratio, ratio_was) unless its smallest dihedral angle `dih`

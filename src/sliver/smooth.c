@@ -7,25 +7,69 @@
 #include <math.h>
 #include <string.h>
 
+#include "refine/quality.h"
 #include "sliver/sliver.h"
 
 #define SL_STEPS 6 /* trial steps: h/2, h/4, ..., h the shortest edge at the vertex */
 #define SL_MOVES 4 /* moves per vertex and pass */
 
-/* The smallest dihedral angle of the star with v at x; *worst = its tet (ball index). */
-static double star_min(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
-                       const double x[3], size_t *worst)
+/* The smallest dihedral angle of the star as it is; *worst = its tet (ball index). */
+static double star_min(const tr_sliver_ctx *c, const tr_u32buf *ball, size_t *worst)
 {
   double lo = INFINITY;
   for (size_t i = 0; i < ball->n; i++) {
-    double q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)ball->a[i], v, x, NULL);
+    double q = tr_sliver_tet_min(c, ball->a[i], NULL);
     if (q < lo) {
       lo = q;
-      if (worst)
-        *worst = i;
+      *worst = i;
     }
   }
   return lo;
+}
+
+/* The smallest dihedral angle of the star with v at x (tr_sliver_min_dihedral_at's value),
+ * or some angle at most `floor` once a tet is that bad: the caller only looks at values
+ * above floor. Ranked by cosine, with one arccosine at the end: the angle is a
+ * non-decreasing function of the cosine, so every tet with a cosine at most cf has an
+ * angle at most floor. The worst tet as it is (`first`) goes first: a trial that does not
+ * open it stops there. */
+static double star_min_at(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
+                          const double x[3], double floor, double cf, size_t first)
+{
+  double lo = 2;
+  int flat = 0;
+  for (size_t j = 0; j < ball->n; j++) {
+    size_t i = j == 0 ? first : j <= first ? j - 1 : j;
+    const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
+    const double *p[4];
+    for (int k = 0; k < 4; k++)
+      p[k] = tv[k] == v ? x : m->xyz + 3 * (size_t)tv[k];
+    double w, q = tr_tet_min_cos(p[0], p[1], p[2], p[3], &w);
+    if (!(w != 0))
+      flat = 1; /* angle 0 (tr_sliver_min_dihedral_at) */
+    else if (q < lo)
+      lo = q;
+    if ((flat && 0 <= floor) || lo <= cf)
+      break;
+  }
+  double a = lo <= 1 ? tr_dihedral_of_cos(lo) : INFINITY;
+  if (!isfinite(a) && lo <= 1)
+    a = 0;
+  return flat && !(a < 0) ? 0 : a;
+}
+
+/* A cosine cf with tr_dihedral_of_cos(c) <= floor for every c <= cf (-2: none found). */
+static double cos_floor(double floor)
+{
+  double cf = cos(3.14159265358979323846 - floor * (3.14159265358979323846 / 180.0));
+  for (int i = 0; i < 64 && cf >= -1; i++) {
+    if (!(cf <= 1))
+      cf = 1;
+    if (tr_dihedral_of_cos(cf) <= floor)
+      return cf;
+    cf = nextafter(cf, -2.0);
+  }
+  return -2;
 }
 
 /* Every tet of the star exactly positive with v at x, and within the bounds (a tet's
@@ -52,11 +96,11 @@ static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
 }
 
 /* The largest radius-edge ratio of the star as it is. */
-static double star_ratio(const struct tr_mesh *m, const tr_u32buf *ball)
+static double star_ratio(const tr_sliver_ctx *c, const tr_u32buf *ball)
 {
   double was = 0, r;
   for (size_t i = 0; i < ball->n; i++) {
-    tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)ball->a[i], TR_NONE, NULL, &r);
+    tr_sliver_tet_min(c, ball->a[i], &r);
     was = fmax(was, r);
   }
   return was;
@@ -126,9 +170,10 @@ static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, doub
     trial[nt + 1][j] = 0.5 * (x0[j] + cen[j]);
   }
   nt += 2;
+  double cf = cos_floor(q0);
   for (int i = 0; i < nt; i++)
-    val[i] = star_min(m, ball, v, trial[i], NULL);
-  double was = star_ratio(m, ball);
+    val[i] = star_min_at(m, ball, v, trial[i], q0, cf, worst);
+  double was = star_ratio(c, ball);
   /* the best trial that is exactly valid; ties to the earlier one */
   for (;;) {
     int b = -1;
@@ -161,7 +206,7 @@ tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
     int moved = 0;
     for (int it = 0; it < SL_MOVES; it++) {
       size_t worst = 0;
-      double q0 = star_min(m, &ball, v, m->xyz + 3 * (size_t)v, &worst);
+      double q0 = star_min(c, &ball, &worst);
       if (!(q0 < c->bound))
         break;
       double to[3];
@@ -170,6 +215,8 @@ tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
       if (!ok)
         break;
       memcpy(m->xyz + 3 * (size_t)v, to, sizeof to);
+      for (size_t i = 0; i < ball.n; i++)
+        tr_sliver_forget(c, ball.a[i]);
       if (m->vq && m->vq[v]) /* the exact point is the double from now on */
         tr_qpoint_set_d(m->vq[v], to);
       moved = 1;
