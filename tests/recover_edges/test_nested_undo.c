@@ -19,33 +19,17 @@
 #include "delaunay/delaunay.h"
 #include "mesh/check.h"
 #include "recover_edges/recover_edges.h"
-
-static int cmp_edge(const void *x, const void *y)
-{
-  const uint32_t *a = x, *b = y;
-  return a[0] != b[0] ? (a[0] < b[0] ? -1 : 1) : a[1] != b[1] ? (a[1] < b[1] ? -1 : 1) : 0;
-}
+#include "tedges.h"
 
 /* The sorted unique edges of the triangles (a < b). */
 static uint32_t input_edges(const hard_case *c, uint32_t *e)
 {
-  uint32_t n = 0;
   for (uint32_t t = 0; t < c->nt; t++)
     for (int k = 0; k < 3; k++) {
-      uint32_t a = c->tris[3 * t + k], b = c->tris[3 * t + (k + 1) % 3];
-      e[2 * n] = a < b ? a : b;
-      e[2 * n + 1] = a < b ? b : a;
-      n++;
+      e[6 * t + 2 * k] = c->tris[3 * t + k];
+      e[6 * t + 2 * k + 1] = c->tris[3 * t + (k + 1) % 3];
     }
-  qsort(e, n, 2 * sizeof *e, cmp_edge);
-  uint32_t u = 0;
-  for (uint32_t i = 0; i < n; i++)
-    if (u == 0 || cmp_edge(e + 2 * i, e + 2 * (u - 1)) != 0) {
-      e[2 * u] = e[2 * i];
-      e[2 * u + 1] = e[2 * i + 1];
-      u++;
-    }
-  return u;
+  return sort_edges(e, 3 * c->nt);
 }
 
 int main(int argc, char **argv)

@@ -26,6 +26,7 @@
 #include "mesh/check.h"
 #include "recover_edges/pipe.h"
 #include "recover_edges/recover_edges.h"
+#include "tedges.h"
 
 static const unsigned CHECKS = TR_CHK_TOPOLOGY;
 /* recovery switches: zero (the default pipeline) except in the coverage mode */
@@ -47,34 +48,6 @@ static int fail(const char *what, tr_status s)
 {
   fprintf(stderr, "FAIL %s: %s: %s\n", what, tr_status_name(s), tr_last_error());
   return 1;
-}
-
-static int cmp_edge(const void *x, const void *y)
-{
-  const uint32_t *a = x, *b = y;
-  if (a[0] != b[0])
-    return a[0] < b[0] ? -1 : 1;
-  return a[1] < b[1] ? -1 : a[1] > b[1];
-}
-
-/* Sorts and deduplicates n edges (each stored low id first); returns the new count. */
-static uint32_t sort_edges(uint32_t *e, uint32_t n)
-{
-  for (uint32_t i = 0; i < n; i++)
-    if (e[2 * i] > e[2 * i + 1]) {
-      uint32_t t = e[2 * i];
-      e[2 * i] = e[2 * i + 1];
-      e[2 * i + 1] = t;
-    }
-  qsort(e, n, 2 * sizeof *e, cmp_edge);
-  uint32_t k = 0;
-  for (uint32_t i = 0; i < n; i++)
-    if (k == 0 || cmp_edge(e + 2 * i, e + 2 * (k - 1)) != 0) {
-      e[2 * k] = e[2 * i];
-      e[2 * k + 1] = e[2 * i + 1];
-      k++;
-    }
-  return k;
 }
 
 /* Every chain: from a to b, consecutive vertices are mesh edges, interior vertices lie
