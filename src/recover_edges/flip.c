@@ -446,38 +446,55 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
      * try changes nothing (progress is any flip), so trying the same r again when the
      * next shell tet lists it would repeat the same work for the same answer. */
     uint32_t seen[64], nseen = 0;
-    for (size_t i = 0; i < sh.n && !progress && s == TR_OK && !spent(j); i++) {
-      uint32_t tv[4];
-      memcpy(tv, m->tv + 4 * (size_t)sh.a[i], sizeof tv); /* flips may move m->tv */
-      for (int q = 0; q < 4 && !progress && s == TR_OK; q++) {
-        uint32_t r = tv[q], t;
-        int k, ok = 0, dup = 0;
-        if (r == a || r == b || r == TR_GHOST)
-          continue;
-        for (uint32_t x = 0; x < nseen && !dup; x++)
-          dup = seen[x] == r;
-        if (dup)
-          continue;
-        if (nseen < 64) {
-          /* first sight of r in shell order: this tet is the first with face (a, b, r) */
-          seen[nseen++] = r;
-          t = sh.a[i];
-          k = tr_fcode(m, t, a, b, r);
-        } else if (!shell_face(m, &sh, a, b, r, &t, &k))
-          continue;
-        s = tr_flip23_j(m, t, k, guard, ud, j, &ok);
-        if (s == TR_OK && !ok && depth > 2 && !spent(j)) {
-          /* the Swap23 is blocked by edge a-r or b-r: try removing one of them */
-          s = tr_flip_remove_edge_nm(m, a, r, TR_NONE, depth - 1, guard, ud, j, &ok);
-          if (s == TR_OK && !ok)
-            s = tr_flip_journal_undo(m, j, n0);
-          if (s == TR_OK && !ok)
-            s = tr_flip_remove_edge_nm(m, b, r, TR_NONE, depth - 1, guard, ud, j, &ok);
-          if (s == TR_OK && !ok)
-            s = tr_flip_journal_undo(m, j, n0);
+    for (;;) {
+      /* an undone nested removal leaves the same tets, not the same slots: the shell and
+       * the tet copied from it are stale then, so the scan starts again on a fresh shell
+       * (seen keeps the ring vertices already tried, so it ends) */
+      int stale = 0;
+      for (size_t i = 0; i < sh.n && !progress && !stale && s == TR_OK && !spent(j); i++) {
+        uint32_t tv[4];
+        memcpy(tv, m->tv + 4 * (size_t)sh.a[i], sizeof tv); /* flips may move m->tv */
+        for (int q = 0; q < 4 && !progress && !stale && s == TR_OK; q++) {
+          uint32_t r = tv[q], t;
+          int k, ok = 0, dup = 0;
+          if (r == a || r == b || r == TR_GHOST)
+            continue;
+          for (uint32_t x = 0; x < nseen && !dup; x++)
+            dup = seen[x] == r;
+          if (dup)
+            continue;
+          if (nseen < 64) {
+            /* first sight of r in shell order: this tet is the first with face (a, b, r) */
+            seen[nseen++] = r;
+            t = sh.a[i];
+            k = tr_fcode(m, t, a, b, r);
+          } else if (!shell_face(m, &sh, a, b, r, &t, &k))
+            continue;
+          s = tr_flip23_j(m, t, k, guard, ud, j, &ok);
+          if (s == TR_OK && !ok && depth > 2 && !spent(j)) {
+            /* the Swap23 is blocked by edge a-r or b-r: try removing one of them; a
+             * removal that fails is undone before the other is tried */
+            s = tr_flip_remove_edge_nm(m, a, r, TR_NONE, depth - 1, guard, ud, j, &ok);
+            if (s == TR_OK && !ok) {
+              stale |= j->n != n0;
+              s = tr_flip_journal_undo(m, j, n0);
+            }
+            if (s == TR_OK && !ok)
+              s = tr_flip_remove_edge_nm(m, b, r, TR_NONE, depth - 1, guard, ud, j, &ok);
+            if (s == TR_OK && !ok) {
+              stale |= j->n != n0;
+              s = tr_flip_journal_undo(m, j, n0);
+            }
+          }
+          progress = ok || j->n != n0;
         }
-        progress = ok || j->n != n0;
       }
+      if (s != TR_OK || progress || !stale || nseen >= 64 || spent(j))
+        break;
+      if ((s = tr_flip_edge_tet(m, a, b, &t1)) != TR_OK || t1 == TR_NONE)
+        break;
+      if ((s = tr_shell(m, a, b, t1, &sh, &closed)) != TR_OK || !closed)
+        break;
     }
     if (s != TR_OK || !progress)
       break;
