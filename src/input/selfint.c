@@ -89,12 +89,19 @@ static void sides(const sweep *s, uint32_t it, uint32_t iu, int cnt[3])
   }
 }
 
+/* Counts from sides(): every non-shared corner strictly on one side of the plane (at
+ * least one corner counted, none on the plane). */
+static int strictly_one_side(const int c[3])
+{
+  return !c[2] && (!c[0] || !c[1]) && c[0] + c[1] > 0;
+}
+
 /* Non-shared corners of u strictly on one side of the plane of t. */
 static int one_side(const sweep *s, uint32_t it, uint32_t iu)
 {
   int c[3];
   sides(s, it, iu, c);
-  return !c[2] && (!c[0] || !c[1]) && c[0] + c[1] > 0;
+  return strictly_one_side(c);
 }
 
 /* t = (v, a, b) and u = (v, c, d) share only v; a and b lie strictly on opposite sides
@@ -228,12 +235,12 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
      * fine; all on it, the coplanar test */
     int cu[3], ct[3];
     sides(s, i, j, cu);
-    if (!cu[2] && (!cu[0] || !cu[1]))
+    if (strictly_one_side(cu))
       return 0;
     if (!cu[0] && !cu[1])
       return coplanar_improper(plc, t, u);
     sides(s, j, i, ct);
-    if (!ct[2] && (!ct[0] || !ct[1]))
+    if (strictly_one_side(ct))
       return 0;
     if (shared == 1 && s->plane && cu[0] == 1 && cu[1] == 1 && ct[0] == 1 && ct[1] == 1) {
       int kv = 0, ku = 0;
@@ -251,7 +258,6 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
   }
   return edges_hit(plc, t, u) || edges_hit(plc, u, t);
 }
-
 
 /* Every pair is tested (no early exit) and the reported one is the least (x, y): the
  * message does not depend on the broad phase. */

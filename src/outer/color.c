@@ -127,6 +127,24 @@ static int less4(const uint32_t *a, const uint32_t *b)
   return 0;
 }
 
+/* Face k of tet t is a constraint: marked in cmask on both of its sides. */
+static void mark_constraint(const struct tr_mesh *m, uint8_t *cmask, uint32_t t, int k)
+{
+  uint32_t o = TR_NEIG(m, t, k);
+  cmask[t] |= (uint8_t)(1u << k);
+  if (o != TR_NONE)
+    cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
+}
+
+/* The tet a sub-face is seen from, of the real tet t and o (TR_NONE: none) on its other
+ * side: the lower slot if o is real too. Both passes below use this one rule, so the
+ * coloring does not depend on which pass found the face; o's kind is read only when
+ * o < t (the per-tet pass looks faces up from their lower tet: never). */
+static uint32_t seen_from(const struct tr_mesh *m, uint32_t t, uint32_t o)
+{
+  return o != TR_NONE && o < t && tr_tet_is_real(m, o) ? o : t;
+}
+
 tr_status tr_outer_color(struct tr_mesh *m, const tr_subfaces *sub, int keep_hull,
                          const uint8_t *sides, uint32_t *nregions)
 {
@@ -164,11 +182,8 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
     const uint32_t *a = sub->v + 3 * (size_t)j;
     int k = t < nt && tr_tet_is_real(m, t) ? tr_fcode(m, t, a[0], a[1], a[2]) : -1;
     if (k >= 0) {
-      uint32_t o = TR_NEIG(m, t, k);
-      seen[j] = o != TR_NONE && o < t && tr_tet_is_real(m, o) ? o : t;
-      cmask[t] |= (uint8_t)(1u << k);
-      if (o != TR_NONE)
-        cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
+      seen[j] = seen_from(m, t, TR_NEIG(m, t, k));
+      mark_constraint(m, cmask, t, k);
       continue;
     }
     memcpy(keys[nk].k, a, 3 * sizeof(uint32_t));
@@ -192,7 +207,7 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
       uint32_t o = TR_NEIG(m, t, k);
       if (o != TR_NONE && o < t)
         continue; /* looked up from o's side, which marks both */
-      uint32_t real = ghost ? o : t;
+      uint32_t real = ghost ? o : seen_from(m, t, o);
       if (real == TR_NONE)
         continue;
       uint32_t s[3];
@@ -210,9 +225,7 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
                                                     g->k[2] == s[2]; g++)
         if (seen[g->id] == TR_NONE)
           seen[g->id] = real;
-      cmask[t] |= (uint8_t)(1u << k);
-      if (o != TR_NONE)
-        cmask[o] |= (uint8_t)(1u << (m->tn[4 * (size_t)t + (size_t)k] & 3));
+      mark_constraint(m, cmask, t, k);
     }
   }
   for (uint32_t j = 0; j < ns; j++)
