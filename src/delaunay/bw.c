@@ -375,6 +375,7 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   /* untouched yet: the arrays read at random take huge pages (core/hugepage.c) */
   tr_advise_hugepages(m->tv, 4 * (size_t)m->cap_t * sizeof *m->tv);
   tr_advise_hugepages(m->tn, 4 * (size_t)m->cap_t * sizeof *m->tn);
+  tr_advise_hugepages(m->flags, (size_t)m->cap_t);
   tr_advise_hugepages(m->xyz, 3 * (size_t)m->cap_v * sizeof *m->xyz);
   tr_advise_hugepages(m->v2t, (size_t)m->cap_v * sizeof *m->v2t);
   pjob PJ[64];
@@ -420,7 +421,9 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   }
   for (uint32_t i = 0; i < LDIM * LDIM; i++)
     D.map[i] = TR_NONE;
-  PJ[0] = (pjob){.xyz = xyz, .order = order, .P = P};
+  /* the mesh's copy of the points, not the caller's array: the gather in insertion order
+   * reads at random, and the copy has huge pages */
+  PJ[0] = (pjob){.xyz = m->xyz, .order = order, .P = P};
   points_pass(PJ, nthreads, nu, 1);
   D.pv = P;
   D.stamp = 1;
