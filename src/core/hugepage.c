@@ -19,7 +19,7 @@ void tr_advise_hugepages(void *p, size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   const uintptr_t huge = (uintptr_t)1 << 21;
-  if (!p || bytes < 2 * huge)
+  if (!p || bytes < huge)
     return;
   /* the 4 KB pages around the huge ones keep their pages; madvise wants a page-aligned
    * start, any length */

@@ -6,7 +6,7 @@
 #include <stddef.h>
 
 /* Asks the kernel to back the whole 2 MB pages inside [p, p + bytes) with huge pages
- * when they are first touched (Linux madvise MADV_HUGEPAGE; elsewhere, or below 4 MB, a
+ * when they are first touched (Linux madvise MADV_HUGEPAGE; elsewhere, or below 2 MB, a
  * no-op). A hint: nothing depends on whether it is taken, so outputs stay the same. */
 void tr_advise_hugepages(void *p, size_t bytes);
 

@@ -406,11 +406,13 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   m->nv = n;
   uint32_t nu = 0;
   STAT_LAP("copy");
-  if ((s = tr_spatial_order_threads(xyz, n, order, &nu, m->dup_map, nthreads)) != TR_OK)
+  /* from here on the mesh's copy of the points (the same bits) rather than the caller's
+   * array: the copy has huge pages, for the gathers in Hilbert order below */
+  if ((s = tr_spatial_order_threads(m->xyz, n, order, &nu, m->dup_map, nthreads)) != TR_OK)
     goto done;
   m->ndup = n - nu;
   STAT_LAP("sort");
-  if ((s = first_simplex(xyz, n, order, nu)) != TR_OK)
+  if ((s = first_simplex(m->xyz, n, order, nu)) != TR_OK)
     goto done;
   P = malloc((size_t)nu * sizeof *P);
   tr_advise_hugepages(P, (size_t)nu * sizeof *P);
@@ -421,8 +423,6 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   }
   for (uint32_t i = 0; i < LDIM * LDIM; i++)
     D.map[i] = TR_NONE;
-  /* the mesh's copy of the points, not the caller's array: the gather in insertion order
-   * reads at random, and the copy has huge pages */
   PJ[0] = (pjob){.xyz = m->xyz, .order = order, .P = P};
   points_pass(PJ, nthreads, nu, 1);
   D.pv = P;
