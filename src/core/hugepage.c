@@ -3,7 +3,7 @@
  * pages nearly every such access also misses the TLB, and each page costs a fault when it
  * is first written. Most Linux systems enable transparent huge pages only for regions
  * that ask (the "madvise" mode), so the builder asks, for its large arrays: on 10^6
- * uniform points the 1-thread build's process CPU time fell by ~30% (bench/delaunay). The
+ * uniform points the 1-thread build's process CPU time fell by 25-30% (bench/delaunay). The
  * memory must not have been touched yet for a page to be taken huge at its first fault
  * (khugepaged may still collapse touched ones later); the allocations here are fresh
  * mappings of malloc's, so only their first page holds malloc's header. */
