@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "bwkernel.h"
+#include "core/hugepage.h"
 
 
 static tr_status insert(dt *D, uint32_t pi)
@@ -371,6 +372,12 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   struct tr_mesh *m;
   /* ~6.7 tets per point for uniform random points; growth covers the rest. */
   TR_CHECK(tr_mesh_create(n, 7 * n + 64, &m));
+  /* untouched yet: the arrays read at random take huge pages (core/hugepage.c) */
+  tr_advise_hugepages(m->tv, 4 * (size_t)m->cap_t * sizeof *m->tv);
+  tr_advise_hugepages(m->tn, 4 * (size_t)m->cap_t * sizeof *m->tn);
+  tr_advise_hugepages(m->flags, (size_t)m->cap_t);
+  tr_advise_hugepages(m->xyz, 3 * (size_t)m->cap_v * sizeof *m->xyz);
+  tr_advise_hugepages(m->v2t, (size_t)m->cap_v * sizeof *m->v2t);
   pjob PJ[64];
   PJ[0] = (pjob){.xyz = xyz, .m = m};
   if (n)
@@ -390,6 +397,8 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   uint32_t *order = malloc((n ? n : 1) * sizeof *order);
   dvtx *P = NULL;
   m->dup_map = malloc((n ? n : 1) * sizeof *m->dup_map);
+  tr_advise_hugepages(order, (size_t)n * sizeof *order);
+  tr_advise_hugepages(m->dup_map, (size_t)n * sizeof *m->dup_map);
   if (!order || !m->dup_map) {
     s = tr_error(TR_ERR_NOMEM, "out of memory for %u points", n);
     goto done;
@@ -397,13 +406,16 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   m->nv = n;
   uint32_t nu = 0;
   STAT_LAP("copy");
-  if ((s = tr_spatial_order_threads(xyz, n, order, &nu, m->dup_map, nthreads)) != TR_OK)
+  /* from here on the mesh's copy of the points (the same bits) rather than the caller's
+   * array: the copy has huge pages, for the gathers in Hilbert order below */
+  if ((s = tr_spatial_order_threads(m->xyz, n, order, &nu, m->dup_map, nthreads)) != TR_OK)
     goto done;
   m->ndup = n - nu;
   STAT_LAP("sort");
-  if ((s = first_simplex(xyz, n, order, nu)) != TR_OK)
+  if ((s = first_simplex(m->xyz, n, order, nu)) != TR_OK)
     goto done;
   P = malloc((size_t)nu * sizeof *P);
+  tr_advise_hugepages(P, (size_t)nu * sizeof *P);
   D.map = malloc(LDIM * LDIM * sizeof *D.map);
   if (!P || !D.map) {
     s = tr_error(TR_ERR_NOMEM, "out of memory for %u points", n);
@@ -411,7 +423,7 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   }
   for (uint32_t i = 0; i < LDIM * LDIM; i++)
     D.map[i] = TR_NONE;
-  PJ[0] = (pjob){.xyz = xyz, .order = order, .P = P};
+  PJ[0] = (pjob){.xyz = m->xyz, .order = order, .P = P};
   points_pass(PJ, nthreads, nu, 1);
   D.pv = P;
   D.stamp = 1;

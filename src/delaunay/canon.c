@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "delaunay.h"
+#include "core/hugepage.h"
 #include "dtstat.h"
 
 #define CANON_MAX_THREADS 64
@@ -335,6 +336,11 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
     s = tr_error(TR_ERR_NOMEM, "out of memory ordering %u tets", nt);
     goto done;
   }
+  /* untouched yet (calloc's fresh mapping too): huge pages for the random accesses */
+  tr_advise_hugepages(nr, (size_t)nt * sizeof *nr);
+  tr_advise_hugepages(sk, (size_t)m->cap_t * sizeof *sk);
+  tr_advise_hugepages(cnt, nb * (size_t)nth * sizeof *cnt);
+  tr_advise_hugepages(end, nb * sizeof *end);
   _Static_assert(sizeof(skey) == 4 * sizeof(uint32_t), "a record is a tv entry");
   cjob J[CANON_MAX_THREADS];
   for (int j = 0; j < nth; j++)

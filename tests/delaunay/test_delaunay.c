@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "delaunay/delaunay.h"
+#include "core/hugepage.h"
 #include "delaunay/det2.h"
 #include "mesh/check.h"
 #include "mesh/mesh.h"
@@ -372,6 +373,32 @@ static int det2_same_bits(void)
   return 0;
 }
 
+/* The huge-page hint of the builder's arrays (core/hugepage.h) is a hint only: on memory
+ * already written, on ranges whose ends are not page aligned, below its size threshold and
+ * on NULL it neither fails nor changes a byte, and memory advised before its first
+ * write reads back what was written. */
+static int hugepage_hint_keeps_contents(void)
+{
+  const size_t n = (9u << 20) / sizeof(uint32_t) + 3; /* 9 MB and a bit: 4 huge pages */
+  uint32_t *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
+  EXPECT(a && b, "allocations");
+  for (size_t i = 0; i < n; i++)
+    a[i] = (uint32_t)(i * 2654435761u);
+  tr_advise_hugepages(a, n * sizeof *a);                /* touched */
+  tr_advise_hugepages((char *)a + 7, n * sizeof *a - 9); /* unaligned ends */
+  tr_advise_hugepages(b, n * sizeof *b);                /* untouched */
+  tr_advise_hugepages(b, 100);                          /* below the threshold */
+  tr_advise_hugepages(NULL, 1u << 30);
+  for (size_t i = 0; i < n; i++)
+    b[i] = a[i] ^ 0x5bd1e995u;
+  for (size_t i = 0; i < n; i++)
+    EXPECT(a[i] == (uint32_t)(i * 2654435761u) && (b[i] ^ 0x5bd1e995u) == a[i],
+           "entry %zu kept its value after the hint", i);
+  free(a);
+  free(b);
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2)
@@ -403,6 +430,8 @@ int main(int argc, char **argv)
     return deterministic();
   if (!strcmp(c, "det2"))
     return det2_same_bits();
+  if (!strcmp(c, "hugepage"))
+    return hugepage_hint_keeps_contents();
   fprintf(stderr, "unknown case %s\n", c);
   return 2;
 }
