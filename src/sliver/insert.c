@@ -284,6 +284,62 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
   return 1;
 }
 
+/* Heights over a face of the points tried there, in units of the face's mean edge: a
+ * good tet on it (0.8) down to a point just off a nearly flat ridge (0.1), where a higher
+ * one would leave the domain or see a neighbouring sub-face edge-on. */
+#define SL_HEIGHTS 4
+static const double sl_height[SL_HEIGHTS] = {0.8, 0.5, 0.25, 0.1};
+
+/* Three or four vertices of t on constraints: a flat tet there is a cap pinned between
+ * them (no move reaches it), whose circumcentre lies far off and often beyond a sub-face. */
+static int pinned(const tr_sliver_ctx *c, const uint32_t *tv)
+{
+  int fixed = 0;
+  for (int i = 0; i < 4; i++)
+    fixed += !c->movable[tv[i]];
+  return fixed >= 3;
+}
+
+/* Points off the plane of a flat tet's largest face on both sides of its centroid g, at
+ * the heights sl_height (a cap over a nearly flat input edge, with one sub-face or none,
+ * opens from the side the domain lies on; the cavity's exact tests reject the other
+ * side). Returns the number written (2 * SL_HEIGHTS, or 0 for a face flat in doubles). */
+static int off_plane(const double *q[4], const double g[3], double out[][3])
+{
+  int best = -1;
+  double area = 0, nrm[3] = {0, 0, 0}, len = 0;
+  for (int k = 0; k < 4; k++) {
+    const double *a = q[tr_face_vtx[k][0]], *b = q[tr_face_vtx[k][1]], *e = q[tr_face_vtx[k][2]];
+    double u[3], v[3], n[3];
+    for (int j = 0; j < 3; j++) {
+      u[j] = b[j] - a[j];
+      v[j] = e[j] - a[j];
+    }
+    n[0] = u[1] * v[2] - u[2] * v[1];
+    n[1] = u[2] * v[0] - u[0] * v[2];
+    n[2] = u[0] * v[1] - u[1] * v[0];
+    double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (nn > area) {
+      area = nn;
+      best = k;
+      memcpy(nrm, n, sizeof nrm);
+    }
+  }
+  if (best < 0 || !isfinite(area))
+    return 0;
+  for (int e = 0; e < 6; e++) {
+    const double *a = q[tr_edge_vtx[e][0]], *b = q[tr_edge_vtx[e][1]];
+    len += sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2])) / 6;
+  }
+  int n = 0;
+  for (int h = 0; h < SL_HEIGHTS; h++)
+    for (int sg = -1; sg <= 1; sg += 2, n++)
+      for (int j = 0; j < 3; j++)
+        out[n][j] = g[j] + sg * sl_height[h] * len * nrm[j] / area;
+  return n;
+}
+
 /* Tries the circumcentre of sliver t and points between it and the centroid (when the
  * circumcentre lies beyond a constraint or its cone is worse); the best one that beats
  * its cavity goes in (*done = 1). */
@@ -304,7 +360,7 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, 
    * sub-face of t, points at the height of a good tet on that face (a tet with a sub-face
    * whose circumcentre lies outside the domain, e.g. a flat cap over a nearly flat input
    * edge with two sub-faces, is opened from inside) */
-  double cand[4 + 8][3];
+  double cand[4 + 4 * SL_HEIGHTS + 2 * SL_HEIGHTS][3];
   int nc = 0;
   static const double frac[] = {1, 0.75, 0.5, 0.25};
   for (int f = 0; f < 4; f++, nc++)
@@ -336,11 +392,12 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, 
     const double *o = m->xyz + 3 * (size_t)tv[k];
     double side = nrm[0] * (o[0] - a[0]) + nrm[1] * (o[1] - a[1]) + nrm[2] * (o[2] - a[2]);
     double sg = side > 0 ? 1 : -1;
-    static const double height[] = {0.8, 0.5};
-    for (int h = 0; h < 2; h++, nc++)
+    for (int h = 0; h < SL_HEIGHTS; h++, nc++)
       for (int j = 0; j < 3; j++)
-        cand[nc][j] = fc[j] + sg * height[h] * len * nrm[j] / nn;
+        cand[nc][j] = fc[j] + sg * sl_height[h] * len * nrm[j] / nn;
   }
+  if (pinned(c, tv))
+    nc += off_plane(q, g, cand + nc);
   /* ranked on the doubles, then the best one decided exactly */
   int have = -1;
   double top = -1;
