@@ -231,6 +231,26 @@ static int keeps_vertices(const struct tr_mesh *m, trial *z)
 }
 
 
+/* No sub-face between two tets of the cavity: growth never crosses one, but may reach
+ * the tet behind an inner sub-face (a region's facet) by another face, and the cone would
+ * then delete it (a point off a cap's plane, next to such a facet, did). */
+static int keeps_subfaces(const tr_sliver_ctx *c, const trial *z)
+{
+  const struct tr_mesh *m = c->m;
+  for (uint32_t i = 0; i < z->n; i++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)z->cav[i];
+    for (int k = 0; k < 4; k++) {
+      uint32_t nb = TR_NEIG(m, z->cav[i], k);
+      if (nb == TR_NONE || !set_has(&z->in, nb))
+        continue;
+      uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
+      if (tr_sliver_protected(c, f, 3))
+        return 0;
+    }
+  }
+  return 1;
+}
+
 /* The cavity and cone of x for sliver t; 1 when the new tets' smallest angle beats the
  * cavity's and `floor` (the best screened candidate so far) and they keep the bounds. */
 static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int screen,
@@ -267,7 +287,7 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
     if (!(z->newmin > oldmin) || !(z->newmin > floor))
       return 0;
   }
-  if (!manifold(z->newv, apex, z->nf) || !keeps_vertices(m, z))
+  if (!manifold(z->newv, apex, z->nf) || !keeps_vertices(m, z) || !keeps_subfaces(c, z))
     return 0;
   /* the ratios only where the bound looks at them (the circumsphere costs) */
   for (uint32_t i = 0; i < z->nf; i++) {
