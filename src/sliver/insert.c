@@ -416,14 +416,20 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, 
       for (int j = 0; j < 3; j++)
         cand[nc][j] = fc[j] + sg * sl_height[h] * len * nrm[j] / nn;
   }
-  if (pinned(c, tv))
-    nc += off_plane(q, g, cand + nc);
-  /* ranked on the doubles, then the best one decided exactly */
+  /* ranked on the doubles, then the best one decided exactly; the points off the plane
+   * of a pinned tet only when none of the others opens it (each costs a cavity) */
   int have = -1;
   double top = -1;
   for (int f = 0; f < nc; f++)
     if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
       top = z->newmin, have = f;
+  if (have < 0 && pinned(c, tv)) {
+    int first = nc;
+    nc += off_plane(q, g, cand + nc);
+    for (int f = first; f < nc; f++)
+      if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
+        top = z->newmin, have = f;
+  }
   if (have < 0 || !try_point(c, t, cand[have], 0, -INFINITY, best))
     return TR_OK;
   uint32_t v, ids[4 * SL_MAX_CAVITY];
