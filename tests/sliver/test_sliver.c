@@ -483,6 +483,56 @@ static void a_tet_pinned_between_sub_faces_gets_points_on_them(void)
   tr_plc_destroy(plc);
 }
 
+/* A cap over a nearly flat ridge: the hull's bottom is folded along p q (0 1) by 1/64 up
+ * to r and s (2 3), its top is the apex u (4). The Delaunay mesh is the cap p q r s and
+ * the two tets from u over p r s and q r s; the cap's four points are not cocircular, so
+ * its circumcentre lies far below the hull (no candidate between it and the centroid is
+ * inside). Every vertex is an input point (none moves) and no face is a sub-face: the
+ * insertion pass opens the cap by a point off its plane on the domain's side (insert.c,
+ * off_plane), strictly inside the hull, and the smallest angle rises. */
+static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
+{
+  const double e = 1.0 / 64, x[15] = {0, 0, 0, 1, 0, 0, 0.5, 0.25, e, 0.5, -0.25, e, 0.5, 0, 1};
+  tr_mesh *m = NULL;
+  if (tr_delaunay_build(x, 5, &m) != TR_OK) {
+    EXPECT(0, "cap: Delaunay failed: %s", tr_last_error());
+    return;
+  }
+  const uint32_t cap[4] = {0, 1, 2, 3};
+  EXPECT(has_tet(m, cap), "cap: the cap is not a tet of the Delaunay mesh");
+  double before = min_dihedral(m);
+  EXPECT(before < 5, "cap: its smallest angle %g is not small", before);
+  mpq_t six_v; /* the hull is u over p q r and p q s: 6 V = 1/4 + 1/4 */
+  mpq_init(six_v);
+  mpq_set_ui(six_v, 1, 2);
+  EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v) == TR_OK, "cap: setup: %s", tr_last_error());
+  tr_subfaces none = {0, NULL, NULL};
+  tr_sliver_ctx c;
+  tr_sliver_stats st;
+  memset(&st, 0, sizeof st);
+  tr_status s = tr_sliver_ctx_init(&c, m, &none, NULL, 5, TR_SLIVER_BOUND);
+  if (s == TR_OK)
+    s = tr_sliver_insert_pass(&c, &st);
+  EXPECT(s == TR_OK, "cap: insertion: %s", tr_last_error());
+  tr_sliver_ctx_free(&c);
+  EXPECT(st.points >= 1 && m->nv == 5 + st.points, "cap: %llu points added, %u vertices",
+         (unsigned long long)st.points, m->nv);
+  EXPECT(!has_tet(m, cap), "cap: the cap is still there");
+  for (uint32_t v = 0; v < 5; v++)
+    EXPECT(!memcmp(x + 3 * v, m->xyz + 3 * (size_t)v, 24), "cap: vertex %u moved", v);
+  for (uint32_t v = 5; v < m->nv; v++) {
+    const double *p = m->xyz + 3 * (size_t)v;
+    EXPECT(p[2] > e && p[2] < 1 && !(m->vq && m->vq[v]) && m->v2t[v] != TR_NONE,
+           "cap: new vertex %u is not a double above the ridge inside the hull", v);
+  }
+  double after = min_dihedral(m);
+  EXPECT(after > before, "cap: smallest dihedral angle %g -> %g: not raised", before, after);
+  s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v);
+  EXPECT(s == TR_OK, "cap: mesh validator: %s", tr_last_error());
+  mpq_clear(six_v);
+  tr_mesh_destroy(m);
+}
+
 int main(int argc, char **argv)
 {
   const char *c = argc > 1 ? argv[1] : "";
@@ -496,6 +546,8 @@ int main(int argc, char **argv)
     a_sliver_is_removed_by_a_new_interior_point();
   else if (!strcmp(c, "passes"))
     no_pass_lowers_the_smallest_angle();
+  else if (!strcmp(c, "cap"))
+    a_pinned_cap_is_opened_by_a_point_off_its_plane();
   else if (!strcmp(c, "pinned"))
     a_tet_pinned_between_sub_faces_gets_points_on_them();
   else if (!strcmp(c, "surfaces") && argc > 2)
