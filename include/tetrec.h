@@ -169,7 +169,7 @@ tr_status tr_mesh_input_edge(const tr_mesh *mesh, uint32_t k, uint32_t *a, uint3
 enum tr_stage {
   TR_STAGE_READ, TR_STAGE_VALIDATE, TR_STAGE_SELFINT, TR_STAGE_NESTING, TR_STAGE_SMOOTH,
   TR_STAGE_DELAUNAY, TR_STAGE_EDGES, TR_STAGE_FACETS, TR_STAGE_COLOR, TR_STAGE_SUPPRESS,
-  TR_STAGE_REFINE, TR_STAGE_ROUND, TR_STAGE_WRITE, TR_STAGE_COUNT
+  TR_STAGE_REFINE, TR_STAGE_ROUND, TR_STAGE_STATS, TR_STAGE_WRITE, TR_STAGE_COUNT
 };
 /* Room in tr_stats.stage_seconds, so that a stage added later leaves the fields after the
  * array where they are (entries from TR_STAGE_COUNT on are 0). Before version 1.0 a new
@@ -178,7 +178,7 @@ enum tr_stage {
 #define TR_STAGE_SLOTS 24
 /* "reading", "validation", "self_intersection", "nesting", "smoothing", "delaunay",
  * "edge_recovery", "facet_recovery", "coloring", "suppression", "refinement", "rounding",
- * "writing";
+ * "statistics" (the quality figures of tr_stats, measured on the mesh made), "writing";
  * NULL out of range.
  * Thread-safe. */
 const char *tr_stage_name(int stage);

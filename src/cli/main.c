@@ -746,6 +746,7 @@ static int cmd_convert(const args *a)
 
 int main(int argc, char **argv)
 {
+  tr_cli_heap_setup();
   args a;
   tr_status s = parse_args(argc, argv, &a);
   if (s != TR_OK) {

@@ -28,6 +28,6 @@ const char *tr_stage_name(int stage)
   static const char *const names[TR_STAGE_COUNT] = {
       "reading", "validation", "self_intersection", "nesting", "smoothing", "delaunay",
       "edge_recovery", "facet_recovery", "coloring", "suppression", "refinement", "rounding",
-      "writing"};
+      "statistics", "writing"};
   return stage >= 0 && stage < TR_STAGE_COUNT ? names[stage] : NULL;
 }

@@ -351,7 +351,10 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK) {
     stats->volume_nodes = res->nv;
     stats->volume_elements = tr_mesh_num_tets(res);
+    double t6 = tr_pipeline_now();
     tr_quality_stats(res, stats);
+    stage[TR_STAGE_STATS] = tr_pipeline_now() - t6;
+    say(&opt, TR_STAGE_STATS, stage[TR_STAGE_STATS]);
     /* a dihedral target is worked towards, not guaranteed (input angles, tets pinned
      * between constraints): what is left under it is said, never passed over */
     double dt = opt.quality_min_dihedral;

@@ -136,30 +136,105 @@ uint64_t tr_quality_count_below(const struct tr_mesh *m, double degrees)
   return n;
 }
 
+/* The summary without an arccosine per dihedral angle (six per tet were most of its
+ * time), giving the very same figures. The angle of a cosine c, f(c) = 180 - acos(c) *
+ * 180/pi, increases with c; the angles that decide something are the histogram's bin edges
+ * (10 k degrees), 5 and 10 degrees (per tet, its smallest angle) and the extremes. A
+ * cosine farther than TR_QUALITY_COS_GUARD from the cosine of an edge falls on the same
+ * side of it as its computed angle: acos and the arithmetic after it err by under 1e-13
+ * degrees, and f's slope is at least 180/pi per unit of cosine, so the guard leaves a
+ * margin of five orders of magnitude. Cosines inside a guard band take the angle itself,
+ * as before; so do the candidates for the extremes (every cosine within the guard of the
+ * smallest / largest one seen so far: an angle skipped lies beyond the guard from a cosine
+ * whose angle was taken, so it is no extreme). */
+#define TR_QUALITY_COS_GUARD 1e-9
+
+/* edge[k] ~ the cosine of angle 10 (k + 1), k < TR_QUALITY_DIH_BINS - 1; c5, c10: of 5
+ * and 10 degrees */
+typedef struct cos_edges {
+  double edge[TR_QUALITY_DIH_BINS - 1], c5, c10;
+} cos_edges;
+
+static void cos_edges_init(cos_edges *e)
+{
+  const double pi = 3.14159265358979323846;
+  for (int k = 0; k < TR_QUALITY_DIH_BINS - 1; k++)
+    e->edge[k] = cos((180.0 - 10.0 * (k + 1)) * (pi / 180.0));
+  e->c5 = cos(175.0 * (pi / 180.0));
+  e->c10 = cos(170.0 * (pi / 180.0));
+}
+
+static int near_cos(double c, double edge)
+{
+  return fabs(c - edge) <= TR_QUALITY_COS_GUARD;
+}
+
+static int dih_bin(double dih)
+{
+  int b = (int)(dih / 10);
+  return b < 0 ? 0 : b >= TR_QUALITY_DIH_BINS ? TR_QUALITY_DIH_BINS - 1 : b;
+}
+
+/* The bin of cosine c: the edges below it (counted without branches: a binary search's
+ * were mispredicted half the time), or, inside a guard band, the bin of its angle. */
+static int cos_bin(const cos_edges *e, double c)
+{
+  int n = 0;
+  for (int k = 0; k < TR_QUALITY_DIH_BINS - 1; k++)
+    n += e->edge[k] < c;
+  if ((n > 0 && near_cos(c, e->edge[n - 1])) ||
+      (n < TR_QUALITY_DIH_BINS - 1 && near_cos(c, e->edge[n])))
+    return dih_bin(tr_dihedral_of_cos(c));
+  return n;
+}
+
+/* 1 iff the smallest of the angles of cs[0..6) is under the angle whose cosine is ce
+ * (degrees: that angle; ce: a guard-free cosine of it). */
+static int any_under(const double cs[6], double lo_cos, double ce, double degrees)
+{
+  if (!near_cos(lo_cos, ce))
+    return lo_cos < ce;
+  for (int e = 0; e < 6; e++)
+    if (tr_dihedral_of_cos(cs[e]) < degrees)
+      return 1;
+  return 0;
+}
+
 void tr_quality_measure(const struct tr_mesh *m, tr_quality *q)
 {
   memset(q, 0, sizeof *q);
   q->min_dihedral = 180;
   static const double rb[TR_QUALITY_RATIO_BINS - 1] = {1, 1.414, 2, 4, 10, 100};
+  cos_edges ce;
+  cos_edges_init(&ce);
+  double lo_seen = INFINITY, hi_seen = -INFINITY; /* extreme cosines whose angles were taken */
   for (uint32_t t = 0; t < m->nt; t++) {
     if (!tr_tet_is_real(m, t) || (m->flags[t] & TR_TF_OUTER))
       continue;
     const uint32_t *v = m->tv + 4 * (size_t)t;
-    double ratio, vol, dih[6];
-    tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1], m->xyz + 3 * (size_t)v[2],
-                 m->xyz + 3 * (size_t)v[3], &ratio, &vol, dih, NULL);
+    const double *p[4] = {m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
+                          m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3]};
+    double ratio, vol, cs[6];
+    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, NULL, NULL);
+    dihedral_cosines(p, cs); /* what tr_tet_shape takes the angles of */
     q->ntets++;
-    double lo = 180, hi = 0;
+    double lc = cs[0], hc = cs[0];
     for (int e = 0; e < 6; e++) {
-      lo = fmin(lo, dih[e]);
-      hi = fmax(hi, dih[e]);
-      int b = (int)(dih[e] / 10);
-      q->dihedral_hist[b < 0 ? 0 : b >= TR_QUALITY_DIH_BINS ? TR_QUALITY_DIH_BINS - 1 : b]++;
+      lc = cs[e] < lc ? cs[e] : lc;
+      hc = cs[e] > hc ? cs[e] : hc;
+      q->dihedral_hist[cos_bin(&ce, cs[e])]++;
     }
-    q->min_dihedral = fmin(q->min_dihedral, lo);
-    q->max_dihedral = fmax(q->max_dihedral, hi);
-    q->below5 += lo < 5;
-    q->below10 += lo < 10;
+    /* an angle already taken (the same cosine) is not taken again */
+    for (int e = 0; e < 6; e++) {
+      if (cs[e] <= lo_seen + TR_QUALITY_COS_GUARD && cs[e] != lo_seen)
+        q->min_dihedral = fmin(q->min_dihedral, tr_dihedral_of_cos(cs[e]));
+      if (cs[e] >= hi_seen - TR_QUALITY_COS_GUARD && cs[e] != hi_seen)
+        q->max_dihedral = fmax(q->max_dihedral, tr_dihedral_of_cos(cs[e]));
+    }
+    lo_seen = lc < lo_seen ? lc : lo_seen;
+    hi_seen = hc > hi_seen ? hc : hi_seen;
+    q->below5 += any_under(cs, lc, ce.c5, 5);
+    q->below10 += any_under(cs, lc, ce.c10, 10);
     if (!(ratio <= q->max_radius_edge))
       q->max_radius_edge = ratio;
     int b = 0;
