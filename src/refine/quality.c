@@ -26,9 +26,15 @@ static void cross3(const double *a, const double *b, double *o)
  * dihedral angle at e is pi minus its arccosine. */
 static void dihedral_cosines(const double *const p[4], double cs[6])
 {
+  /* tr_face_vtx and, per edge of tr_edge_vtx, the two faces through it (those opposite
+   * the other two vertices), as constants: with the mesh's tables (another unit) the
+   * compiler could unroll nothing, and the search for the two faces was a tenth of this
+   * function, the hottest of the sliver stage (tests/refine: dihedral_at_edge_matches_geometry) */
+  static const uint8_t fv[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+  static const uint8_t ef[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
   double n[4][3], len[4];
   for (int k = 0; k < 4; k++) {
-    const double *x = p[tr_face_vtx[k][0]], *y = p[tr_face_vtx[k][1]], *z = p[tr_face_vtx[k][2]];
+    const double *x = p[fv[k][0]], *y = p[fv[k][1]], *z = p[fv[k][2]];
     double e1[3], e2[3];
     sub3(y, x, e1);
     sub3(z, x, e2);
@@ -36,14 +42,7 @@ static void dihedral_cosines(const double *const p[4], double cs[6])
     len[k] = sqrt(dot3(n[k], n[k]));
   }
   for (int e = 0; e < 6; e++) {
-    int i = tr_edge_vtx[e][0], j = tr_edge_vtx[e][1], k = -1, l = -1;
-    for (int s = 0; s < 4; s++)
-      if (s != i && s != j) {
-        if (k < 0)
-          k = s;
-        else
-          l = s;
-      }
+    int k = ef[e][0], l = ef[e][1];
     double c = len[k] > 0 && len[l] > 0 ? dot3(n[k], n[l]) / (len[k] * len[l]) : 1;
     /* clamped to [-1, 1], NaN to 1 (as fmax(-1, fmin(1, c))), without the libm calls
      * (libm's fmin was 4.7% of couplingdown --quality 1.414) */

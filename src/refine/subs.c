@@ -136,6 +136,9 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
   /* "is this mesh face a sub-face?" is asked of every face the refinement walks */
   TR_CHECK(tr_vtmap_reserve(&c->fm, 3, 2 * sub->n));
   TR_CHECK(tr_vtmap_filter(&c->fm));
+  /* and "is this edge a sub-segment?" of every edge of every cavity tet: mostly no */
+  TR_CHECK(tr_vtmap_reserve(&c->es.m, 2, sub->n + 1));
+  TR_CHECK(tr_vtmap_filter(&c->es.m));
   for (uint32_t f = 0; f < sub->n; f++) {
     const uint32_t *v = sub->v + 3 * (size_t)f, tri = sub->tri[f];
     TR_CHECK(rf_subface_add(c, v[0], v[1], v[2], tri, NULL));

@@ -88,6 +88,88 @@ static void insphere_matches_oracle(void)
     tr_qpoint_clear(&q[i]);
 }
 
+/* q = centre + rad * the point of the unit sphere that stereographic projection maps to
+ * (s, t): ((2s, 2t, s^2 + t^2 - 1) / (s^2 + t^2 + 1)), exactly on that sphere. */
+static void on_sphere(tr_qpoint *q, const mpq_t centre[3], const mpq_t rad, long s, long t)
+{
+  mpq_t den, x;
+  mpq_init(den), mpq_init(x);
+  mpq_set_si(den, s * s + t * t + 1, 1);
+  long num[3] = {2 * s, 2 * t, s * s + t * t - 1};
+  for (int i = 0; i < 3; i++) {
+    mpq_set_si(x, num[i], 1);
+    mpq_div(x, x, den);
+    mpq_mul(x, x, rad);
+    mpq_add(q->c[i], x, centre[i]);
+  }
+  tr_qpoint_update(q);
+  mpq_clear(den), mpq_clear(x);
+}
+
+/* Rational points on a sphere and a fifth point on it or 2^-j off it (j from 30 to 140
+ * bits below the radius): the cases where the nearest doubles' static filter must leave
+ * the decision to the later stages when its bound is not met, at scales from 2^-170 to
+ * 2^170. */
+static void insphere_near_cospherical_matches_oracle(void)
+{
+  tr_qpoint q[5];
+  for (int i = 0; i < 5; i++)
+    tr_qpoint_init(&q[i]);
+  mpq_t centre[3], rad, off;
+  for (int i = 0; i < 3; i++)
+    mpq_init(centre[i]);
+  mpq_init(rad), mpq_init(off);
+  static const int scales[] = {0, -170, 170, 40, -20};
+  int zeros = 0, inside = 0, outside = 0;
+  for (int it = 0; it < 4000; it++) {
+    int sc = scales[it % 5];
+    for (int i = 0; i < 3; i++)
+      mpq_set_si(centre[i], check_irand(-50, 50), (unsigned long)check_irand(1, 9));
+    mpq_set_si(rad, check_irand(1, 40), (unsigned long)check_irand(1, 7));
+    for (int i = 0; i < 3; i++)
+      mpq_canonicalize(centre[i]);
+    mpq_canonicalize(rad);
+    if (sc >= 0)
+      mpq_mul_2exp(rad, rad, (mp_bitcnt_t)sc);
+    else
+      mpq_div_2exp(rad, rad, (mp_bitcnt_t)(-sc));
+    for (int i = 0; i < 3; i++)
+      if (sc >= 0)
+        mpq_mul_2exp(centre[i], centre[i], (mp_bitcnt_t)sc);
+      else
+        mpq_div_2exp(centre[i], centre[i], (mp_bitcnt_t)(-sc));
+    for (int k = 0; k < 5; k++)
+      on_sphere(&q[k], (const mpq_t *)centre, rad, check_irand(-9, 9), check_irand(-9, 9));
+    if (it % 4) { /* the fifth point off the sphere by rad * 2^-j along one axis */
+      int j = (int)check_irand(30, 140), ax = (int)check_irand(0, 2);
+      mpq_div_2exp(off, rad, (mp_bitcnt_t)j);
+      if (check_irand(0, 1))
+        mpq_neg(off, off);
+      mpq_add(q[4].c[ax], q[4].c[ax], off);
+      tr_qpoint_update(&q[4]);
+    }
+    tr_point p[5];
+    const tr_point *pp[5];
+    for (int i = 0; i < 5; i++) {
+      p[i] = tr_pt_q(&q[i]);
+      pp[i] = &p[i];
+    }
+    int want = oracle_insphere(pp);
+    int got = tr_insphere_p(pp[0], pp[1], pp[2], pp[3], pp[4]);
+    zeros += want == 0;
+    inside += want > 0;
+    outside += want < 0;
+    CHECK(got == want, "iteration %d (scale 2^%d): got %d want %d", it, sc, got, want);
+  }
+  CHECK(zeros >= 500 && inside >= 500 && outside >= 500,
+        "too few cases of a kind: %d on, %d inside, %d outside", zeros, inside, outside);
+  for (int i = 0; i < 3; i++)
+    mpq_clear(centre[i]);
+  mpq_clear(rad), mpq_clear(off);
+  for (int i = 0; i < 5; i++)
+    tr_qpoint_clear(&q[i]);
+}
+
 /* tr_insphere_p > 0 iff e inside the sphere of a positively oriented abcd. */
 static void insphere_sign_convention(void)
 {
@@ -226,6 +308,7 @@ int main(int argc, char **argv)
   static const check_case cases[] = {
       {"orient3d_matches_oracle", orient3d_matches_oracle},
       {"insphere_matches_oracle", insphere_matches_oracle},
+      {"insphere_near_cospherical_matches_oracle", insphere_near_cospherical_matches_oracle},
       {"insphere_sign_convention", insphere_sign_convention},
       {"orient2d_proj_convention", orient2d_proj_convention},
       {"double_and_rational_agree", double_and_rational_agree},

@@ -478,6 +478,53 @@ static void determinism(void)
   tr_plc_destroy(plc);
 }
 
+/* tr_tet_shape's dih[e] is the interior dihedral angle at edge e (tr_edge_vtx order),
+ * measured independently: the angle between the other two vertices' offsets from the
+ * edge line, on random tets. */
+static void dihedral_at_edge_matches_geometry(void)
+{
+  uint64_t r = 777;
+  for (int it = 0; it < 5000; it++) {
+    double p[4][3];
+    for (int i = 0; i < 4; i++)
+      for (int k = 0; k < 3; k++) {
+        r = r * 6364136223846793005ull + 1442695040888963407ull;
+        p[i][k] = (double)(r >> 11) * 0x1p-53;
+      }
+    double ratio, vol, dih[6];
+    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, dih, NULL);
+    for (int e = 0; e < 6; e++) {
+      int i = tr_edge_vtx[e][0], j = tr_edge_vtx[e][1], o[2], no = 0;
+      for (int s = 0; s < 4; s++)
+        if (s != i && s != j)
+          o[no++] = s;
+      double d[3], dd = 0, w[2][3];
+      for (int k = 0; k < 3; k++) {
+        d[k] = p[j][k] - p[i][k];
+        dd += d[k] * d[k];
+      }
+      for (int h = 0; h < 2; h++) {
+        double t = 0;
+        for (int k = 0; k < 3; k++)
+          t += (p[o[h]][k] - p[i][k]) * d[k];
+        for (int k = 0; k < 3; k++)
+          w[h][k] = p[o[h]][k] - p[i][k] - t / dd * d[k];
+      }
+      double c = 0, l0 = 0, l1 = 0;
+      for (int k = 0; k < 3; k++) {
+        c += w[0][k] * w[1][k];
+        l0 += w[0][k] * w[0][k];
+        l1 += w[1][k] * w[1][k];
+      }
+      double want = acos(c / sqrt(l0 * l1)) * (180.0 / 3.14159265358979323846);
+      if (!(l0 > 1e-6 && l1 > 1e-6))
+        continue; /* a vertex nearly on the edge line: no well-defined reference */
+      EXPECT(fabs(dih[e] - want) < 1e-6, "tet %d edge %d: %.12g vs %.12g degrees", it, e,
+             dih[e], want);
+    }
+  }
+}
+
 /* tr_tet_min_dihedral is the smallest of tr_tet_shape's six angles, the same double, on
  * regular, random, sliver-like and flat tets (its one arccosine rests on acos being
  * monotone). */
@@ -719,6 +766,8 @@ int main(int argc, char **argv)
     min_dihedral_equals_smallest_of_six();
   else if (!strcmp(c, "quality_summary"))
     quality_summary_equals_per_angle_definition();
+  else if (!strcmp(c, "dihedral_at_edge"))
+    dihedral_at_edge_matches_geometry();
   else {
     fprintf(stderr, "unknown case '%s'\n", c);
     return 2;
