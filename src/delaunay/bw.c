@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "bwkernel.h"
+#include "huge.h"
 
 
 static tr_status insert(dt *D, uint32_t pi)
@@ -371,6 +372,10 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   struct tr_mesh *m;
   /* ~6.7 tets per point for uniform random points; growth covers the rest. */
   TR_CHECK(tr_mesh_create(n, 7 * n + 64, &m));
+  /* before any first touch: see huge.c */
+  tr_dt_advise_huge(m->tv, (size_t)m->cap_t * 4 * sizeof *m->tv);
+  tr_dt_advise_huge(m->tn, (size_t)m->cap_t * 4 * sizeof *m->tn);
+  tr_dt_advise_huge(m->xyz, (size_t)n * 3 * sizeof *m->xyz);
   pjob PJ[64];
   PJ[0] = (pjob){.xyz = xyz, .m = m};
   if (n)
@@ -404,6 +409,7 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   if ((s = first_simplex(xyz, n, order, nu)) != TR_OK)
     goto done;
   P = malloc((size_t)nu * sizeof *P);
+  tr_dt_advise_huge(P, (size_t)nu * sizeof *P);
   D.map = malloc(LDIM * LDIM * sizeof *D.map);
   if (!P || !D.map) {
     s = tr_error(TR_ERR_NOMEM, "out of memory for %u points", n);

@@ -28,6 +28,7 @@
 
 #include "delaunay.h"
 #include "dtstat.h"
+#include "huge.h"
 
 #define CANON_MAX_THREADS 64
 /* records or tets ahead whose random accesses are started early (a hint) */
@@ -330,6 +331,12 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
   uint32_t *loc = nth > 1 ? malloc((size_t)(nth - 1) * (nv ? nv : 1) * sizeof *loc) : NULL;
   /* the records, then the new tv: room for cap_t tets */
   skey *sk = malloc((m->cap_t ? m->cap_t : 1) * sizeof *sk);
+  /* fresh arrays of ~30 bytes per tet: huge pages before the first touch (huge.c) */
+  tr_dt_advise_huge(nr, (size_t)nt * sizeof *nr);
+  tr_dt_advise_huge(end, nb * sizeof *end);
+  tr_dt_advise_huge(cnt, nb * (size_t)nth * sizeof *cnt);
+  tr_dt_advise_huge(loc, (size_t)(nth - 1) * nv * sizeof *loc);
+  tr_dt_advise_huge(sk, (size_t)m->cap_t * sizeof *sk);
   tr_status s = TR_OK;
   if (!nr || !end || !cnt || !sk || (nth > 1 && !loc)) {
     s = tr_error(TR_ERR_NOMEM, "out of memory ordering %u tets", nt);

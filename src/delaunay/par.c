@@ -31,6 +31,7 @@
 #include <unistd.h>
 
 #include "bwkernel.h"
+#include "huge.h"
 
 #define CHUNK 4096u /* fresh slots a thread takes at a time */
 #define HOLD_MAX 8192u /* tets a thread holds before it gives them all back */
@@ -380,8 +381,11 @@ static tr_status reserve(dt *D, shared *S, uint32_t npts, uint32_t nthreads)
   const uint64_t want = (uint64_t)m->nt + 12ull * npts + 2ull * CHUNK * nthreads + 64;
   if (want > UINT32_MAX / 4 - 64)
     return tr_error(TR_ERR_NOMEM, "too many tets for the parallel Delaunay build");
-  if (want > m->cap_t)
+  if (want > m->cap_t) {
     TR_CHECK(tr_mesh_reserve_tets(m, (uint32_t)want));
+    tr_dt_advise_huge(m->tv, (size_t)m->cap_t * 4 * sizeof *m->tv);
+    tr_dt_advise_huge(m->tn, (size_t)m->cap_t * 4 * sizeof *m->tn);
+  }
   if (m->cap_t > S->nown) {
     /* every owner word is 0 between passes: a fresh zeroed array, whose pages the
      * threads fault in as they touch them (a realloc and memset here would zero
@@ -389,6 +393,7 @@ static tr_status reserve(dt *D, shared *S, uint32_t npts, uint32_t nthreads)
     free(S->own);
     S->own = calloc(m->cap_t, sizeof *S->own);
     S->nown = S->own ? m->cap_t : 0;
+    tr_dt_advise_huge(S->own, (size_t)S->nown * sizeof *S->own);
     if (!S->own)
       return tr_error(TR_ERR_NOMEM, "out of memory for the tet owners");
   }

@@ -15,6 +15,7 @@
  * of one pass); the duplicate scan stays serial. The order is the same for any number
  * of threads. */
 #include "delaunay.h"
+#include "huge.h"
 
 #include <assert.h>
 #include <pthread.h>
@@ -383,6 +384,8 @@ tr_status tr_spatial_order_threads(const double *xyz, uint32_t n, uint32_t *orde
     free(tmp);
     return tr_error(TR_ERR_NOMEM, "out of memory sorting %u points", n);
   }
+  tr_dt_advise_huge(a, n * sizeof *a); /* huge.c */
+  tr_dt_advise_huge(tmp, n * sizeof *tmp);
   /* a range of at least 2^16 points per thread: below that a thread costs more than it
    * saves */
   int nth = nthreads < 1 ? 1 : nthreads > TR_SORT_MAX_THREADS ? TR_SORT_MAX_THREADS : nthreads;
