@@ -541,6 +541,7 @@ tr_status tr_dt_insert_parallel(dt *D, uint32_t from, uint32_t nthreads)
     w->D.stamp = 1;
     w->D.map = malloc(LDIM * LDIM * sizeof *w->D.map);
     w->tag = calloc(D->n ? D->n : 1, sizeof *w->tag);
+    tr_dt_advise_huge(w->tag, (size_t)D->n * sizeof *w->tag); /* random access: TLB */
     for (int h = 0; h < 4; h++)
       w->hist[h] = TR_NONE;
     if (!w->D.map || !w->tag) {
