@@ -2,10 +2,12 @@
  * every page of a fresh allocation faults when first touched (in this VM ~8 us a fault:
  * kernel entry with page-table isolation, paravirtual interrupt toggling; 128k faults
  * on 10^6 points, a quarter of the process CPU time), and the build's random accesses
- * to the tet store, the points and the tags miss the TLB on most tets. A 2 MB page takes
- * one fault for 512 small ones and one TLB entry for them. On 10^6 uniform points
- * (interleaved runs, loaded machine, medians) the process CPU time went 4.62 -> 3.32 s
- * with one thread and 5.15 -> 4.09 s with two; faults 128k -> 15k. Kernels whose THP
+ * to the tet store, the points and the tags take a TLB miss on most tets. A 2 MB page
+ * takes one fault for 512 small ones and one TLB entry for them. On 10^6 uniform points
+ * (interleaved runs, loaded machine) the process CPU time went 4.5-4.9 -> 3.1-3.9 s with
+ * one thread and 4.7-6.0 -> 3.8-4.2 s with two; faults 128k -> 15k, and the user time
+ * fell by a third as well as the system time (fewer TLB misses, maybe fewer faults of
+ * the host behind the guest's: this VM has no hardware counters to tell). Kernels whose THP
  * mode is "madvise" (a common default) only give huge pages to ranges marked
  * MADV_HUGEPAGE; "always" gives them anyway, "never" ignores the advice. Only a hint:
  * failure changes nothing, and the contents and results never depend on it. */
