@@ -370,8 +370,16 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
   if (n >= (TR_GHOST - 1) || n > (UINT32_MAX / 4 - 64) / 7)
     return tr_error(TR_ERR_NOMEM, "too many points (%u)", n);
   struct tr_mesh *m;
-  /* ~6.7 tets per point for uniform random points; growth covers the rest. */
-  TR_CHECK(tr_mesh_create(n, 7 * n + 64, &m));
+  /* ~6.7 tets per point for uniform random points; growth covers the rest. With threads,
+   * the room par.c reserves for its passes (12 slots per point of a pass: ~9.4 per point
+   * of the whole set) from the start: growing the store later moves it (mremap) to an
+   * address where its huge pages (core/hugepage.c) no longer line up, and the kernel splits them
+   * all. Untouched room costs address space only. */
+  uint64_t tcap = 7ull * n + 64;
+  /* 2 * 4096 * 64: two of par.c's chunks for each of the most threads */
+  if (nthreads > 1 && 10ull * n + 2ull * 4096 * 64 + 64 < UINT32_MAX / 4 - 64)
+    tcap = 10ull * n + 2ull * 4096 * 64 + 64;
+  TR_CHECK(tr_mesh_create(n, (uint32_t)tcap, &m));
   /* untouched yet: the arrays read at random take huge pages (core/hugepage.c) */
   tr_advise_hugepages(m->tv, 4 * (size_t)m->cap_t * sizeof *m->tv);
   tr_advise_hugepages(m->tn, 4 * (size_t)m->cap_t * sizeof *m->tn);

@@ -341,6 +341,8 @@ tr_status tr_delaunay_canonical_map(struct tr_mesh *m, int nthreads, const uint3
   tr_advise_hugepages(sk, (size_t)m->cap_t * sizeof *sk);
   tr_advise_hugepages(cnt, nb * (size_t)nth * sizeof *cnt);
   tr_advise_hugepages(end, nb * sizeof *end);
+  if (loc)
+    tr_advise_hugepages(loc, (size_t)(nth - 1) * nv * sizeof *loc);
   _Static_assert(sizeof(skey) == 4 * sizeof(uint32_t), "a record is a tv entry");
   cjob J[CANON_MAX_THREADS];
   for (int j = 0; j < nth; j++)

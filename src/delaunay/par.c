@@ -4,7 +4,8 @@
  * a block is cut into one contiguous Hilbert range per thread, and each thread inserts
  * its range with the serial kernel (bwkernel.h), owning every tet it reads or writes:
  * a tet is taken with an atomic compare-and-swap on own[t] (0 free, else the thread
- * number) and stays the thread's until it holds HOLD_MAX tets, then all are given back
+ * number; a slot of the thread's fresh chunk, which no other thread can reach, by a
+ * plain store: 4.1 instead of 10.9 locked instructions per point) and stays the thread's until it holds HOLD_MAX tets, then all are given back
  * (between two insertions): later reads by the same thread cost one load, and only the
  * first touch of a tet per window costs a locked instruction (taking and giving back
  * around every insertion cost ~70 of them per point, +45% CPU over the serial build on
@@ -31,21 +32,26 @@
 #include <unistd.h>
 
 #include "bwkernel.h"
+#include "core/hugepage.h"
 
 #define CHUNK 4096u /* fresh slots a thread takes at a time */
 #define HOLD_MAX 8192u /* tets a thread holds before it gives them all back */
 
 typedef struct shared {
-  uint32_t *own;       /* per tet slot: owning thread + 1, 0 when free */
+  uint8_t *own;        /* per tet slot: owning thread + 1, 0 when free (a byte: a
+                        * quarter of the cache lines and fresh pages of a word) */
   uint32_t nown;       /* entries of own */
   uint32_t next_fresh; /* first slot no thread has taken (atomic) */
   uint32_t cap;        /* slots usable in this pass */
 } shared;
 
 typedef struct worker {
-  dt D;            /* own buffers; m, pv, orig, n and the filter bounds shared */
+  /* a worker starts a cache line of its own: its fields written at every insertion
+   * (D.rng, D.stamp, held.n, fresh, hist) must not share a line with the next worker's */
+  _Alignas(64) dt D; /* own buffers; m, pv, orig, n and the filter bounds shared */
   shared *S;
-  uint32_t id;     /* 1 + thread number */
+  uint8_t *own;    /* S->own for this pass (one load less per take) */
+  uint32_t id;     /* 1 + thread number (at most 64: fits the owner byte) */
   uint32_t *tag;   /* D.n: stamp << 8 | local id (lid, per thread) */
   tr_u32buf held;  /* tets the thread owns (took in this pass) */
   tr_u32buf freed; /* slots this thread freed, for its next new tets */
@@ -55,18 +61,24 @@ typedef struct worker {
   const uint32_t *pts;
   uint32_t npts;
   int full;        /* no room left in this pass: the rest is deferred */
+#ifdef TR_DT_STATS
+  unsigned long long ntake, ncas; /* takes, and those that took a compare-and-swap */
+#endif
   tr_status st;
 } worker;
 
 static inline int take(worker *W, uint32_t t)
 {
-  uint32_t *o = &W->S->own[t];
-  uint32_t cur = __atomic_load_n(o, __ATOMIC_RELAXED);
+  uint8_t *o = &W->own[t];
+  uint8_t cur = __atomic_load_n(o, __ATOMIC_RELAXED);
+  STAT(W->ntake++);
   if (cur == W->id)
     return 1;
   if (cur != 0)
     return 0;
-  if (!__atomic_compare_exchange_n(o, &cur, W->id, 0, __ATOMIC_ACQUIRE, __ATOMIC_RELAXED))
+  STAT(W->ncas++);
+  if (!__atomic_compare_exchange_n(o, &cur, (uint8_t)W->id, 0, __ATOMIC_ACQUIRE,
+                                   __ATOMIC_RELAXED))
     return 0;
   if (tr_u32buf_push(&W->held, t) != TR_OK) {
     __atomic_store_n(o, 0, __ATOMIC_RELEASE);
@@ -82,7 +94,7 @@ static inline int take(worker *W, uint32_t t)
 static void give_back(worker *W)
 {
   for (size_t i = 0; i < W->held.n; i++)
-    __atomic_store_n(&W->S->own[W->held.a[i]], 0, __ATOMIC_RELEASE);
+    __atomic_store_n(&W->own[W->held.a[i]], 0, __ATOMIC_RELEASE);
   W->held.n = 0;
 }
 
@@ -171,8 +183,15 @@ static int new_slot(worker *W, uint32_t *s)
     W->fresh = lo;
     W->fresh_end = lo + CHUNK;
   }
-  if (!take(W, W->fresh))
+  /* a fresh slot is reachable by no other thread (no tet links to it until this one
+   * writes its tets, which it holds): owned by a plain store, no compare-and-swap (a
+   * locked instruction also waits for every load in flight: ~7 per point) */
+  const uint32_t t = W->fresh;
+  if (tr_u32buf_push(&W->held, t) != TR_OK) {
+    W->st = TR_ERR_NOMEM;
     return 0;
+  }
+  __atomic_store_n(&W->own[t], (uint8_t)W->id, __ATOMIC_RELAXED);
   *s = W->fresh++;
   return 1;
 }
@@ -209,7 +228,8 @@ static int pinsert(worker *W, uint32_t pi)
   D->cav[ncav++] = 4 * t0;
   m->tv[4 * (size_t)t0] |= MARK;
   int ok = 1;
-  uint32_t *cav = D->cav, *tag = W->tag, *own = W->S->own;
+  uint32_t *cav = D->cav, *tag = W->tag;
+  const uint8_t *own = W->own;
   bface *bf = D->bf;
   uint32_t room = D->capcav < D->capbf ? D->capcav : D->capbf;
   for (int k = 0; k < 4; k++)
@@ -380,8 +400,11 @@ static tr_status reserve(dt *D, shared *S, uint32_t npts, uint32_t nthreads)
   const uint64_t want = (uint64_t)m->nt + 12ull * npts + 2ull * CHUNK * nthreads + 64;
   if (want > UINT32_MAX / 4 - 64)
     return tr_error(TR_ERR_NOMEM, "too many tets for the parallel Delaunay build");
-  if (want > m->cap_t)
+  if (want > m->cap_t) {
     TR_CHECK(tr_mesh_reserve_tets(m, (uint32_t)want));
+    tr_advise_hugepages(m->tv, (size_t)m->cap_t * 4 * sizeof *m->tv);
+    tr_advise_hugepages(m->tn, (size_t)m->cap_t * 4 * sizeof *m->tn);
+  }
   if (m->cap_t > S->nown) {
     /* every owner word is 0 between passes: a fresh zeroed array, whose pages the
      * threads fault in as they touch them (a realloc and memset here would zero
@@ -389,6 +412,7 @@ static tr_status reserve(dt *D, shared *S, uint32_t npts, uint32_t nthreads)
     free(S->own);
     S->own = calloc(m->cap_t, sizeof *S->own);
     S->nown = S->own ? m->cap_t : 0;
+    tr_advise_hugepages(S->own, (size_t)S->nown * sizeof *S->own);
     if (!S->own)
       return tr_error(TR_ERR_NOMEM, "out of memory for the tet owners");
   }
@@ -432,6 +456,7 @@ static tr_status pass(dt *D, shared *S, worker *W, uint32_t nthreads, const uint
     const uint32_t a = (uint32_t)((uint64_t)k * j / nthreads);
     const uint32_t b = (uint32_t)((uint64_t)k * (j + 1) / nthreads);
     worker *w = &W[j];
+    w->own = S->own;
     w->pts = (rot ? rot : pts) + a;
     w->npts = b - a;
     w->defer.n = 0;
@@ -516,6 +541,7 @@ tr_status tr_dt_insert_parallel(dt *D, uint32_t from, uint32_t nthreads)
     w->D.stamp = 1;
     w->D.map = malloc(LDIM * LDIM * sizeof *w->D.map);
     w->tag = calloc(D->n ? D->n : 1, sizeof *w->tag);
+    tr_advise_hugepages(w->tag, (size_t)D->n * sizeof *w->tag); /* random access: TLB */
     for (int h = 0; h < 4; h++)
       w->hist[h] = TR_NONE;
     if (!w->D.map || !w->tag) {
@@ -572,6 +598,13 @@ tr_status tr_dt_insert_parallel(dt *D, uint32_t from, uint32_t nthreads)
   }
   tr_u32buf_free(&cur);
   tr_u32buf_free(&left);
+#ifdef TR_DT_STATS
+  unsigned long long ntake = 0, ncas = 0;
+  for (uint32_t j = 0; j < nthreads; j++)
+    ntake += W[j].ntake, ncas += W[j].ncas;
+  fprintf(stderr, "parallel points %u: takes %.2f, compare-and-swaps %.2f per point\n",
+          D->n - from, (double)ntake / (D->n - from), (double)ncas / (D->n - from));
+#endif
   free(S.own);
   return st;
 }

@@ -3,8 +3,9 @@
  * store (tets, neighbours, vertex->tet map, duplicate map) is byte for byte the one of
  * the serial build, and valid (links, exact orientation, Euler, perturbed Delaunay
  * property). Point sets: uniform, on a sphere (nearly cospherical everywhere), an integer
- * grid (exactly cospherical: the perturbation decides), and uniform with duplicates; and
- * the parallel insertion order alone on a set large enough for its threads.
+ * grid (exactly cospherical: the perturbation decides), and uniform with duplicates; the
+ * most threads the build takes (64); and the parallel insertion order alone on a set
+ * large enough for its threads.
  * Usage: test_threads <case>. scripts/tsan.sh runs it under ThreadSanitizer. */
 #include <math.h>
 #include <stdlib.h>
@@ -44,6 +45,26 @@ static int compare(const char *what, const double *xyz, uint32_t n, uint32_t pre
   }
   printf("%s: %u points, %u tets, the same store for 1-4 threads\n", what, n, ref->nt);
   tr_mesh_destroy(ref);
+  return 0;
+}
+
+/* The most threads the build takes (64: the largest thread id, which must fit par.c's
+ * owner byte), each with a few hundred points per pass: the serial store, and valid. */
+static int max_threads(uint32_t n)
+{
+  double *p = malloc(3 * (size_t)n * sizeof *p);
+  for (uint32_t i = 0; i < 3 * n; i++)
+    p[i] = t_unif();
+  struct tr_mesh *ref, *m;
+  EXPECT_OK(tr_delaunay_build(p, n, &ref), "64 threads");
+  EXPECT_OK(tr_delaunay_build_ex(p, n, 64, 64, &m), "64 threads");
+  EXPECT(tr_check_mesh(m, TR_CHK_ALL_DELAUNAY, NULL) == TR_OK, "64 threads: invalid mesh: %s",
+         tr_last_error());
+  EXPECT(same_store(ref, m), "64 threads: the store differs from the serial one");
+  printf("uniform: %u points, %u tets, the same store for 64 threads\n", n, ref->nt);
+  tr_mesh_destroy(m);
+  tr_mesh_destroy(ref);
+  free(p);
   return 0;
 }
 
@@ -150,12 +171,15 @@ int main(int argc, char **argv)
     return grid(22);
   if (!strcmp(c, "duplicates"))
     return duplicates(20000);
+  if (!strcmp(c, "max_threads"))
+    return max_threads(40000);
   if (!strcmp(c, "sort"))
     return sort_order(300000);
   /* scripts/tsan.sh: smaller sets, every kind; the uniform one large enough (> 2^17
    * tets) that the canonical order and the renumbering run on 2 threads */
   if (!strcmp(c, "all"))
-    return uniform(20000) | sphere(6000) | grid(14) | duplicates(6000) | sort_order(140000);
+    return uniform(20000) | sphere(6000) | grid(14) | duplicates(6000) | sort_order(140000) |
+           max_threads(20000);
   fprintf(stderr, "unknown case %s\n", c);
   return 2;
 }
