@@ -64,6 +64,19 @@ static void orient3d_matches_oracle(void)
     tr_qpoint_clear(&q[i]);
 }
 
+/* tr_insphere_p on the five rational points q[0..4]; *want: the GMP oracle's sign. */
+static int insphere_and_oracle(const tr_qpoint *q, int *want)
+{
+  tr_point p[5];
+  const tr_point *pp[5];
+  for (int i = 0; i < 5; i++) {
+    p[i] = tr_pt_q(&q[i]);
+    pp[i] = &p[i];
+  }
+  *want = oracle_insphere(pp);
+  return tr_insphere_p(pp[0], pp[1], pp[2], pp[3], pp[4]);
+}
+
 static void insphere_matches_oracle(void)
 {
   tr_qpoint q[NP];
@@ -74,14 +87,7 @@ static void insphere_matches_oracle(void)
     int sc = scales[it % 4];
     for (int i = 0; i < 5; i++)
       random_qpoint(&q[i], sc);
-    tr_point p[5];
-    const tr_point *pp[5];
-    for (int i = 0; i < 5; i++) {
-      p[i] = tr_pt_q(&q[i]);
-      pp[i] = &p[i];
-    }
-    int want = oracle_insphere(pp);
-    int got = tr_insphere_p(pp[0], pp[1], pp[2], pp[3], pp[4]);
+    int want, got = insphere_and_oracle(q, &want);
     CHECK(got == want, "iteration %d: got %d want %d", it, got, want);
   }
   for (int i = 0; i < NP; i++)
@@ -148,14 +154,7 @@ static void insphere_near_cospherical_matches_oracle(void)
       mpq_add(q[4].c[ax], q[4].c[ax], off);
       tr_qpoint_update(&q[4]);
     }
-    tr_point p[5];
-    const tr_point *pp[5];
-    for (int i = 0; i < 5; i++) {
-      p[i] = tr_pt_q(&q[i]);
-      pp[i] = &p[i];
-    }
-    int want = oracle_insphere(pp);
-    int got = tr_insphere_p(pp[0], pp[1], pp[2], pp[3], pp[4]);
+    int want, got = insphere_and_oracle(q, &want);
     zeros += want == 0;
     inside += want > 0;
     outside += want < 0;
