@@ -57,4 +57,5 @@ def main():
         o.writelines("%.17g %.17g %.17g\n" % p for p in pts)
         o.writelines("3 %d %d %d\n" % t for t in tris)
 
-main()
+if __name__ == "__main__":
+    main()
