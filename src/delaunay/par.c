@@ -5,8 +5,9 @@
  * its range with the serial kernel (bwkernel.h), owning every tet it reads or writes:
  * a tet is taken with an atomic compare-and-swap on own[t] (0 free, else the thread
  * number; a slot of the thread's fresh chunk, which no other thread can reach, by a
- * plain store: 4.1 instead of 10.9 locked instructions per point) and stays the thread's until it holds HOLD_MAX tets, then all are given back
- * (between two insertions): later reads by the same thread cost one load, and only the
+ * plain store: 4.1 instead of 10.9 locked instructions per point) and stays the
+ * thread's until it holds HOLD_MAX tets, then all are given back (between two
+ * insertions): later reads by the same thread cost one load, and only the
  * first touch of a tet per window costs a locked instruction (taking and giving back
  * around every insertion cost ~70 of them per point, +45% CPU over the serial build on
  * 10^6 points), while what a thread holds stays near the points it inserts now (holding

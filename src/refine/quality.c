@@ -82,7 +82,7 @@ int tr_tet_shape(const double *a, const double *b, const double *c, const double
     double cs[6];
     dihedral_cosines(p, cs);
     for (int e = 0; e < 6; e++)
-      dih[e] = 180.0 - acos(cs[e]) * (180.0 / 3.14159265358979323846);
+      dih[e] = tr_dihedral_of_cos(cs[e]);
   }
   return isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]);
 }

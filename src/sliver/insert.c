@@ -304,6 +304,27 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
   return 1;
 }
 
+/* |b - a| */
+static double dist3(const double *a, const double *b)
+{
+  return sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+              (b[2] - a[2]) * (b[2] - a[2]));
+}
+
+/* The normal (b - a) x (e - a) of triangle abe into n; returns its length. */
+static double face_normal(const double *a, const double *b, const double *e, double n[3])
+{
+  double u[3], v[3];
+  for (int j = 0; j < 3; j++) {
+    u[j] = b[j] - a[j];
+    v[j] = e[j] - a[j];
+  }
+  n[0] = u[1] * v[2] - u[2] * v[1];
+  n[1] = u[2] * v[0] - u[0] * v[2];
+  n[2] = u[0] * v[1] - u[1] * v[0];
+  return sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
 /* Heights over a face of the points tried there, in units of the face's mean edge: a
  * good tet on it (0.8) down to a point just off a nearly flat ridge (0.1), where a higher
  * one would leave the domain or see a neighbouring sub-face edge-on. */
@@ -330,16 +351,8 @@ static int off_plane(const double *q[4], const double g[3], double out[][3])
   int best = -1;
   double area = 0, nrm[3] = {0, 0, 0}, len = 0;
   for (int k = 0; k < 4; k++) {
-    const double *a = q[tr_face_vtx[k][0]], *b = q[tr_face_vtx[k][1]], *e = q[tr_face_vtx[k][2]];
-    double u[3], v[3], n[3];
-    for (int j = 0; j < 3; j++) {
-      u[j] = b[j] - a[j];
-      v[j] = e[j] - a[j];
-    }
-    n[0] = u[1] * v[2] - u[2] * v[1];
-    n[1] = u[2] * v[0] - u[0] * v[2];
-    n[2] = u[0] * v[1] - u[1] * v[0];
-    double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    double n[3];
+    double nn = face_normal(q[tr_face_vtx[k][0]], q[tr_face_vtx[k][1]], q[tr_face_vtx[k][2]], n);
     if (nn > area) {
       area = nn;
       best = k;
@@ -348,11 +361,8 @@ static int off_plane(const double *q[4], const double g[3], double out[][3])
   }
   if (best < 0 || !isfinite(area))
     return 0;
-  for (int e = 0; e < 6; e++) {
-    const double *a = q[tr_edge_vtx[e][0]], *b = q[tr_edge_vtx[e][1]];
-    len += sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                (a[2] - b[2]) * (a[2] - b[2])) / 6;
-  }
+  for (int e = 0; e < 6; e++)
+    len += dist3(q[tr_edge_vtx[e][0]], q[tr_edge_vtx[e][1]]) / 6;
   int n = 0;
   for (int h = 0; h < SL_HEIGHTS; h++)
     for (int sg = -1; sg <= 1; sg += 2, n++)
@@ -393,20 +403,11 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, 
       continue;
     const double *a = m->xyz + 3 * (size_t)fv[0], *b = m->xyz + 3 * (size_t)fv[1],
                  *e = m->xyz + 3 * (size_t)fv[2];
-    double u[3], v[3], nrm[3], fc[3], len = 0, nn;
-    for (int j = 0; j < 3; j++) {
-      u[j] = b[j] - a[j];
-      v[j] = e[j] - a[j];
+    double nrm[3], fc[3];
+    for (int j = 0; j < 3; j++)
       fc[j] = (a[j] + b[j] + e[j]) / 3;
-    }
-    nrm[0] = u[1] * v[2] - u[2] * v[1];
-    nrm[1] = u[2] * v[0] - u[0] * v[2];
-    nrm[2] = u[0] * v[1] - u[1] * v[0];
-    nn = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
-    len = (sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) +
-           sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
-           sqrt((e[0] - b[0]) * (e[0] - b[0]) + (e[1] - b[1]) * (e[1] - b[1]) +
-                (e[2] - b[2]) * (e[2] - b[2]))) / 3;
+    const double nn = face_normal(a, b, e, nrm);
+    const double len = (dist3(a, b) + dist3(a, e) + dist3(b, e)) / 3;
     if (!(nn > 0) || !isfinite(nn))
       continue;
     /* the side of vertex k (inside the domain) */
