@@ -150,11 +150,27 @@ int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv);
 
 /* One flip pass over the tets in slot order (flips.c). */
 tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+/* The best flip of tet t (a face or an edge of it) whose new tets' smallest angle beats the
+ * tets it deletes, done (*done = 1) if there is one; sh: scratch for the edge shells. */
+tr_status tr_sliver_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_u32buf *sh, tr_sliver_stats *st,
+                             int *done);
 /* One smoothing pass over the movable vertices in index order (smooth.c). */
 tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+/* Up to SL_MOVES moves of vertex v (if movable) while its star's smallest angle is under
+ * `bound`, each raising it; *moved = 1 if one was made. ball: scratch. */
+tr_status tr_sliver_smooth_vertex(tr_sliver_ctx *c, uint32_t v, double bound, tr_u32buf *ball,
+                                  tr_sliver_stats *st, int *moved);
 /* One insertion pass over the tets in slot order, while st->points < c->point_budget
  * (insert.c); a new vertex is movable. */
 tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+/* A new interior point for tet t as the pass does it (*done = 1; not counted in st), unless
+ * t failed before (c->failed; a failure is remembered). scratch: tr_sliver_insert_scratch()
+ * (free() it; NULL: out of memory). */
+tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done);
+void *tr_sliver_insert_scratch(void);
+/* The final polish (polish.c): the globally worst tets, whatever their angle, get flips,
+ * moves and points (as par->level allows) that raise their local minimum. */
+tr_status tr_sliver_polish(tr_sliver_ctx *c, int level, tr_sliver_stats *st);
 
 /* The stage: m holds only inner tets (tr_refine's output), sub their sub-faces, vkind the
  * vertex origins (tetrec.h's enum tr_vertex_origin; NULL: none known, so only vertices
