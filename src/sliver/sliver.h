@@ -30,6 +30,11 @@
  *    follows, SL_PINNED_ROUNDS times at most, then one more round (the caps next to the
  *    last constraint points). That refinement runs without the ratio bound (the volume
  *    bounds hold), so its new tets may be over the ratio bound.
+ *  - polish.c, last: the rounds only look at tets under the bound, so a small mesh whose
+ *    worst tet is above it kept its refinement angles (icosahedron.off: 20.9 degrees).
+ *    The globally worst tets, whatever their angle, worst first, get the best flip,
+ *    moves of their movable vertices and (level 3) a new interior point, each kept
+ *    under the same rules; a few rounds over the 32 + nt/1024 worst tets.
  *
  * Angles are measured in doubles (src/refine/quality.h, on m->xyz): they only rank
  * choices; every topological decision is exact. Both steps run in fixed passes in slot /
