@@ -234,31 +234,43 @@ static tr_status apply(tr_sliver_ctx *c, const cand *x, tr_sliver_stats *st)
   return TR_OK;
 }
 
+tr_status tr_sliver_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_u32buf *sh, tr_sliver_stats *st,
+                             int *done)
+{
+  struct tr_mesh *m = c->m;
+  tr_status s = TR_OK;
+  cand best, x;
+  int have = 0;
+  *done = 0;
+  best.newmin = -1;
+  for (int e = 0; e < 6 && s == TR_OK; e++) {
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    int ok;
+    s = edge_cand(c, t, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]], best.newmin, sh, &x, &ok);
+    if (ok && x.newmin > best.newmin)
+      best = x, have = 1;
+  }
+  for (int k = 0; k < 4 && s == TR_OK; k++)
+    if (face_cand(c, t, k, best.newmin, &x) && x.newmin > best.newmin)
+      best = x, have = 1;
+  if (have && s == TR_OK) {
+    s = apply(c, &best, st);
+    *done = s == TR_OK;
+  }
+  return s;
+}
+
 tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
 {
   struct tr_mesh *m = c->m;
   tr_u32buf sh = {0};
   tr_status s = TR_OK;
-  cand best, x;
   uint32_t nt = m->nt; /* tets made by this pass wait for the next */
   for (uint32_t t = 0; t < nt && s == TR_OK; t++) {
     if (!tr_tet_is_real(m, t) || !(tet_min(c, t, NULL) < c->bound))
       continue;
-    int have = 0;
-    best.newmin = -1;
-    for (int e = 0; e < 6 && s == TR_OK; e++) {
-      const uint32_t *v = m->tv + 4 * (size_t)t;
-      int ok;
-      s = edge_cand(c, t, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]], best.newmin, &sh, &x,
-                    &ok);
-      if (ok && x.newmin > best.newmin)
-        best = x, have = 1;
-    }
-    for (int k = 0; k < 4 && s == TR_OK; k++)
-      if (face_cand(c, t, k, best.newmin, &x) && x.newmin > best.newmin)
-        best = x, have = 1;
-    if (have && s == TR_OK)
-      s = apply(c, &best, st);
+    int done;
+    s = tr_sliver_flip_tet(c, t, &sh, st, &done);
   }
   tr_u32buf_free(&sh);
   return s;

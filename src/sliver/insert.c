@@ -448,11 +448,34 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, 
   return TR_OK;
 }
 
+tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done)
+{
+  trial *z = scratch;
+  uint32_t key[4];
+  *done = 0;
+  memcpy(key, c->m->tv + 4 * (size_t)t, sizeof key);
+  for (int i = 1; i < 4; i++) /* sorted: the tet whatever its rotation */
+    for (int j = i; j > 0 && key[j - 1] > key[j]; j--) {
+      uint32_t x = key[j];
+      key[j] = key[j - 1];
+      key[j - 1] = x;
+    }
+  if (tr_vtmap_get(&c->failed, 4, key) != TR_VTMAP_NONE)
+    return TR_OK;
+  TR_CHECK(insert_at(c, t, &z[0], &z[1], done));
+  return *done ? TR_OK : tr_vtmap_set(&c->failed, 4, key, 0);
+}
+
+void *tr_sliver_insert_scratch(void)
+{
+  return malloc(2 * sizeof(trial));
+}
+
 tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
 {
   struct tr_mesh *m = c->m;
   tr_status s = TR_OK;
-  trial *z = malloc(2 * sizeof *z);
+  void *z = tr_sliver_insert_scratch();
   if (!z)
     return tr_error(TR_ERR_NOMEM, "out of memory for the sliver insertion");
   uint32_t nt = m->nt; /* new tets in slots past nt wait for the next pass (freed slots
@@ -460,21 +483,9 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
   for (uint32_t t = 0; t < nt && s == TR_OK && st->points < c->point_budget; t++) {
     if (!tr_tet_is_real(m, t) || !(tr_sliver_tet_min(c, t, NULL) < c->insert_bound))
       continue;
-    uint32_t key[4];
-    memcpy(key, m->tv + 4 * (size_t)t, sizeof key);
-    for (int i = 1; i < 4; i++) /* sorted: the tet whatever its rotation */
-      for (int j = i; j > 0 && key[j - 1] > key[j]; j--) {
-        uint32_t x = key[j];
-        key[j] = key[j - 1];
-        key[j - 1] = x;
-      }
-    if (tr_vtmap_get(&c->failed, 4, key) != TR_VTMAP_NONE)
-      continue;
     int done;
-    s = insert_at(c, t, &z[0], &z[1], &done);
+    s = tr_sliver_insert_tet(c, t, z, &done);
     st->points += (uint64_t)done;
-    if (s == TR_OK && !done)
-      s = tr_vtmap_set(&c->failed, 4, key, 0);
   }
   free(z);
   return s;

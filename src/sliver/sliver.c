@@ -316,6 +316,8 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
       s = round_of(&c, par, st);
     }
   }
+  if (s == TR_OK) /* the worst tets, also those over the bound */
+    s = tr_sliver_polish(&c, par->level, st);
   tr_sliver_ctx_free(&c);
   return s;
 }

@@ -30,6 +30,11 @@
  *    follows, SL_PINNED_ROUNDS times at most, then one more round (the caps next to the
  *    last constraint points). That refinement runs without the ratio bound (the volume
  *    bounds hold), so its new tets may be over the ratio bound.
+ *  - polish.c, last: the rounds only look at tets under the bound, so a small mesh whose
+ *    worst tet is above it kept its refinement angles (icosahedron.off: 20.9 degrees).
+ *    The globally worst tets, whatever their angle, worst first, get the best flip,
+ *    moves of their movable vertices and (level 3) a new interior point, each kept
+ *    under the same rules; a few rounds over the 32 + nt/1024 worst tets.
  *
  * Angles are measured in doubles (src/refine/quality.h, on m->xyz): they only rank
  * choices; every topological decision is exact. Both steps run in fixed passes in slot /
@@ -150,11 +155,27 @@ int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv);
 
 /* One flip pass over the tets in slot order (flips.c). */
 tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+/* The best flip of tet t (a face or an edge of it) whose new tets' smallest angle beats the
+ * tets it deletes, done (*done = 1) if there is one; sh: scratch for the edge shells. */
+tr_status tr_sliver_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_u32buf *sh, tr_sliver_stats *st,
+                             int *done);
 /* One smoothing pass over the movable vertices in index order (smooth.c). */
 tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+/* Up to SL_MOVES moves of vertex v (if movable) while its star's smallest angle is under
+ * `bound`, each raising it; *moved = 1 if one was made. ball: scratch. */
+tr_status tr_sliver_smooth_vertex(tr_sliver_ctx *c, uint32_t v, double bound, tr_u32buf *ball,
+                                  tr_sliver_stats *st, int *moved);
 /* One insertion pass over the tets in slot order, while st->points < c->point_budget
  * (insert.c); a new vertex is movable. */
 tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+/* A new interior point for tet t as the pass does it (*done = 1; not counted in st), unless
+ * t failed before (c->failed; a failure is remembered). scratch: tr_sliver_insert_scratch()
+ * (free() it; NULL: out of memory). */
+tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done);
+void *tr_sliver_insert_scratch(void);
+/* The final polish (polish.c): the globally worst tets, whatever their angle, get flips,
+ * moves and points (as par->level allows) that raise their local minimum. */
+tr_status tr_sliver_polish(tr_sliver_ctx *c, int level, tr_sliver_stats *st);
 
 /* The stage: m holds only inner tets (tr_refine's output), sub their sub-faces, vkind the
  * vertex origins (tetrec.h's enum tr_vertex_origin; NULL: none known, so only vertices

@@ -191,37 +191,44 @@ static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, doub
   }
 }
 
-tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
+tr_status tr_sliver_smooth_vertex(tr_sliver_ctx *c, uint32_t v, double bound, tr_u32buf *ball,
+                                  tr_sliver_stats *st, int *moved)
 {
   struct tr_mesh *m = c->m;
+  *moved = 0;
+  if (!c->movable[v])
+    return TR_OK;
+  TR_CHECK(tr_ball(m, v, 0, ball));
+  if (!ball->n || !star_closed(m, ball, v))
+    return TR_OK;
+  for (int it = 0; it < SL_MOVES; it++) {
+    size_t worst = 0;
+    double q0 = star_min(c, ball, &worst);
+    if (!(q0 < bound))
+      break;
+    double to[3];
+    int ok;
+    move(c, ball, v, q0, worst, to, &ok);
+    if (!ok)
+      break;
+    memcpy(m->xyz + 3 * (size_t)v, to, sizeof to);
+    for (size_t i = 0; i < ball->n; i++)
+      tr_sliver_forget(c, ball->a[i]);
+    if (m->vq && m->vq[v]) /* the exact point is the double from now on */
+      tr_qpoint_set_d(m->vq[v], to);
+    *moved = 1;
+  }
+  st->smoothed += (uint64_t)*moved;
+  return TR_OK;
+}
+
+tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
+{
   tr_u32buf ball = {0};
   tr_status s = TR_OK;
-  for (uint32_t v = 0; v < m->nv && s == TR_OK; v++) {
-    if (!c->movable[v])
-      continue;
-    if ((s = tr_ball(m, v, 0, &ball)) != TR_OK)
-      break;
-    if (!ball.n || !star_closed(m, &ball, v))
-      continue;
-    int moved = 0;
-    for (int it = 0; it < SL_MOVES; it++) {
-      size_t worst = 0;
-      double q0 = star_min(c, &ball, &worst);
-      if (!(q0 < c->bound))
-        break;
-      double to[3];
-      int ok;
-      move(c, &ball, v, q0, worst, to, &ok);
-      if (!ok)
-        break;
-      memcpy(m->xyz + 3 * (size_t)v, to, sizeof to);
-      for (size_t i = 0; i < ball.n; i++)
-        tr_sliver_forget(c, ball.a[i]);
-      if (m->vq && m->vq[v]) /* the exact point is the double from now on */
-        tr_qpoint_set_d(m->vq[v], to);
-      moved = 1;
-    }
-    st->smoothed += (uint64_t)moved;
+  for (uint32_t v = 0; v < c->m->nv && s == TR_OK; v++) {
+    int moved;
+    s = tr_sliver_smooth_vertex(c, v, c->bound, &ball, st, &moved);
   }
   tr_u32buf_free(&ball);
   return s;
