@@ -45,6 +45,8 @@ typedef struct tr_refine_params {
   const double *region_max_volume;
   uint32_t nregion_bounds;
   uint64_t budget;     /* points the stage may add; 0: tr_refine_default_budget */
+  double subface_ratio; /* sub-faces over this radius-edge ratio are split for their shape
+                           (subshape.c); 0: off */
   int verbose;
 } tr_refine_params;
 
