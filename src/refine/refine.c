@@ -233,7 +233,8 @@ static tr_status split_facet(rf_ctx *c, uint32_t f)
   TR_CHECK(rf_facet_split_point(c, f, &q, &where, &encseg));
   if (q && encseg != TR_NONE) {
     /* the circumcentre lies beyond a sub-segment: split that one, unless it cannot be or
-     * is protected near a small angle; then f is left as it is */
+     * is protected near a small angle (or, for a sub-face split for its shape, unless
+     * rf_subshape_may_split refuses it); then f is left as it is */
     tr_point p = tr_pt_q(q), a = tr_mesh_point(m, c->ssv[2 * (size_t)encseg]),
              b = tr_mesh_point(m, c->ssv[2 * (size_t)encseg + 1]);
     int split = !c->ssnosplit[encseg] &&

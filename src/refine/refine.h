@@ -19,6 +19,9 @@
  * it is coned from is strictly visible from the point, so every new tet is positive
  * whatever the mesh was (recovery leaves it constrained, not Delaunay).
  *
+ * With subface_ratio S > 0, a sub-face whose own radius-edge ratio is over S is split too
+ * (subshape.c), unless a small input angle forces its shape.
+ *
  * Termination: sub-segments next to an input vertex are split on concentric shells; a
  * bad tet whose shortest edge joins points on two input edges that meet at an input
  * vertex under less than 60 degrees is left as it is (its quality is forced by that

@@ -117,13 +117,14 @@ int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t ow
 
 /* ---- subshape.c ---- */
 /* 1 iff sub-face f's radius-edge ratio exceeds bound, its shortest edge taken at least as
- * long as its ends' insertion radii, and its smallest angle is not an input corner. */
+ * long as its ends' insertion radii, its smallest angle is not an input corner and its
+ * shortest edge does not join two constraints meeting at a small angle. */
 int rf_subface_shape_bad(const rf_ctx *c, uint32_t f, double bound);
 /* Queues (c->qface) the sub-faces made since the last call that are bad for their shape. */
 tr_status rf_subshape_scan(rf_ctx *c);
-/* 1 iff sub-segment g, encroached by f's split point and protected near a sharp corner of
- * f's own input triangle, may be split all the same (its half is no shorter than f's
- * shortest edge). */
+/* 1 iff sub-segment g, on an edge of f's input triangle, that f's split point encroaches
+ * or lies beyond, may be split for f although protected near a sharp corner: a vertex of
+ * f encroaches it, or its half is no shorter than f's shortest edge. */
 int rf_subshape_may_split(const rf_ctx *c, uint32_t f, uint32_t g);
 
 /* ---- cavity.c ---- */
