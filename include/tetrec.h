@@ -228,6 +228,10 @@ typedef struct tr_options {
   int threads; /* threads for the Delaunay stage: 0 (default) every online core, N > 0 at
                   most N (64 at most are used); the output is the same byte for byte for
                   any value. Negative: TR_ERR_USAGE */
+  double quality_subface_ratio; /* with refinement: sub-faces whose radius-edge ratio
+                                   (circumradius / shortest edge) is above it are split for
+                                   their shape (src/refine/subshape.c), unless a small
+                                   input angle forces it; 0 (default): off, else >= 1 */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);

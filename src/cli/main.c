@@ -114,6 +114,10 @@ static const struct option {
      "D (degrees, at most 70): a minimum dihedral angle that sliver\n"
      "removal works towards (tets under it get flips, moves and\n"
      "points); a warning counts the tets left under it"},
+    {"--subface-quality", "S", C_MESH,
+     "with refinement: also split the boundary triangles whose\n"
+     "radius-edge ratio is above S (>= 1), except where a small\n"
+     "input angle forces it (default: off)"},
     {"--max-volume", "V", C_MESH, "refinement until every tet's volume is at most V"},
     {"-a", "V", C_MESH, "the same as --max-volume (TetGen's switch)"},
     {"--refine-budget", "N", C_MESH,
@@ -153,7 +157,7 @@ typedef struct {
   int threads; /* 0: every core */
   int msh_version; /* 41 or 22 */
   int optimize; /* sliver removal level + 1, 0: the default */
-  double quality, quality_dih, max_volume; /* 0: off */
+  double quality, quality_dih, max_volume, subface_quality; /* 0: off */
   uint64_t refine_budget;                  /* 0: the default */
   uint64_t round_budget; /* 0: the default */
   int recovery;          /* tr_options.recovery */
@@ -285,6 +289,12 @@ static tr_status set_option(args *a, const char *name, const char *v)
       return tr_error(TR_ERR_USAGE, "--quality reads R or R/D (numbers), not '%s'", v);
     a->quality = r;
     a->quality_dih = d;
+  } else if (!strcmp(name, "--subface-quality")) {
+    char *end;
+    double x = strtod(v, &end);
+    if (!*v || *end || !(x >= 1) || !isfinite(x))
+      return tr_error(TR_ERR_USAGE, "%s needs a ratio of at least 1, not '%s'", name, v);
+    a->subface_quality = x;
   } else if (!strcmp(name, "--max-volume") || !strcmp(name, "-a")) {
     char *end;
     double x = strtod(v, &end);
@@ -492,6 +502,7 @@ static int cmd_mesh(const args *a)
   opt.keep_surface = a->keep_surface;
   opt.quality_ratio = a->quality;
   opt.quality_min_dihedral = a->quality_dih;
+  opt.quality_subface_ratio = a->subface_quality;
   opt.max_volume = a->max_volume;
   opt.refine_budget = a->refine_budget;
   if (a->optimize)

@@ -233,11 +233,15 @@ static tr_status split_facet(rf_ctx *c, uint32_t f)
   TR_CHECK(rf_facet_split_point(c, f, &q, &where, &encseg));
   if (q && encseg != TR_NONE) {
     /* the circumcentre lies beyond a sub-segment: split that one, unless it cannot be or
-     * is protected near a small angle; then f is left as it is */
+     * is protected near a small angle (or, for a sub-face split for its shape, unless
+     * rf_subshape_may_split refuses it); then f is left as it is */
     tr_point p = tr_pt_q(q), a = tr_mesh_point(m, c->ssv[2 * (size_t)encseg]),
              b = tr_mesh_point(m, c->ssv[2 * (size_t)encseg + 1]);
-    int split = !c->ssnosplit[encseg] && rf_in_diametral(&a, &b, &p) &&
-                !rf_protected_at(c, 1, encseg, RF_FACET, c->sftri[f], q->near);
+    int split = !c->ssnosplit[encseg] &&
+                ((rf_in_diametral(&a, &b, &p) &&
+                  !rf_protected_at(c, 1, encseg, RF_FACET, c->sftri[f], q->near)) ||
+                 (c->shape_on && rf_subface_shape_bad(c, f, c->shape_bound) &&
+                  rf_subshape_may_split(c, f, encseg)));
     tr_qpoint_clear(q);
     free(q);
     if (split) {
@@ -279,7 +283,8 @@ static tr_status split_facet(rf_ctx *c, uint32_t f)
       tr_point a = tr_mesh_point(m, c->ssv[2 * (size_t)g]), b = tr_mesh_point(m, c->ssv[2 * (size_t)g + 1]);
       if (!rf_in_diametral(&a, &b, &p))
         continue;
-      if (c->ssnosplit[g] || rf_protected_at(c, 1, g, RF_FACET, c->sftri[f], p.d))
+      if (c->ssnosplit[g] || (rf_protected_at(c, 1, g, RF_FACET, c->sftri[f], p.d) &&
+                              !(c->shape_on && rf_subshape_may_split(c, f, g))))
         blocked = 1;
       else {
         st = tr_u32buf_push(&c->qseg, g);
@@ -530,6 +535,7 @@ static tr_status run(rf_ctx *c)
 {
   struct tr_mesh *m = c->m;
   for (;;) {
+    TR_CHECK(rf_subshape_scan(c));
     if (c->st->points >= c->par.budget && (left(&c->qseg, c->hseg, 1) || left(&c->qface, c->hface, 1) ||
                                             left(&c->qtet, c->htet, 5)))
       return tr_error(TR_ERR_NOMEM,
@@ -643,6 +649,10 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
   rf_ctx c;
   ctx_setup(&c, m, plc, par, st);
   tr_status s = rf_subs_init(&c, sub);
+  /* off by default: on CGAL's models it costs more CPU and tets than it gains
+   * (subshape.c) */
+  c.shape_on = par->subface_ratio > 0;
+  c.shape_bound = par->subface_ratio;
   if (s == TR_OK)
     s = seed_all(&c);
   if (s == TR_OK)

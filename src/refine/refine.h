@@ -19,6 +19,9 @@
  * it is coned from is strictly visible from the point, so every new tet is positive
  * whatever the mesh was (recovery leaves it constrained, not Delaunay).
  *
+ * With subface_ratio S > 0, a sub-face whose own radius-edge ratio is over S is split too
+ * (subshape.c), unless a small input angle forces its shape.
+ *
  * Termination: sub-segments next to an input vertex are split on concentric shells; a
  * bad tet whose shortest edge joins points on two input edges that meet at an input
  * vertex under less than 60 degrees is left as it is (its quality is forced by that
@@ -45,6 +48,8 @@ typedef struct tr_refine_params {
   const double *region_max_volume;
   uint32_t nregion_bounds;
   uint64_t budget;     /* points the stage may add; 0: tr_refine_default_budget */
+  double subface_ratio; /* sub-faces over this radius-edge ratio are split for their shape
+                           (subshape.c); 0: off */
   int verbose;
 } tr_refine_params;
 

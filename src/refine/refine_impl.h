@@ -50,6 +50,11 @@ typedef struct rf_ctx {
   uint8_t *tstate; /* cavity state per tet slot (cavity.c), 0 at rest */
   uint32_t captstate;
   uint32_t split_seg; /* the sub-segment the point being inserted splits, or TR_NONE */
+  /* sub-faces split for their shape (subshape.c): on in tr_refine with a ratio bound; the
+   * sub-faces from shape_next on are not checked yet */
+  int shape_on;
+  double shape_bound;
+  uint32_t shape_next;
 } rf_ctx;
 
 /* ---- subs.c ---- */
@@ -109,6 +114,18 @@ int rf_protected(const rf_ctx *c, int seg, uint32_t id, uint32_t v);
 /* The same for a point at pw on a constraint (kind RF_*, owner own) not inserted yet. */
 int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t own,
                     const double *pw);
+
+/* ---- subshape.c ---- */
+/* 1 iff sub-face f's radius-edge ratio exceeds bound, its shortest edge taken at least as
+ * long as its ends' insertion radii, its smallest angle is not an input corner and its
+ * shortest edge does not join two constraints meeting at a small angle. */
+int rf_subface_shape_bad(const rf_ctx *c, uint32_t f, double bound);
+/* Queues (c->qface) the sub-faces made since the last call that are bad for their shape. */
+tr_status rf_subshape_scan(rf_ctx *c);
+/* 1 iff sub-segment g, on an edge of f's input triangle, that f's split point encroaches
+ * or lies beyond, may be split for f although protected near a sharp corner: a vertex of
+ * f encroaches it, or its half is no shorter than f's shortest edge. */
+int rf_subshape_may_split(const rf_ctx *c, uint32_t f, uint32_t g);
 
 /* ---- cavity.c ---- */
 /* Straight walk from tet t towards p; *found = tet whose closure holds p, or TR_NONE; if

@@ -23,6 +23,10 @@ tr_status tr_refine_check_options(const tr_options *opt)
     return tr_error(TR_ERR_USAGE, "radius-edge bound %g: it must be at least 1 (the regular "
                     "tet has 0.61; bounds below 1 cannot be met in general)",
                     opt->quality_ratio);
+  if (opt->quality_subface_ratio != 0 &&
+      !(opt->quality_subface_ratio >= 1 && isfinite(opt->quality_subface_ratio)))
+    return tr_error(TR_ERR_USAGE, "sub-face radius-edge bound %g: it must be at least 1",
+                    opt->quality_subface_ratio);
   if (opt->max_volume != 0 && !(opt->max_volume > 0 && isfinite(opt->max_volume)))
     return tr_error(TR_ERR_USAGE, "maximum volume %g: it must be positive", opt->max_volume);
   return TR_OK;
@@ -96,6 +100,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   tr_refine_params par;
   memset(&par, 0, sizeof par);
   par.ratio = opt->quality_ratio;
+  par.subface_ratio = opt->quality_subface_ratio;
   par.max_volume = opt->max_volume;
   par.verbose = opt->verbose;
   /* the smallest bound of all sizes the default budget */
