@@ -45,6 +45,7 @@ typedef struct tr_refine_params {
   const double *region_max_volume;
   uint32_t nregion_bounds;
   uint64_t budget;     /* points the stage may add; 0: tr_refine_default_budget */
+  int keep_edges;      /* every input edge stays a constraint: no merged facets (facets.h) */
   int verbose;
 } tr_refine_params;
 
@@ -55,6 +56,7 @@ typedef struct tr_refine_stats {
   uint64_t skipped_close;   /* bad tets left: circumcentre within a new vertex's
                                insertion radius (refine.c, too_close) */
   uint64_t skipped_other;   /* bad tets left: circumcentre blocked / refused */
+  uint32_t merged_edges;    /* input edges inside merged planar facets: no constraints */
 } tr_refine_stats;
 
 /* The default budget: 100 points per input point plus 100,000, plus, with a volume bound,
