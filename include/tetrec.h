@@ -138,7 +138,11 @@ const int32_t *tr_mesh_tet_regions(const tr_mesh *mesh);
 uint32_t tr_mesh_num_boundary_faces(const tr_mesh *mesh);
 const uint32_t *tr_mesh_boundary_faces(const tr_mesh *mesh);
 const int32_t *tr_mesh_boundary_markers(const tr_mesh *mesh);
-/* The input triangle of each boundary face (index in the PLC as meshed, see below). */
+/* The input triangle of each boundary face (index in the PLC as meshed, see below). Under
+ * refinement, exactly coplanar neighbouring triangles form one planar facet
+ * (tr_options.keep_edges) and a face may straddle the edges inside it: its triangle is
+ * then the facet's triangle that holds the face's exact centroid (the smallest index on
+ * a tie); the face lies in the facet, its marker is the facet's. */
 const uint32_t *tr_mesh_boundary_triangles(const tr_mesh *mesh);
 /* The exact position of vertex v as text "x y z", each coordinate a rational num/den in
  * lowest terms, base 10, den > 0 (an integer when den is 1): for an input vertex the
@@ -152,7 +156,8 @@ tr_status tr_mesh_point_exact(const tr_mesh *mesh, uint32_t v, char **xyz_text);
 enum tr_vertex_origin {
   TR_VERTEX_INPUT = 0,       /* index = the input vertex */
   TR_VERTEX_ON_EDGE = 1,     /* Steiner point on input edge `index` (tr_mesh_input_edge) */
-  TR_VERTEX_ON_TRIANGLE = 2, /* Steiner point inside input triangle `index` */
+  TR_VERTEX_ON_TRIANGLE = 2, /* Steiner point inside input triangle `index` (in a merged
+                                planar facet: the facet's smallest such triangle) */
   TR_VERTEX_INTERIOR = 3     /* Steiner point on no input edge or triangle; index = v */
 };
 tr_status tr_mesh_vertex_origin(const tr_mesh *mesh, uint32_t v, int *kind, uint32_t *index);
@@ -232,6 +237,12 @@ typedef struct tr_options {
                                    (circumradius / shortest edge) is above it are split for
                                    their shape (src/refine/subshape.c), unless a small
                                    input angle forces it; 0 (default): off, else >= 1 */
+  int keep_edges; /* refinement (quality_ratio / max_volume): 0 (default) merges input
+                     triangles that are exactly coplanar (exact orient3d), share a
+                     manifold edge, have the same marker and lie on opposite sides of it
+                     into one planar facet, whose inner edges are no constraints: sub-faces
+                     may cross them (they need not be chains of mesh edges; the facet is
+                     covered exactly). 1: every input edge stays a chain of mesh edges */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
@@ -268,6 +279,9 @@ typedef struct tr_stats {
   /* sliver removal (src/sliver/sliver.h): points it added (none: it flips and moves
    * interior points only), flips it made, interior points it moved */
   uint64_t points_added_for_sliver, sliver_flips, sliver_points_smoothed;
+  /* input edges inside merged planar facets under refinement (tr_options.keep_edges):
+   * no constraints, so not kept as chains of mesh edges */
+  uint64_t input_edges_merged;
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

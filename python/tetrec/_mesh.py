@@ -180,7 +180,7 @@ def validate(points, triangles=None, *, markers=None):
 
 def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
                    keep_surface=False, keep_steiner=False, quality=None, max_volume=None,
-                   optimize=None, exact=False,
+                   optimize=None, keep_edges=False, exact=False,
                    smooth=True, round_budget=None, verbose=0, progress=None, threads=0):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
@@ -197,6 +197,9 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     radius-edge bound of constrained Delaunay refinement and a minimum dihedral angle D in
     degrees that sliver removal works towards (a warning counts the tets left under it);
     max_volume: refinement until every tet's volume is at most it.
+    keep_edges: under refinement, every input edge stays a chain of mesh edges (by
+    default the edges between exactly coplanar input triangles of the same marker are
+    merged away, and refinement's sub-faces may cross them).
     optimize: sliver removal after refinement, 0 off, 1 flips, 2 flips and smoothing of
     interior points, 3 (default) also new interior points at slivers.
     Options the C library does not offer raise NotImplementedError
@@ -225,6 +228,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
         options["keep_surface"] = keep_surface
     if keep_steiner:
         options["keep_steiner"] = keep_steiner
+    if keep_edges:
+        options["keep_edges"] = keep_edges
     if not smooth:
         options["smooth"] = 0
     if verbose:

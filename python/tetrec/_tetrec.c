@@ -147,7 +147,7 @@ static int progress_hook(void *user, const char *stage, double fraction)
  * key here and add its name to SUPPORTED_OPTIONS below. */
 static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
-    "max_volume", "optimize",
+    "max_volume", "optimize", "keep_edges",
     "holes", "regions", "threads", NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
@@ -219,12 +219,15 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         return -1;
       }
       opt->threads = (int)x;
-    } else if (!strcmp(k, "keep_surface") || !strcmp(k, "keep_steiner")) {
+    } else if (!strcmp(k, "keep_surface") || !strcmp(k, "keep_steiner") ||
+               !strcmp(k, "keep_edges")) {
       int x = PyObject_IsTrue(value);
       if (x < 0)
         return -1;
       if (!strcmp(k, "keep_surface"))
         opt->keep_surface = x;
+      else if (!strcmp(k, "keep_edges"))
+        opt->keep_edges = x;
       else
         opt->keep_steiner = x;
     } else if (!strcmp(k, "quality")) {

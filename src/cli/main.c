@@ -95,6 +95,10 @@ static const struct option {
      "output are exactly the input triangles (no smoothing either);\n"
      "fails naming the point where this cannot be done"},
     {"-Y", NULL, C_MESH, "the same as --keep-surface (TetGen's switch)"},
+    {"--keep-edges", NULL, C_MESH,
+     "under refinement, keep every input edge a chain of mesh\n"
+     "edges (by default edges between exactly coplanar input\n"
+     "triangles with the same marker are merged away)"},
     {"--keep-steiner", NULL, C_MESH,
      "leave the recovery's Steiner points where they are (by\n"
      "default the ones on the surface are removed or moved inside\n"
@@ -153,7 +157,7 @@ typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
   unsigned cmd_bit;
   int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
-  int keep_surface, keep_steiner, progress;
+  int keep_surface, keep_steiner, progress, keep_edges;
   int threads; /* 0: every core */
   int msh_version; /* 41 or 22 */
   int optimize; /* sliver removal level + 1, 0: the default */
@@ -309,6 +313,8 @@ static tr_status set_option(args *a, const char *name, const char *v)
   }
   else if (!strcmp(name, "--keep-surface") || !strcmp(name, "-Y"))
     a->keep_surface = 1;
+  else if (!strcmp(name, "--keep-edges"))
+    a->keep_edges = 1;
   else if (!strcmp(name, "--keep-steiner"))
     a->keep_steiner = 1;
   else if (!strcmp(name, "--recovery")) {
@@ -500,6 +506,7 @@ static int cmd_mesh(const args *a)
   opt.strict_doubles = a->strict_doubles;
   opt.recovery = a->recovery;
   opt.keep_surface = a->keep_surface;
+  opt.keep_edges = a->keep_edges;
   opt.quality_ratio = a->quality;
   opt.quality_min_dihedral = a->quality_dih;
   opt.quality_subface_ratio = a->subface_quality;

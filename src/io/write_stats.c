@@ -26,7 +26,8 @@ static const field counts[] = {
     FIELD(inclusions), FIELD(steiner_on_edges), FIELD(steiner_on_facets), FIELD(steiner_interior),
     FIELD(steiner_removed), FIELD(steiner_relocated), FIELD(peak_memory_bytes),
     FIELD(points_added_for_quality), FIELD(tets_dihedral_below_5), FIELD(tets_dihedral_below_10),
-    FIELD(points_added_for_sliver), FIELD(sliver_flips), FIELD(sliver_points_smoothed)};
+    FIELD(points_added_for_sliver), FIELD(sliver_flips), FIELD(sliver_points_smoothed),
+    FIELD(input_edges_merged)};
 /* double fields */
 static const field reals[] = {FIELD(total_seconds), FIELD(recovery_seconds),
                               FIELD(double_deviation), FIELD(min_dihedral),

@@ -6,6 +6,7 @@
 
 #include "check.h"
 #include "conform.h"
+#include "core/facets.h"
 #include "input/validate.h"
 #include "predicates.h"
 
@@ -181,6 +182,19 @@ static int cmp_edge(const void *pa, const void *pb)
   return x->b < y->b ? -1 : x->b > y->b;
 }
 
+/* An input edge; inner: it lies inside a merged planar facet (core/facets.h). */
+typedef struct {
+  uint32_t a, b;
+  uint32_t inner;
+} iedge;
+static int cmp_iedge(const void *pa, const void *pb)
+{
+  const iedge *x = pa, *y = pb;
+  if (x->a != y->a)
+    return x->a < y->a ? -1 : 1;
+  return x->b < y->b ? -1 : x->b > y->b;
+}
+
 /* Walks the input edge from mesh vertex s to mesh vertex e through collinear mesh edges,
  * each step strictly closer to e. */
 static int chain_ok(const struct tr_mesh *m, const uint32_t *astart, const edge *adj,
@@ -218,6 +232,91 @@ static int chain_ok(const struct tr_mesh *m, const uint32_t *astart, const edge 
   return 0;
 }
 
+/* Is some vertex list vtri[vstart[v]..] entry a triangle of facet g? */
+static int in_facet_list(const tr_facets *F, const uint32_t *vstart, const uint32_t *vtri,
+                         uint32_t v, uint32_t g)
+{
+  for (uint32_t y = vstart[v]; y < vstart[v + 1]; y++)
+    if (F->group[vtri[y]] == g)
+      return 1;
+  return 0;
+}
+
+/* Mesh face f (its first vertex in triangle tt of a merged facet g): *in = it lies in the
+ * facet, which it then adds to nothing yet: its projected area along g's axis is left in
+ * a2. It lies in the facet when its three vertices do (so it lies in the plane) and its
+ * exact centroid lies in the closed union of the facet's triangles; the mesh being a
+ * tetrahedralization whose faces cannot cross the facet's boundary edges (chains of
+ * mesh edges, checked), the face then lies in the facet. Once per facet and face
+ * (done[]: the facets already asked about for f). */
+static tr_status merged_face(const struct tr_mesh *m, const struct tr_plc *plc,
+                             const tr_facets *F, const grid *G, const int *axes,
+                             const uint32_t *vstart, const uint32_t *vtri, const uint32_t f[3],
+                             uint32_t tt, uint32_t *done, uint32_t *ndone, int *in, mpq_t a2,
+                             mpq_t *tmp)
+{
+  uint32_t g = F->group[tt];
+  *in = 0;
+  for (uint32_t i = 0; i < *ndone; i++)
+    if (done[i] == g)
+      return TR_OK;
+  if (*ndone < 64)
+    done[(*ndone)++] = g;
+  if (!in_facet_list(F, vstart, vtri, f[1], g) || !in_facet_list(F, vstart, vtri, f[2], g))
+    return TR_OK;
+  tr_point p[3];
+  for (int i = 0; i < 3; i++)
+    p[i] = tr_mesh_point(m, f[i]);
+  /* all three in one triangle of the facet: in it */
+  int one = 0;
+  for (uint32_t x = vstart[f[0]]; x < vstart[f[0] + 1] && !one; x++) {
+    uint32_t t = vtri[x];
+    if (F->group[t] != g)
+      continue;
+    int in1 = 0, in2 = 0;
+    for (uint32_t y = vstart[f[1]]; y < vstart[f[1] + 1] && !in1; y++)
+      in1 = vtri[y] == t;
+    for (uint32_t y = vstart[f[2]]; y < vstart[f[2] + 1] && !in2; y++)
+      in2 = vtri[y] == t;
+    one = in1 && in2;
+  }
+  if (!one) {
+    tr_qpoint q;
+    tr_qpoint_init(&q);
+    for (int i = 0; i < 3; i++) {
+      mpq_set_ui(q.c[i], 0, 1);
+      for (int j = 0; j < 3; j++) {
+        tr_point_get_q(&p[j], i, tmp[0]);
+        mpq_add(q.c[i], q.c[i], tmp[0]);
+      }
+      mpq_set_ui(tmp[0], 3, 1);
+      mpq_div(q.c[i], q.c[i], tmp[0]);
+    }
+    tr_qpoint_update(&q);
+    tr_point c = tr_pt_q(&q);
+    int a[3], b[3];
+    for (int k = 0; k < 3; k++) {
+      a[k] = cell(G, q.lo[k], k);
+      b[k] = cell(G, q.hi[k], k);
+    }
+    for (int i = a[0]; i <= b[0] && !one; i++)
+      for (int j = a[1]; j <= b[1] && !one; j++)
+        for (int l = a[2]; l <= b[2] && !one; l++) {
+          size_t cc = ((size_t)i * G->g + j) * G->g + l;
+          for (uint32_t x = G->start[cc]; x < G->start[cc + 1] && !one; x++) {
+            uint32_t t = G->tri[x];
+            one = F->group[t] == g && in_tri(plc, t, axes[t], &c);
+          }
+        }
+    tr_qpoint_clear(&q);
+    if (!one)
+      return TR_OK;
+  }
+  area2(&p[0], &p[1], &p[2], axes[g], a2, tmp);
+  *in = 1;
+  return TR_OK;
+}
+
 static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *plc,
                                   mpq_srcptr volume6, unsigned flags)
 {
@@ -227,7 +326,11 @@ static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *
   vkey *ord = malloc(sizeof *ord * (nv ? nv : 1));
   uint8_t *used = calloc(nv ? nv : 1, 1), *need = calloc(np ? np : 1, 1);
   uint32_t *astart = calloc((size_t)nv + 1, sizeof *astart);
-  edge *adj = NULL, *ie = NULL;
+  edge *adj = NULL;
+  iedge *ie = NULL;
+  tr_facets F;
+  memset(&F, 0, sizeof F);
+  uint32_t gdone[64];
   uint32_t *vstart = NULL, *vtri = NULL, *stamp = NULL;
   mpq_t *acc = NULL, tmp[6], a2, v6, want;
   int *axes = NULL;
@@ -331,26 +434,31 @@ static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *
     st = tr_error(TR_ERR_NOMEM, "out of memory checking conformity");
     goto done;
   }
+  if ((st = tr_facets_build(plc, (flags & TR_CONF_KEEP_EDGES) != 0, &F)) != TR_OK)
+    goto done;
+  /* an inner edge of a merged facet (both its triangles say so) need not be a chain */
   for (uint32_t t = 0; t < ntri; t++)
     for (int k = 0; k < 3; k++) {
       uint32_t a = plc->tris[3 * (size_t)t + k], b = plc->tris[3 * (size_t)t + (k + 1) % 3];
       ie[3 * (size_t)t + k].a = a < b ? a : b;
       ie[3 * (size_t)t + k].b = a < b ? b : a;
+      ie[3 * (size_t)t + k].inner = F.inner[t] >> k & 1;
     }
   for (uint32_t s = 0; s < plc->nsegs; s++) {
     uint32_t a = plc->segs[2 * (size_t)s], b = plc->segs[2 * (size_t)s + 1];
     ie[3 * (size_t)ntri + s].a = a < b ? a : b;
     ie[3 * (size_t)ntri + s].b = a < b ? b : a;
+    ie[3 * (size_t)ntri + s].inner = 0;
   }
-  qsort(ie, nie, sizeof *ie, cmp_edge);
+  qsort(ie, nie, sizeof *ie, cmp_iedge);
   int manifold = plc->nsegs == 0;
   for (size_t i = 0; i < nie;) {
     size_t j = i + 1;
-    while (j < nie && !cmp_edge(&ie[i], &ie[j]))
+    while (j < nie && !cmp_iedge(&ie[i], &ie[j]))
       j++;
     if (j - i != 2)
       manifold = 0;
-    if (!chain_ok(m, astart, adj, pv[ie[i].a], pv[ie[i].b])) {
+    if (!ie[i].inner && !chain_ok(m, astart, adj, pv[ie[i].a], pv[ie[i].b])) {
       st = tr_error(TR_ERR_INVALID_MESH,
                     "conformity: input edge (%u, %u) is not a chain of collinear mesh edges",
                     ie[i].a, ie[i].b);
@@ -431,8 +539,20 @@ static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *
       for (int i = 0; i < 3; i++)
         f[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
       int found = 0;
+      uint32_t ndone = 0;
       for (uint32_t x = vstart[f[0]]; x < vstart[f[0] + 1]; x++) {
         uint32_t tt = vtri[x];
+        if (tr_facets_size(&F, F.group[tt]) > 1) {
+          int in = 0;
+          if ((st = merged_face(m, plc, &F, &G, axes, vstart, vtri, f, tt, gdone, &ndone, &in,
+                                a2, tmp)) != TR_OK)
+            goto done;
+          if (in) {
+            mpq_add(acc[F.group[tt]], acc[F.group[tt]], a2);
+            found = 1;
+          }
+          continue;
+        }
         int in1 = 0, in2 = 0;
         for (uint32_t y = vstart[f[1]]; y < vstart[f[1] + 1] && !in1; y++)
           in1 = vtri[y] == tt;
@@ -461,6 +581,30 @@ static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *
     if (axes[t] < 0) {
       st = tr_error(TR_ERR_INVALID_MESH, "conformity: input triangle %u is degenerate", t);
       goto done;
+    }
+    if (F.group[t] != t)
+      continue; /* in a merged facet: checked with the facet's first triangle */
+    if (tr_facets_size(&F, t) > 1) {
+      /* the facet's area: its triangles' along the first one's axis (one plane) */
+      mpq_set_ui(want, 0, 1);
+      for (uint32_t i = F.start[t]; i < F.start[t + 1]; i++) {
+        const uint32_t *u = plc->tris + 3 * (size_t)F.member[i];
+        tr_point q0 = tr_pt_d(plc->xyz + 3 * (size_t)u[0]),
+                 q1 = tr_pt_d(plc->xyz + 3 * (size_t)u[1]),
+                 q2 = tr_pt_d(plc->xyz + 3 * (size_t)u[2]);
+        area2(&q0, &q1, &q2, axes[t], a2, tmp);
+        mpq_add(want, want, a2);
+      }
+      if (!mpq_equal(want, acc[t])) {
+        st = tr_error(TR_ERR_INVALID_MESH,
+                      "conformity: the planar facet of %u input triangles %u (%u %u %u), ... "
+                      "is not exactly covered by mesh faces (covered / own projected area = "
+                      "%.17g)",
+                      tr_facets_size(&F, t), t, v[0], v[1], v[2],
+                      mpq_get_d(acc[t]) / mpq_get_d(want));
+        goto done;
+      }
+      continue;
     }
     area2(&p0, &p1, &p2, axes[t], a2, tmp);
     if (!mpq_equal(a2, acc[t])) {
@@ -515,6 +659,7 @@ done:
   free(axes);
   free(G.start);
   free(G.tri);
+  tr_facets_free(&F);
   return st;
 }
 

@@ -265,7 +265,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     PROGRESS(TR_STAGE_REFINE, 0);
     uint32_t nv0 = m->nv;
     if (st == TR_OK)
-      st = tr_refine_stage(m, p, &sub, &opt, keep_hull, &stats->points_added_for_quality);
+      st = tr_refine_stage(m, p, &sub, &opt, keep_hull, &stats->points_added_for_quality,
+                           &stats->input_edges_merged);
     if (st == TR_OK)
       st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv0, &vkind, &vindex);
     /* sliver removal: refinement bounds the radius-edge ratio, which slivers meet */
@@ -274,7 +275,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       double dt = opt.quality_min_dihedral;
       tr_sliver_params sp = {opt.optimize, fmax(TR_SLIVER_BOUND, dt), TR_SLIVER_ROUNDS,
                              fmax(TR_SLIVER_INSERT_BOUND, dt),
-                             {opt.quality_ratio, opt.max_volume, p}};
+                             {opt.quality_ratio, opt.max_volume, p, opt.keep_edges}};
       tr_sliver_stats ss;
       uint32_t nv1 = m->nv;
       st = tr_sliver_remove(m, &sub, vkind, p->npoints, &sp, &ss);

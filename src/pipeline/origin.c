@@ -6,6 +6,10 @@
  * inside a region) is interior. An input edge takes precedence over the triangles
  * around it. tests/api checks every label exactly against the geometry. */
 #include <stdlib.h>
+#include <string.h>
+
+#include "core/facets.h"
+#include "predicates.h"
 
 #include "classify.h"
 #include "pipeline.h"
@@ -58,6 +62,24 @@ static uint32_t edge_index(const uint32_t *edges, uint32_t ne, uint32_t a, uint3
   return hit ? (uint32_t)((hit - edges) / 2) : UINT32_MAX;
 }
 
+/* 1 iff p lies in the closed input triangle t (exact). */
+static int in_triangle(const struct tr_plc *plc, uint32_t t, const tr_point *p)
+{
+  const uint32_t *T = plc->tris + 3 * (size_t)t;
+  tr_point a = tr_pt_d(plc->xyz + 3 * (size_t)T[0]), b = tr_pt_d(plc->xyz + 3 * (size_t)T[1]),
+           c = tr_pt_d(plc->xyz + 3 * (size_t)T[2]);
+  if (tr_orient3d_p(&a, &b, &c, p) != 0)
+    return 0;
+  for (int k = 0; k < 3; k++) {
+    int s = tr_orient2d_proj_p(&a, &b, &c, k);
+    if (s != 0)
+      return s * tr_orient2d_proj_p(&a, &b, p, k) >= 0 &&
+             s * tr_orient2d_proj_p(&b, &c, p, k) >= 0 &&
+             s * tr_orient2d_proj_p(&c, &a, p, k) >= 0;
+  }
+  return 0;
+}
+
 tr_status tr_pipeline_origins_extend(const struct tr_mesh *m, const struct tr_plc *plc,
                                      const tr_subfaces *sub, const uint32_t *edges,
                                      uint32_t ne, uint32_t nv0, uint8_t **kind,
@@ -78,16 +100,30 @@ tr_status tr_pipeline_origins_extend(const struct tr_mesh *m, const struct tr_pl
     k[v] = TR_VERTEX_INTERIOR;
     x[v] = v;
   }
-  /* A new point on a sub-face lies in that sub-face's input triangle: on one of its
-   * edges (decided exactly) or inside it. */
+  /* A new point on a sub-face lies in that sub-face's input triangle, or for a merged
+   * planar facet (core/facets.h; the sub-face may straddle its inner edges) in the
+   * facet's smallest triangle that holds it: on one of its edges (decided exactly) or
+   * inside it. */
+  tr_facets F;
+  memset(&F, 0, sizeof F);
+  if (sub && sub->n)
+    TR_CHECK(tr_facets_build(plc, 0, &F));
   for (uint32_t f = 0; sub && f < sub->n; f++)
     for (int j = 0; j < 3; j++) {
       uint32_t v = sub->v[3 * (size_t)f + (size_t)j];
       if (v < nv0 || v >= nv || k[v] != TR_VERTEX_INTERIOR)
         continue;
       uint32_t t = sub->tri[f];
-      const uint32_t *T = plc->tris + 3 * (size_t)t;
       tr_point p = tr_mesh_point(m, v);
+      if (tr_facets_size(&F, F.group[t]) > 1 && !in_triangle(plc, t, &p)) {
+        uint32_t g = F.group[t];
+        for (uint32_t i = F.start[g]; i < F.start[g + 1]; i++)
+          if (in_triangle(plc, F.member[i], &p)) {
+            t = F.member[i];
+            break;
+          }
+      }
+      const uint32_t *T = plc->tris + 3 * (size_t)t;
       k[v] = TR_VERTEX_ON_TRIANGLE;
       x[v] = t;
       for (int e = 0; e < 3; e++) {
@@ -101,5 +137,6 @@ tr_status tr_pipeline_origins_extend(const struct tr_mesh *m, const struct tr_pl
         }
       }
     }
+  tr_facets_free(&F);
   return TR_OK;
 }

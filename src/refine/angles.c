@@ -11,6 +11,8 @@
  * deterministic). */
 #include <math.h>
 
+#include "predicates.h"
+
 #include "refine/refine_impl.h"
 
 #define RF_SMALL_COS 0.5 /* cos 60 degrees */
@@ -19,26 +21,56 @@
 typedef struct {
   int kind;     /* RF_SEG or RF_FACET, 0: none */
   uint32_t v[3]; /* input vertex ids: 2 for a segment, 3 for a triangle */
+  uint32_t tri; /* RF_FACET: the input triangle (of a merged facet: the one near the point
+                   in question) */
 } element;
 
-static element elem_of(const rf_ctx *c, int kind, uint32_t own)
+/* The triangle of facet g whose projection holds p (doubles: a choice of which corner
+ * angles to measure, like every measure here), else g's first. */
+static uint32_t facet_tri_at(const rf_ctx *c, uint32_t g, const double *p)
 {
-  element e = {0, {0, 0, 0}};
+  const tr_facets *F = &c->fc;
+  if (tr_facets_size(F, g) == 1 || !p)
+    return g;
+  const uint32_t *G = c->plc->tris + 3 * (size_t)g;
+  const double *xyz = c->plc->xyz;
+  int k = 0;
+  for (; k < 3; k++)
+    if (tr_orient2d_proj(xyz + 3 * (size_t)G[0], xyz + 3 * (size_t)G[1], xyz + 3 * (size_t)G[2], k) != 0)
+      break;
+  if (k == 3)
+    return g;
+  for (uint32_t i = F->start[g]; i < F->start[g + 1]; i++) {
+    const uint32_t *T = c->plc->tris + 3 * (size_t)F->member[i];
+    double s = tr_orient2d_proj(xyz + 3 * (size_t)T[0], xyz + 3 * (size_t)T[1], xyz + 3 * (size_t)T[2], k);
+    int in = 1;
+    for (int e = 0; e < 3 && in; e++)
+      in = s * tr_orient2d_proj(xyz + 3 * (size_t)T[e], xyz + 3 * (size_t)T[(e + 1) % 3], p, k) >= 0;
+    if (in)
+      return F->member[i];
+  }
+  return g;
+}
+
+static element elem_of(const rf_ctx *c, int kind, uint32_t own, const double *at)
+{
+  element e = {0, {0, 0, 0}, TR_NONE};
   if (kind == RF_SEG) {
     e.kind = RF_SEG;
     e.v[0] = c->ssab[2 * (size_t)own];
     e.v[1] = c->ssab[2 * (size_t)own + 1];
   } else if (kind == RF_FACET) {
     e.kind = RF_FACET;
+    e.tri = facet_tri_at(c, own, at);
     for (int i = 0; i < 3; i++)
-      e.v[i] = c->plc->tris[3 * (size_t)own + i];
+      e.v[i] = c->plc->tris[3 * (size_t)e.tri + i];
   }
   return e;
 }
 
 static element elem_of_vertex(const rf_ctx *c, uint32_t x)
 {
-  return elem_of(c, c->vkind[x], c->vown[x]);
+  return elem_of(c, c->vkind[x], c->vown[x], c->m->xyz + 3 * (size_t)x);
 }
 
 static const double *X(const rf_ctx *c, uint32_t v)
@@ -149,6 +181,8 @@ static int small_at(const rf_ctx *c, uint32_t V, const element *e, const element
     return seg_facet_small(c, V, P, t);
   }
   /* two triangles */
+  if (c->fc.group[e->tri] == c->fc.group[f->tri])
+    return 0; /* one facet */
   int shared = 0;
   uint32_t W = TR_NONE;
   for (int i = 0; i < 3; i++)
@@ -201,7 +235,7 @@ int rf_small_angle_edge(const rf_ctx *c, uint32_t x, uint32_t y)
 int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t own,
                     const double *pw)
 {
-  element f = elem_of(c, kind, own), e;
+  element f = elem_of(c, kind, own, pw), e;
   if (!f.kind)
     return 0;
   const uint32_t *pv;
@@ -213,10 +247,12 @@ int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t ow
     pv = c->ssv + 2 * (size_t)id;
     np = 2;
   } else {
-    e.kind = RF_FACET;
-    for (int i = 0; i < 3; i++)
-      e.v[i] = c->plc->tris[3 * (size_t)c->sftri[id] + i];
     pv = c->sfv + 3 * (size_t)id;
+    double cen[3];
+    for (int i = 0; i < 3; i++)
+      cen[i] = (c->m->xyz[3 * (size_t)pv[0] + i] + c->m->xyz[3 * (size_t)pv[1] + i] +
+                c->m->xyz[3 * (size_t)pv[2] + i]) / 3;
+    e = elem_of(c, RF_FACET, c->sftri[id], cen);
     np = 3;
   }
   uint32_t V;

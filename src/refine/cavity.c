@@ -109,15 +109,37 @@ static tr_status add_tet(rf_ctx *c, uint32_t t)
   return tr_u32buf_push(&c->stack, t);
 }
 
-/* May p split sub-face sf? p must lie in its closed input triangle and strictly inside
+/* May p split sub-face sf? p must lie in its closed facet (its input triangle, or the
+ * union of the triangles of its merged planar facet: the cavity crosses inner edges)
+ * and strictly inside
  * its circumcircle (for p in the plane, its equatorial sphere): the sub-faces of a facet
  * that p removes are then those of a 2D Bowyer-Watson cavity in the facet, which keeps
  * the facet's triangulation free of the needle-like sub-faces that a cavity taken from
  * the 3D tets alone leaves there (their huge circumcircles are encroached from afar, and
  * their splits pile up). */
-static int crossable_of(const rf_ctx *c, uint32_t sf, const tr_point *p, int allow_split)
+#define RF_GMEMO 4
+typedef struct {
+  uint32_t g[RF_GMEMO];
+  uint8_t in[RF_GMEMO];
+  unsigned next;
+} gmemo;
+
+/* Is p in the closed facet g? Asked for many sub-faces of one facet within a cavity. */
+static int in_facet(const rf_ctx *c, gmemo *x, uint32_t g, const tr_point *p)
 {
-  if (!allow_split || !rf_in_input_triangle(c, c->sftri[sf], p))
+  for (int i = 0; i < RF_GMEMO; i++)
+    if (x->g[i] == g)
+      return x->in[i];
+  unsigned i = x->next++ % RF_GMEMO;
+  x->g[i] = g;
+  x->in[i] = rf_facet_triangle_of(c, g, p, TR_NONE) != TR_NONE;
+  return x->in[i];
+}
+
+static int crossable_of(const rf_ctx *c, gmemo *gm, uint32_t sf, const tr_point *p,
+                        int allow_split)
+{
+  if (!allow_split || !in_facet(c, gm, c->sftri[sf], p))
     return 0;
   const uint32_t *v = c->sfv + 3 * (size_t)sf;
   tr_point a = tr_mesh_point(c->m, v[0]), b = tr_mesh_point(c->m, v[1]),
@@ -133,6 +155,7 @@ static int crossable_of(const rf_ctx *c, uint32_t sf, const tr_point *p, int all
 typedef struct {
   uint32_t sf[RF_XMEMO];
   uint8_t ans[RF_XMEMO];
+  gmemo gm;
 } xmemo;
 
 static int crossable(const rf_ctx *c, xmemo *x, uint32_t sf, const tr_point *p,
@@ -142,7 +165,7 @@ static int crossable(const rf_ctx *c, xmemo *x, uint32_t sf, const tr_point *p,
     return 0;
   uint32_t i = sf & (RF_XMEMO - 1);
   if (x->sf[i] != sf) {
-    x->ans[i] = (uint8_t)crossable_of(c, sf, p, allow_split);
+    x->ans[i] = (uint8_t)crossable_of(c, &x->gm, sf, p, allow_split);
     x->sf[i] = sf;
   }
   return x->ans[i];
@@ -288,7 +311,9 @@ tr_status rf_cavity(rf_ctx *c, uint32_t t0, const tr_point *p, uint32_t pid, int
   c->cav.n = c->init.n = c->stack.n = c->bfaces.n = 0;
   TR_CHECK(tstate_room(c));
   xmemo xm, *x = &xm;
+  memset(&xm, 0, sizeof xm);
   memset(xm.sf, 0xff, sizeof xm.sf);
+  memset(xm.gm.g, 0xff, sizeof xm.gm.g);
   /* 1. the tets whose closure holds p: across the faces whose plane holds p */
   TR_CHECK(add_tet(c, t0));
   tr_status st = TR_OK;

@@ -203,6 +203,54 @@ int rf_in_input_triangle(const rf_ctx *c, uint32_t tri, const tr_point *p)
          s * tr_orient2d_proj_p(&d, &a, p, k) >= 0;
 }
 
+/* p (in T's plane) in the closed triangle T, projected along k (exact). */
+static int in_tri_2d(const rf_ctx *c, const uint32_t *T, int k, const tr_point *p)
+{
+  tr_point a = tr_mesh_point(c->m, T[0]), b = tr_mesh_point(c->m, T[1]),
+           d = tr_mesh_point(c->m, T[2]);
+  int s = tr_orient2d_proj_p(&a, &b, &d, k);
+  return s * tr_orient2d_proj_p(&a, &b, p, k) >= 0 && s * tr_orient2d_proj_p(&b, &d, p, k) >= 0 &&
+         s * tr_orient2d_proj_p(&d, &a, p, k) >= 0;
+}
+
+uint32_t rf_facet_triangle_of(const rf_ctx *c, uint32_t g, const tr_point *p, uint32_t hint)
+{
+  const tr_facets *F = &c->fc;
+  if (tr_facets_size(F, g) == 1)
+    return rf_in_input_triangle(c, g, p) ? g : TR_NONE;
+  const uint32_t *T = c->plc->tris + 3 * (size_t)g;
+  tr_point a = tr_mesh_point(c->m, T[0]), b = tr_mesh_point(c->m, T[1]),
+           d = tr_mesh_point(c->m, T[2]);
+  if (tr_orient3d_p(&a, &b, &d, p) != 0)
+    return TR_NONE;
+  int k = tri_drop(c, g); /* every triangle of the facet spans its plane */
+  if (hint != TR_NONE && F->group[hint] == g &&
+      !in_tri_2d(c, c->plc->tris + 3 * (size_t)hint, k, p))
+    hint = TR_NONE;
+  /* the smallest holding triangle: members are increasing; a box test in doubles that
+   * only skips triangles p's exact coordinates lie outside of */
+  const double *lo = p->q ? p->q->lo : p->d, *hi = p->q ? p->q->hi : p->d;
+  for (uint32_t i = F->start[g]; i < F->start[g + 1]; i++) {
+    uint32_t t = F->member[i];
+    if (hint != TR_NONE && t >= hint)
+      return hint;
+    const uint32_t *U = c->plc->tris + 3 * (size_t)t;
+    int out = 0;
+    for (int j = 0; j < 3 && !out; j++) {
+      double mn = INFINITY, mx = -INFINITY;
+      for (int v = 0; v < 3; v++) {
+        double x = c->plc->xyz[3 * (size_t)U[v] + j];
+        mn = x < mn ? x : mn;
+        mx = x > mx ? x : mx;
+      }
+      out = hi[j] < mn || lo[j] > mx;
+    }
+    if (!out && in_tri_2d(c, U, k, p))
+      return t;
+  }
+  return hint;
+}
+
 /* Parameter of point x (on the line AB) along A -> B, exactly, on the axis where AB is
  * longest. */
 static void param_on(const tr_point *A, const tr_point *B, const tr_point *x, mpq_t t)
@@ -414,9 +462,32 @@ tr_status rf_facet_split_point(rf_ctx *c, uint32_t f, tr_qpoint **out, uint32_t 
 {
   *out = NULL;
   *where = *encseg = TR_NONE;
-  const uint32_t tri = c->sftri[f];
-  const uint32_t *T = c->plc->tris + 3 * (size_t)tri;
+  const uint32_t g = c->sftri[f];
   const uint32_t *S = c->sfv + 3 * (size_t)f;
+  /* the point is a combination of the vertices of one triangle of the facet (any spans
+   * its plane exactly): the one whose box holds the sub-face's centroid, in doubles (a
+   * choice, not a decision: near f the weights stay small) */
+  uint32_t tri = g;
+  if (tr_facets_size(&c->fc, g) > 1) {
+    double cen[3];
+    for (int i = 0; i < 3; i++)
+      cen[i] = (c->m->xyz[3 * (size_t)S[0] + i] + c->m->xyz[3 * (size_t)S[1] + i] +
+                c->m->xyz[3 * (size_t)S[2] + i]) / 3;
+    for (uint32_t i = c->fc.start[g]; i < c->fc.start[g + 1]; i++) {
+      const uint32_t *U = c->plc->tris + 3 * (size_t)c->fc.member[i];
+      int in = 1;
+      for (int j = 0; j < 3 && in; j++) {
+        double x0 = c->plc->xyz[3 * (size_t)U[0] + j], x1 = c->plc->xyz[3 * (size_t)U[1] + j],
+               x2 = c->plc->xyz[3 * (size_t)U[2] + j];
+        in = cen[j] >= fmin(x0, fmin(x1, x2)) && cen[j] <= fmax(x0, fmax(x1, x2));
+      }
+      if (in) {
+        tri = c->fc.member[i];
+        break;
+      }
+    }
+  }
+  const uint32_t *T = c->plc->tris + 3 * (size_t)tri;
   tr_point pt[3], ps[3];
   for (int i = 0; i < 3; i++) {
     pt[i] = tr_mesh_point(c->m, T[i]);
@@ -515,6 +586,10 @@ tr_status rf_facet_split_point(rf_ctx *c, uint32_t f, tr_qpoint **out, uint32_t 
     }
     cur = nb;
   }
+  /* the walk crossed inner edges only, so p is in the facet; said exactly all the same */
+  if (st == TR_OK && *where != TR_NONE && tr_facets_size(&c->fc, g) > 1 &&
+      rf_facet_triangle_of(c, g, &p, tri) == TR_NONE)
+    *where = TR_NONE;
   if (st != TR_OK || (*where == TR_NONE && *encseg == TR_NONE)) {
     tr_qpoint_clear(q);
     free(q);

@@ -494,6 +494,7 @@ static void discard_outer(struct tr_mesh *m)
 
 static void ctx_free(rf_ctx *c)
 {
+  tr_facets_free(&c->fc);
   free(c->sfv);
   free(c->sftri);
   free(c->sfdead);
@@ -663,11 +664,12 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
     fprintf(stderr,
             "tetrec: refinement added %llu points (%llu on edges, %llu on facets, %llu "
             "inside); bad tets left: %llu for small input angles, %llu whose circumcentre "
-            "lies too close to a new vertex, %llu otherwise\n",
+            "lies too close to a new vertex, %llu otherwise; %u input edges inside exactly "
+            "planar facets merged away (--keep-edges keeps them)\n",
             (unsigned long long)st->points, (unsigned long long)st->on_segments,
             (unsigned long long)st->on_facets, (unsigned long long)st->inside,
             (unsigned long long)st->skipped_small_angle, (unsigned long long)st->skipped_close,
-            (unsigned long long)st->skipped_other);
+            (unsigned long long)st->skipped_other, st->merged_edges);
   ctx_free(&c);
   return s;
 }

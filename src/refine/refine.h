@@ -50,6 +50,7 @@ typedef struct tr_refine_params {
   uint64_t budget;     /* points the stage may add; 0: tr_refine_default_budget */
   double subface_ratio; /* sub-faces over this radius-edge ratio are split for their shape
                            (subshape.c); 0: off */
+  int keep_edges;      /* every input edge stays a constraint: no merged facets (facets.h) */
   int verbose;
 } tr_refine_params;
 
@@ -60,6 +61,7 @@ typedef struct tr_refine_stats {
   uint64_t skipped_close;   /* bad tets left: circumcentre within a new vertex's
                                insertion radius (refine.c, too_close) */
   uint64_t skipped_other;   /* bad tets left: circumcentre blocked / refused */
+  uint32_t merged_edges;    /* input edges inside merged planar facets: no constraints */
 } tr_refine_stats;
 
 /* The default budget: 100 points per input point plus 100,000, plus, with a volume bound,

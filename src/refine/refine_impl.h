@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 
+#include "core/facets.h"
 #include "core/vtmap.h"
 #include "recover_edges/edgeset.h"
 #include "refine/refine.h"
@@ -20,7 +21,11 @@ typedef struct rf_ctx {
   const struct tr_plc *plc;
   tr_refine_params par;
   tr_refine_stats *st;
-  /* sub-faces: vertices (right-hand normal = the input triangle's), input triangle */
+  /* the input's planar facets (core/facets.h): refinement works on facets, not
+   * triangles; its inner edges are no constraints (none with par.keep_edges) */
+  tr_facets fc;
+  /* sub-faces: vertices (right-hand normal = the input triangle's), facet (the group id of
+   * its input triangles, a triangle of the facet: it spans the facet's plane exactly) */
   uint32_t nsf, capsf;
   uint32_t *sfv, *sftri;
   uint8_t *sfdead;
@@ -36,7 +41,7 @@ typedef struct rf_ctx {
    * sub-segment of that edge, or input triangle) */
   uint32_t capv;
   uint8_t *vkind;
-  uint32_t *vown; /* RF_SEG: a,b packed via seg id; RF_FACET: triangle */
+  uint32_t *vown; /* RF_SEG: a,b packed via seg id; RF_FACET: facet (group id) */
   /* insertion radius of the points refinement added (0 for the others): the distance to
    * their nearest vertex when inserted (Shewchuk 1998; Si 2015); a circumcentre closer
    * than that to such a point is not inserted (refine.c, too_close) */
@@ -105,6 +110,9 @@ int rf_volume_above(const tr_point *a, const tr_point *b, const tr_point *c, con
                     double V);
 /* 1 iff point p lies in the closed input triangle tri (exact). */
 int rf_in_input_triangle(const rf_ctx *c, uint32_t tri, const tr_point *p);
+/* The smallest triangle of facet g (a group id) whose closure holds p (exact), TR_NONE if
+ * p is not in the closed facet. hint: a triangle to try first, or TR_NONE. */
+uint32_t rf_facet_triangle_of(const rf_ctx *c, uint32_t g, const tr_point *p, uint32_t hint);
 
 /* ---- angles.c ---- */
 /* 1 iff the constraints x and y lie on meet at an input vertex under a small angle. */

@@ -8,9 +8,12 @@
 /* TR_ERR_USAGE for a bound out of range, TR_ERR_UNSUPPORTED for a dihedral target. */
 tr_status tr_refine_check_options(const tr_options *opt);
 /* tr_refine with the options' bounds and budget (default: tr_refine_default_budget on the
- * domain's volume); *points = points added. keep_hull (open input in its hull): refused. */
+ * domain's volume); *points = points added, *merged = input edges inside merged planar
+ * facets (core/facets.h; 0 with opt->keep_edges). keep_hull (open input in its hull):
+ * refused. */
 tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
-                          const tr_options *opt, int keep_hull, uint64_t *points);
+                          const tr_options *opt, int keep_hull, uint64_t *points,
+                          uint64_t *merged);
 /* The per-region volume bounds of plc's region points as tr_refine_params wants them
  * (ids sorted, distinct, the smallest bound of a repeated id; malloc'ed); *least is lowered
  * to the smallest (it is the caller's global bound, or 0 for none). */

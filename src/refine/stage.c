@@ -82,7 +82,8 @@ tr_status tr_refine_region_bounds(const struct tr_plc *plc, uint32_t **ids, doub
 }
 
 tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
-                          const tr_options *opt, int keep_hull, uint64_t *points)
+                          const tr_options *opt, int keep_hull, uint64_t *points,
+                          uint64_t *merged)
 {
   TR_CHECK(tr_refine_check_options(opt));
   if (keep_hull)
@@ -103,6 +104,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   par.subface_ratio = opt->quality_subface_ratio;
   par.max_volume = opt->max_volume;
   par.verbose = opt->verbose;
+  par.keep_edges = opt->keep_edges;
   /* the smallest bound of all sizes the default budget */
   double least = opt->max_volume;
   uint32_t *id, n;
@@ -116,6 +118,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   tr_refine_stats rs;
   tr_status s = tr_refine(m, plc, sub, &par, &rs);
   *points = rs.points;
+  *merged = rs.merged_edges;
   free(id);
   free(bound);
   return s;

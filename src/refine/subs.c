@@ -121,10 +121,67 @@ static int on_line(const tr_point *a, const tr_point *b, const tr_point *p)
   return 1;
 }
 
+/* 1 iff u and w (mesh vertices) lie on the closed input edge AB (exact). */
+static int on_input_edge(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t A, uint32_t B)
+{
+  const struct tr_mesh *m = c->m;
+  uint32_t np = c->plc->npoints;
+  tr_point pa = tr_mesh_point(m, A), pb = tr_mesh_point(m, B);
+  uint32_t x[2] = {u, w};
+  for (int i = 0; i < 2; i++) {
+    if (x[i] == A || x[i] == B)
+      continue;
+    if (x[i] < np)
+      return 0;
+    tr_point p = tr_mesh_point(m, x[i]);
+    if (!on_line(&pa, &pb, &p))
+      return 0;
+    for (int d = 0; d < 3; d++) {
+      int sa = tr_cmp_coord_p(&p, &pa, d), sb = tr_cmp_coord_p(&p, &pb, d);
+      if (sa * sb > 0) /* beyond both ends along d */
+        return 0;
+    }
+  }
+  return 1;
+}
+
+/* The sub-segment of the sub-face edge {u,w} of facet g whose input triangle is tri (the
+ * one its sub-face lies in, or holds its centroid): the edges of tri first, then, for a
+ * merged facet (a sub-face exported by an earlier run may straddle its triangles), the
+ * facet's boundary edges. Inner edges of a facet are no constraints. *A = TR_NONE if the
+ * edge lies on no constraint. */
+static int edge_of_triangle(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t t, uint32_t *A,
+                            uint32_t *B)
+{
+  const uint32_t *T = c->plc->tris + 3 * (size_t)t;
+  for (int k = 0; k < 3; k++)
+    if (!(c->fc.inner[t] >> k & 1) && on_input_edge(c, u, w, T[k], T[(k + 1) % 3])) {
+      *A = T[k];
+      *B = T[(k + 1) % 3];
+      return 1;
+    }
+  return 0;
+}
+
+static void input_edge_of(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t tri, int bdry,
+                          uint32_t *A, uint32_t *B)
+{
+  const tr_facets *F = &c->fc;
+  uint32_t g = F->group[tri];
+  *A = *B = TR_NONE;
+  if (edge_of_triangle(c, u, w, tri, A, B) || !bdry)
+    return;
+  for (uint32_t i = F->start[g]; i < F->start[g + 1]; i++)
+    if (F->member[i] != tri && edge_of_triangle(c, u, w, F->member[i], A, B))
+      return;
+}
+
 tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
 {
   const struct tr_plc *plc = c->plc;
   struct tr_mesh *m = c->m;
+  TR_CHECK(tr_facets_build(plc, c->par.keep_edges, &c->fc));
+  c->st->merged_edges = c->fc.ninner;
   TR_CHECK(rf_vertex_room(c, m->nv + 1));
   for (uint32_t v = 0; v < m->nv; v++) {
     c->vkind[v] = v < plc->npoints ? RF_INPUT : RF_FREE;
@@ -139,36 +196,57 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
   /* and "is this edge a sub-segment?" of every edge of every cavity tet: mostly no */
   TR_CHECK(tr_vtmap_reserve(&c->es.m, 2, sub->n + 1));
   TR_CHECK(tr_vtmap_filter(&c->es.m));
-  for (uint32_t f = 0; f < sub->n; f++) {
+  /* sub-face edges per facet: one sub-face of the facet on an edge puts it on the facet's
+   * boundary (the facet's sub-faces tile it), two inside */
+  tr_vtmap cnt = {0};
+  tr_status s = TR_OK;
+  if (c->fc.nmerged) {
+    s = tr_vtmap_reserve(&cnt, 3, 3 * (size_t)sub->n / 2 + 1);
+    for (uint32_t f = 0; s == TR_OK && f < sub->n; f++) {
+      const uint32_t *v = sub->v + 3 * (size_t)f;
+      uint32_t g = c->fc.group[sub->tri[f]];
+      if (tr_facets_size(&c->fc, g) == 1)
+        continue;
+      for (int e = 0; e < 3 && s == TR_OK; e++) {
+        uint32_t k[3] = {v[e] < v[(e + 1) % 3] ? v[e] : v[(e + 1) % 3],
+                         v[e] < v[(e + 1) % 3] ? v[(e + 1) % 3] : v[e], g};
+        uint32_t old = tr_vtmap_get(&cnt, 3, k);
+        s = tr_vtmap_set(&cnt, 3, k, old == TR_VTMAP_NONE ? 1 : old + 1);
+      }
+    }
+  }
+  for (uint32_t f = 0; s == TR_OK && f < sub->n; f++) {
     const uint32_t *v = sub->v + 3 * (size_t)f, tri = sub->tri[f];
-    TR_CHECK(rf_subface_add(c, v[0], v[1], v[2], tri, NULL));
-    const uint32_t *T = plc->tris + 3 * (size_t)tri;
+    uint32_t g = c->fc.group[tri];
+    if ((s = rf_subface_add(c, v[0], v[1], v[2], g, NULL)) != TR_OK)
+      break;
     for (int e = 0; e < 3; e++) {
       uint32_t u = v[e], w = v[(e + 1) % 3];
       if (tr_edgeset_get(&c->es, u, w) != TR_EDGESET_NONE)
         continue;
-      tr_point pu = tr_mesh_point(m, u), pw = tr_mesh_point(m, w);
-      for (int k = 0; k < 3; k++) {
-        uint32_t A = T[k], B = T[(k + 1) % 3];
-        tr_point pa = tr_mesh_point(m, A), pb = tr_mesh_point(m, B);
-        int uon = u == A || u == B || (u >= plc->npoints && on_line(&pa, &pb, &pu));
-        int won = w == A || w == B || (w >= plc->npoints && on_line(&pa, &pb, &pw));
-        if (!uon || !won)
-          continue;
-        uint32_t g;
-        TR_CHECK(rf_subseg_add(c, u, w, A, B, &g));
-        if (u >= plc->npoints) {
-          c->vkind[u] = RF_SEG;
-          c->vown[u] = g;
-        }
-        if (w >= plc->npoints) {
-          c->vkind[w] = RF_SEG;
-          c->vown[w] = g;
-        }
+      int bdry = 0;
+      if (tr_facets_size(&c->fc, g) > 1) {
+        uint32_t k[3] = {u < w ? u : w, u < w ? w : u, g};
+        bdry = tr_vtmap_get(&cnt, 3, k) == 1;
+      }
+      uint32_t A, B, id;
+      input_edge_of(c, u, w, tri, bdry, &A, &B);
+      if (A == TR_NONE)
+        continue;
+      if ((s = rf_subseg_add(c, u, w, A, B, &id)) != TR_OK)
         break;
+      if (u >= plc->npoints) {
+        c->vkind[u] = RF_SEG;
+        c->vown[u] = id;
+      }
+      if (w >= plc->npoints) {
+        c->vkind[w] = RF_SEG;
+        c->vown[w] = id;
       }
     }
   }
+  tr_vtmap_free(&cnt);
+  TR_CHECK(s);
   for (uint32_t f = 0; f < c->nsf; f++)
     for (int i = 0; i < 3; i++) {
       uint32_t u = c->sfv[3 * (size_t)f + i];
@@ -192,6 +270,39 @@ static int cmp_sf(const void *pa, const void *pb)
   return tr_cmp_face_key(a->v, b->v);
 }
 
+/* The input triangle of sub-face f: its facet's, or for a merged facet the facet's
+ * smallest triangle that holds the sub-face's exact centroid (a sub-face may straddle
+ * inner edges). */
+static tr_status export_triangle(const rf_ctx *c, uint32_t f, uint32_t *tri)
+{
+  uint32_t g = c->sftri[f];
+  *tri = g;
+  if (tr_facets_size(&c->fc, g) == 1)
+    return TR_OK;
+  tr_qpoint q;
+  tr_qpoint_init(&q);
+  mpq_t x;
+  mpq_init(x);
+  for (int i = 0; i < 3; i++) {
+    mpq_set_ui(q.c[i], 0, 1);
+    for (int j = 0; j < 3; j++) {
+      tr_point p = tr_mesh_point(c->m, c->sfv[3 * (size_t)f + j]);
+      tr_point_get_q(&p, i, x);
+      mpq_add(q.c[i], q.c[i], x);
+    }
+    mpq_set_ui(x, 3, 1);
+    mpq_div(q.c[i], q.c[i], x);
+  }
+  mpq_clear(x);
+  tr_qpoint_update(&q);
+  tr_point p = tr_pt_q(&q);
+  *tri = rf_facet_triangle_of(c, g, &p, TR_NONE);
+  tr_qpoint_clear(&q);
+  if (*tri == TR_NONE)
+    return tr_error(TR_ERR_INTERNAL, "refinement: sub-face %u lies outside its facet %u", f, g);
+  return TR_OK;
+}
+
 tr_status rf_subs_export(const rf_ctx *c, tr_subfaces *out)
 {
   uint32_t n = 0;
@@ -207,13 +318,20 @@ tr_status rf_subs_export(const rf_ctx *c, tr_subfaces *out)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-faces", n);
   }
   uint32_t k = 0;
-  for (uint32_t f = 0; f < c->nsf; f++)
+  tr_status st = TR_OK;
+  for (uint32_t f = 0; f < c->nsf && st == TR_OK; f++)
     if (!c->sfdead[f]) {
-      r[k].tri = c->sftri[f];
+      st = export_triangle(c, f, &r[k].tri);
       memcpy(r[k].v, c->sfv + 3 * (size_t)f, sizeof r[k].v);
       tr_rotate_min3(r[k].v); /* same turn: the orientation is kept */
       k++;
     }
+  if (st != TR_OK) {
+    free(r);
+    free(v);
+    free(tri);
+    return st;
+  }
   qsort(r, n, sizeof *r, cmp_sf);
   for (uint32_t i = 0; i < n; i++) {
     memcpy(v + 3 * (size_t)i, r[i].v, sizeof r[i].v);

@@ -81,6 +81,7 @@ typedef struct tr_sliver_bounds {
   double ratio;                /* radius-edge bound (0: none) */
   double max_volume;           /* volume bound for every tet (0: none) */
   const struct tr_plc *plc;    /* NULL, or its region points' maximum volumes by attribute */
+  int keep_edges;              /* refinement's tr_refine_params.keep_edges */
 } tr_sliver_bounds;
 
 typedef struct tr_sliver_params {

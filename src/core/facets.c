@@ -1,0 +1,146 @@
+/* Planar facets of the input (facets.h): union-find over the triangles, each pair tested
+ * with exact predicates on the input doubles. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/edgesort.h"
+#include "core/facets.h"
+#include "predicates.h"
+
+static uint32_t find(uint32_t *par, uint32_t x)
+{
+  uint32_t r = x;
+  while (par[r] != r)
+    r = par[r];
+  while (par[x] != r) {
+    uint32_t n = par[x];
+    par[x] = r;
+    x = n;
+  }
+  return r;
+}
+
+/* An axis along which triangle T's projection is not degenerate (exact), -1 if none. */
+static int tri_axis(const double *xyz, const uint32_t *T)
+{
+  for (int k = 0; k < 3; k++)
+    if (tr_orient2d_proj(xyz + 3 * (size_t)T[0], xyz + 3 * (size_t)T[1], xyz + 3 * (size_t)T[2],
+                         k) != 0)
+      return k;
+  return -1;
+}
+
+/* Triangles s and t on edge slots 3s+i and 3t+j (the same undirected edge) merge? */
+static int mergeable(const struct tr_plc *plc, uint32_t s, int i, uint32_t t, int j)
+{
+  const uint32_t *S = plc->tris + 3 * (size_t)s, *T = plc->tris + 3 * (size_t)t;
+  uint32_t a = S[i], b = S[(i + 1) % 3], c = S[(i + 2) % 3], d = T[(j + 2) % 3];
+  if (T[j] != b || T[(j + 1) % 3] != a) /* same direction: inconsistent orientation */
+    return 0;
+  if (plc->tri_marker && plc->tri_marker[s] != plc->tri_marker[t])
+    return 0;
+  const double *x = plc->xyz;
+  const double *pa = x + 3 * (size_t)a, *pb = x + 3 * (size_t)b, *pc = x + 3 * (size_t)c,
+               *pd = x + 3 * (size_t)d;
+  if (tr_orient3d(pa, pb, pc, pd) != 0)
+    return 0;
+  int ax = tri_axis(x, S);
+  if (ax < 0 || tri_axis(x, T) < 0)
+    return 0;
+  double sc = tr_orient2d_proj(pa, pb, pc, ax), sd = tr_orient2d_proj(pa, pb, pd, ax);
+  return (sc > 0 && sd < 0) || (sc < 0 && sd > 0);
+}
+
+void tr_facets_free(tr_facets *f)
+{
+  free(f->group);
+  free(f->inner);
+  free(f->start);
+  free(f->member);
+  memset(f, 0, sizeof *f);
+}
+
+tr_status tr_facets_build(const struct tr_plc *plc, int keep_edges, tr_facets *out)
+{
+  uint32_t n = plc->ntris;
+  memset(out, 0, sizeof *out);
+  out->ntris = n;
+  out->group = malloc(sizeof *out->group * (n ? n : 1));
+  out->inner = calloc(n ? n : 1, 1);
+  out->start = calloc((size_t)n + 2, sizeof *out->start);
+  out->member = malloc(sizeof *out->member * (n ? n : 1));
+  uint32_t *slots = NULL;
+  if (!out->group || !out->inner || !out->start || !out->member)
+    goto nomem;
+  for (uint32_t t = 0; t < n; t++)
+    out->group[t] = t;
+  if (!keep_edges && n > 1) {
+    slots = malloc(sizeof *slots * 3 * (size_t)n);
+    if (!slots)
+      goto nomem;
+    tr_status st = tr_edge_slots_sorted(plc->tris, n, plc->npoints, slots);
+    if (st != TR_OK) {
+      free(slots);
+      tr_facets_free(out);
+      return st;
+    }
+    uint32_t *par = out->group;
+    size_t ns = 3 * (size_t)n;
+    for (size_t i = 0; i < ns;) {
+      const uint32_t *Ti = plc->tris + 3 * (size_t)(slots[i] / 3);
+      int ki = (int)(slots[i] % 3);
+      uint32_t a = Ti[ki], b = Ti[(ki + 1) % 3];
+      size_t j = i + 1;
+      while (j < ns) {
+        const uint32_t *Tj = plc->tris + 3 * (size_t)(slots[j] / 3);
+        int kj = (int)(slots[j] % 3);
+        uint32_t u = Tj[kj], v = Tj[(kj + 1) % 3];
+        if (!((u == a && v == b) || (u == b && v == a)))
+          break;
+        j++;
+      }
+      if (j - i == 2) {
+        uint32_t s = slots[i] / 3, t = slots[i + 1] / 3;
+        int si = (int)(slots[i] % 3), ti = (int)(slots[i + 1] % 3);
+        if (s != t && mergeable(plc, s, si, t, ti)) {
+          out->inner[s] |= (uint8_t)(1u << si);
+          out->inner[t] |= (uint8_t)(1u << ti);
+          out->ninner++;
+          uint32_t rs = find(par, s), rt = find(par, t);
+          /* the smaller root stays: a root is its group's smallest index */
+          if (rs < rt)
+            par[rt] = rs;
+          else if (rt < rs)
+            par[rs] = rt;
+        }
+      }
+      i = j;
+    }
+    free(slots);
+    for (uint32_t t = 0; t < n; t++)
+      par[t] = find(par, t);
+  }
+  for (uint32_t t = 0; t < n; t++)
+    out->start[out->group[t] + 1]++;
+  for (uint32_t g = 0; g < n; g++) {
+    out->nmerged += out->start[g + 1] > 1;
+    out->start[g + 1] += out->start[g];
+  }
+  out->start[n + 1] = out->start[n];
+  {
+    /* members in increasing order: fill through a moving cursor per group */
+    uint32_t *cur = malloc(sizeof *cur * (n ? n : 1));
+    if (!cur)
+      goto nomem;
+    for (uint32_t g = 0; g < n; g++)
+      cur[g] = out->start[g];
+    for (uint32_t t = 0; t < n; t++)
+      out->member[cur[out->group[t]]++] = t;
+    free(cur);
+  }
+  return TR_OK;
+nomem:
+  free(slots);
+  tr_facets_free(out);
+  return tr_error(TR_ERR_NOMEM, "out of memory for the facets of %u triangles", n);
+}
