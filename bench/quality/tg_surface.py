@@ -129,23 +129,28 @@ def main():
     except (OSError, ValueError, IndexError, StopIteration) as e:
         fail("cannot read the input or TetGen's output: %s" % e)
 
-    n = len(ip)
     edge_faces = {}
     for fi, f in enumerate(ifaces):
         for j in range(len(f)):
             a, b = f[j], f[(j + 1) % len(f)]
             if a != b:
                 edge_faces.setdefault((min(a, b), max(a, b)), []).append(fi)
-    if len(tp) < n:
-        fail("TetGen's output has %d points, the input %d" % (len(tp), n))
     lo = [min(p[i] for p in ip) for i in range(3)]
     hi = [max(p[i] for p in ip) for i in range(3)]
     tol = REL_TOL * math.sqrt(sum((hi[i] - lo[i]) ** 2 for i in range(3)))
-    used = {v for e in edge_faces for v in e}
-    # TetGen keeps the input points first, in input order; a mismatch means it did not
-    for v in used:
-        if max(abs(tp[v][i] - ip[v][i]) for i in range(3)) > tol:
-            fail("TetGen's point %d is not input point %d" % (v, v))
+    # TetGen renumbers its points when it drops unused or duplicate input points; it
+    # prints 17 significant digits, so an input point reads back as the same double
+    where = {}
+    for i, p in enumerate(tp):
+        where.setdefault(p, i)
+    image = {}
+    for v in {v for e in edge_faces for v in e}:
+        if ip[v] not in where:
+            fail("input point %d (%r) is not among TetGen's points" % (v, ip[v]))
+        image[v] = where[ip[v]]
+    is_input = [False] * len(tp)
+    for i in image.values():
+        is_input[i] = True
 
     adj = [set() for _ in range(len(tp))]
     for f in tfaces:
@@ -166,7 +171,7 @@ def main():
         while True:
             best, tbest = None, 1.0
             for q in adj[cur]:
-                if q < n:
+                if is_input[q]:
                     continue
                 w = [tp[q][i] - pa[i] for i in range(3)]
                 t = sum(u[i] * w[i] for i in range(3)) / uu
@@ -183,7 +188,7 @@ def main():
     xp = None
     dropped = noncoplanar = 0
     for (a, b), fs in sorted(edge_faces.items()):
-        if chain(a, b):
+        if image[a] == image[b] or chain(image[a], image[b]):
             continue
         dropped += 1
         if xp is None:
