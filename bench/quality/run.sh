@@ -36,7 +36,9 @@
 #   TETREC_OPTS="..." more options for tetrec mesh (e.g. "-O 0": without sliver removal)
 #   TG_FLAGS="..."    TetGen's switches instead of -pq${R}Q, e.g. -p180//0q1.414Q: no facet
 #              merging (-p180) and no removal of near-flat edges at small angles (//0);
-#              plain -p180 still drops edges under 5 degrees from flat at angles under 15
+#              plain -p180 still drops edges under 5 degrees from flat at angles under 15;
+#              -p180//0 still drops those whose two triangles' normals are parallel in
+#              doubles (pinion: 17 of 1950, all non-coplanar) and costs TetGen far more
 # Output: stdout and BUILD/bench-quality/table.txt; logs under BUILD/bench-quality/work/.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
