@@ -11,6 +11,22 @@
 # timeout (tetrec's: fail:rejected input, fail:budget, fail:timeout). Totals are over the
 # models both meshed.
 #
+# Two more columns per model:
+# - "targets": issue 17's per-model targets, on the models both meshed: tetrec's share of
+#   tets under 10 degrees at most half of TetGen's (compared on the tet counts) and its
+#   minimum dihedral angle at least TetGen's (as printed, 3 decimals); "yes", or "no:"
+#   and the ones missed (<10, min). The total says on how many models both hold, with the
+#   CPU ratio (target <= 1) and the tet ratio (target <= 1.2).
+# - "TetGen surface": TetGen -p merges adjacent input triangles within 0.1 degree of flat
+#   into one facet and drops the edge between them; where they are not exactly coplanar
+#   its output no longer has the input surface (tetrec keeps every input edge and
+#   triangle). bench/quality/tg_surface.py counts, on TetGen's boundary faces (.face), the
+#   input edges that are not a chain of their edges (N of the E input edges: "drops N/E")
+#   and of those the ones between two faces that are not exactly coplanar (M: "M
+#   non-copl."; exact orient3d of the input doubles); "keeps" when N = 0. The models both
+#   meshed where M = 0 (TetGen keeps the input surface, up to exactly flat merges) are
+#   totalled again as the like-for-like comparison.
+#
 # usage: TETGEN=/path/to/tetgen-1.6 bench/quality/run.sh [BUILD_DIR]
 #   BUILD_DIR  a build of tetrec (default build; set up with meson if missing)
 #   TETGEN     the TetGen 1.6 binary (required; not part of the repository)
@@ -18,6 +34,11 @@
 #   TIMEOUT=s  per-process wall-clock limit (default 120)
 #   ONLY=regex only the models whose name matches (grep -E)
 #   TETREC_OPTS="..." more options for tetrec mesh (e.g. "-O 0": without sliver removal)
+#   TG_FLAGS="..."    TetGen's switches instead of -pq${R}Q, e.g. -p180//0q1.414Q: no facet
+#              merging (-p180) and no removal of near-flat edges at small angles (//0);
+#              plain -p180 still drops edges under 5 degrees from flat at angles under 15;
+#              -p180//0 still drops those whose two triangles' normals are parallel in
+#              doubles (pinion: 17 of 1950, all non-coplanar) and costs TetGen far more
 # Output: stdout and BUILD/bench-quality/table.txt; logs under BUILD/bench-quality/work/.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -25,9 +46,11 @@ BUILD=${1:-build}
 case $BUILD in /*) ;; *) BUILD=$ROOT/$BUILD ;; esac
 R=${R:-1.414}
 TIMEOUT=${TIMEOUT:-120}
+TG_FLAGS=${TG_FLAGS:--pq${R}Q}
 : "${TETGEN:?set TETGEN to the TetGen 1.6 binary}"
 [ -x "$TETGEN" ] || { echo "TETGEN=$TETGEN is not executable" >&2; exit 1; }
 [ -x /usr/bin/time ] || { echo "needs /usr/bin/time (Debian package time)" >&2; exit 1; }
+command -v python3 >/dev/null || { echo "needs python3 (bench/quality/tg_surface.py)" >&2; exit 1; }
 if [ ! -d "$BUILD" ]; then
   meson setup "$BUILD" "$ROOT" -Dbench=false -Dcgal=disabled >/dev/null
 fi
@@ -57,12 +80,22 @@ quality() {
          print tets, dmin, p10, p5, r; found = 1 }
        END { if (!found) print "- - - - -" }' "$1"
 }
+# under LOG: "N10 N5", the numbers of tets with a dihedral angle under 10 and under 5 degrees
+under() {
+  awk '/check: quality:/ {
+         for (i = 1; i <= NF; i++) {
+           if ($i == "under" && $(i + 1) == "10") n10 = $(i - 2)
+           if ($i == "under" && $(i + 1) == "5") n5 = $(i - 2)
+         }
+         found = 1 }
+       END { print found ? n10 " " n5 : "- -" }' "$1"
+}
 
 table=$OUT/table.txt
-printf "%-28s | %-44s | %-44s\n" "model" "tetrec --quality $R: cpu tets mindih <10% <5% maxR" \
-  "tetgen -pq${R}Q: cpu tets mindih <10% <5% maxR" | tee "$table"
-tot_a_cpu=0 tot_b_cpu=0 tot_a_tets=0 tot_b_tets=0 both=0
-tot_a10=0 tot_b10=0 tot_a5=0 tot_b5=0 min_a=180 min_b=180 max_a=0 max_b=0
+rows=$OUT/work/rows.txt
+: >"$rows"
+printf "%-28s | %-44s | %-44s | %-13s | %s\n" "model" "tetrec --quality $R: cpu tets mindih <10% <5% maxR" \
+  "tetgen ${TG_FLAGS}: cpu tets mindih <10% <5% maxR" "targets" "TetGen surface" | tee "$table"
 for model in "$DATA"/data/meshes/*.off; do
   name=$(basename "$model" .off)
   if [ -n "${ONLY:-}" ] && ! echo "$name" | grep -qE "$ONLY"; then continue; fi
@@ -89,16 +122,28 @@ for model in "$DATA"/data/meshes/*.off; do
   # tetgen
   cp "$model" "$w/tg/$name.off"
   rb=ok
+  # shellcheck disable=SC2086
   if ! (cd "$w/tg" && timeout "$TIMEOUT" /usr/bin/time -o ../tetgen.time -f "%U %S" \
-      "$TETGEN" "-pq${R}Q" "$name.off" >../tetgen.log 2>&1); then
+      "$TETGEN" $TG_FLAGS "$name.off" >../tetgen.log 2>&1); then
     rb=fail
   fi
   b="- - - - - -"
+  surf=- edges=- dropped=- noncopl=-
   if [ $rb = ok ] && [ -f "$w/tg/$name.1.node" ]; then
     # the validator may reject it (-p merges coplanar facets, dropping input edges): the
     # shape figures are printed all the same, and the row is marked
     "$TETREC" check "$model" "$w/tg/$name.1.node" >"$w/tetgen.check" 2>&1 || rb=invalid
     b="$(cpu "$w/tetgen.time") $(quality "$w/tetgen.check")"
+    if [ ! -f "$w/tg/$name.1.face" ]; then
+      surf="- (no .face)"
+    elif python3 "$ROOT/bench/quality/tg_surface.py" "$model" "$w/tg/$name.1" -v \
+        >"$w/tetgen.surface" 2>&1; then
+      read -r edges dropped noncopl <<<"$(tail -n 1 "$w/tetgen.surface")"
+      if [ "$dropped" = 0 ]; then surf="keeps all $edges"
+      else surf="drops $dropped/$edges, $noncopl non-copl."; fi
+    else
+      surf="? (see work/$name/tetgen.surface)"
+    fi
   else
     rb=fail
   fi
@@ -106,29 +151,62 @@ for model in "$DATA"/data/meshes/*.off; do
   [ $rb != fail ] || b="$rb"
   [ $ra != invalid ] || a="$a (invalid)"
   [ $rb != invalid ] || b="$b (invalid)"
-  printf "%-28s | %-44s | %-44s\n" "$name" "$a" "$b" | tee -a "$table"
   # both meshed and both measured (a mesh `check` could not even read has "-" figures)
+  target=-
   if [ $ra != fail ] && [ $rb != fail ] && ! echo "$a $b" | grep -q ' - - '; then
-    read -r ca ta da pa10 pa5 xa _ <<<"${a% (invalid)}"
-    read -r cb tb db pb10 pb5 xb _ <<<"${b% (invalid)}"
-    both=$((both + 1))
-    eval "$(awk -v ca="$ca" -v cb="$cb" -v ta="$ta" -v tb="$tb" -v da="$da" -v db="$db" \
-        -v pa10="$pa10" -v pb10="$pb10" -v pa5="$pa5" -v pb5="$pb5" -v xa="$xa" -v xb="$xb" \
-        -v A="$tot_a_cpu" -v B="$tot_b_cpu" -v TA="$tot_a_tets" -v TB="$tot_b_tets" \
-        -v A10="$tot_a10" -v B10="$tot_b10" -v A5="$tot_a5" -v B5="$tot_b5" \
-        -v MA="$min_a" -v MB="$min_b" -v XA="$max_a" -v XB="$max_b" 'BEGIN {
-      printf "tot_a_cpu=%.2f tot_b_cpu=%.2f tot_a_tets=%d tot_b_tets=%d ", A + ca, B + cb, TA + ta, TB + tb
-      printf "tot_a10=%.0f tot_b10=%.0f tot_a5=%.0f tot_b5=%.0f ", A10 + pa10 * ta / 100, B10 + pb10 * tb / 100, A5 + pa5 * ta / 100, B5 + pb5 * tb / 100
-      printf "min_a=%s min_b=%s max_a=%s max_b=%s\n", (da < MA ? da : MA), (db < MB ? db : MB), (xa > XA ? xa : XA), (xb > XB ? xb : XB) }')"
+    read -r ca ta da _ _ xa _ <<<"${a% (invalid)}"
+    read -r cb tb db _ _ xb _ <<<"${b% (invalid)}"
+    read -r na na5 <<<"$(under "$w/tetrec.check")"
+    read -r nb nb5 <<<"$(under "$w/tetgen.check")"
+    target=$(awk -v na="$na" -v ta="$ta" -v nb="$nb" -v tb="$tb" -v da="$da" -v db="$db" 'BEGIN {
+      m = ""
+      if (2 * na * tb > nb * ta) m = "<10"
+      if (da + 0 < db + 0) m = m (m == "" ? "" : ",") "min"
+      print m == "" ? "yes" : "no:" m }')
+    echo "$name $ca $ta $da $na $na5 $xa $cb $tb $db $nb $nb5 $xb $target $dropped $noncopl" >>"$rows"
+  elif [ "$edges" != - ]; then
+    # TetGen's surface is still counted on the models only TetGen meshed
+    echo "$name - - - - - - - - - - - - - $dropped $noncopl" >>"$rows"
   fi
+  printf "%-28s | %-44s | %-44s | %-13s | %s\n" "$name" "$a" "$b" "$target" "$surf" | tee -a "$table"
 done
-{
-  echo
-  echo "total over the $both models both meshed:"
-  awk -v A="$tot_a_cpu" -v B="$tot_b_cpu" -v TA="$tot_a_tets" -v TB="$tot_b_tets" \
-      -v A10="$tot_a10" -v B10="$tot_b10" -v A5="$tot_a5" -v B5="$tot_b5" \
-      -v MA="$min_a" -v MB="$min_b" -v XA="$max_a" -v XB="$max_b" 'BEGIN {
-    printf "  tetrec: cpu %.2f s, %d tets, min dihedral %s, <10 deg %.2f%%, <5 deg %.2f%%, max radius-edge %s\n", A, TA, MA, TA ? 100 * A10 / TA : 0, TA ? 100 * A5 / TA : 0, XA
-    printf "  tetgen: cpu %.2f s, %d tets, min dihedral %s, <10 deg %.2f%%, <5 deg %.2f%%, max radius-edge %s\n", B, TB, MB, TB ? 100 * B10 / TB : 0, TB ? 100 * B5 / TB : 0, XB
-    if (B > 0 && TB > 0) printf "  ratios tetrec/tetgen: cpu %.2fx, tets %.2fx\n", A / B, TA / TB }'
-} | tee -a "$table"
+# totals: the first four lines as before the targets and surface columns came (others read them)
+# rows: name, tetrec's cpu tets min n10 n5 maxR, TetGen's the same, target, dropped, non-coplanar
+awk '
+  function add(k) {
+    n[k]++; A[k] += $2; TA[k] += $3; NA[k] += $5; NA5[k] += $6
+    B[k] += $8; TB[k] += $9; NB[k] += $11; NB5[k] += $12
+    if (!(k in MA) || $4 + 0 < MA[k] + 0) MA[k] = $4
+    if (!(k in XA) || $7 + 0 > XA[k] + 0) XA[k] = $7
+    if (!(k in MB) || $10 + 0 < MB[k] + 0) MB[k] = $10
+    if (!(k in XB) || $13 + 0 > XB[k] + 0) XB[k] = $13
+    if ($14 == "yes") met[k]++
+  }
+  function line(who, c, t, n10, n5, mn, mx) {
+    printf "  %s: cpu %.2f s, %d tets, min dihedral %s, <10 deg %.2f%%, <5 deg %.2f%%, max radius-edge %s\n", who, c, t, mn, t ? 100 * n10 / t : 0, t ? 100 * n5 / t : 0, mx
+  }
+  function totals(k) {
+    line("tetrec", A[k], TA[k], NA[k], NA5[k], k in MA ? MA[k] : 180, k in XA ? XA[k] : 0)
+    line("tetgen", B[k], TB[k], NB[k], NB5[k], k in MB ? MB[k] : 180, k in XB ? XB[k] : 0)
+    if (B[k] > 0 && TB[k] > 0) printf "  ratios tetrec/tetgen: cpu %.2fx, tets %.2fx\n", A[k] / B[k], TA[k] / TB[k]
+  }
+  {
+    if ($15 != "-") { tg++; if ($15 > 0) tgd++; if ($16 == 0) tgk++ }
+    if ($2 == "-") next
+    add("all")
+    if ($15 != "-") { ed += $15; em += $16; if ($16 == 0) add("lfl"); if ($15 == 0) add("same") }
+  }
+  END {
+    printf "\ntotal over the %d models both meshed:\n", n["all"]
+    totals("all")
+    printf "  issue 17 targets (per model: share under 10 deg at most half of TetGen'"'"'s, min dihedral at least TetGen'"'"'s): met on %d of %d models", met["all"], n["all"]
+    if (B["all"] > 0 && TB["all"] > 0) printf "; cpu %.2fx (target <= 1), tets %.2fx (target <= 1.2)", A["all"] / B["all"], TA["all"] / TB["all"]
+    printf "\n\nTetGen'"'"'s surface (%d models TetGen meshed): it drops input edges on %d, edges between non-coplanar faces on %d; it keeps the input surface (drops no edge between non-coplanar faces) on %d\n", tg, tgd, tg - tgk, tgk
+    printf "  over the %d models both meshed: %d input edges dropped, %d of them between non-coplanar faces\n", n["all"], ed, em
+    printf "like-for-like: the %d models both meshed where TetGen keeps the input surface:\n", n["lfl"]
+    totals("lfl")
+    printf "  issue 17 targets met on %d of %d models\n", met["lfl"], n["lfl"]
+    printf "  of those, the %d where TetGen keeps every input edge: targets met on %d", n["same"], met["same"]
+    if (B["same"] > 0 && TB["same"] > 0) printf "; cpu %.2fx, tets %.2fx", A["same"] / B["same"], TA["same"] / TB["same"]
+    printf "\n"
+  }' "$rows" | tee -a "$table"
