@@ -359,11 +359,14 @@ static tr_status reduce_once(rf_ctx *c, xmemo *x, const tr_point *p, int allow_s
  * only take out more as the cavity shrinks, so every order of taking tets out ends at
  * the same cavity, the largest one on which they take out nothing: the one that
  * reduce_once's passes reach (each a full sweep, hundreds of them on mpi.off's cavities
- * of thousands of tets, where they took two thirds of the run). *fail = 1 when a tet
+ * of thousands of tets, where they took two thirds of the run; a small cavity keeps
+ * the passes, which cost less there than this sweep and its reconnect). *fail = 1 when a tet
  * holding p would have to go. The cavity is rebuilt by reconnect, in its order. */
+#define RF_SETTLE_ABOVE 64 /* tets: a smaller cavity settles in a pass or two */
 static tr_status settle(rf_ctx *c, xmemo *x, const tr_point *p, int allow_split, int *fail)
 {
   struct tr_mesh *m = c->m;
+  int dropped = 0;
   c->stack.n = 0;
   for (size_t i = 0; i < c->cav.n; i++) {
     uint32_t t = c->cav.a[i];
@@ -393,6 +396,7 @@ static tr_status settle(rf_ctx *c, xmemo *x, const tr_point *p, int allow_split,
       *fail = 1;
       return TR_OK;
     }
+    dropped = 1;
     for (int j = 0; j < 4; j++) {
       uint32_t a = m->tn[4 * (size_t)t + (size_t)j];
       if (a != TR_NONE && (c->tstate[a >> 2] & ST_IN) && (c->tstate[a >> 2] & ST_KEEP))
@@ -401,7 +405,7 @@ static tr_status settle(rf_ctx *c, xmemo *x, const tr_point *p, int allow_split,
   }
   /* a tet cut off from the ones holding p borders only tets cut off with it or tets
    * outside: taking it out leaves no new coned face on the rest */
-  return reconnect(c);
+  return dropped ? reconnect(c) : TR_OK;
 }
 
 tr_status rf_cavity(rf_ctx *c, uint32_t t0, const tr_point *p, uint32_t pid, int allow_split,
@@ -466,7 +470,7 @@ tr_status rf_cavity(rf_ctx *c, uint32_t t0, const tr_point *p, uint32_t pid, int
       fail = 1;
     else
       st = reconnect(c);
-    if (st == TR_OK && !fail)
+    if (st == TR_OK && !fail && c->cav.n > RF_SETTLE_ABOVE)
       st = settle(c, x, p, allow_split, &fail);
   }
   if (st != TR_OK || fail) {
