@@ -197,10 +197,77 @@ static tr_status reconnect(rf_ctx *c)
   return TR_OK;
 }
 
-/* Is vertex a (b == TR_NONE) / edge {a,b} on a coned face? A linear scan: cavities hold
- * a few dozen tets. */
-static int on_coned(const rf_ctx *c, uint32_t a, uint32_t b)
+/* The vertices and edges of the coned faces, sorted, for a big cavity: there the lose
+ * check below, a linear scan of the coned faces per vertex and sub-segment, was
+ * quadratic (mpi.off: cavities of thousands of tets behind nearly flat input polygons). */
+#define RF_CONED_SCAN 32 /* coned faces up to which a linear scan is cheaper */
+typedef struct {
+  uint32_t *v;
+  uint64_t *e;
+  size_t nv, ne;
+} coned_set;
+
+static int cmp_u32(const void *a, const void *b)
 {
+  uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+  return (x > y) - (x < y);
+}
+
+static int cmp_u64(const void *a, const void *b)
+{
+  uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+  return (x > y) - (x < y);
+}
+
+static uint64_t edge_key(uint32_t a, uint32_t b)
+{
+  return a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
+}
+
+/* Fills s from c->bfaces when there are more than RF_CONED_SCAN of them (else s stays
+ * empty and on_coned scans). */
+static tr_status coned_build(const rf_ctx *c, coned_set *s)
+{
+  memset(s, 0, sizeof *s);
+  size_t n = 3 * c->bfaces.n;
+  if (c->bfaces.n <= RF_CONED_SCAN)
+    return TR_OK;
+  s->v = malloc(n * sizeof *s->v);
+  s->e = malloc(n * sizeof *s->e);
+  if (!s->v || !s->e) {
+    free(s->v);
+    free(s->e);
+    return tr_error(TR_ERR_NOMEM, "out of memory for a cavity's %zu coned faces", c->bfaces.n);
+  }
+  for (size_t i = 0; i < c->bfaces.n; i++) {
+    const uint32_t *v = c->m->tv + 4 * (size_t)(c->bfaces.a[i] >> 2);
+    int k = (int)(c->bfaces.a[i] & 3);
+    for (int j = 0; j < 3; j++) {
+      s->v[3 * i + j] = v[tr_face_vtx[k][j]];
+      s->e[3 * i + j] = edge_key(v[tr_face_vtx[k][j]], v[tr_face_vtx[k][(j + 1) % 3]]);
+    }
+  }
+  qsort(s->v, n, sizeof *s->v, cmp_u32);
+  qsort(s->e, n, sizeof *s->e, cmp_u64);
+  s->nv = s->ne = n;
+  return TR_OK;
+}
+
+static void coned_free(coned_set *s)
+{
+  free(s->v);
+  free(s->e);
+}
+
+/* Is vertex a (b == TR_NONE) / edge {a,b} on a coned face? */
+static int on_coned(const rf_ctx *c, const coned_set *s, uint32_t a, uint32_t b)
+{
+  if (s->v) {
+    if (b == TR_NONE)
+      return bsearch(&a, s->v, s->nv, sizeof *s->v, cmp_u32) != NULL;
+    uint64_t k = edge_key(a, b);
+    return bsearch(&k, s->e, s->ne, sizeof *s->e, cmp_u64) != NULL;
+  }
   for (size_t i = 0; i < c->bfaces.n; i++) {
     uint32_t t = c->bfaces.a[i] >> 2;
     int k = (int)(c->bfaces.a[i] & 3), ha = 0, hb = b == TR_NONE;
@@ -279,28 +346,89 @@ static tr_status reduce_once(rf_ctx *c, xmemo *x, const tr_point *p, int allow_s
   }
   if (!drop) {
     /* a vertex or a sub-segment (other than the one p splits) the cone would lose */
+    coned_set cs;
+    TR_CHECK(coned_build(c, &cs));
     for (size_t i = 0; i < c->cav.n; i++) {
       uint32_t t = c->cav.a[i];
       const uint32_t *v = m->tv + 4 * (size_t)t;
       int lose = 0;
       for (int j = 0; j < 4 && !lose; j++)
-        lose = !on_coned(c, v[j], TR_NONE);
+        lose = !on_coned(c, &cs, v[j], TR_NONE);
       for (int e = 0; e < 6 && !lose; e++) {
         uint32_t a = v[tr_edge_vtx[e][0]], b = v[tr_edge_vtx[e][1]];
         uint32_t g = rf_subseg_of(c, a, b);
-        lose = g != TR_NONE && g != c->split_seg && !on_coned(c, a, b);
+        lose = g != TR_NONE && g != c->split_seg && !on_coned(c, &cs, a, b);
       }
       if (lose) {
         if (!drop_tet(c, t)) {
+          coned_free(&cs);
           *res = -1;
           return TR_OK;
         }
         drop = 1;
       }
     }
+    coned_free(&cs);
   }
   *res = drop;
   return TR_OK;
+}
+
+/* The tets that pass after pass of reduce_once would take out for a coned face that p
+ * does not see, and those that are then cut off from the tets holding p, taken out by a
+ * worklist of faces: only a face that has just come onto the cavity's boundary needs a
+ * test. After reduce_once's first pass no sub-face lies inside the cavity with the
+ * cavity on both sides, so that rule is spent; the visibility rule and the reachability
+ * only take out more as the cavity shrinks, so every order of taking tets out ends at
+ * the same cavity, the largest one on which they take out nothing: the one that
+ * reduce_once's passes reach (each a full sweep, hundreds of them on mpi.off's cavities
+ * of thousands of tets, where they took two thirds of the run; a small cavity keeps
+ * the passes, which cost less there than this sweep and its reconnect). *fail = 1 when a tet
+ * holding p would have to go. The cavity is rebuilt by reconnect, in its order. */
+#define RF_SETTLE_ABOVE 64 /* tets: a smaller cavity settles in a pass or two */
+static tr_status settle(rf_ctx *c, xmemo *x, const tr_point *p, int allow_split, int *fail)
+{
+  struct tr_mesh *m = c->m;
+  int dropped = 0;
+  c->stack.n = 0;
+  for (size_t i = 0; i < c->cav.n; i++) {
+    uint32_t t = c->cav.a[i];
+    c->tstate[t] |= ST_KEEP;
+    for (int k = 0; k < 4; k++)
+      if (!in_cav(c, TR_NEIG(m, t, k)))
+        TR_CHECK(tr_u32buf_push(&c->stack, 4 * t + (uint32_t)k));
+  }
+  /* the cavity here: the tets flagged both IN and KEEP */
+  while (c->stack.n) {
+    uint32_t f = c->stack.a[--c->stack.n], t = f >> 2;
+    int k = (int)(f & 3);
+    if (!(c->tstate[t] & ST_KEEP))
+      continue;
+    uint32_t n = TR_NEIG(m, t, k);
+    if (n != TR_NONE && (c->tstate[n] & ST_IN) && (c->tstate[n] & ST_KEEP))
+      continue;
+    int s = face_side(c, t, k, p);
+    if (s > 0)
+      continue;
+    if (s == 0 && n == TR_NONE) {
+      uint32_t sf = face_subface(c, t, k);
+      if (sf != TR_NONE && crossable(c, x, sf, p, allow_split))
+        continue;
+    }
+    if (!drop_tet(c, t)) {
+      *fail = 1;
+      return TR_OK;
+    }
+    dropped = 1;
+    for (int j = 0; j < 4; j++) {
+      uint32_t a = m->tn[4 * (size_t)t + (size_t)j];
+      if (a != TR_NONE && (c->tstate[a >> 2] & ST_IN) && (c->tstate[a >> 2] & ST_KEEP))
+        TR_CHECK(tr_u32buf_push(&c->stack, a));
+    }
+  }
+  /* a tet cut off from the ones holding p borders only tets cut off with it or tets
+   * outside: taking it out leaves no new coned face on the rest */
+  return dropped ? reconnect(c) : TR_OK;
 }
 
 tr_status rf_cavity(rf_ctx *c, uint32_t t0, const tr_point *p, uint32_t pid, int allow_split,
@@ -355,7 +483,9 @@ tr_status rf_cavity(rf_ctx *c, uint32_t t0, const tr_point *p, uint32_t pid, int
         st = add_tet(c, n);
     }
   }
-  /* 3. reduction */
+  /* 3. reduction: a full pass, then the rest of the visibility rule by settle, then a
+   * full pass again, which finds nothing more to drop for that rule and checks for lost
+   * vertices and sub-segments */
   while (st == TR_OK && !fail) {
     int res = 0;
     st = reduce_once(c, x, p, allow_split, &res);
@@ -365,6 +495,8 @@ tr_status rf_cavity(rf_ctx *c, uint32_t t0, const tr_point *p, uint32_t pid, int
       fail = 1;
     else
       st = reconnect(c);
+    if (st == TR_OK && !fail && c->cav.n > RF_SETTLE_ABOVE)
+      st = settle(c, x, p, allow_split, &fail);
   }
   if (st != TR_OK || fail) {
     clear_state(c);
