@@ -36,6 +36,33 @@ static void get_q3(const tr_point *p, mpq_t out[3])
     tr_point_get_q(p, i, out[i]);
 }
 
+/* X[k] = the coordinates of pts[k] times the least common denominator of all of them:
+ * integers, for the exact stages of homogeneous polynomials in coordinate differences
+ * (their sign does not change under a positive scale). mpq would normalise (a gcd) after
+ * every product, which made these tests the hottest of refinement on the cocircular
+ * sub-faces of CAD models' right angles. X[k][i] are initialised here. */
+static void scaled_ints(const tr_point *const *pts, int n, mpz_t (*X)[3])
+{
+  mpq_t x;
+  mpz_t L;
+  mpq_init(x);
+  mpz_init_set_ui(L, 1);
+  for (int k = 0; k < n; k++)
+    for (int i = 0; i < 3; i++) {
+      tr_point_get_q(pts[k], i, x);
+      mpz_lcm(L, L, mpq_denref(x));
+    }
+  for (int k = 0; k < n; k++)
+    for (int i = 0; i < 3; i++) {
+      tr_point_get_q(pts[k], i, x);
+      mpz_init(X[k][i]);
+      mpz_divexact(X[k][i], L, mpq_denref(x));
+      mpz_mul(X[k][i], X[k][i], mpq_numref(x));
+    }
+  mpz_clear(L);
+  mpq_clear(x);
+}
+
 int rf_in_diametral(const tr_point *a, const tr_point *b, const tr_point *p)
 {
   double u[3], v[3];
@@ -48,24 +75,19 @@ int rf_in_diametral(const tr_point *a, const tr_point *b, const tr_point *p)
     if (perm == 0)
       return 0;
   }
-  mpq_t A[3], B[3], P[3], x, y, s;
+  const tr_point *pts[3] = {a, b, p};
+  mpz_t X[3][3], x, y, s;
+  scaled_ints(pts, 3, X);
+  mpz_inits(x, y, s, NULL);
   for (int i = 0; i < 3; i++) {
-    mpq_inits(A[i], B[i], P[i], NULL);
+    mpz_sub(x, X[2][i], X[0][i]);
+    mpz_sub(y, X[2][i], X[1][i]);
+    mpz_addmul(s, x, y);
   }
-  mpq_inits(x, y, s, NULL);
-  get_q3(a, A);
-  get_q3(b, B);
-  get_q3(p, P);
-  for (int i = 0; i < 3; i++) {
-    mpq_sub(x, P[i], A[i]);
-    mpq_sub(y, P[i], B[i]);
-    mpq_mul(x, x, y);
-    mpq_add(s, s, x);
-  }
-  int r = mpq_sgn(s) < 0;
-  for (int i = 0; i < 3; i++)
-    mpq_clears(A[i], B[i], P[i], NULL);
-  mpq_clears(x, y, s, NULL);
+  int r = mpz_sgn(s) < 0;
+  for (int k = 0; k < 3; k++)
+    mpz_clears(X[k][0], X[k][1], X[k][2], NULL);
+  mpz_clears(x, y, s, NULL);
   return r;
 }
 
@@ -101,6 +123,19 @@ static void qdet3(mpq_t out, mpq_t x[3], mpq_t y[3], mpq_t z[3], mpq_t t)
   }
 }
 
+static void zdet3(mpz_t out, mpz_t x[3], mpz_t y[3], mpz_t z[3], mpz_t t)
+{
+  mpz_set_ui(out, 0);
+  static const int P[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
+  for (int k = 0; k < 6; k++) {
+    mpz_mul(t, x[P[k][0]], y[P[k][1]]);
+    if (k < 3)
+      mpz_addmul(out, t, z[P[k][2]]);
+    else
+      mpz_submul(out, t, z[P[k][2]]);
+  }
+}
+
 /* The sphere through a, b, c centred in their plane, lifted: with u = b-a, v = c-a,
  * q = p-a, n = u x v, the rows (u,|u|^2), (v,|v|^2), (n,0) span the kernel of the lifted
  * sphere's linear form, and det4[them; (q,|q|^2)] = |n|^2 (|q|^2 - 2 centre.q), negative
@@ -125,44 +160,38 @@ int rf_in_equatorial(const tr_point *a, const tr_point *b, const tr_point *c,
     if (perm == 0)
       return 0;
   }
-  mpq_t A[3], B[3], C[3], P[3], U[3], V[3], Q[3], N[3], w[3], t, s, r;
-  for (int i = 0; i < 3; i++)
-    mpq_inits(A[i], B[i], C[i], P[i], U[i], V[i], Q[i], N[i], w[i], NULL);
-  mpq_inits(t, s, r, NULL);
-  get_q3(a, A);
-  get_q3(b, B);
-  get_q3(c, C);
-  get_q3(p, P);
+  /* homogeneous of degree 6 in the differences: on scaled integers (scaled_ints) */
+  mpz_t X[4][3], U[3], V[3], Q[3], N[3], w[3], t, s, r;
+  const tr_point *pts[4] = {a, b, c, p};
+  scaled_ints(pts, 4, X);
+  mpz_inits(t, s, r, NULL);
   for (int i = 0; i < 3; i++) {
-    mpq_sub(U[i], B[i], A[i]);
-    mpq_sub(V[i], C[i], A[i]);
-    mpq_sub(Q[i], P[i], A[i]);
+    mpz_inits(U[i], V[i], Q[i], N[i], w[i], NULL);
+    mpz_sub(U[i], X[1][i], X[0][i]);
+    mpz_sub(V[i], X[2][i], X[0][i]);
+    mpz_sub(Q[i], X[3][i], X[0][i]);
   }
   for (int i = 0; i < 3; i++) {
     int j = (i + 1) % 3, k = (i + 2) % 3;
-    mpq_mul(N[i], U[j], V[k]);
-    mpq_mul(t, U[k], V[j]);
-    mpq_sub(N[i], N[i], t);
+    mpz_mul(N[i], U[j], V[k]);
+    mpz_submul(N[i], U[k], V[j]);
   }
-  mpq_t *rows[3] = {U, V, Q};
+  mpz_t *rows[3] = {U, V, Q};
   for (int k = 0; k < 3; k++)
-    for (int i = 0; i < 3; i++) {
-      mpq_mul(t, rows[k][i], rows[k][i]);
-      mpq_add(w[k], w[k], t);
-    }
-  qdet3(r, V, N, Q, t);
-  mpq_mul(r, r, w[0]);
-  mpq_sub(s, s, r);
-  qdet3(r, U, N, Q, t);
-  mpq_mul(r, r, w[1]);
-  mpq_add(s, s, r);
-  qdet3(r, U, V, N, t);
-  mpq_mul(r, r, w[2]);
-  mpq_add(s, s, r);
-  int res = mpq_sgn(s) < 0;
+    for (int i = 0; i < 3; i++)
+      mpz_addmul(w[k], rows[k][i], rows[k][i]);
+  zdet3(r, V, N, Q, t);
+  mpz_submul(s, r, w[0]);
+  zdet3(r, U, N, Q, t);
+  mpz_addmul(s, r, w[1]);
+  zdet3(r, U, V, N, t);
+  mpz_addmul(s, r, w[2]);
+  int res = mpz_sgn(s) < 0;
+  for (int k = 0; k < 4; k++)
+    mpz_clears(X[k][0], X[k][1], X[k][2], NULL);
   for (int i = 0; i < 3; i++)
-    mpq_clears(A[i], B[i], C[i], P[i], U[i], V[i], Q[i], N[i], w[i], NULL);
-  mpq_clears(t, s, r, NULL);
+    mpz_clears(U[i], V[i], Q[i], N[i], w[i], NULL);
+  mpz_clears(t, s, r, NULL);
   return res;
 }
 
