@@ -245,9 +245,11 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
   st = tr_check_conformity(m, used, vol6, 0);
   if (st != TR_OK)
     finding("tr_check_conformity (meshed PLC)", st, tr_last_error());
-  if (stats.surface_swaps == 0) {
-    /* nothing was smoothed: the mesh conforms to the generated triangles themselves
-     * (whose orientation may be scrambled: the volume comes from the meshed PLC) */
+  if (stats.surface_swaps == 0 && stats.input_edges_merged == 0) {
+    /* nothing was smoothed and refinement merged no planar facet (core/facets.h: the
+     * facets are those of the meshed PLC, whose orientation the generated one may
+     * scramble): the mesh conforms to the generated triangles themselves (the volume
+     * comes from the meshed PLC) */
     mpq_t v;
     mpq_init(v);
     if (vol6)
