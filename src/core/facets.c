@@ -20,12 +20,13 @@ static uint32_t find(uint32_t *par, uint32_t x)
   return r;
 }
 
-/* An axis along which triangle T's projection is not degenerate (exact), -1 if none. */
-static int tri_axis(const double *xyz, const uint32_t *T)
+int tr_plc_tri_axis(const struct tr_plc *plc, uint32_t t)
 {
+  const uint32_t *T = plc->tris + 3 * (size_t)t;
+  const double *x = plc->xyz;
   for (int k = 0; k < 3; k++)
-    if (tr_orient2d_proj(xyz + 3 * (size_t)T[0], xyz + 3 * (size_t)T[1], xyz + 3 * (size_t)T[2],
-                         k) != 0)
+    if (tr_orient2d_proj(x + 3 * (size_t)T[0], x + 3 * (size_t)T[1], x + 3 * (size_t)T[2], k) !=
+        0)
       return k;
   return -1;
 }
@@ -44,8 +45,8 @@ static int mergeable(const struct tr_plc *plc, uint32_t s, int i, uint32_t t, in
                *pd = x + 3 * (size_t)d;
   if (tr_orient3d(pa, pb, pc, pd) != 0)
     return 0;
-  int ax = tri_axis(x, S);
-  if (ax < 0 || tri_axis(x, T) < 0)
+  int ax = tr_plc_tri_axis(plc, s);
+  if (ax < 0 || tr_plc_tri_axis(plc, t) < 0)
     return 0;
   double sc = tr_orient2d_proj(pa, pb, pc, ax), sd = tr_orient2d_proj(pa, pb, pd, ax);
   return (sc > 0 && sd < 0) || (sc < 0 && sd > 0);

@@ -27,6 +27,11 @@ typedef struct tr_facets {
 tr_status tr_facets_build(const struct tr_plc *plc, int keep_edges, tr_facets *out);
 void tr_facets_free(tr_facets *f);
 
+/* An axis along which input triangle t's projection is not degenerate (its normal's
+ * component there is non-zero, exact), -1 if none: the projection facets and the
+ * validator compute 2D orientations and areas in. */
+int tr_plc_tri_axis(const struct tr_plc *plc, uint32_t t);
+
 static inline uint32_t tr_facets_size(const tr_facets *f, uint32_t g)
 {
   return f->start[g + 1] - f->start[g];

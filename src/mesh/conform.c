@@ -125,17 +125,6 @@ static tr_status grid_build(const struct tr_plc *plc, grid *G)
   return TR_OK;
 }
 
-/* Axis along which the normal of input triangle t is non-zero (exact). */
-static int tri_axis(const struct tr_plc *plc, uint32_t t)
-{
-  const uint32_t *v = plc->tris + 3 * (size_t)t;
-  for (int k = 0; k < 3; k++)
-    if (tr_orient2d_proj(plc->xyz + 3 * (size_t)v[0], plc->xyz + 3 * (size_t)v[1],
-                         plc->xyz + 3 * (size_t)v[2], k) != 0)
-      return k;
-  return -1;
-}
-
 /* 1 iff p is in the closed input triangle t (exact). */
 static int in_tri(const struct tr_plc *plc, uint32_t t, int ax, const tr_point *p)
 {
@@ -479,7 +468,7 @@ static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *
     goto done;
   }
   for (uint32_t t = 0; t < ntri; t++) {
-    axes[t] = tri_axis(plc, t);
+    axes[t] = tr_plc_tri_axis(plc, t);
     stamp[t] = TR_NONE;
     mpq_init(acc[t]);
     nacc++;
