@@ -572,6 +572,12 @@ static int cmd_mesh(const args *a)
   if (a->optimize > 1 && !bounded && !a->quiet)
     fprintf(stderr, "tetrec: warning: -O/--optimize has no effect without quality refinement "
             "(--quality, --max-volume or a region's maximum volume)\n");
+  if (a->subface_quality > 0 && !bounded && !a->quiet)
+    fprintf(stderr, "tetrec: warning: --subface-quality has no effect without quality "
+            "refinement (--quality, --max-volume or a region's maximum volume)\n");
+  if (a->keep_edges && !bounded && !a->quiet)
+    fprintf(stderr, "tetrec: warning: --keep-edges has no effect without quality refinement: "
+            "every input edge is kept anyway\n");
   /* The pipeline (src/pipeline): Delaunay, edge and facet recovery, outer removal. With
    * --exact (checked above to go to a .node), a rounding that cannot be repaired is a
    * warning, not a failure: the exact points are written. */

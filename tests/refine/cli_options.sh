@@ -2,7 +2,8 @@
 # The refinement options of `tetrec mesh`: --quality R bounds the radius-edge ratio, a dihedral
 # target D is worked towards by sliver removal (out of (0, 70] or with -O 0: exit 1; a
 # warning when tets stay under it), bad bounds and the options on other
-# commands are usage errors (exit 1; --subface-quality under 1 too), the point budget stops a run with exit 8 and a
+# commands are usage errors (exit 1; --subface-quality under 1 too), --subface-quality and
+# --keep-edges without refinement are warned about, the point budget stops a run with exit 8 and a
 # message, and --stats carries the quality rows. Every mesh written is checked.
 # usage: cli_options.sh TETREC SURFACE WORKDIR
 set -u
@@ -33,6 +34,10 @@ expect 1 "at least 1" -- mesh "$S" --quality 0.5 -o "$W/c.node"
 expect 0 "" -- mesh "$S" --quality 1.414 --subface-quality 1.414 -a 0.05 -o "$W/f.node" --exact -q
 expect 0 "conforms exactly.*volume equals" -- check "$S" "$W/f.node"
 expect 1 "ratio of at least 1" -- mesh "$S" --quality 1.414 --subface-quality 0.5 -o "$W/c.node"
+expect 0 "" -- mesh "$S" --quality 1.414 --keep-edges -o "$W/g.node" --exact -q
+expect 0 "conforms exactly.*volume equals" -- check "$S" "$W/g.node"
+expect 0 "warning: --subface-quality has no effect without quality refinement" -- mesh "$S" --subface-quality 2 -o "$W/h.node"
+expect 0 "warning: --keep-edges has no effect without quality refinement" -- mesh "$S" --keep-edges -o "$W/h.node"
 expect 1 "positive volume" -- mesh "$S" -a -1 -o "$W/c.node"
 expect 1 "does not apply to 'delaunay'" -- delaunay "$S" --quality 1.414
 expect 8 "point budget of 50 points" -- mesh "$S" -a 0.001 --refine-budget 50 -o "$W/c.node"
