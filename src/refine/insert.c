@@ -39,6 +39,25 @@ static int new_sub_edge(const tr_u32buf *ns, uint32_t a, uint32_t b)
   return 0;
 }
 
+/* Does the new sub-face (a, b, p) turn like the removed sub-face f, whose boundary edge ab
+ * it cones (exact, in the projection of f's facet)? When every new sub-face of a facet
+ * does, the fan from p covers each point of the removed region once and nothing else.
+ * The 3D cavity is star-shaped from p, but its cut by the facet's plane can hold ground
+ * outside the facet: a merged facet need not be convex, and a notch between two of its
+ * strips may lie inside the domain. A sub-face beyond the notch is then removed with
+ * edges whose fan from p would cross the notch; this test refuses that insertion. */
+static int fans_into(const rf_ctx *c, uint32_t f, uint32_t a, uint32_t b, uint32_t p)
+{
+  const struct tr_mesh *m = c->m;
+  const uint32_t *v = c->sfv + 3 * (size_t)f;
+  int axis = tr_plc_tri_axis(c->plc, c->sftri[f]);
+  tr_point x[3], pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b), pp = tr_mesh_point(m, p);
+  for (int i = 0; i < 3; i++)
+    x[i] = tr_mesh_point(m, v[i]);
+  int s = tr_orient2d_proj_p(&x[0], &x[1], &x[2], axis);
+  return s != 0 && tr_orient2d_proj_p(&pa, &pb, &pp, axis) == s;
+}
+
 tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
 {
   struct tr_mesh *m = c->m;
@@ -65,7 +84,8 @@ tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
   }
   /* 2. the new sub-faces: the point and each boundary edge of the removed region of each
    * input triangle, oriented like the removed sub-face it bounded */
-  for (size_t i = 0; i < rem->n && st == TR_OK; i++) {
+  int good = 1;
+  for (size_t i = 0; i < rem->n && st == TR_OK && good; i++) {
     uint32_t f = rem->a[i];
     const uint32_t *v = c->sfv + 3 * (size_t)f;
     for (int e = 0; e < 3 && st == TR_OK; e++) {
@@ -84,6 +104,10 @@ tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
       }
       if (inner)
         continue;
+      if (!fans_into(c, f, a, b, pid)) {
+        good = 0;
+        break;
+      }
       uint32_t rec[4] = {a, b, pid, c->sftri[f]};
       for (int d = 0; d < 4 && st == TR_OK; d++)
         st = tr_u32buf_push(ns, rec[d]);
@@ -96,7 +120,7 @@ tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
   uint32_t *nv = st == TR_OK ? malloc(sizeof *nv * 6 * (nnew ? nnew : 1)) : NULL;
   if (st == TR_OK && (!pr || !nv))
     st = tr_error(TR_ERR_NOMEM, "out of memory for a cavity of %zu faces", nnew);
-  int good = st == TR_OK;
+  good = good && st == TR_OK;
   for (size_t i = 0; good && i < nnew; i++) {
     uint32_t t = c->bfaces.a[i] >> 2;
     int k = (int)(c->bfaces.a[i] & 3);

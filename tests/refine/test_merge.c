@@ -131,6 +131,40 @@ static void merged_slab(void)
   tr_plc_destroy(p);
 }
 
+/* tests/data/merged_facet_notch.off (found by fuzz_pipeline_quality): a union of voxels
+ * whose top at z = 16 is one merged facet of two thin strips joined at one end, with a
+ * notch between them that lies inside the domain. A refinement cavity from a point on one
+ * side of the notch held a sub-face of the other strip; coning it from the point made a
+ * sub-face across the notch, outside the facet, and the refinement stopped with
+ * TR_ERR_INTERNAL. Now such an insertion is refused (insert.c, fans_into): the mesh is
+ * made, valid and exactly conforming, with the sliver stage's pinned refinement too. */
+static void notch(const char *path)
+{
+  tr_plc *p = NULL, *u = NULL;
+  if (tr_plc_read(path, &p) != TR_OK) {
+    fprintf(stderr, "%s: %s\n", path, tr_last_error());
+    exit(1);
+  }
+  tr_options opt;
+  tr_options_default(&opt);
+  opt.verbose = 0;
+  opt.quality_ratio = 1.414;
+  tr_mesh *m = NULL;
+  tr_stats st;
+  memset(&st, 0, sizeof st);
+  st.size = sizeof st;
+  tr_status s = tr_mesh_plc_ex(p, &opt, &m, &st, &u);
+  EXPECT(s == TR_OK, "notch: %s: %s", tr_status_name(s), tr_last_error());
+  if (m) {
+    EXPECT(st.input_edges_merged > 0, "notch: no facet merged, the case is not exercised");
+    EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, NULL) == TR_OK, "notch: %s", tr_last_error());
+    EXPECT(tr_check_conformity(m, u, NULL, 0) == TR_OK, "notch: %s", tr_last_error());
+  }
+  tr_mesh_destroy(m);
+  tr_plc_destroy(u);
+  tr_plc_destroy(p);
+}
+
 int main(int argc, char **argv)
 {
   const char *c = argc > 1 ? argv[1] : "";
@@ -138,6 +172,8 @@ int main(int argc, char **argv)
     thin_box_diagonals_merge();
   else if (!strcmp(c, "slab"))
     merged_slab();
+  else if (!strcmp(c, "notch") && argc > 2)
+    notch(argv[2]);
   else {
     fprintf(stderr, "unknown case '%s'\n", c);
     return 2;
