@@ -8,15 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/plc.h"
 #include "delaunay/delaunay.h"
-#include "mesh/check.h"
-#include "mesh/conform.h"
-#include "pipeline/pipeline.h"
 #include "refine/quality.h"
 #include "refine/refine.h"
 #include "sliver/sliver.h"
-#include "../pipeline/texpect.h"
+#include "../pipeline/tmesh.h"
 
 /* The box [0,1]^3 (vertices 0..7) and a sliver: a square at z = 1/2 folded by e, its
  * corners alternately up and down (vertices 8..11). Its circumsphere is centred in the
@@ -232,29 +228,16 @@ static void no_pass_lowers_the_smallest_angle(void)
   }
 }
 
-/* Meshes plc with --quality R and the given level; validators; NULL on failure. */
-static tr_mesh *mesh(const char *name, const tr_plc *plc, int level, unsigned chk,
-                     tr_plc **used, tr_stats *st)
+/* Meshes plc under --quality 1.414 with sliver removal at `level` into *r, through both
+ * validators (tmesh.h); NULL on failure. */
+static tr_mesh *mesh(tm_run *r, const char *name, const tr_plc *plc, int level, unsigned chk)
 {
-  tr_options opt;
-  tr_options_default(&opt);
-  opt.verbose = 0;
+  tr_options opt = tm_options();
   opt.quality_ratio = 1.414;
   opt.optimize = level;
-  tr_mesh *m = NULL;
-  memset(st, 0, sizeof *st);
-  st->size = sizeof *st;
-  tr_status s = tr_mesh_plc_ex(plc, &opt, &m, st, used);
-  if (s != TR_OK) {
-    EXPECT(0, "%s -O %d: tr_mesh_plc failed: %s: %s", name, level, tr_status_name(s),
-           tr_last_error());
-    return NULL;
-  }
-  s = tr_check_mesh(m, chk, NULL);
-  EXPECT(s == TR_OK, "%s -O %d: mesh validator: %s", name, level, tr_last_error());
-  s = tr_check_conformity(m, *used, NULL, 0);
-  EXPECT(s == TR_OK, "%s -O %d: exact conformity: %s", name, level, tr_last_error());
-  return m;
+  char label[160];
+  snprintf(label, sizeof label, "%s -O %d", name, level);
+  return tm_mesh(r, label, plc, &opt, chk);
 }
 
 /* Refined surfaces of tests/data with and without the stage: all validate, level 2 adds no
@@ -276,18 +259,17 @@ static void refined_surfaces(const char *dir)
     }
     /* a cavity or two cubes are not a ball: no Euler check (the volume is checked exactly) */
     unsigned chk = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T;
-    tr_plc *u0 = NULL, *u2 = NULL, *u3 = NULL;
-    tr_stats s0, s2, s3;
-    tr_mesh *m0 = mesh(files[i], p, 0, chk, &u0, &s0);
-    tr_mesh *m2 = mesh(files[i], p, 2, chk, &u2, &s2);
-    tr_mesh *m3 = mesh(files[i], p, 3, chk, &u3, &s3);
+    tm_run r0, r2, r3;
+    tr_mesh *m0 = mesh(&r0, files[i], p, 0, chk);
+    tr_mesh *m2 = mesh(&r2, files[i], p, 2, chk);
+    tr_mesh *m3 = mesh(&r3, files[i], p, 3, chk);
     if (m0 && m3) {
-      EXPECT(s3.min_dihedral >= s0.min_dihedral, "%s -O 3: smallest dihedral %g -> %g",
-             files[i], s0.min_dihedral, s3.min_dihedral);
-      EXPECT(s3.volume_nodes == s0.volume_nodes + s3.points_added_for_sliver,
+      EXPECT(r3.st.min_dihedral >= r0.st.min_dihedral, "%s -O 3: smallest dihedral %g -> %g",
+             files[i], r0.st.min_dihedral, r3.st.min_dihedral);
+      EXPECT(r3.st.volume_nodes == r0.st.volume_nodes + r3.st.points_added_for_sliver,
              "%s -O 3: %llu vertices, %llu without the stage and %llu points added", files[i],
-             (unsigned long long)s3.volume_nodes, (unsigned long long)s0.volume_nodes,
-             (unsigned long long)s3.points_added_for_sliver);
+             (unsigned long long)r3.st.volume_nodes, (unsigned long long)r0.st.volume_nodes,
+             (unsigned long long)r3.st.points_added_for_sliver);
       double worst0 = 0, worst3 = 0;
       for (int k = 0; k < 2; k++) {
         const tr_mesh *m = k ? m3 : m0;
@@ -318,25 +300,24 @@ static void refined_surfaces(const char *dir)
                  "%s -O 3: input vertex %u moved", files[i], v);
       }
       fprintf(stderr, "%s -O 3: min dihedral %.3f -> %.3f, under 10 deg %llu -> %llu, "
-              "%llu points added\n", files[i], s0.min_dihedral, s3.min_dihedral,
-              (unsigned long long)s0.tets_dihedral_below_10,
-              (unsigned long long)s3.tets_dihedral_below_10,
-              (unsigned long long)s3.points_added_for_sliver);
+              "%llu points added\n", files[i], r0.st.min_dihedral, r3.st.min_dihedral,
+              (unsigned long long)r0.st.tets_dihedral_below_10,
+              (unsigned long long)r3.st.tets_dihedral_below_10,
+              (unsigned long long)r3.st.points_added_for_sliver);
     }
-    tr_mesh_destroy(m3);
-    tr_plc_destroy(u3);
+    tm_free(&r3);
     if (m0 && m2) {
-      EXPECT(s2.points_added_for_sliver == 0 && s0.volume_nodes == s2.volume_nodes,
+      EXPECT(r2.st.points_added_for_sliver == 0 && r0.st.volume_nodes == r2.st.volume_nodes,
              "%s: the stage added points (%llu -> %llu vertices)", files[i],
-             (unsigned long long)s0.volume_nodes, (unsigned long long)s2.volume_nodes);
-      EXPECT(s0.sliver_flips == 0 && s0.sliver_points_smoothed == 0,
+             (unsigned long long)r0.st.volume_nodes, (unsigned long long)r2.st.volume_nodes);
+      EXPECT(r0.st.sliver_flips == 0 && r0.st.sliver_points_smoothed == 0,
              "%s: -O 0 flipped or moved", files[i]);
-      EXPECT(s2.min_dihedral >= s0.min_dihedral, "%s: smallest dihedral %g -> %g", files[i],
-             s0.min_dihedral, s2.min_dihedral);
-      EXPECT(s2.tets_dihedral_below_10 <= s0.tets_dihedral_below_10,
+      EXPECT(r2.st.min_dihedral >= r0.st.min_dihedral, "%s: smallest dihedral %g -> %g", files[i],
+             r0.st.min_dihedral, r2.st.min_dihedral);
+      EXPECT(r2.st.tets_dihedral_below_10 <= r0.st.tets_dihedral_below_10,
              "%s: tets under 10 degrees %llu -> %llu", files[i],
-             (unsigned long long)s0.tets_dihedral_below_10,
-             (unsigned long long)s2.tets_dihedral_below_10);
+             (unsigned long long)r0.st.tets_dihedral_below_10,
+             (unsigned long long)r2.st.tets_dihedral_below_10);
       /* the ratio bound holds for every tet with an angle under the stage's bound, up to
        * the worst ratio refinement left (exempt tets); the written doubles of Steiner
        * points may differ from the ones the stage measured by a few ulps */
@@ -370,16 +351,14 @@ static void refined_surfaces(const char *dir)
                  "%s: input vertex %u moved", files[i], v);
       }
       fprintf(stderr, "%s: min dihedral %.3f -> %.3f, under 10 deg %llu -> %llu, %llu flips, "
-              "%llu moved\n", files[i], s0.min_dihedral, s2.min_dihedral,
-              (unsigned long long)s0.tets_dihedral_below_10,
-              (unsigned long long)s2.tets_dihedral_below_10,
-              (unsigned long long)s2.sliver_flips,
-              (unsigned long long)s2.sliver_points_smoothed);
+              "%llu moved\n", files[i], r0.st.min_dihedral, r2.st.min_dihedral,
+              (unsigned long long)r0.st.tets_dihedral_below_10,
+              (unsigned long long)r2.st.tets_dihedral_below_10,
+              (unsigned long long)r2.st.sliver_flips,
+              (unsigned long long)r2.st.sliver_points_smoothed);
     }
-    tr_mesh_destroy(m0);
-    tr_mesh_destroy(m2);
-    tr_plc_destroy(u0);
-    tr_plc_destroy(u2);
+    tm_free(&r0);
+    tm_free(&r2);
     tr_plc_destroy(p);
   }
 }
@@ -437,28 +416,24 @@ static void the_polish_raises_the_minimum_of_an_icosahedron(void)
     tr_plc_destroy(p);
     return;
   }
-  tr_plc *u0 = NULL, *u1 = NULL, *u3 = NULL;
-  tr_stats s0, s1, s3;
-  tr_mesh *m0 = mesh("icosahedron", p, 0, TR_CHK_TOPOLOGY, &u0, &s0);
-  tr_mesh *m1 = mesh("icosahedron", p, 1, TR_CHK_TOPOLOGY, &u1, &s1);
-  tr_mesh *m3 = mesh("icosahedron", p, 3, TR_CHK_TOPOLOGY, &u3, &s3);
+  tm_run r0, r1, r3;
+  tr_mesh *m0 = mesh(&r0, "icosahedron", p, 0, TR_CHK_TOPOLOGY);
+  tr_mesh *m1 = mesh(&r1, "icosahedron", p, 1, TR_CHK_TOPOLOGY);
+  tr_mesh *m3 = mesh(&r3, "icosahedron", p, 3, TR_CHK_TOPOLOGY);
   if (m0 && m1 && m3) {
-    EXPECT(s3.min_dihedral >= 60, "icosahedron -O 3: smallest dihedral %.3f, under 60",
-           s3.min_dihedral);
-    EXPECT(s1.min_dihedral >= s0.min_dihedral && s1.min_dihedral >= 30 &&
-               s1.points_added_for_sliver == 0,
+    EXPECT(r3.st.min_dihedral >= 60, "icosahedron -O 3: smallest dihedral %.3f, under 60",
+           r3.st.min_dihedral);
+    EXPECT(r1.st.min_dihedral >= r0.st.min_dihedral && r1.st.min_dihedral >= 30 &&
+               r1.st.points_added_for_sliver == 0,
            "icosahedron -O 1: smallest dihedral %.3f -> %.3f (under 30?), %llu points",
-           s0.min_dihedral, s1.min_dihedral, (unsigned long long)s1.points_added_for_sliver);
+           r0.st.min_dihedral, r1.st.min_dihedral, (unsigned long long)r1.st.points_added_for_sliver);
     fprintf(stderr, "icosahedron: min dihedral -O 0 %.3f, -O 1 %.3f, -O 3 %.3f (%llu tets)\n",
-            s0.min_dihedral, s1.min_dihedral, s3.min_dihedral,
-            (unsigned long long)s3.volume_elements);
+            r0.st.min_dihedral, r1.st.min_dihedral, r3.st.min_dihedral,
+            (unsigned long long)r3.st.volume_elements);
   }
-  tr_mesh_destroy(m0);
-  tr_mesh_destroy(m1);
-  tr_mesh_destroy(m3);
-  tr_plc_destroy(u0);
-  tr_plc_destroy(u1);
-  tr_plc_destroy(u3);
+  tm_free(&r0);
+  tm_free(&r1);
+  tm_free(&r3);
   tr_plc_destroy(p);
 }
 
@@ -472,10 +447,9 @@ static void deterministic_and_levels_checked(const char *dir)
     EXPECT(0, "%s: %s", path, tr_last_error());
     return;
   }
-  tr_plc *u0 = NULL, *u1 = NULL;
-  tr_stats st;
-  tr_mesh *m0 = mesh("determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY, &u0, &st);
-  tr_mesh *m1 = mesh("determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY, &u1, &st);
+  tm_run r0, r1;
+  tr_mesh *m0 = mesh(&r0, "determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY);
+  tr_mesh *m1 = mesh(&r1, "determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY);
   if (m0 && m1) {
     EXPECT(m0->nv == m1->nv && m0->nt == m1->nt, "determinism: sizes differ");
     if (m0->nv == m1->nv && m0->nt == m1->nt)
@@ -491,10 +465,8 @@ static void deterministic_and_levels_checked(const char *dir)
   opt.optimize = TR_SLIVER_INSERT + 1;
   tr_mesh *bad = NULL;
   EXPECT(tr_mesh_plc(p, &opt, &bad, NULL) == TR_ERR_USAGE && !bad, "level 4 accepted");
-  tr_mesh_destroy(m0);
-  tr_mesh_destroy(m1);
-  tr_plc_destroy(u0);
-  tr_plc_destroy(u1);
+  tm_free(&r0);
+  tm_free(&r1);
   tr_plc_destroy(p);
 }
 
