@@ -1,5 +1,5 @@
 /* The set-up the whole-pipeline tests share (tests/refine, tests/sliver): small surfaces
- * built from arrays, and meshing one under given options with every output through the
+ * built from arrays (tplc.h), and meshing one under given options with every output through the
  * mesh validator and the exact conformity validator. One helper, so that each test states
  * its configuration and its property, and no test can mesh without validating. Uses the
  * counting check of texpect.h: a failed run or validation is counted and the case goes on. */
@@ -9,37 +9,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/plc.h"
 #include "mesh/check.h"
 #include "mesh/conform.h"
 #include "pipeline/pipeline.h"
 #include "texpect.h"
-
-/* The PLC of the points x (np) and triangles t (nt), copied. A test whose input cannot be
- * built is broken, not failing a property: it exits. */
-static inline tr_plc *tm_plc(const double *x, uint32_t np, const uint32_t *t, uint32_t nt)
-{
-  tr_plc *p = NULL;
-  if (tr_plc_create(&p) != TR_OK || tr_plc_set(p, x, np, t, nt, NULL) != TR_OK) {
-    fprintf(stderr, "cannot build PLC: %s\n", tr_last_error());
-    exit(1);
-  }
-  return p;
-}
-
-/* The box [lo, hi] (vertex i at bit k of i: hi[k]), 12 triangles facing inward (meshing
- * repairs the orientation), each side two triangles whose diagonal is an inner edge of
- * that side. */
-static inline tr_plc *tm_box(const double lo[3], const double hi[3])
-{
-  double x[24];
-  for (int i = 0; i < 8; i++)
-    for (int k = 0; k < 3; k++)
-      x[3 * i + k] = (i >> k) & 1 ? hi[k] : lo[k];
-  static const uint32_t t[36] = {0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3, 0, 4, 5, 0, 5, 1,
-                                 2, 3, 7, 2, 7, 6, 0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5};
-  return tm_plc(x, 8, t, 12);
-}
+#include "tplc.h"
 
 /* The library's defaults, quiet. */
 static inline tr_options tm_options(void)
