@@ -77,14 +77,9 @@ static void merged_slab(void)
 
 int main(int argc, char **argv)
 {
-  const char *c = argc > 1 ? argv[1] : "";
-  if (!strcmp(c, "thin_box"))
-    thin_box_diagonals_merge();
-  else if (!strcmp(c, "slab"))
-    merged_slab();
-  else {
-    fprintf(stderr, "unknown case '%s'\n", c);
-    return 2;
-  }
-  return failures != 0;
+  static const texpect_case cases[] = {
+      {"thin_box", thin_box_diagonals_merge, NULL},
+      {"slab", merged_slab, NULL},
+  };
+  return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }

@@ -10,6 +10,21 @@
 #include "refine/quality.h"
 #include "../pipeline/texpect.h"
 
+/* The next of the LCG *r's doubles in [0, 1), 53 random bits. */
+static double unit(uint64_t *r)
+{
+  *r = *r * 6364136223846793005ull + 1442695040888963407ull;
+  return (double)(*r >> 11) * 0x1p-53;
+}
+
+/* Four points of the unit cube from *r. */
+static void random_tet(uint64_t *r, double p[4][3])
+{
+  for (int i = 0; i < 4; i++)
+    for (int k = 0; k < 3; k++)
+      p[i][k] = unit(r);
+}
+
 /* tr_tet_shape's dih[e] is the interior dihedral angle at edge e (tr_edge_vtx order),
  * measured independently: the angle between the other two vertices' offsets from the
  * edge line, on random tets. */
@@ -18,11 +33,7 @@ static void dihedral_at_edge_matches_geometry(void)
   uint64_t r = 777;
   for (int it = 0; it < 5000; it++) {
     double p[4][3];
-    for (int i = 0; i < 4; i++)
-      for (int k = 0; k < 3; k++) {
-        r = r * 6364136223846793005ull + 1442695040888963407ull;
-        p[i][k] = (double)(r >> 11) * 0x1p-53;
-      }
+    random_tet(&r, p);
     double ratio, vol, dih[6];
     tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, dih, NULL);
     for (int e = 0; e < 6; e++) {
@@ -65,11 +76,7 @@ static void min_dihedral_equals_smallest_of_six(void)
   uint64_t r = 12345;
   for (int it = 0; it < 20000; it++) {
     double p[4][3];
-    for (int i = 0; i < 4; i++)
-      for (int k = 0; k < 3; k++) {
-        r = r * 6364136223846793005ull + 1442695040888963407ull;
-        p[i][k] = (double)(r >> 11) * 0x1p-53;
-      }
+    random_tet(&r, p);
     if (it % 3 == 1) /* nearly flat: d close to the plane abc */
       for (int k = 0; k < 3; k++)
         p[3][k] = (p[0][k] + p[1][k] + p[2][k]) / 3 + (it % 2 ? 1e-9 : 0);
@@ -145,8 +152,7 @@ static void quality_summary_equals_per_angle_definition(void)
     } else {
       for (n = 0; n < 400; n++)
         for (int k = 0; k < 3; k++) {
-          r = r * 6364136223846793005ull + 1442695040888963407ull;
-          double u = (double)(r >> 11) * 0x1p-53;
+          double u = unit(&r);
           x[3 * n + (uint32_t)k] = k == 2 && set >= 3 ? u * (set == 3 ? 1e-3 : set == 4 ? 1e-7 : 1e-12)
                                                       : u;
         }
@@ -184,16 +190,10 @@ static void quality_summary_equals_per_angle_definition(void)
 
 int main(int argc, char **argv)
 {
-  const char *c = argc > 1 ? argv[1] : "";
-  if (!strcmp(c, "min_dihedral"))
-    min_dihedral_equals_smallest_of_six();
-  else if (!strcmp(c, "quality_summary"))
-    quality_summary_equals_per_angle_definition();
-  else if (!strcmp(c, "dihedral_at_edge"))
-    dihedral_at_edge_matches_geometry();
-  else {
-    fprintf(stderr, "unknown case '%s'\n", c);
-    return 2;
-  }
-  return failures != 0;
+  static const texpect_case cases[] = {
+      {"min_dihedral", min_dihedral_equals_smallest_of_six, NULL},
+      {"quality_summary", quality_summary_equals_per_angle_definition, NULL},
+      {"dihedral_at_edge", dihedral_at_edge_matches_geometry, NULL},
+  };
+  return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }

@@ -724,38 +724,21 @@ static void pinned_flat_tet_is_opened(void)
 
 int main(int argc, char **argv)
 {
-  const char *c = argc > 1 ? argv[1] : "";
-  if (!strcmp(c, "encroached_segment"))
-    encroached_segment();
-  else if (!strcmp(c, "encroached_subface"))
-    encroached_subface();
-  else if (!strcmp(c, "encroached_segment_left"))
-    encroached_segment_of_a_good_tet_is_left();
-  else if (!strcmp(c, "small_angle"))
-    small_angle();
-  else if (!strcmp(c, "thin_slab"))
-    thin_slab();
-  else if (!strcmp(c, "thin_slab_terminates"))
-    thin_slab_terminates();
-  else if (!strcmp(c, "thin_subfaces"))
-    thin_subfaces_split_for_shape();
-  else if (!strcmp(c, "wedge_5_facet"))
-    wedge_5_degrees_in_a_facet();
-  else if (!strcmp(c, "wedge_10_degrees"))
-    wedge_10_degrees();
-  else if (!strcmp(c, "max_volume"))
-    max_volume();
-  else if (!strcmp(c, "region_max_volume"))
-    region_max_volume();
-  else if (!strcmp(c, "shapes") && argc > 2)
-    shapes(argv[2]);
-  else if (!strcmp(c, "determinism"))
-    determinism();
-  else if (!strcmp(c, "pinned"))
-    pinned_flat_tet_is_opened();
-  else {
-    fprintf(stderr, "unknown case '%s'\n", c);
-    return 2;
-  }
-  return failures != 0;
+  static const texpect_case cases[] = {
+      {"encroached_segment", encroached_segment, NULL},
+      {"encroached_subface", encroached_subface, NULL},
+      {"encroached_segment_left", encroached_segment_of_a_good_tet_is_left, NULL},
+      {"small_angle", small_angle, NULL},
+      {"thin_slab", thin_slab, NULL},
+      {"thin_slab_terminates", thin_slab_terminates, NULL},
+      {"thin_subfaces", thin_subfaces_split_for_shape, NULL},
+      {"wedge_5_facet", wedge_5_degrees_in_a_facet, NULL},
+      {"wedge_10_degrees", wedge_10_degrees, NULL},
+      {"max_volume", max_volume, NULL},
+      {"region_max_volume", region_max_volume, NULL},
+      {"shapes", NULL, shapes},
+      {"determinism", determinism, NULL},
+      {"pinned", pinned_flat_tet_is_opened, NULL},
+  };
+  return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }

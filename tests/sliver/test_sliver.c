@@ -585,30 +585,17 @@ static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
 
 int main(int argc, char **argv)
 {
-  const char *c = argc > 1 ? argv[1] : "";
-  if (!strcmp(c, "flip"))
-    a_sliver_is_removed_by_a_flip();
-  else if (!strcmp(c, "constraints"))
-    constraints_are_kept_and_their_vertices_stay();
-  else if (!strcmp(c, "smoothing"))
-    smoothing_moves_a_free_vertex_and_raises_the_angle();
-  else if (!strcmp(c, "insertion"))
-    a_sliver_is_removed_by_a_new_interior_point();
-  else if (!strcmp(c, "passes"))
-    no_pass_lowers_the_smallest_angle();
-  else if (!strcmp(c, "cap"))
-    a_pinned_cap_is_opened_by_a_point_off_its_plane();
-  else if (!strcmp(c, "pinned"))
-    a_tet_pinned_between_sub_faces_gets_points_on_them();
-  else if (!strcmp(c, "polish"))
-    the_polish_raises_the_minimum_of_an_icosahedron();
-  else if (!strcmp(c, "surfaces") && argc > 2)
-    refined_surfaces(argv[2]);
-  else if (!strcmp(c, "determinism") && argc > 2)
-    deterministic_and_levels_checked(argv[2]);
-  else {
-    fprintf(stderr, "unknown case '%s'\n", c);
-    return 2;
-  }
-  return failures != 0;
+  static const texpect_case cases[] = {
+      {"flip", a_sliver_is_removed_by_a_flip, NULL},
+      {"constraints", constraints_are_kept_and_their_vertices_stay, NULL},
+      {"smoothing", smoothing_moves_a_free_vertex_and_raises_the_angle, NULL},
+      {"insertion", a_sliver_is_removed_by_a_new_interior_point, NULL},
+      {"passes", no_pass_lowers_the_smallest_angle, NULL},
+      {"cap", a_pinned_cap_is_opened_by_a_point_off_its_plane, NULL},
+      {"pinned", a_tet_pinned_between_sub_faces_gets_points_on_them, NULL},
+      {"polish", the_polish_raises_the_minimum_of_an_icosahedron, NULL},
+      {"surfaces", NULL, refined_surfaces},
+      {"determinism", NULL, deterministic_and_levels_checked},
+  };
+  return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
