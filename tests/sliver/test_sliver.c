@@ -67,6 +67,21 @@ static void valid_box(const char *name, const tr_mesh *m)
   mpq_clear(six);
 }
 
+/* One pass of the stage (tr_sliver_smooth_pass, tr_sliver_insert_pass, ...) over m with
+ * the sub-faces sub, npoints as tr_sliver_ctx_init takes it, counted into *st. */
+static tr_status one_pass(tr_mesh *m, const tr_subfaces *sub, uint32_t npoints,
+                          tr_status (*pass)(tr_sliver_ctx *, tr_sliver_stats *),
+                          tr_sliver_stats *st)
+{
+  tr_sliver_ctx c;
+  memset(st, 0, sizeof *st);
+  tr_status s = tr_sliver_ctx_init(&c, m, sub, NULL, npoints, TR_SLIVER_BOUND);
+  if (s == TR_OK)
+    s = pass(&c, st);
+  tr_sliver_ctx_free(&c);
+  return s;
+}
+
 static void a_sliver_is_removed_by_a_flip(void)
 {
   tr_mesh *m = sliver_box(0.01);
@@ -133,14 +148,9 @@ static void a_sliver_is_removed_by_a_new_interior_point(void)
   tr_subfaces sub = {1, f, &tri};
   double before = min_dihedral(m), x0[36];
   memcpy(x0, m->xyz, sizeof x0);
-  tr_sliver_ctx c;
   tr_sliver_stats st;
-  memset(&st, 0, sizeof st);
-  tr_status s = tr_sliver_ctx_init(&c, m, &sub, NULL, 12, TR_SLIVER_BOUND);
-  if (s == TR_OK)
-    s = tr_sliver_insert_pass(&c, &st);
+  tr_status s = one_pass(m, &sub, 12, tr_sliver_insert_pass, &st);
   EXPECT(s == TR_OK, "insertion: %s", tr_last_error());
-  tr_sliver_ctx_free(&c);
   EXPECT(st.points >= 1 && m->nv == 12 + st.points, "%llu points added, %u vertices",
          (unsigned long long)st.points, m->nv);
   EXPECT(!has_tet(m, sl), "the sliver is still there");
@@ -185,14 +195,9 @@ static void smoothing_moves_a_free_vertex_and_raises_the_angle(void)
   double before = min_dihedral(m), star0 = star_min(m, 11), x0[36];
   memcpy(x0, m->xyz, sizeof x0);
   tr_subfaces none = {0, NULL, NULL};
-  tr_sliver_ctx c;
   tr_sliver_stats st;
-  memset(&st, 0, sizeof st);
-  tr_status s = tr_sliver_ctx_init(&c, m, &none, NULL, 11, TR_SLIVER_BOUND);
-  if (s == TR_OK)
-    s = tr_sliver_smooth_pass(&c, &st);
+  tr_status s = one_pass(m, &none, 11, tr_sliver_smooth_pass, &st);
   EXPECT(s == TR_OK, "smoothing: %s", tr_last_error());
-  tr_sliver_ctx_free(&c);
   EXPECT(st.smoothed == 1, "%llu vertices moved, 11 only may", (unsigned long long)st.smoothed);
   for (uint32_t v = 0; v < 11; v++)
     EXPECT(!memcmp(x0 + 3 * v, m->xyz + 3 * (size_t)v, 24), "vertex %u moved", v);
@@ -240,6 +245,44 @@ static tr_mesh *mesh(tm_run *r, const char *name, const tr_plc *plc, int level, 
   return tm_mesh(r, label, plc, &opt, chk);
 }
 
+/* What the stage at `level` keeps of the level-0 mesh m0 in mk: every tet of mk with an
+ * angle under the stage's bound has a radius-edge ratio within max(1.414, the worst of
+ * m0, that is of the exempt tets refinement left) (the written doubles of Steiner points may differ from the ones the stage measured
+ * by a few ulps), and every input vertex is where it was. */
+static void kept_against_level_0(const char *name, int level, const tr_mesh *m0,
+                                 const tr_mesh *mk)
+{
+  double worst0 = 0, worstk = 0;
+  for (int k = 0; k < 2; k++) {
+    const tr_mesh *m = k ? mk : m0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+      double r = 0, q;
+      if (!tr_tet_is_real(m, t))
+        continue;
+      q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
+      if (!k)
+        worst0 = fmax(worst0, r);
+      else if (q < TR_SLIVER_BOUND)
+        worstk = fmax(worstk, r);
+    }
+  }
+  EXPECT(worstk <= fmax(1.414, worst0) * (1 + 1e-9),
+         "%s -O %d: a tet under %g degrees has ratio %g above max(1.414, %g)", name, level,
+         TR_SLIVER_BOUND, worstk, worst0);
+  for (uint32_t v = 0; v < mk->nv && v < m0->nv; v++) {
+    int k0, kk;
+    uint32_t x0, xk;
+    if (tr_mesh_vertex_origin(m0, v, &k0, &x0) != TR_OK ||
+        tr_mesh_vertex_origin(mk, v, &kk, &xk) != TR_OK) {
+      EXPECT(0, "%s: vertex origin %u: %s", name, v, tr_last_error());
+      break;
+    }
+    if (k0 == TR_VERTEX_INPUT || kk == TR_VERTEX_INPUT)
+      EXPECT(k0 == kk && !memcmp(m0->xyz + 3 * (size_t)v, mk->xyz + 3 * (size_t)v, 24),
+             "%s -O %d: input vertex %u moved", name, level, v);
+  }
+}
+
 /* Refined surfaces of tests/data with and without the stage: all validate, level 2 adds no
  * point, keeps every input vertex where it was, never lowers the smallest dihedral angle,
  * leaves no more tets under 10 degrees, and keeps the ratio bound on the tets with an angle
@@ -270,35 +313,7 @@ static void refined_surfaces(const char *dir)
              "%s -O 3: %llu vertices, %llu without the stage and %llu points added", files[i],
              (unsigned long long)r3.st.volume_nodes, (unsigned long long)r0.st.volume_nodes,
              (unsigned long long)r3.st.points_added_for_sliver);
-      double worst0 = 0, worst3 = 0;
-      for (int k = 0; k < 2; k++) {
-        const tr_mesh *m = k ? m3 : m0;
-        for (uint32_t t = 0; t < m->nt; t++) {
-          double r = 0, q;
-          if (!tr_tet_is_real(m, t))
-            continue;
-          q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
-          if (!k)
-            worst0 = fmax(worst0, r);
-          else if (q < TR_SLIVER_BOUND)
-            worst3 = fmax(worst3, r);
-        }
-      }
-      EXPECT(worst3 <= fmax(1.414, worst0) * (1 + 1e-9),
-             "%s -O 3: a tet under %g degrees has ratio %g above max(1.414, %g)", files[i],
-             TR_SLIVER_BOUND, worst3, worst0);
-      for (uint32_t v = 0; v < m3->nv && v < m0->nv; v++) {
-        int k0, k3;
-        uint32_t x0, x3;
-        if (tr_mesh_vertex_origin(m0, v, &k0, &x0) != TR_OK ||
-            tr_mesh_vertex_origin(m3, v, &k3, &x3) != TR_OK) {
-          EXPECT(0, "%s: vertex origin %u: %s", files[i], v, tr_last_error());
-          break;
-        }
-        if (k0 == TR_VERTEX_INPUT || k3 == TR_VERTEX_INPUT)
-          EXPECT(k0 == k3 && !memcmp(m0->xyz + 3 * (size_t)v, m3->xyz + 3 * (size_t)v, 24),
-                 "%s -O 3: input vertex %u moved", files[i], v);
-      }
+      kept_against_level_0(files[i], 3, m0, m3);
       fprintf(stderr, "%s -O 3: min dihedral %.3f -> %.3f, under 10 deg %llu -> %llu, "
               "%llu points added\n", files[i], r0.st.min_dihedral, r3.st.min_dihedral,
               (unsigned long long)r0.st.tets_dihedral_below_10,
@@ -318,38 +333,7 @@ static void refined_surfaces(const char *dir)
              "%s: tets under 10 degrees %llu -> %llu", files[i],
              (unsigned long long)r0.st.tets_dihedral_below_10,
              (unsigned long long)r2.st.tets_dihedral_below_10);
-      /* the ratio bound holds for every tet with an angle under the stage's bound, up to
-       * the worst ratio refinement left (exempt tets); the written doubles of Steiner
-       * points may differ from the ones the stage measured by a few ulps */
-      double worst0 = 0, worst2 = 0;
-      for (int k = 0; k < 2; k++) {
-        const tr_mesh *m = k ? m2 : m0;
-        for (uint32_t t = 0; t < m->nt; t++) {
-          double r = 0, q;
-          if (!tr_tet_is_real(m, t))
-            continue;
-          q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
-          if (!k)
-            worst0 = fmax(worst0, r);
-          else if (q < TR_SLIVER_BOUND)
-            worst2 = fmax(worst2, r);
-        }
-      }
-      EXPECT(worst2 <= fmax(1.414, worst0) * (1 + 1e-9),
-             "%s: a tet under %g degrees has ratio %g above max(1.414, %g)", files[i],
-             TR_SLIVER_BOUND, worst2, worst0);
-      for (uint32_t v = 0; v < m2->nv && v < m0->nv; v++) {
-        int k0, k2;
-        uint32_t x0, x2;
-        if (tr_mesh_vertex_origin(m0, v, &k0, &x0) != TR_OK ||
-            tr_mesh_vertex_origin(m2, v, &k2, &x2) != TR_OK) {
-          EXPECT(0, "%s: vertex origin %u: %s", files[i], v, tr_last_error());
-          break;
-        }
-        if (k0 == TR_VERTEX_INPUT || k2 == TR_VERTEX_INPUT)
-          EXPECT(k0 == k2 && !memcmp(m0->xyz + 3 * (size_t)v, m2->xyz + 3 * (size_t)v, 24),
-                 "%s: input vertex %u moved", files[i], v);
-      }
+      kept_against_level_0(files[i], 2, m0, m2);
       fprintf(stderr, "%s: min dihedral %.3f -> %.3f, under 10 deg %llu -> %llu, %llu flips, "
               "%llu moved\n", files[i], r0.st.min_dihedral, r2.st.min_dihedral,
               (unsigned long long)r0.st.tets_dihedral_below_10,
@@ -557,14 +541,9 @@ static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
   mpq_set_ui(six_v, 1, 2);
   EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v) == TR_OK, "cap: setup: %s", tr_last_error());
   tr_subfaces none = {0, NULL, NULL};
-  tr_sliver_ctx c;
   tr_sliver_stats st;
-  memset(&st, 0, sizeof st);
-  tr_status s = tr_sliver_ctx_init(&c, m, &none, NULL, 5, TR_SLIVER_BOUND);
-  if (s == TR_OK)
-    s = tr_sliver_insert_pass(&c, &st);
+  tr_status s = one_pass(m, &none, 5, tr_sliver_insert_pass, &st);
   EXPECT(s == TR_OK, "cap: insertion: %s", tr_last_error());
-  tr_sliver_ctx_free(&c);
   EXPECT(st.points >= 1 && m->nv == 5 + st.points, "cap: %llu points added, %u vertices",
          (unsigned long long)st.points, m->nv);
   EXPECT(!has_tet(m, cap), "cap: the cap is still there");
