@@ -228,8 +228,11 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
         options["keep_surface"] = keep_surface
     if keep_steiner:
         options["keep_steiner"] = keep_steiner
+    # a flag, not a truth value: keep_edges="no" must not turn it on
+    if not isinstance(keep_edges, (bool, np.bool_)):
+        raise TypeError(f"keep_edges must be True or False, not {type(keep_edges).__name__}")
     if keep_edges:
-        options["keep_edges"] = keep_edges
+        options["keep_edges"] = True
     if not smooth:
         options["smooth"] = 0
     if verbose:

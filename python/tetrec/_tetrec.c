@@ -329,7 +329,8 @@ static PyObject *stats_dict(const tr_stats *s)
                 {"tets_dihedral_below_10", s->tets_dihedral_below_10},
                 {"points_added_for_sliver", s->points_added_for_sliver},
                 {"sliver_flips", s->sliver_flips},
-                {"sliver_points_smoothed", s->sliver_points_smoothed}};
+                {"sliver_points_smoothed", s->sliver_points_smoothed},
+                {"input_edges_merged", s->input_edges_merged}};
   const struct {
     const char *name;
     double value;

@@ -14,6 +14,7 @@
 #include "tetrec.h"
 #include "tpath.h"
 #include "../pipeline/texpect.h"
+#include "../pipeline/tplc.h"
 
 static const char *data, *tmp;
 
@@ -368,12 +369,7 @@ static void t_selfint_all(void)
     /* some triangles share vertices with the previous one */
     for (uint32_t i = 1; i < nt; i += 3)
       t[3 * i] = t[3 * (i - 1) + 1];
-    struct tr_plc p;
-    memset(&p, 0, sizeof p);
-    p.npoints = nv;
-    p.xyz = x;
-    p.ntris = nt;
-    p.tris = t;
+    struct tr_plc p = tm_plc_view(x, nv, t, nt, NULL);
     /* the oracle, pair by pair */
     uint32_t *want = malloc(sizeof *want * nt * nt), nw = 0;
     for (uint32_t i = 0; i < nt; i++)

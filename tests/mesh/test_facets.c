@@ -11,18 +11,7 @@
 #include "mesh/conform.h"
 #include "mesh/mesh.h"
 #include "tcommon.h"
-
-static struct tr_plc plc_of(double *x, uint32_t np, uint32_t *t, uint32_t nt, int32_t *mk)
-{
-  struct tr_plc p;
-  memset(&p, 0, sizeof p);
-  p.npoints = np;
-  p.xyz = x;
-  p.ntris = nt;
-  p.tris = t;
-  p.tri_marker = mk;
-  return p;
-}
+#include "../pipeline/tplc.h"
 
 /* A unit square (two triangles, diagonal 0-2) and a third triangle: in the plane beyond
  * edge 1-2 (merges), or folded back over the square (same side: does not). */
@@ -30,7 +19,7 @@ static int square_groups(void)
 {
   double x[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0.5, 0, 0.5, 0.25, 0};
   uint32_t t[] = {0, 1, 2, 0, 2, 3, 1, 4, 2};
-  struct tr_plc p = plc_of(x, 6, t, 3, NULL);
+  struct tr_plc p = tm_plc_view(x, 6, t, 3, NULL);
   tr_facets F;
   EXPECT_OK(tr_facets_build(&p, 0, &F), "facets");
   EXPECT(F.group[0] == 0 && F.group[1] == 0 && F.group[2] == 0,
@@ -47,13 +36,13 @@ static int square_groups(void)
   tr_facets_free(&F);
   /* the third triangle folded over the square: coplanar, same side of edge 0-2 */
   uint32_t t2[] = {0, 1, 2, 2, 0, 5};
-  p = plc_of(x, 6, t2, 2, NULL);
+  p = tm_plc_view(x, 6, t2, 2, NULL);
   EXPECT_OK(tr_facets_build(&p, 0, &F), "facets");
   EXPECT(F.group[1] == 1 && F.ninner == 0, "folded triangles merged");
   tr_facets_free(&F);
   /* inconsistent orientation: edge 0->2 in both triangles */
   uint32_t t4[] = {0, 1, 2, 0, 3, 2};
-  p = plc_of(x, 6, t4, 2, NULL);
+  p = tm_plc_view(x, 6, t4, 2, NULL);
   EXPECT_OK(tr_facets_build(&p, 0, &F), "facets");
   EXPECT(F.group[1] == 1, "triangles of opposite orientations merged");
   tr_facets_free(&F);
@@ -65,7 +54,7 @@ static int markers_differ_no_merge(void)
   double x[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
   uint32_t t[] = {0, 1, 2, 0, 2, 3};
   int32_t mk[] = {1, 2};
-  struct tr_plc p = plc_of(x, 4, t, 2, mk);
+  struct tr_plc p = tm_plc_view(x, 4, t, 2, mk);
   tr_facets F;
   EXPECT_OK(tr_facets_build(&p, 0, &F), "facets");
   EXPECT(F.group[1] == 1 && F.ninner == 0, "triangles with markers 1 and 2 merged");
@@ -83,7 +72,7 @@ static int non_manifold_or_off_plane_no_merge(void)
 {
   double x[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1};
   uint32_t t[] = {0, 1, 2, 0, 2, 3, 0, 2, 4};
-  struct tr_plc p = plc_of(x, 5, t, 3, NULL);
+  struct tr_plc p = tm_plc_view(x, 5, t, 3, NULL);
   tr_facets F;
   EXPECT_OK(tr_facets_build(&p, 0, &F), "facets");
   EXPECT(F.group[0] == 0 && F.group[1] == 1 && F.group[2] == 2 && F.ninner == 0,
@@ -135,7 +124,7 @@ static int pyramid_validator(int ulp)
   uint32_t t_qs[] = {1, 0, 3, 1, 3, 2, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
   uint32_t *t = pr ? t_qs : t_pr;
   uint32_t a = pr ? 1 : 0, b = pr ? 3 : 2;
-  struct tr_plc p = plc_of(x, 5, t, 6, NULL);
+  struct tr_plc p = tm_plc_view(x, 5, t, 6, NULL);
   tr_status s = tr_check_conformity(m, &p, NULL, 0);
   if (!ulp) {
     EXPECT(s == TR_OK, "faces crossing an exactly coplanar inner edge rejected: %s",

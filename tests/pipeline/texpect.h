@@ -7,6 +7,7 @@
 #define TR_TESTS_PIPELINE_TEXPECT_H
 
 #include <stdio.h>
+#include <string.h>
 
 #ifdef TEXPECT_SHARED_COUNTER
 extern int failures;
@@ -22,5 +23,32 @@ static int failures;
       failures++;                                                       \
     }                                                                   \
   } while (0)
+
+/* The cases of a test executable by name, for its main: `test name [arg]`. A case runs
+ * with no argument (run) or with the one argument its meson entry passes (run_arg, e.g.
+ * tests/data; missing: the case is not found). */
+typedef struct {
+  const char *name;
+  void (*run)(void);
+  void (*run_arg)(const char *);
+} texpect_case;
+
+/* Runs the case argv[1] names and returns main's status: failures != 0, or 2 when no
+ * case has that name. */
+static inline int texpect_main(int argc, char **argv, const texpect_case *cases, size_t n)
+{
+  const char *c = argc > 1 ? argv[1] : "";
+  for (size_t i = 0; i < n; i++) {
+    if (strcmp(c, cases[i].name) || (cases[i].run_arg && argc < 3))
+      continue;
+    if (cases[i].run_arg)
+      cases[i].run_arg(argv[2]);
+    else
+      cases[i].run();
+    return failures != 0;
+  }
+  fprintf(stderr, "unknown case '%s'\n", c);
+  return 2;
+}
 
 #endif

@@ -7,24 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/plc.h"
 #include "delaunay/delaunay.h"
-#include "mesh/check.h"
-#include "mesh/conform.h"
-#include "pipeline/pipeline.h"
 #include "refine/quality.h"
 #include "refine/refine.h"
-#include "../pipeline/texpect.h"
-
-static tr_plc *plc_of(const double *x, uint32_t np, const uint32_t *t, uint32_t nt)
-{
-  tr_plc *p = NULL;
-  if (tr_plc_create(&p) != TR_OK || tr_plc_set(p, x, np, t, nt, NULL) != TR_OK) {
-    fprintf(stderr, "cannot build PLC: %s\n", tr_last_error());
-    exit(1);
-  }
-  return p;
-}
+#include "../pipeline/tmesh.h"
 
 /* The tetrahedron a, b, c, d as a closed surface (orientation repaired by validation). */
 static tr_plc *tet_surface(const double a[3], const double b[3], const double c[3],
@@ -36,55 +22,19 @@ static tr_plc *tet_surface(const double a[3], const double b[3], const double c[
   memcpy(x + 6, c, 24);
   memcpy(x + 9, d, 24);
   static const uint32_t t[12] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
-  return plc_of(x, 4, t, 4);
+  return tm_plc(x, 4, t, 4);
 }
 
-/* The box [lo, hi] (12 triangles). */
-static tr_plc *box_surface(const double lo[3], const double hi[3])
-{
-  double x[24];
-  for (int i = 0; i < 8; i++)
-    for (int k = 0; k < 3; k++)
-      x[3 * i + k] = (i >> k) & 1 ? hi[k] : lo[k];
-  static const uint32_t t[36] = {0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3, 0, 4, 5, 0, 5, 1,
-                                 2, 3, 7, 2, 7, 6, 0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5};
-  return plc_of(x, 8, t, 12);
-}
-
-/* The point budget mesh() gives refinement (0: the default budget), its bound for the
- * sub-faces' own shape (0: off, the default) and its keep_edges. */
-static uint64_t test_budget;
-static double test_subface_ratio;
-static int test_keep_edges;
-
-/* Meshes plc with the given bounds and runs both validators; NULL on failure (counted).
- * Refinement alone: sliver removal (tests/sliver) may trade a tet's radius-edge ratio above
+/* Refinement alone under the radius-edge bound ratio (0: none) and the volume bound
+ * maxvol (0: none): sliver removal (tests/sliver) may trade a tet's radius-edge ratio above
  * the bound for larger dihedral angles, which the ratio properties here do not allow. */
-static tr_mesh *mesh(const char *name, const tr_plc *plc, double ratio, double maxvol,
-                     unsigned chk, tr_plc **used, tr_stats *st)
+static tr_options refinement(double ratio, double maxvol)
 {
-  tr_options opt;
-  tr_options_default(&opt);
-  opt.verbose = 0;
+  tr_options opt = tm_options();
   opt.quality_ratio = ratio;
   opt.max_volume = maxvol;
-  opt.refine_budget = test_budget;
-  opt.quality_subface_ratio = test_subface_ratio;
-  opt.keep_edges = test_keep_edges;
   opt.optimize = 0;
-  tr_mesh *m = NULL;
-  memset(st, 0, sizeof *st);
-  st->size = sizeof *st; /* the whole struct is filled (ABI growth, tetrec.h) */
-  tr_status s = tr_mesh_plc_ex(plc, &opt, &m, st, used);
-  if (s != TR_OK) {
-    EXPECT(0, "%s: tr_mesh_plc failed: %s: %s", name, tr_status_name(s), tr_last_error());
-    return NULL;
-  }
-  s = tr_check_mesh(m, chk, NULL);
-  EXPECT(s == TR_OK, "%s: mesh validator: %s", name, tr_last_error());
-  s = tr_check_conformity(m, *used, NULL, test_keep_edges ? TR_CONF_KEEP_EDGES : 0);
-  EXPECT(s == TR_OK, "%s: exact conformity: %s", name, tr_last_error());
-  return m;
+  return opt;
 }
 
 static double max_ratio(const tr_mesh *m)
@@ -153,9 +103,10 @@ static int edge_encroached(const tr_mesh *m, uint32_t u, uint32_t v)
 static void encroached_segment(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {4, 0, 0}, C[3] = {2, 4, 0}, D[3] = {2, 1, 1};
-  tr_plc *plc = tet_surface(A, B, C, D), *used = NULL;
-  tr_stats st;
-  tr_mesh *m = mesh("encroached_segment", plc, 1.414, 0, TR_CHK_TOPOLOGY, &used, &st);
+  tr_plc *plc = tet_surface(A, B, C, D);
+  const tr_options opt = refinement(1.414, 0);
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, "encroached_segment", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
     mpq_t c[3];
     mpq_inits(c[0], c[1], c[2], NULL);
@@ -170,11 +121,10 @@ static void encroached_segment(void)
       EXPECT(pow2_den(c[0]), "encroached_segment: split parameter is not dyadic");
     }
     EXPECT(n > 2, "encroached_segment: AB was not split (%u vertices on it)", n);
-    EXPECT(st.points_added_for_quality >= 1, "encroached_segment: no point counted");
+    EXPECT(r.st.points_added_for_quality >= 1, "encroached_segment: no point counted");
     mpq_clears(c[0], c[1], c[2], NULL);
   }
-  tr_mesh_destroy(m);
-  tr_plc_destroy(used);
+  tm_free(&r);
   tr_plc_destroy(plc);
 }
 
@@ -184,19 +134,19 @@ static void encroached_segment(void)
 static void encroached_segment_of_a_good_tet_is_left(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {4, 0, 0}, C[3] = {2, 4, 0}, D[3] = {2, 1, 1};
-  tr_plc *plc = tet_surface(A, B, C, D), *used = NULL;
-  tr_stats st;
-  tr_mesh *m = mesh("encroached_segment_left", plc, 1000, 0, TR_CHK_TOPOLOGY, &used, &st);
+  tr_plc *plc = tet_surface(A, B, C, D);
+  const tr_options opt = refinement(1000, 0);
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, "encroached_segment_left", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
-    EXPECT(st.points_added_for_quality == 0, "encroached_segment_left: %llu points added",
-           (unsigned long long)st.points_added_for_quality);
+    EXPECT(r.st.points_added_for_quality == 0, "encroached_segment_left: %llu points added",
+           (unsigned long long)r.st.points_added_for_quality);
     uint32_t t;
     tr_ball_find(m, 0, 1, TR_NONE, &t);
     EXPECT(t != TR_NONE, "encroached_segment_left: AB is no longer an edge");
     EXPECT(edge_encroached(m, 0, 1), "encroached_segment_left: D no longer encroaches AB");
   }
-  tr_mesh_destroy(m);
-  tr_plc_destroy(used);
+  tm_free(&r);
   tr_plc_destroy(plc);
 }
 
@@ -208,9 +158,10 @@ static void encroached_segment_of_a_good_tet_is_left(void)
 static void encroached_subface(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {8, 0, 0}, C[3] = {4, 6, 0}, D[3] = {4, 2.5, 0.25};
-  tr_plc *plc = tet_surface(A, B, C, D), *used = NULL;
-  tr_stats st;
-  tr_mesh *m = mesh("encroached_subface", plc, 1.414, 0, TR_CHK_TOPOLOGY, &used, &st);
+  tr_plc *plc = tet_surface(A, B, C, D);
+  const tr_options opt = refinement(1.414, 0);
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, "encroached_subface", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
     mpq_t c[3], w1, w2, t;
     mpq_inits(c[0], c[1], c[2], w1, w2, t, NULL);
@@ -235,35 +186,33 @@ static void encroached_subface(void)
     EXPECT(inside >= 1, "encroached_subface: no point strictly inside the base");
     mpq_clears(c[0], c[1], c[2], w1, w2, t, NULL);
   }
-  tr_mesh_destroy(m);
-  tr_plc_destroy(used);
+  tm_free(&r);
   tr_plc_destroy(plc);
 }
 
-/* Refinement of plc with bound R: succeeds within the default budget, validates, adds
+/* Refinement of plc under opt (its bound R) against plc meshed without refinement: succeeds within the default budget, validates, adds
  * points, and (worst = 1) the worst radius-edge ratio drops, or (worst = 0) the share of
  * tets with ratio >= 4 drops; worst = 2: no quality figure is asserted. */
-static void improves(const char *name, tr_plc *plc, double R, unsigned chk, int worst)
+static void improves(const char *name, tr_plc *plc, const tr_options *opt, unsigned chk,
+                     int worst)
 {
-  tr_plc *u0 = NULL, *u1 = NULL;
-  tr_stats st;
-  tr_mesh *m0 = mesh(name, plc, 0, 0, chk, &u0, &st);
-  tr_mesh *m1 = mesh(name, plc, R, 0, chk, &u1, &st);
+  tr_options plain = *opt;
+  plain.quality_ratio = 0;
+  tm_run a, b;
+  tr_mesh *m0 = tm_mesh(&a, name, plc, &plain, chk), *m1 = tm_mesh(&b, name, plc, opt, chk);
   if (m0 && m1) {
     double r0 = max_ratio(m0), r1 = max_ratio(m1), s0 = share_above4(m0), s1 = share_above4(m1);
     if (worst == 1)
       EXPECT(r1 < r0, "%s: worst radius-edge %g before, %g after", name, r0, r1);
     else if (worst == 0) /* tets next to a small input angle are left: the share drops */
       EXPECT(s1 < s0, "%s: share of tets with ratio >= 4: %g before, %g after", name, s0, s1);
-    EXPECT(st.points_added_for_quality > 0, "%s: no point added", name);
+    EXPECT(b.st.points_added_for_quality > 0, "%s: no point added", name);
     fprintf(stderr, "%s: worst radius-edge %.4g -> %.4g, ratio >= 4: %.3g -> %.3g, %llu points, "
-            "%u tets\n", name, r0, r1, s0, s1, (unsigned long long)st.points_added_for_quality,
+            "%u tets\n", name, r0, r1, s0, s1, (unsigned long long)b.st.points_added_for_quality,
             tr_mesh_num_tets(m1));
   }
-  tr_mesh_destroy(m0);
-  tr_mesh_destroy(m1);
-  tr_plc_destroy(u0);
-  tr_plc_destroy(u1);
+  tm_free(&a);
+  tm_free(&b);
 }
 
 /* Two input edges at 1.4 degrees: refinement ends (within its default budget) with a
@@ -273,7 +222,8 @@ static void small_angle(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {10, 0, 0}, C[3] = {10, 0.25, 0}, D[3] = {5, 0.125, 2};
   tr_plc *plc = tet_surface(A, B, C, D);
-  improves("small_angle", plc, 1.414, TR_CHK_TOPOLOGY, 2);
+  const tr_options opt = refinement(1.414, 0);
+  improves("small_angle", plc, &opt, TR_CHK_TOPOLOGY, 2);
   tr_plc_destroy(plc);
 }
 
@@ -282,13 +232,13 @@ static void small_angle(void)
 static void thin_slab(void)
 {
   const double lo[3] = {0, 0, 0}, hi[3] = {8, 8, 0.25};
-  tr_plc *plc = box_surface(lo, hi);
+  tr_plc *plc = tm_box(lo, hi);
   /* every input edge kept: with the sides merged into planar facets, the skinny corners
    * of their triangles protect the long edges (angles.c) and the share stays (a known
    * limit, tests/refine/test_merge.c) */
-  test_keep_edges = 1;
-  improves("thin_slab", plc, 3, TR_CHK_TOPOLOGY, 0);
-  test_keep_edges = 0;
+  tr_options opt = refinement(3, 0);
+  opt.keep_edges = 1;
+  improves("thin_slab", plc, &opt, TR_CHK_TOPOLOGY, 0);
   tr_plc_destroy(plc);
 }
 
@@ -299,19 +249,18 @@ static void thin_slab(void)
 static void thin_slab_terminates(void)
 {
   const double lo[3] = {0, 0, 0}, hi[3] = {8, 8, 0.25};
-  tr_plc *plc = box_surface(lo, hi), *used = NULL;
-  tr_stats st;
-  test_budget = 5000;
-  tr_mesh *m = mesh("thin_slab_1414", plc, 1.414, 0, TR_CHK_TOPOLOGY, &used, &st);
-  test_budget = 0;
+  tr_plc *plc = tm_box(lo, hi);
+  tr_options opt = refinement(1.414, 0);
+  opt.refine_budget = 5000;
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, "thin_slab_1414", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
-    EXPECT(st.points_added_for_quality > 0 && st.points_added_for_quality < 5000,
-           "thin_slab_1414: %llu points", (unsigned long long)st.points_added_for_quality);
+    EXPECT(r.st.points_added_for_quality > 0 && r.st.points_added_for_quality < 5000,
+           "thin_slab_1414: %llu points", (unsigned long long)r.st.points_added_for_quality);
     fprintf(stderr, "thin_slab_1414: %llu points, %u tets\n",
-            (unsigned long long)st.points_added_for_quality, tr_mesh_num_tets(m));
+            (unsigned long long)r.st.points_added_for_quality, tr_mesh_num_tets(m));
   }
-  tr_mesh_destroy(m);
-  tr_plc_destroy(used);
+  tm_free(&r);
   tr_plc_destroy(plc);
 }
 
@@ -325,19 +274,18 @@ static void wedge_10_degrees(void)
   const double x[18] = {0, 0, 0, 10, 0, 0, 10, 1.7633, 0, 0, 0, 6, 10, 0, 6, 10, 1.7633, 6};
   static const uint32_t t[24] = {0, 2, 1, 3, 4, 5, 0, 1, 4, 0, 4, 3,
                                  1, 2, 5, 1, 5, 4, 2, 0, 3, 2, 3, 5};
-  tr_plc *plc = plc_of(x, 6, t, 8), *used = NULL;
-  tr_stats st;
-  test_budget = 5000;
-  tr_mesh *m = mesh("wedge_10", plc, 1.414, 0, TR_CHK_TOPOLOGY, &used, &st);
-  test_budget = 0;
+  tr_plc *plc = tm_plc(x, 6, t, 8);
+  tr_options opt = refinement(1.414, 0);
+  opt.refine_budget = 5000;
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, "wedge_10", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
-    EXPECT(st.points_added_for_quality > 0 && st.points_added_for_quality < 5000,
-           "wedge_10: %llu points", (unsigned long long)st.points_added_for_quality);
+    EXPECT(r.st.points_added_for_quality > 0 && r.st.points_added_for_quality < 5000,
+           "wedge_10: %llu points", (unsigned long long)r.st.points_added_for_quality);
     fprintf(stderr, "wedge_10: %llu points, %u tets\n",
-            (unsigned long long)st.points_added_for_quality, tr_mesh_num_tets(m));
+            (unsigned long long)r.st.points_added_for_quality, tr_mesh_num_tets(m));
   }
-  tr_mesh_destroy(m);
-  tr_plc_destroy(used);
+  tm_free(&r);
   tr_plc_destroy(plc);
 }
 
@@ -494,22 +442,19 @@ static void prism_subfaces(const char *name, double cx, double cy, double h, uin
   const double x[18] = {0, 0, 0, 10, 0, 0, cx, cy, 0, 0, 0, h, 10, 0, h, cx, cy, h};
   static const uint32_t t[24] = {0, 2, 1, 3, 4, 5, 0, 1, 4, 0, 4, 3,
                                  1, 2, 5, 1, 5, 4, 2, 0, 3, 2, 3, 5};
-  tr_plc *plc = plc_of(x, 6, t, 8);
+  tr_plc *plc = tm_plc(x, 6, t, 8);
   for (int on = needed ? 0 : 1; on <= 1; on++) {
-    tr_plc *used = NULL;
-    tr_stats st;
-    test_budget = budget;
-    test_subface_ratio = on ? 1.414 : 0;
-    test_keep_edges = 1; /* the side rectangles keep their diagonals: the forced faces are
-                            classified by the input triangles' corners and edges */
-    tr_mesh *m = mesh(name, plc, 1.414, 0, TR_CHK_TOPOLOGY, &used, &st);
-    test_budget = 0;
-    test_subface_ratio = 0;
-    test_keep_edges = 0;
+    tr_options opt = refinement(1.414, 0);
+    opt.refine_budget = budget;
+    opt.quality_subface_ratio = on ? 1.414 : 0;
+    opt.keep_edges = 1; /* the side rectangles keep their diagonals: the forced faces are
+                           classified by the input triangles' corners and edges */
+    tm_run r;
+    tr_mesh *m = tm_mesh(&r, name, plc, &opt, TR_CHK_TOPOLOGY);
     if (m) {
       uint32_t corners, wedges, nb;
       double worst;
-      uint32_t bad = bad_boundary_faces(m, used, 1.414, &corners, &wedges, &nb, &worst);
+      uint32_t bad = bad_boundary_faces(m, r.used, 1.414, &corners, &wedges, &nb, &worst);
       if (on)
         EXPECT(bad == corners + wedges, "%s: %u boundary faces over the bound, %u of them at "
                "an input corner, %u across a wedge", name, bad, corners, wedges);
@@ -517,15 +462,14 @@ static void prism_subfaces(const char *name, double cx, double cy, double h, uin
         EXPECT(bad > corners + wedges, "%s without the shape splits: every face over the "
                "bound is forced (%u, %u corners, %u wedges): the test shows nothing", name,
                bad, corners, wedges);
-      EXPECT(st.points_added_for_quality > 0 && st.points_added_for_quality < budget,
-             "%s: %llu points", name, (unsigned long long)st.points_added_for_quality);
+      EXPECT(r.st.points_added_for_quality > 0 && r.st.points_added_for_quality < budget,
+             "%s: %llu points", name, (unsigned long long)r.st.points_added_for_quality);
       fprintf(stderr, "%s%s: %u boundary faces, %u over the bound (%u at input corners, %u "
               "across wedges), worst %.3g, %llu points, %u tets\n", name,
               on ? "" : " (no shape splits)", nb, bad, corners, wedges, worst,
-              (unsigned long long)st.points_added_for_quality, tr_mesh_num_tets(m));
+              (unsigned long long)r.st.points_added_for_quality, tr_mesh_num_tets(m));
     }
-    tr_mesh_destroy(m);
-    tr_plc_destroy(used);
+    tm_free(&r);
   }
   tr_plc_destroy(plc);
 }
@@ -596,16 +540,16 @@ static uint32_t count_over(const tr_mesh *m, double V, uint32_t region, uint32_t
 static void max_volume(void)
 {
   const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, V = 0.01;
-  tr_plc *plc = box_surface(lo, hi), *used = NULL;
-  tr_stats st;
-  tr_mesh *m = mesh("max_volume", plc, 0, V, TR_CHK_TOPOLOGY, &used, &st);
+  tr_plc *plc = tm_box(lo, hi);
+  const tr_options opt = refinement(0, V);
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, "max_volume", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
     uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
     EXPECT(over == 0, "max_volume: %u tets have a volume above %g", over, V);
     EXPECT(n >= 100, "max_volume: %u tets cannot all be under 1/100", n);
   }
-  tr_mesh_destroy(m);
-  tr_plc_destroy(used);
+  tm_free(&r);
   tr_plc_destroy(plc);
 }
 
@@ -615,33 +559,33 @@ static void region_max_volume(void)
 {
   const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, lo2[3] = {0.25, 0.25, 0.25},
                hi2[3] = {0.75, 0.75, 0.75}, V = 0.002;
-  tr_plc *outer = box_surface(lo, hi), *inner = box_surface(lo2, hi2), *plc = NULL, *used = NULL;
+  tr_plc *outer = tm_box(lo, hi), *inner = tm_box(lo2, hi2), *plc = NULL;
   uint32_t n1 = outer->npoints, np = n1 + inner->npoints, nt = outer->ntris + inner->ntris;
   double *xyz = malloc(sizeof *xyz * 3 * np);
   uint32_t *tris = malloc(sizeof *tris * 3 * nt);
   memcpy(xyz, outer->xyz, sizeof *xyz * 3 * n1);
   memcpy(xyz + 3 * n1, inner->xyz, sizeof *xyz * 3 * inner->npoints);
   memcpy(tris, outer->tris, sizeof *tris * 3 * outer->ntris);
-  /* box_surface faces inward: the inner box reversed faces outward, an inclusion */
+  /* tm_box faces inward: the inner box reversed faces outward, an inclusion */
   for (uint32_t i = 0; i < 3 * inner->ntris; i++)
     tris[3 * outer->ntris + i] = inner->tris[3 * (i / 3) + 2 - i % 3] + n1;
   EXPECT(tr_plc_create(&plc) == TR_OK && tr_plc_set(plc, xyz, np, tris, nt, NULL) == TR_OK &&
              tr_plc_add_region(plc, 0.5, 0.5, 0.5, 5, V) == TR_OK &&
              tr_plc_add_region(plc, 0.1, 0.1, 0.1, 3, 0) == TR_OK,
          "region_max_volume: building the input: %s", tr_last_error());
-  tr_stats st;
-  tr_mesh *m = mesh("region_max_volume", plc, 0, 0, TR_CHK_TOPOLOGY, &used, &st);
+  const tr_options opt = refinement(0, 0);
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, "region_max_volume", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
     uint32_t n, over = count_over(m, V, 5, &n), nout;
     EXPECT(over == 0, "region_max_volume: %u tets of the inner region above %g", over, V);
     EXPECT(n >= 63, "region_max_volume: %u inner tets cannot all be under 1/500", n);
     count_over(m, V, 3, &nout);
-    EXPECT(nout > 0 && st.points_added_for_quality > 0,
+    EXPECT(nout > 0 && r.st.points_added_for_quality > 0,
            "region_max_volume: %u outer tets, %llu points added", nout,
-           (unsigned long long)st.points_added_for_quality);
+           (unsigned long long)r.st.points_added_for_quality);
   }
-  tr_mesh_destroy(m);
-  tr_plc_destroy(used);
+  tm_free(&r);
   tr_plc_destroy(plc);
   tr_plc_destroy(outer);
   tr_plc_destroy(inner);
@@ -666,7 +610,8 @@ static void shapes(const char *dir)
      * and the outer box, circumcentres closer to a vertex than its insertion radius are
      * not inserted (src/refine/refine.c), so a worse tet than the recovery's can remain
      * there: the share of bad tets is what drops */
-    improves(files[i], p, 1.414, i == 1 ? TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T : TR_CHK_TOPOLOGY,
+    const tr_options opt = refinement(1.414, 0);
+    improves(files[i], p, &opt, i == 1 ? TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T : TR_CHK_TOPOLOGY,
              i == 0);
     tr_plc_destroy(p);
   }
@@ -675,10 +620,11 @@ static void shapes(const char *dir)
 static void determinism(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {4, 0, 0}, C[3] = {2, 3, 0}, D[3] = {2, 0.75, 2};
-  tr_plc *plc = tet_surface(A, B, C, D), *u0 = NULL, *u1 = NULL;
-  tr_stats st;
-  tr_mesh *m0 = mesh("determinism", plc, 1.2, 0.05, TR_CHK_TOPOLOGY, &u0, &st);
-  tr_mesh *m1 = mesh("determinism", plc, 1.2, 0.05, TR_CHK_TOPOLOGY, &u1, &st);
+  tr_plc *plc = tet_surface(A, B, C, D);
+  const tr_options opt = refinement(1.2, 0.05);
+  tm_run a, b;
+  tr_mesh *m0 = tm_mesh(&a, "determinism", plc, &opt, TR_CHK_TOPOLOGY);
+  tr_mesh *m1 = tm_mesh(&b, "determinism", plc, &opt, TR_CHK_TOPOLOGY);
   if (m0 && m1) {
     EXPECT(m0->nv == m1->nv && m0->nt == m1->nt, "determinism: sizes differ");
     if (m0->nv == m1->nv && m0->nt == m1->nt)
@@ -686,183 +632,9 @@ static void determinism(void)
                  !memcmp(m0->tv, m1->tv, 16 * (size_t)m0->nt),
              "determinism: two runs differ");
   }
-  tr_mesh_destroy(m0);
-  tr_mesh_destroy(m1);
-  tr_plc_destroy(u0);
-  tr_plc_destroy(u1);
+  tm_free(&a);
+  tm_free(&b);
   tr_plc_destroy(plc);
-}
-
-/* tr_tet_shape's dih[e] is the interior dihedral angle at edge e (tr_edge_vtx order),
- * measured independently: the angle between the other two vertices' offsets from the
- * edge line, on random tets. */
-static void dihedral_at_edge_matches_geometry(void)
-{
-  uint64_t r = 777;
-  for (int it = 0; it < 5000; it++) {
-    double p[4][3];
-    for (int i = 0; i < 4; i++)
-      for (int k = 0; k < 3; k++) {
-        r = r * 6364136223846793005ull + 1442695040888963407ull;
-        p[i][k] = (double)(r >> 11) * 0x1p-53;
-      }
-    double ratio, vol, dih[6];
-    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, dih, NULL);
-    for (int e = 0; e < 6; e++) {
-      int i = tr_edge_vtx[e][0], j = tr_edge_vtx[e][1], o[2], no = 0;
-      for (int s = 0; s < 4; s++)
-        if (s != i && s != j)
-          o[no++] = s;
-      double d[3], dd = 0, w[2][3];
-      for (int k = 0; k < 3; k++) {
-        d[k] = p[j][k] - p[i][k];
-        dd += d[k] * d[k];
-      }
-      for (int h = 0; h < 2; h++) {
-        double t = 0;
-        for (int k = 0; k < 3; k++)
-          t += (p[o[h]][k] - p[i][k]) * d[k];
-        for (int k = 0; k < 3; k++)
-          w[h][k] = p[o[h]][k] - p[i][k] - t / dd * d[k];
-      }
-      double c = 0, l0 = 0, l1 = 0;
-      for (int k = 0; k < 3; k++) {
-        c += w[0][k] * w[1][k];
-        l0 += w[0][k] * w[0][k];
-        l1 += w[1][k] * w[1][k];
-      }
-      double want = acos(c / sqrt(l0 * l1)) * (180.0 / 3.14159265358979323846);
-      if (!(l0 > 1e-6 && l1 > 1e-6))
-        continue; /* a vertex nearly on the edge line: no well-defined reference */
-      EXPECT(fabs(dih[e] - want) < 1e-6, "tet %d edge %d: %.12g vs %.12g degrees", it, e,
-             dih[e], want);
-    }
-  }
-}
-
-/* tr_tet_min_dihedral is the smallest of tr_tet_shape's six angles, the same double, on
- * regular, random, sliver-like and flat tets (its one arccosine rests on acos being
- * monotone). */
-static void min_dihedral_equals_smallest_of_six(void)
-{
-  uint64_t r = 12345;
-  for (int it = 0; it < 20000; it++) {
-    double p[4][3];
-    for (int i = 0; i < 4; i++)
-      for (int k = 0; k < 3; k++) {
-        r = r * 6364136223846793005ull + 1442695040888963407ull;
-        p[i][k] = (double)(r >> 11) * 0x1p-53;
-      }
-    if (it % 3 == 1) /* nearly flat: d close to the plane abc */
-      for (int k = 0; k < 3; k++)
-        p[3][k] = (p[0][k] + p[1][k] + p[2][k]) / 3 + (it % 2 ? 1e-9 : 0);
-    double ratio, vol, dih[6], r2, v2;
-    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, dih, NULL);
-    double lo = dih[0];
-    for (int e = 1; e < 6; e++)
-      lo = fmin(lo, dih[e]);
-    double m = tr_tet_min_dihedral(p[0], p[1], p[2], p[3], &r2, &v2);
-    EXPECT(m == lo || (isnan(m) && isnan(lo)), "tet %d: %.17g vs the six's smallest %.17g", it,
-           m, lo);
-    EXPECT((r2 == ratio || (isnan(r2) && isnan(ratio))) && v2 == vol, "tet %d: ratio/volume", it);
-  }
-}
-
-/* The quality summary by its definition: tr_tet_shape's six angles of every live real tet,
- * one arccosine each (what tr_quality_measure computed before it compared cosines). */
-static void quality_by_angles(const tr_mesh *m, tr_quality *q)
-{
-  memset(q, 0, sizeof *q);
-  q->min_dihedral = 180;
-  static const double rb[TR_QUALITY_RATIO_BINS - 1] = {1, 1.414, 2, 4, 10, 100};
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t) || (m->flags[t] & TR_TF_OUTER))
-      continue;
-    const uint32_t *v = m->tv + 4 * (size_t)t;
-    double ratio, vol, dih[6];
-    tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1], m->xyz + 3 * (size_t)v[2],
-                 m->xyz + 3 * (size_t)v[3], &ratio, &vol, dih, NULL);
-    q->ntets++;
-    double lo = 180, hi = 0;
-    for (int e = 0; e < 6; e++) {
-      lo = fmin(lo, dih[e]);
-      hi = fmax(hi, dih[e]);
-      int b = (int)(dih[e] / 10);
-      q->dihedral_hist[b < 0 ? 0 : b >= TR_QUALITY_DIH_BINS ? TR_QUALITY_DIH_BINS - 1 : b]++;
-    }
-    q->min_dihedral = fmin(q->min_dihedral, lo);
-    q->max_dihedral = fmax(q->max_dihedral, hi);
-    q->below5 += lo < 5;
-    q->below10 += lo < 10;
-    if (!(ratio <= q->max_radius_edge))
-      q->max_radius_edge = ratio;
-    int b = 0;
-    while (b < TR_QUALITY_RATIO_BINS - 1 && !(ratio < rb[b]))
-      b++;
-    q->ratio_hist[b]++;
-  }
-  if (!q->ntets)
-    q->min_dihedral = 0;
-}
-
-/* tr_quality_measure (cosines against precomputed bin edges, an arccosine only near an
- * edge or an extreme) gives exactly the figures of one arccosine per angle: on a lattice
- * (angles of exactly 45, 60, 90, 120, 135 degrees: cosines on the bin edges and ties for
- * the extremes), on random points and on points close to a plane (slivers, angles near 0
- * and 180 degrees). */
-static void quality_summary_equals_per_angle_definition(void)
-{
-  uint64_t r = 987654321;
-  for (int set = 0; set < 6; set++) {
-    double x[3 * 400];
-    uint32_t n = 0;
-    if (set == 0) {
-      for (int i = 0; i < 6; i++)
-        for (int j = 0; j < 6; j++)
-          for (int k = 0; k < 6; k++) {
-            x[3 * n] = i;
-            x[3 * n + 1] = j;
-            x[3 * n + 2] = k;
-            n++;
-          }
-    } else {
-      for (n = 0; n < 400; n++)
-        for (int k = 0; k < 3; k++) {
-          r = r * 6364136223846793005ull + 1442695040888963407ull;
-          double u = (double)(r >> 11) * 0x1p-53;
-          x[3 * n + (uint32_t)k] = k == 2 && set >= 3 ? u * (set == 3 ? 1e-3 : set == 4 ? 1e-7 : 1e-12)
-                                                      : u;
-        }
-    }
-    tr_mesh *m = NULL;
-    if (tr_delaunay_build(x, n, &m) != TR_OK) {
-      EXPECT(0, "set %d: Delaunay failed: %s", set, tr_last_error());
-      continue;
-    }
-    tr_quality a, b;
-    tr_quality_measure(m, &a);
-    quality_by_angles(m, &b);
-    EXPECT(a.ntets == b.ntets && a.ntets > 0, "set %d: %llu vs %llu tets", set,
-           (unsigned long long)a.ntets, (unsigned long long)b.ntets);
-    EXPECT(a.min_dihedral == b.min_dihedral && a.max_dihedral == b.max_dihedral,
-           "set %d: dihedral min %.17g max %.17g, by the angles %.17g %.17g", set,
-           a.min_dihedral, a.max_dihedral, b.min_dihedral, b.max_dihedral);
-    EXPECT(a.below5 == b.below5 && a.below10 == b.below10,
-           "set %d: under 5 / 10 degrees %llu %llu, by the angles %llu %llu", set,
-           (unsigned long long)a.below5, (unsigned long long)a.below10,
-           (unsigned long long)b.below5, (unsigned long long)b.below10);
-    EXPECT(a.max_radius_edge == b.max_radius_edge, "set %d: max radius-edge", set);
-    for (int k = 0; k < TR_QUALITY_DIH_BINS; k++)
-      EXPECT(a.dihedral_hist[k] == b.dihedral_hist[k], "set %d: dihedral bin %d: %llu vs %llu",
-             set, k, (unsigned long long)a.dihedral_hist[k],
-             (unsigned long long)b.dihedral_hist[k]);
-    for (int k = 0; k < TR_QUALITY_RATIO_BINS; k++)
-      EXPECT(a.ratio_hist[k] == b.ratio_hist[k], "set %d: ratio bin %d", set, k);
-    if (set == 0) /* the lattice has angles on bin edges: the fallback was exercised */
-      EXPECT(b.dihedral_hist[4] + b.dihedral_hist[6] + b.dihedral_hist[9] > 0,
-             "lattice: no angle of 45, 60 or 90 degrees");
-    tr_mesh_destroy(m);
-  }
 }
 
 /* The smallest dihedral angle over m's real tets (on its doubles). */
@@ -952,44 +724,21 @@ static void pinned_flat_tet_is_opened(void)
 
 int main(int argc, char **argv)
 {
-  const char *c = argc > 1 ? argv[1] : "";
-  if (!strcmp(c, "encroached_segment"))
-    encroached_segment();
-  else if (!strcmp(c, "encroached_subface"))
-    encroached_subface();
-  else if (!strcmp(c, "encroached_segment_left"))
-    encroached_segment_of_a_good_tet_is_left();
-  else if (!strcmp(c, "small_angle"))
-    small_angle();
-  else if (!strcmp(c, "thin_slab"))
-    thin_slab();
-  else if (!strcmp(c, "thin_slab_terminates"))
-    thin_slab_terminates();
-  else if (!strcmp(c, "thin_subfaces"))
-    thin_subfaces_split_for_shape();
-  else if (!strcmp(c, "wedge_5_facet"))
-    wedge_5_degrees_in_a_facet();
-  else if (!strcmp(c, "wedge_10_degrees"))
-    wedge_10_degrees();
-  else if (!strcmp(c, "max_volume"))
-    max_volume();
-  else if (!strcmp(c, "region_max_volume"))
-    region_max_volume();
-  else if (!strcmp(c, "shapes") && argc > 2)
-    shapes(argv[2]);
-  else if (!strcmp(c, "determinism"))
-    determinism();
-  else if (!strcmp(c, "pinned"))
-    pinned_flat_tet_is_opened();
-  else if (!strcmp(c, "min_dihedral"))
-    min_dihedral_equals_smallest_of_six();
-  else if (!strcmp(c, "quality_summary"))
-    quality_summary_equals_per_angle_definition();
-  else if (!strcmp(c, "dihedral_at_edge"))
-    dihedral_at_edge_matches_geometry();
-  else {
-    fprintf(stderr, "unknown case '%s'\n", c);
-    return 2;
-  }
-  return failures != 0;
+  static const texpect_case cases[] = {
+      {"encroached_segment", encroached_segment, NULL},
+      {"encroached_subface", encroached_subface, NULL},
+      {"encroached_segment_left", encroached_segment_of_a_good_tet_is_left, NULL},
+      {"small_angle", small_angle, NULL},
+      {"thin_slab", thin_slab, NULL},
+      {"thin_slab_terminates", thin_slab_terminates, NULL},
+      {"thin_subfaces", thin_subfaces_split_for_shape, NULL},
+      {"wedge_5_facet", wedge_5_degrees_in_a_facet, NULL},
+      {"wedge_10_degrees", wedge_10_degrees, NULL},
+      {"max_volume", max_volume, NULL},
+      {"region_max_volume", region_max_volume, NULL},
+      {"shapes", NULL, shapes},
+      {"determinism", determinism, NULL},
+      {"pinned", pinned_flat_tet_is_opened, NULL},
+  };
+  return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }

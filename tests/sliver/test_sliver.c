@@ -8,15 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/plc.h"
 #include "delaunay/delaunay.h"
-#include "mesh/check.h"
-#include "mesh/conform.h"
-#include "pipeline/pipeline.h"
 #include "refine/quality.h"
 #include "refine/refine.h"
 #include "sliver/sliver.h"
-#include "../pipeline/texpect.h"
+#include "../pipeline/tmesh.h"
 
 /* The box [0,1]^3 (vertices 0..7) and a sliver: a square at z = 1/2 folded by e, its
  * corners alternately up and down (vertices 8..11). Its circumsphere is centred in the
@@ -69,6 +65,21 @@ static void valid_box(const char *name, const tr_mesh *m)
   tr_status s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six);
   EXPECT(s == TR_OK, "%s: mesh validator: %s", name, tr_last_error());
   mpq_clear(six);
+}
+
+/* One pass of the stage (tr_sliver_smooth_pass, tr_sliver_insert_pass, ...) over m with
+ * the sub-faces sub, npoints as tr_sliver_ctx_init takes it, counted into *st. */
+static tr_status one_pass(tr_mesh *m, const tr_subfaces *sub, uint32_t npoints,
+                          tr_status (*pass)(tr_sliver_ctx *, tr_sliver_stats *),
+                          tr_sliver_stats *st)
+{
+  tr_sliver_ctx c;
+  memset(st, 0, sizeof *st);
+  tr_status s = tr_sliver_ctx_init(&c, m, sub, NULL, npoints, TR_SLIVER_BOUND);
+  if (s == TR_OK)
+    s = pass(&c, st);
+  tr_sliver_ctx_free(&c);
+  return s;
 }
 
 static void a_sliver_is_removed_by_a_flip(void)
@@ -137,14 +148,9 @@ static void a_sliver_is_removed_by_a_new_interior_point(void)
   tr_subfaces sub = {1, f, &tri};
   double before = min_dihedral(m), x0[36];
   memcpy(x0, m->xyz, sizeof x0);
-  tr_sliver_ctx c;
   tr_sliver_stats st;
-  memset(&st, 0, sizeof st);
-  tr_status s = tr_sliver_ctx_init(&c, m, &sub, NULL, 12, TR_SLIVER_BOUND);
-  if (s == TR_OK)
-    s = tr_sliver_insert_pass(&c, &st);
+  tr_status s = one_pass(m, &sub, 12, tr_sliver_insert_pass, &st);
   EXPECT(s == TR_OK, "insertion: %s", tr_last_error());
-  tr_sliver_ctx_free(&c);
   EXPECT(st.points >= 1 && m->nv == 12 + st.points, "%llu points added, %u vertices",
          (unsigned long long)st.points, m->nv);
   EXPECT(!has_tet(m, sl), "the sliver is still there");
@@ -189,14 +195,9 @@ static void smoothing_moves_a_free_vertex_and_raises_the_angle(void)
   double before = min_dihedral(m), star0 = star_min(m, 11), x0[36];
   memcpy(x0, m->xyz, sizeof x0);
   tr_subfaces none = {0, NULL, NULL};
-  tr_sliver_ctx c;
   tr_sliver_stats st;
-  memset(&st, 0, sizeof st);
-  tr_status s = tr_sliver_ctx_init(&c, m, &none, NULL, 11, TR_SLIVER_BOUND);
-  if (s == TR_OK)
-    s = tr_sliver_smooth_pass(&c, &st);
+  tr_status s = one_pass(m, &none, 11, tr_sliver_smooth_pass, &st);
   EXPECT(s == TR_OK, "smoothing: %s", tr_last_error());
-  tr_sliver_ctx_free(&c);
   EXPECT(st.smoothed == 1, "%llu vertices moved, 11 only may", (unsigned long long)st.smoothed);
   for (uint32_t v = 0; v < 11; v++)
     EXPECT(!memcmp(x0 + 3 * v, m->xyz + 3 * (size_t)v, 24), "vertex %u moved", v);
@@ -232,29 +233,54 @@ static void no_pass_lowers_the_smallest_angle(void)
   }
 }
 
-/* Meshes plc with --quality R and the given level; validators; NULL on failure. */
-static tr_mesh *mesh(const char *name, const tr_plc *plc, int level, unsigned chk,
-                     tr_plc **used, tr_stats *st)
+/* Meshes plc under --quality 1.414 with sliver removal at `level` into *r, through both
+ * validators (tmesh.h); NULL on failure. */
+static tr_mesh *mesh(tm_run *r, const char *name, const tr_plc *plc, int level, unsigned chk)
 {
-  tr_options opt;
-  tr_options_default(&opt);
-  opt.verbose = 0;
+  tr_options opt = tm_options();
   opt.quality_ratio = 1.414;
   opt.optimize = level;
-  tr_mesh *m = NULL;
-  memset(st, 0, sizeof *st);
-  st->size = sizeof *st;
-  tr_status s = tr_mesh_plc_ex(plc, &opt, &m, st, used);
-  if (s != TR_OK) {
-    EXPECT(0, "%s -O %d: tr_mesh_plc failed: %s: %s", name, level, tr_status_name(s),
-           tr_last_error());
-    return NULL;
+  char label[160];
+  snprintf(label, sizeof label, "%s -O %d", name, level);
+  return tm_mesh(r, label, plc, &opt, chk);
+}
+
+/* What the stage at `level` keeps of the level-0 mesh m0 in mk: every tet of mk with an
+ * angle under the stage's bound has a radius-edge ratio within max(1.414, the worst of
+ * m0, that is of the exempt tets refinement left) (the written doubles of Steiner points may differ from the ones the stage measured
+ * by a few ulps), and every input vertex is where it was. */
+static void kept_against_level_0(const char *name, int level, const tr_mesh *m0,
+                                 const tr_mesh *mk)
+{
+  double worst0 = 0, worstk = 0;
+  for (int k = 0; k < 2; k++) {
+    const tr_mesh *m = k ? mk : m0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+      double r = 0, q;
+      if (!tr_tet_is_real(m, t))
+        continue;
+      q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
+      if (!k)
+        worst0 = fmax(worst0, r);
+      else if (q < TR_SLIVER_BOUND)
+        worstk = fmax(worstk, r);
+    }
   }
-  s = tr_check_mesh(m, chk, NULL);
-  EXPECT(s == TR_OK, "%s -O %d: mesh validator: %s", name, level, tr_last_error());
-  s = tr_check_conformity(m, *used, NULL, 0);
-  EXPECT(s == TR_OK, "%s -O %d: exact conformity: %s", name, level, tr_last_error());
-  return m;
+  EXPECT(worstk <= fmax(1.414, worst0) * (1 + 1e-9),
+         "%s -O %d: a tet under %g degrees has ratio %g above max(1.414, %g)", name, level,
+         TR_SLIVER_BOUND, worstk, worst0);
+  for (uint32_t v = 0; v < mk->nv && v < m0->nv; v++) {
+    int k0, kk;
+    uint32_t x0, xk;
+    if (tr_mesh_vertex_origin(m0, v, &k0, &x0) != TR_OK ||
+        tr_mesh_vertex_origin(mk, v, &kk, &xk) != TR_OK) {
+      EXPECT(0, "%s: vertex origin %u: %s", name, v, tr_last_error());
+      break;
+    }
+    if (k0 == TR_VERTEX_INPUT || kk == TR_VERTEX_INPUT)
+      EXPECT(k0 == kk && !memcmp(m0->xyz + 3 * (size_t)v, mk->xyz + 3 * (size_t)v, 24),
+             "%s -O %d: input vertex %u moved", name, level, v);
+  }
 }
 
 /* Refined surfaces of tests/data with and without the stage: all validate, level 2 adds no
@@ -276,110 +302,47 @@ static void refined_surfaces(const char *dir)
     }
     /* a cavity or two cubes are not a ball: no Euler check (the volume is checked exactly) */
     unsigned chk = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T;
-    tr_plc *u0 = NULL, *u2 = NULL, *u3 = NULL;
-    tr_stats s0, s2, s3;
-    tr_mesh *m0 = mesh(files[i], p, 0, chk, &u0, &s0);
-    tr_mesh *m2 = mesh(files[i], p, 2, chk, &u2, &s2);
-    tr_mesh *m3 = mesh(files[i], p, 3, chk, &u3, &s3);
+    tm_run r0, r2, r3;
+    tr_mesh *m0 = mesh(&r0, files[i], p, 0, chk);
+    tr_mesh *m2 = mesh(&r2, files[i], p, 2, chk);
+    tr_mesh *m3 = mesh(&r3, files[i], p, 3, chk);
     if (m0 && m3) {
-      EXPECT(s3.min_dihedral >= s0.min_dihedral, "%s -O 3: smallest dihedral %g -> %g",
-             files[i], s0.min_dihedral, s3.min_dihedral);
-      EXPECT(s3.volume_nodes == s0.volume_nodes + s3.points_added_for_sliver,
+      EXPECT(r3.st.min_dihedral >= r0.st.min_dihedral, "%s -O 3: smallest dihedral %g -> %g",
+             files[i], r0.st.min_dihedral, r3.st.min_dihedral);
+      EXPECT(r3.st.volume_nodes == r0.st.volume_nodes + r3.st.points_added_for_sliver,
              "%s -O 3: %llu vertices, %llu without the stage and %llu points added", files[i],
-             (unsigned long long)s3.volume_nodes, (unsigned long long)s0.volume_nodes,
-             (unsigned long long)s3.points_added_for_sliver);
-      double worst0 = 0, worst3 = 0;
-      for (int k = 0; k < 2; k++) {
-        const tr_mesh *m = k ? m3 : m0;
-        for (uint32_t t = 0; t < m->nt; t++) {
-          double r = 0, q;
-          if (!tr_tet_is_real(m, t))
-            continue;
-          q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
-          if (!k)
-            worst0 = fmax(worst0, r);
-          else if (q < TR_SLIVER_BOUND)
-            worst3 = fmax(worst3, r);
-        }
-      }
-      EXPECT(worst3 <= fmax(1.414, worst0) * (1 + 1e-9),
-             "%s -O 3: a tet under %g degrees has ratio %g above max(1.414, %g)", files[i],
-             TR_SLIVER_BOUND, worst3, worst0);
-      for (uint32_t v = 0; v < m3->nv && v < m0->nv; v++) {
-        int k0, k3;
-        uint32_t x0, x3;
-        if (tr_mesh_vertex_origin(m0, v, &k0, &x0) != TR_OK ||
-            tr_mesh_vertex_origin(m3, v, &k3, &x3) != TR_OK) {
-          EXPECT(0, "%s: vertex origin %u: %s", files[i], v, tr_last_error());
-          break;
-        }
-        if (k0 == TR_VERTEX_INPUT || k3 == TR_VERTEX_INPUT)
-          EXPECT(k0 == k3 && !memcmp(m0->xyz + 3 * (size_t)v, m3->xyz + 3 * (size_t)v, 24),
-                 "%s -O 3: input vertex %u moved", files[i], v);
-      }
+             (unsigned long long)r3.st.volume_nodes, (unsigned long long)r0.st.volume_nodes,
+             (unsigned long long)r3.st.points_added_for_sliver);
+      kept_against_level_0(files[i], 3, m0, m3);
       fprintf(stderr, "%s -O 3: min dihedral %.3f -> %.3f, under 10 deg %llu -> %llu, "
-              "%llu points added\n", files[i], s0.min_dihedral, s3.min_dihedral,
-              (unsigned long long)s0.tets_dihedral_below_10,
-              (unsigned long long)s3.tets_dihedral_below_10,
-              (unsigned long long)s3.points_added_for_sliver);
+              "%llu points added\n", files[i], r0.st.min_dihedral, r3.st.min_dihedral,
+              (unsigned long long)r0.st.tets_dihedral_below_10,
+              (unsigned long long)r3.st.tets_dihedral_below_10,
+              (unsigned long long)r3.st.points_added_for_sliver);
     }
-    tr_mesh_destroy(m3);
-    tr_plc_destroy(u3);
+    tm_free(&r3);
     if (m0 && m2) {
-      EXPECT(s2.points_added_for_sliver == 0 && s0.volume_nodes == s2.volume_nodes,
+      EXPECT(r2.st.points_added_for_sliver == 0 && r0.st.volume_nodes == r2.st.volume_nodes,
              "%s: the stage added points (%llu -> %llu vertices)", files[i],
-             (unsigned long long)s0.volume_nodes, (unsigned long long)s2.volume_nodes);
-      EXPECT(s0.sliver_flips == 0 && s0.sliver_points_smoothed == 0,
+             (unsigned long long)r0.st.volume_nodes, (unsigned long long)r2.st.volume_nodes);
+      EXPECT(r0.st.sliver_flips == 0 && r0.st.sliver_points_smoothed == 0,
              "%s: -O 0 flipped or moved", files[i]);
-      EXPECT(s2.min_dihedral >= s0.min_dihedral, "%s: smallest dihedral %g -> %g", files[i],
-             s0.min_dihedral, s2.min_dihedral);
-      EXPECT(s2.tets_dihedral_below_10 <= s0.tets_dihedral_below_10,
+      EXPECT(r2.st.min_dihedral >= r0.st.min_dihedral, "%s: smallest dihedral %g -> %g", files[i],
+             r0.st.min_dihedral, r2.st.min_dihedral);
+      EXPECT(r2.st.tets_dihedral_below_10 <= r0.st.tets_dihedral_below_10,
              "%s: tets under 10 degrees %llu -> %llu", files[i],
-             (unsigned long long)s0.tets_dihedral_below_10,
-             (unsigned long long)s2.tets_dihedral_below_10);
-      /* the ratio bound holds for every tet with an angle under the stage's bound, up to
-       * the worst ratio refinement left (exempt tets); the written doubles of Steiner
-       * points may differ from the ones the stage measured by a few ulps */
-      double worst0 = 0, worst2 = 0;
-      for (int k = 0; k < 2; k++) {
-        const tr_mesh *m = k ? m2 : m0;
-        for (uint32_t t = 0; t < m->nt; t++) {
-          double r = 0, q;
-          if (!tr_tet_is_real(m, t))
-            continue;
-          q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)t, TR_NONE, NULL, &r);
-          if (!k)
-            worst0 = fmax(worst0, r);
-          else if (q < TR_SLIVER_BOUND)
-            worst2 = fmax(worst2, r);
-        }
-      }
-      EXPECT(worst2 <= fmax(1.414, worst0) * (1 + 1e-9),
-             "%s: a tet under %g degrees has ratio %g above max(1.414, %g)", files[i],
-             TR_SLIVER_BOUND, worst2, worst0);
-      for (uint32_t v = 0; v < m2->nv && v < m0->nv; v++) {
-        int k0, k2;
-        uint32_t x0, x2;
-        if (tr_mesh_vertex_origin(m0, v, &k0, &x0) != TR_OK ||
-            tr_mesh_vertex_origin(m2, v, &k2, &x2) != TR_OK) {
-          EXPECT(0, "%s: vertex origin %u: %s", files[i], v, tr_last_error());
-          break;
-        }
-        if (k0 == TR_VERTEX_INPUT || k2 == TR_VERTEX_INPUT)
-          EXPECT(k0 == k2 && !memcmp(m0->xyz + 3 * (size_t)v, m2->xyz + 3 * (size_t)v, 24),
-                 "%s: input vertex %u moved", files[i], v);
-      }
+             (unsigned long long)r0.st.tets_dihedral_below_10,
+             (unsigned long long)r2.st.tets_dihedral_below_10);
+      kept_against_level_0(files[i], 2, m0, m2);
       fprintf(stderr, "%s: min dihedral %.3f -> %.3f, under 10 deg %llu -> %llu, %llu flips, "
-              "%llu moved\n", files[i], s0.min_dihedral, s2.min_dihedral,
-              (unsigned long long)s0.tets_dihedral_below_10,
-              (unsigned long long)s2.tets_dihedral_below_10,
-              (unsigned long long)s2.sliver_flips,
-              (unsigned long long)s2.sliver_points_smoothed);
+              "%llu moved\n", files[i], r0.st.min_dihedral, r2.st.min_dihedral,
+              (unsigned long long)r0.st.tets_dihedral_below_10,
+              (unsigned long long)r2.st.tets_dihedral_below_10,
+              (unsigned long long)r2.st.sliver_flips,
+              (unsigned long long)r2.st.sliver_points_smoothed);
     }
-    tr_mesh_destroy(m0);
-    tr_mesh_destroy(m2);
-    tr_plc_destroy(u0);
-    tr_plc_destroy(u2);
+    tm_free(&r0);
+    tm_free(&r2);
     tr_plc_destroy(p);
   }
 }
@@ -437,28 +400,24 @@ static void the_polish_raises_the_minimum_of_an_icosahedron(void)
     tr_plc_destroy(p);
     return;
   }
-  tr_plc *u0 = NULL, *u1 = NULL, *u3 = NULL;
-  tr_stats s0, s1, s3;
-  tr_mesh *m0 = mesh("icosahedron", p, 0, TR_CHK_TOPOLOGY, &u0, &s0);
-  tr_mesh *m1 = mesh("icosahedron", p, 1, TR_CHK_TOPOLOGY, &u1, &s1);
-  tr_mesh *m3 = mesh("icosahedron", p, 3, TR_CHK_TOPOLOGY, &u3, &s3);
+  tm_run r0, r1, r3;
+  tr_mesh *m0 = mesh(&r0, "icosahedron", p, 0, TR_CHK_TOPOLOGY);
+  tr_mesh *m1 = mesh(&r1, "icosahedron", p, 1, TR_CHK_TOPOLOGY);
+  tr_mesh *m3 = mesh(&r3, "icosahedron", p, 3, TR_CHK_TOPOLOGY);
   if (m0 && m1 && m3) {
-    EXPECT(s3.min_dihedral >= 60, "icosahedron -O 3: smallest dihedral %.3f, under 60",
-           s3.min_dihedral);
-    EXPECT(s1.min_dihedral >= s0.min_dihedral && s1.min_dihedral >= 30 &&
-               s1.points_added_for_sliver == 0,
+    EXPECT(r3.st.min_dihedral >= 60, "icosahedron -O 3: smallest dihedral %.3f, under 60",
+           r3.st.min_dihedral);
+    EXPECT(r1.st.min_dihedral >= r0.st.min_dihedral && r1.st.min_dihedral >= 30 &&
+               r1.st.points_added_for_sliver == 0,
            "icosahedron -O 1: smallest dihedral %.3f -> %.3f (under 30?), %llu points",
-           s0.min_dihedral, s1.min_dihedral, (unsigned long long)s1.points_added_for_sliver);
+           r0.st.min_dihedral, r1.st.min_dihedral, (unsigned long long)r1.st.points_added_for_sliver);
     fprintf(stderr, "icosahedron: min dihedral -O 0 %.3f, -O 1 %.3f, -O 3 %.3f (%llu tets)\n",
-            s0.min_dihedral, s1.min_dihedral, s3.min_dihedral,
-            (unsigned long long)s3.volume_elements);
+            r0.st.min_dihedral, r1.st.min_dihedral, r3.st.min_dihedral,
+            (unsigned long long)r3.st.volume_elements);
   }
-  tr_mesh_destroy(m0);
-  tr_mesh_destroy(m1);
-  tr_mesh_destroy(m3);
-  tr_plc_destroy(u0);
-  tr_plc_destroy(u1);
-  tr_plc_destroy(u3);
+  tm_free(&r0);
+  tm_free(&r1);
+  tm_free(&r3);
   tr_plc_destroy(p);
 }
 
@@ -472,10 +431,9 @@ static void deterministic_and_levels_checked(const char *dir)
     EXPECT(0, "%s: %s", path, tr_last_error());
     return;
   }
-  tr_plc *u0 = NULL, *u1 = NULL;
-  tr_stats st;
-  tr_mesh *m0 = mesh("determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY, &u0, &st);
-  tr_mesh *m1 = mesh("determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY, &u1, &st);
+  tm_run r0, r1;
+  tr_mesh *m0 = mesh(&r0, "determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY);
+  tr_mesh *m1 = mesh(&r1, "determinism", p, TR_SLIVER_INSERT, TR_CHK_TOPOLOGY);
   if (m0 && m1) {
     EXPECT(m0->nv == m1->nv && m0->nt == m1->nt, "determinism: sizes differ");
     if (m0->nv == m1->nv && m0->nt == m1->nt)
@@ -491,10 +449,8 @@ static void deterministic_and_levels_checked(const char *dir)
   opt.optimize = TR_SLIVER_INSERT + 1;
   tr_mesh *bad = NULL;
   EXPECT(tr_mesh_plc(p, &opt, &bad, NULL) == TR_ERR_USAGE && !bad, "level 4 accepted");
-  tr_mesh_destroy(m0);
-  tr_mesh_destroy(m1);
-  tr_plc_destroy(u0);
-  tr_plc_destroy(u1);
+  tm_free(&r0);
+  tm_free(&r1);
   tr_plc_destroy(p);
 }
 
@@ -585,14 +541,9 @@ static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
   mpq_set_ui(six_v, 1, 2);
   EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v) == TR_OK, "cap: setup: %s", tr_last_error());
   tr_subfaces none = {0, NULL, NULL};
-  tr_sliver_ctx c;
   tr_sliver_stats st;
-  memset(&st, 0, sizeof st);
-  tr_status s = tr_sliver_ctx_init(&c, m, &none, NULL, 5, TR_SLIVER_BOUND);
-  if (s == TR_OK)
-    s = tr_sliver_insert_pass(&c, &st);
+  tr_status s = one_pass(m, &none, 5, tr_sliver_insert_pass, &st);
   EXPECT(s == TR_OK, "cap: insertion: %s", tr_last_error());
-  tr_sliver_ctx_free(&c);
   EXPECT(st.points >= 1 && m->nv == 5 + st.points, "cap: %llu points added, %u vertices",
          (unsigned long long)st.points, m->nv);
   EXPECT(!has_tet(m, cap), "cap: the cap is still there");
@@ -613,30 +564,17 @@ static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
 
 int main(int argc, char **argv)
 {
-  const char *c = argc > 1 ? argv[1] : "";
-  if (!strcmp(c, "flip"))
-    a_sliver_is_removed_by_a_flip();
-  else if (!strcmp(c, "constraints"))
-    constraints_are_kept_and_their_vertices_stay();
-  else if (!strcmp(c, "smoothing"))
-    smoothing_moves_a_free_vertex_and_raises_the_angle();
-  else if (!strcmp(c, "insertion"))
-    a_sliver_is_removed_by_a_new_interior_point();
-  else if (!strcmp(c, "passes"))
-    no_pass_lowers_the_smallest_angle();
-  else if (!strcmp(c, "cap"))
-    a_pinned_cap_is_opened_by_a_point_off_its_plane();
-  else if (!strcmp(c, "pinned"))
-    a_tet_pinned_between_sub_faces_gets_points_on_them();
-  else if (!strcmp(c, "polish"))
-    the_polish_raises_the_minimum_of_an_icosahedron();
-  else if (!strcmp(c, "surfaces") && argc > 2)
-    refined_surfaces(argv[2]);
-  else if (!strcmp(c, "determinism") && argc > 2)
-    deterministic_and_levels_checked(argv[2]);
-  else {
-    fprintf(stderr, "unknown case '%s'\n", c);
-    return 2;
-  }
-  return failures != 0;
+  static const texpect_case cases[] = {
+      {"flip", a_sliver_is_removed_by_a_flip, NULL},
+      {"constraints", constraints_are_kept_and_their_vertices_stay, NULL},
+      {"smoothing", smoothing_moves_a_free_vertex_and_raises_the_angle, NULL},
+      {"insertion", a_sliver_is_removed_by_a_new_interior_point, NULL},
+      {"passes", no_pass_lowers_the_smallest_angle, NULL},
+      {"cap", a_pinned_cap_is_opened_by_a_point_off_its_plane, NULL},
+      {"pinned", a_tet_pinned_between_sub_faces_gets_points_on_them, NULL},
+      {"polish", the_polish_raises_the_minimum_of_an_icosahedron, NULL},
+      {"surfaces", NULL, refined_surfaces},
+      {"determinism", NULL, deterministic_and_levels_checked},
+  };
+  return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }

@@ -1,0 +1,64 @@
+/* The set-up the whole-pipeline tests share (tests/refine, tests/sliver): small surfaces
+ * built from arrays (tplc.h), and meshing one under given options with every output through the
+ * mesh validator and the exact conformity validator. One helper, so that each test states
+ * its configuration and its property, and no test can mesh without validating. Uses the
+ * counting check of texpect.h: a failed run or validation is counted and the case goes on. */
+#ifndef TR_TESTS_PIPELINE_TMESH_H
+#define TR_TESTS_PIPELINE_TMESH_H
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "mesh/check.h"
+#include "mesh/conform.h"
+#include "pipeline/pipeline.h"
+#include "texpect.h"
+#include "tplc.h"
+
+/* The library's defaults, quiet. */
+static inline tr_options tm_options(void)
+{
+  tr_options opt;
+  tr_options_default(&opt);
+  opt.verbose = 0;
+  return opt;
+}
+
+/* One meshing: the mesh (NULL when it failed), the PLC as meshed, the whole stats. */
+typedef struct {
+  tr_mesh *m;
+  tr_plc *used;
+  tr_stats st;
+} tm_run;
+
+/* Meshes plc under opt into *r and runs the mesh validator (checks chk) and the exact
+ * conformity validator (every input edge a chain of mesh edges too when opt->keep_edges);
+ * name starts every message. Returns r->m: NULL when meshing failed (counted); a failed
+ * validation is counted and the mesh returned. tm_free releases *r either way. */
+static inline tr_mesh *tm_mesh(tm_run *r, const char *name, const tr_plc *plc,
+                               const tr_options *opt, unsigned chk)
+{
+  memset(r, 0, sizeof *r);
+  r->st.size = sizeof r->st; /* the whole struct is filled (ABI growth, tetrec.h) */
+  tr_status s = tr_mesh_plc_ex(plc, opt, &r->m, &r->st, &r->used);
+  if (s != TR_OK) {
+    EXPECT(0, "%s: tr_mesh_plc failed: %s: %s", name, tr_status_name(s), tr_last_error());
+    tr_mesh_destroy(r->m);
+    r->m = NULL;
+    return NULL;
+  }
+  s = tr_check_mesh(r->m, chk, NULL);
+  EXPECT(s == TR_OK, "%s: mesh validator: %s", name, tr_last_error());
+  s = tr_check_conformity(r->m, r->used, NULL, opt->keep_edges ? TR_CONF_KEEP_EDGES : 0);
+  EXPECT(s == TR_OK, "%s: exact conformity: %s", name, tr_last_error());
+  return r->m;
+}
+
+static inline void tm_free(tm_run *r)
+{
+  tr_mesh_destroy(r->m);
+  tr_plc_destroy(r->used);
+  memset(r, 0, sizeof *r);
+}
+
+#endif

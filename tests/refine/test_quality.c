@@ -1,0 +1,199 @@
+/* The quality measures of src/refine/quality.h against their definitions: one arccosine
+ * per dihedral angle, measured independently of tr_tet_shape, on random, flat and lattice
+ * tets and on Delaunay meshes of such points (the refinement runs are test_refine.c's). */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "delaunay/delaunay.h"
+#include "mesh/mesh.h"
+#include "refine/quality.h"
+#include "../pipeline/texpect.h"
+
+/* The next of the LCG *r's doubles in [0, 1), 53 random bits. */
+static double unit(uint64_t *r)
+{
+  *r = *r * 6364136223846793005ull + 1442695040888963407ull;
+  return (double)(*r >> 11) * 0x1p-53;
+}
+
+/* Four points of the unit cube from *r. */
+static void random_tet(uint64_t *r, double p[4][3])
+{
+  for (int i = 0; i < 4; i++)
+    for (int k = 0; k < 3; k++)
+      p[i][k] = unit(r);
+}
+
+/* tr_tet_shape's dih[e] is the interior dihedral angle at edge e (tr_edge_vtx order),
+ * measured independently: the angle between the other two vertices' offsets from the
+ * edge line, on random tets. */
+static void dihedral_at_edge_matches_geometry(void)
+{
+  uint64_t r = 777;
+  for (int it = 0; it < 5000; it++) {
+    double p[4][3];
+    random_tet(&r, p);
+    double ratio, vol, dih[6];
+    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, dih, NULL);
+    for (int e = 0; e < 6; e++) {
+      int i = tr_edge_vtx[e][0], j = tr_edge_vtx[e][1], o[2], no = 0;
+      for (int s = 0; s < 4; s++)
+        if (s != i && s != j)
+          o[no++] = s;
+      double d[3], dd = 0, w[2][3];
+      for (int k = 0; k < 3; k++) {
+        d[k] = p[j][k] - p[i][k];
+        dd += d[k] * d[k];
+      }
+      for (int h = 0; h < 2; h++) {
+        double t = 0;
+        for (int k = 0; k < 3; k++)
+          t += (p[o[h]][k] - p[i][k]) * d[k];
+        for (int k = 0; k < 3; k++)
+          w[h][k] = p[o[h]][k] - p[i][k] - t / dd * d[k];
+      }
+      double c = 0, l0 = 0, l1 = 0;
+      for (int k = 0; k < 3; k++) {
+        c += w[0][k] * w[1][k];
+        l0 += w[0][k] * w[0][k];
+        l1 += w[1][k] * w[1][k];
+      }
+      double want = acos(c / sqrt(l0 * l1)) * (180.0 / 3.14159265358979323846);
+      if (!(l0 > 1e-6 && l1 > 1e-6))
+        continue; /* a vertex nearly on the edge line: no well-defined reference */
+      EXPECT(fabs(dih[e] - want) < 1e-6, "tet %d edge %d: %.12g vs %.12g degrees", it, e,
+             dih[e], want);
+    }
+  }
+}
+
+/* tr_tet_min_dihedral is the smallest of tr_tet_shape's six angles, the same double, on
+ * regular, random, sliver-like and flat tets (its one arccosine rests on acos being
+ * monotone). */
+static void min_dihedral_equals_smallest_of_six(void)
+{
+  uint64_t r = 12345;
+  for (int it = 0; it < 20000; it++) {
+    double p[4][3];
+    random_tet(&r, p);
+    if (it % 3 == 1) /* nearly flat: d close to the plane abc */
+      for (int k = 0; k < 3; k++)
+        p[3][k] = (p[0][k] + p[1][k] + p[2][k]) / 3 + (it % 2 ? 1e-9 : 0);
+    double ratio, vol, dih[6], r2, v2;
+    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, dih, NULL);
+    double lo = dih[0];
+    for (int e = 1; e < 6; e++)
+      lo = fmin(lo, dih[e]);
+    double m = tr_tet_min_dihedral(p[0], p[1], p[2], p[3], &r2, &v2);
+    EXPECT(m == lo || (isnan(m) && isnan(lo)), "tet %d: %.17g vs the six's smallest %.17g", it,
+           m, lo);
+    EXPECT((r2 == ratio || (isnan(r2) && isnan(ratio))) && v2 == vol, "tet %d: ratio/volume", it);
+  }
+}
+
+/* The quality summary by its definition: tr_tet_shape's six angles of every live real tet,
+ * one arccosine each (what tr_quality_measure computed before it compared cosines). */
+static void quality_by_angles(const tr_mesh *m, tr_quality *q)
+{
+  memset(q, 0, sizeof *q);
+  q->min_dihedral = 180;
+  static const double rb[TR_QUALITY_RATIO_BINS - 1] = {1, 1.414, 2, 4, 10, 100};
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t) || (m->flags[t] & TR_TF_OUTER))
+      continue;
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    double ratio, vol, dih[6];
+    tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1], m->xyz + 3 * (size_t)v[2],
+                 m->xyz + 3 * (size_t)v[3], &ratio, &vol, dih, NULL);
+    q->ntets++;
+    double lo = 180, hi = 0;
+    for (int e = 0; e < 6; e++) {
+      lo = fmin(lo, dih[e]);
+      hi = fmax(hi, dih[e]);
+      int b = (int)(dih[e] / 10);
+      q->dihedral_hist[b < 0 ? 0 : b >= TR_QUALITY_DIH_BINS ? TR_QUALITY_DIH_BINS - 1 : b]++;
+    }
+    q->min_dihedral = fmin(q->min_dihedral, lo);
+    q->max_dihedral = fmax(q->max_dihedral, hi);
+    q->below5 += lo < 5;
+    q->below10 += lo < 10;
+    if (!(ratio <= q->max_radius_edge))
+      q->max_radius_edge = ratio;
+    int b = 0;
+    while (b < TR_QUALITY_RATIO_BINS - 1 && !(ratio < rb[b]))
+      b++;
+    q->ratio_hist[b]++;
+  }
+  if (!q->ntets)
+    q->min_dihedral = 0;
+}
+
+/* tr_quality_measure (cosines against precomputed bin edges, an arccosine only near an
+ * edge or an extreme) gives exactly the figures of one arccosine per angle: on a lattice
+ * (angles of exactly 45, 60, 90, 120, 135 degrees: cosines on the bin edges and ties for
+ * the extremes), on random points and on points close to a plane (slivers, angles near 0
+ * and 180 degrees). */
+static void quality_summary_equals_per_angle_definition(void)
+{
+  uint64_t r = 987654321;
+  for (int set = 0; set < 6; set++) {
+    double x[3 * 400];
+    uint32_t n = 0;
+    if (set == 0) {
+      for (int i = 0; i < 6; i++)
+        for (int j = 0; j < 6; j++)
+          for (int k = 0; k < 6; k++) {
+            x[3 * n] = i;
+            x[3 * n + 1] = j;
+            x[3 * n + 2] = k;
+            n++;
+          }
+    } else {
+      for (n = 0; n < 400; n++)
+        for (int k = 0; k < 3; k++) {
+          double u = unit(&r);
+          x[3 * n + (uint32_t)k] = k == 2 && set >= 3 ? u * (set == 3 ? 1e-3 : set == 4 ? 1e-7 : 1e-12)
+                                                      : u;
+        }
+    }
+    tr_mesh *m = NULL;
+    if (tr_delaunay_build(x, n, &m) != TR_OK) {
+      EXPECT(0, "set %d: Delaunay failed: %s", set, tr_last_error());
+      continue;
+    }
+    tr_quality a, b;
+    tr_quality_measure(m, &a);
+    quality_by_angles(m, &b);
+    EXPECT(a.ntets == b.ntets && a.ntets > 0, "set %d: %llu vs %llu tets", set,
+           (unsigned long long)a.ntets, (unsigned long long)b.ntets);
+    EXPECT(a.min_dihedral == b.min_dihedral && a.max_dihedral == b.max_dihedral,
+           "set %d: dihedral min %.17g max %.17g, by the angles %.17g %.17g", set,
+           a.min_dihedral, a.max_dihedral, b.min_dihedral, b.max_dihedral);
+    EXPECT(a.below5 == b.below5 && a.below10 == b.below10,
+           "set %d: under 5 / 10 degrees %llu %llu, by the angles %llu %llu", set,
+           (unsigned long long)a.below5, (unsigned long long)a.below10,
+           (unsigned long long)b.below5, (unsigned long long)b.below10);
+    EXPECT(a.max_radius_edge == b.max_radius_edge, "set %d: max radius-edge", set);
+    for (int k = 0; k < TR_QUALITY_DIH_BINS; k++)
+      EXPECT(a.dihedral_hist[k] == b.dihedral_hist[k], "set %d: dihedral bin %d: %llu vs %llu",
+             set, k, (unsigned long long)a.dihedral_hist[k],
+             (unsigned long long)b.dihedral_hist[k]);
+    for (int k = 0; k < TR_QUALITY_RATIO_BINS; k++)
+      EXPECT(a.ratio_hist[k] == b.ratio_hist[k], "set %d: ratio bin %d", set, k);
+    if (set == 0) /* the lattice has angles on bin edges: the fallback was exercised */
+      EXPECT(b.dihedral_hist[4] + b.dihedral_hist[6] + b.dihedral_hist[9] > 0,
+             "lattice: no angle of 45, 60 or 90 degrees");
+    tr_mesh_destroy(m);
+  }
+}
+
+int main(int argc, char **argv)
+{
+  static const texpect_case cases[] = {
+      {"min_dihedral", min_dihedral_equals_smallest_of_six, NULL},
+      {"quality_summary", quality_summary_equals_per_angle_definition, NULL},
+      {"dihedral_at_edge", dihedral_at_edge_matches_geometry, NULL},
+  };
+  return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
+}
