@@ -12,7 +12,8 @@
  * vertex: visibility is tested against every edge, so it is exact), then ears are clipped;
  * an ear is a strictly convex corner whose closed triangle holds no other non-convex
  * vertex. If no ear exists the polygon self-overlaps or is degenerate: that is an error,
- * never a guess. */
+ * never a guess. The ears found first make fans of thin triangles, so polyflip.c then
+ * flips diagonals to raise the smallest angles (exactly valid flips, same orientation). */
 #include "soup.h"
 #include "io.h"
 
@@ -20,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "polyflip.h"
 #include "predicates.h"
 
 typedef struct {
@@ -197,7 +199,8 @@ static tr_status bridge(const ptab *t, poly *P, uint32_t **hl, uint32_t *hn, uin
                   "(holes overlap each other or the boundary)", what);
 }
 
-static tr_status earclip(const ptab *t, poly *P, int mirrored, tr_u32vec *out, const char *what)
+/* Appends the triangles as local vertices, counterclockwise in t. */
+static tr_status earclip(const ptab *t, poly *P, tr_u32vec *out, const char *what)
 {
   uint32_t n = P->n;
   uint32_t *prev = malloc(sizeof *prev * n), *next = malloc(sizeof *next * n);
@@ -230,8 +233,7 @@ static tr_status earclip(const ptab *t, poly *P, int mirrored, tr_u32vec *out, c
       }
     }
     if (ear) {
-      uint32_t tri[3] = {t->id[va], t->id[vc], t->id[vb]};
-      (void)mirrored;
+      uint32_t tri[3] = {va, vc, vb};
       for (int k = 0; k < 3 && st == TR_OK; k++)
         st = tr_u32vec_push(out, tri[k]);
       next[a] = b;
@@ -253,7 +255,7 @@ static tr_status earclip(const ptab *t, poly *P, int mirrored, tr_u32vec *out, c
     if (o2(t, P->v[a], P->v[cur], P->v[b]) <= 0)
       st = tr_error(TR_ERR_INPUT, "%s: polygon is self-overlapping or degenerate", what);
     else {
-      uint32_t tri[3] = {t->id[P->v[a]], t->id[P->v[cur]], t->id[P->v[b]]};
+      uint32_t tri[3] = {P->v[a], P->v[cur], P->v[b]};
       for (int k = 0; k < 3 && st == TR_OK; k++)
         st = tr_u32vec_push(out, tri[k]);
     }
@@ -346,8 +348,10 @@ tr_status tr_triangulate_facet(const double *xyz, const uint32_t *idx, const uin
   uint32_t **L = malloc(sizeof *L * nloops), *Ln = malloc(sizeof *Ln * nloops);
   uint32_t *lidx = malloc(sizeof *lidx * nidx);
   char *is_hole = calloc(nloops, 1);
+  uint32_t *side = malloc(sizeof *side * nidx);
   poly P = {0};
-  if (!t.p || !t.id || !L || !Ln || !lidx || !is_hole) {
+  tr_u32vec loc = {0};
+  if (!t.p || !t.id || !L || !Ln || !lidx || !is_hole || !side) {
     st = tr_error(TR_ERR_NOMEM, "out of memory triangulating %s", what);
     goto done;
   }
@@ -411,8 +415,19 @@ tr_status tr_triangulate_facet(const double *xyz, const uint32_t *idx, const uin
   for (uint32_t l = 1; l < nloops && st == TR_OK; l++)
     st = bridge(&t, &P, L + l, Ln + l, nloops - l, what);
   if (st == TR_OK)
-    st = earclip(&t, &P, s0 < 0, out, what);
+    st = earclip(&t, &P, &loc, what);
+  if (st == TR_OK) {
+    for (uint32_t l = 0; l < nloops; l++)
+      for (uint32_t i = 0; i < Ln[l]; i++)
+        side[L[l][i]] = L[l][(i + 1) % Ln[l]];
+    tr_polyflip_in fin = {(const double(*)[2])t.p, t.id, xyz, side, loc.a, loc.n / 3};
+    st = tr_polyflip(&fin, NULL);
+  }
+  for (uint32_t i = 0; i < loc.n && st == TR_OK; i++)
+    st = tr_u32vec_push(out, t.id[loc.a[i]]);
 done:
+  tr_u32vec_free(&loc);
+  free(side);
   free(P.v);
   free(t.p);
   free(t.id);
