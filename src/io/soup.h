@@ -64,7 +64,9 @@ tr_status tr_soup_read_text(const char *buf, size_t len, const char *name, char 
  * Loops after the first are holes if a hole point lies inside them, or if there are no
  * hole points and they lie inside the first loop (the OFF/OBJ convention has no holes,
  * only .poly uses hole points). Triangles keep the orientation of the first loop and are
- * appended to out (3 indices each). `what` names the facet in messages. */
+ * appended to out (3 indices each). `what` names the facet in messages. The ear-clipped
+ * triangulation is then flipped towards max-min angle (polyflip.h): on a non-planar
+ * polygon that chooses which surface the polygon stands for, as any triangulation does. */
 tr_status tr_triangulate_facet(const double *xyz, const uint32_t *idx, const uint32_t *loop_first,
                                uint32_t nloops, uint32_t nidx, const double *holes,
                                uint32_t nholes, tr_u32vec *out, const char *what);
