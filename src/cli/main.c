@@ -480,18 +480,32 @@ static tr_status check_writable(const args *a, const char *path)
   return tr_io_check_writable(path);
 }
 
-/* A warning per non-planar input polygon (they are triangulated as given). */
+/* A warning per non-planar input polygon, the first TR_NONPLANAR_LIST of them (all with
+ * -v), then one line for the rest: a CAD export can have hundreds, and the pile would bury
+ * the other messages. None goes unsaid: the summary gives their number and the largest
+ * relative deviation. */
+#define TR_NONPLANAR_LIST 10
 static void warn_nonplanar(const args *a, const tr_plc *plc)
 {
   tr_nonplanar *np = NULL;
   uint32_t n = 0;
   if (a->quiet || tr_plc_nonplanar(plc, &np, &n) != TR_OK)
     return;
-  for (uint32_t i = 0; i < n; i++)
-    fprintf(stderr, "tetrec: warning: %s: polygon %u (triangles %u..%u) is not planar: a vertex "
-            "lies %.3g from the plane of its largest triangle (%.3g of its bounding box diagonal); "
-            "triangulated as given\n", a->in, np[i].facet, np[i].first_tri,
-            np[i].first_tri + np[i].ntris - 1, np[i].deviation, np[i].relative);
+  uint32_t list = a->verbose || n <= TR_NONPLANAR_LIST + 1 ? n : TR_NONPLANAR_LIST;
+  double worst = 0;
+  for (uint32_t i = 0; i < n; i++) {
+    worst = np[i].relative > worst ? np[i].relative : worst;
+    if (i < list)
+      fprintf(stderr, "tetrec: warning: %s: polygon %u (triangles %u..%u) is not planar: a "
+              "vertex lies %.3g from the plane of its largest triangle (%.3g of its bounding box "
+              "diagonal); triangulated in its projection\n", a->in, np[i].facet,
+              np[i].first_tri, np[i].first_tri + np[i].ntris - 1, np[i].deviation,
+              np[i].relative);
+  }
+  if (list < n)
+    fprintf(stderr, "tetrec: warning: %s: %u more polygons are not planar (largest deviation "
+            "of all %.3g of a bounding box diagonal); -v lists them, `tetrec check-surface` shows "
+            "them\n", a->in, n - list, worst);
   free(np);
 }
 

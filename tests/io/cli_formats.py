@@ -198,6 +198,40 @@ with tempfile.TemporaryDirectory() as d:
     rc, _, err = run(["convert", "bad.off", "conv.off"], d)
     expect("warning" in err and "not planar" in err, f"non-planar polygon warning: {err}")
 
+    # many non-planar polygons: the first 10 are listed, one line says how many more; -v
+    # lists every one (a box whose top is a 5 x 5 grid of quads, inner grid points lifted
+    # by 1/1024 in a checkerboard: 23 top quads are bent, the two corner quads whose one
+    # inner corner is not lifted are flat, and so are the sides)
+    n = 5
+    top = {}
+    pts = [[0, 0, 0], [n, 0, 0], [n, n, 0], [0, n, 0]]
+    for j in range(n + 1):
+        for i in range(n + 1):
+            inner = 0 < i < n and 0 < j < n
+            top[i, j] = len(pts)
+            pts.append([i, j, n + ((i + j) % 2 == 0 and inner) / 1024.0])
+    faces = [[3, 2, 1, 0]]
+    for j in range(n):
+        for i in range(n):
+            faces.append([top[i, j], top[i + 1, j], top[i + 1, j + 1], top[i, j + 1]])
+    faces.append([0, 1] + [top[i, 0] for i in range(n, -1, -1)])
+    faces.append([1, 2] + [top[n, j] for j in range(n, -1, -1)])
+    faces.append([2, 3] + [top[i, n] for i in range(n + 1)])
+    faces.append([3, 0] + [top[0, j] for j in range(n + 1)])
+    with open(os.path.join(d, "bent.off"), "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(pts), len(faces)))
+        f.writelines("%r %r %r\n" % tuple(map(float, q)) for q in pts)
+        f.writelines("%d %s\n" % (len(q), " ".join(map(str, q))) for q in faces)
+    rc, _, err = run(["mesh", "bent.off", "-o", "bent.node"], d)
+    listed = [l for l in err.split("\n") if "is not planar" in l]
+    more = [l for l in err.split("\n") if "more polygons are not planar" in l]
+    expect(rc == 0 and len(listed) == 10 and len(more) == 1 and " 13 more " in more[0],
+           f"23 bent quads: 10 listed and one line for the 13 more: {rc} {err}")
+    rc, _, err = run(["mesh", "-v", "bent.off", "-o", "bent.node"], d)
+    listed = [l for l in err.split("\n") if "is not planar" in l]
+    expect(rc == 0 and len(listed) == 23 and "more polygons" not in err,
+           f"-v lists all 23 bent quads: {rc} {len(listed)}")
+
     # deviation of written doubles, model translated by 2^40: stats against an exact oracle
     # (Schoenhardt's prism: it always needs a Steiner point; rotated: off every axis)
     pts, tris = read_off(os.path.join(data, "schoenhardt_rotated.off"))
