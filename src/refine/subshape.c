@@ -27,6 +27,17 @@
  * Measured on 12 CGAL models (README): at S = R = 1.414 it costs 41% more CPU and 26% more
  * tets for 3.87% of tets under 10 degrees against 3.95%; most thin sub-faces there lie
  * across the wedges of thin input triangles, which the second rule leaves.
+ * Whole bench (bench/quality, 74 models, same tree and load): off, targets met on 54 in
+ * 76.7 s; on, 58 in 98.8 s (+29%). The extra cost is sub-segment points, not facet points:
+ * f's circumcentre lies beyond a protected sub-segment that rf_subshape_may_split lets it
+ * split (cheese 14,610 -> 42,049 edge points for 4,736 -> 8,021 facet points; pinion 3,076
+ * -> 5,729 for 0 -> 22), and that is also where every gain comes from: without the
+ * may_split allowance beam, horizons-domain, torus_quad and oblong are as with it off.
+ * Splitting only a sub-face under a bad tet that refinement leaves (every tet on a sub-face
+ * over S >= R is over R: its circumsphere holds the sub-face's circumcircle) pays less:
+ * 54 models in 120.7 s, the splits coming late among more points; the input's sub-faces
+ * scanned and the later ones only under a left tet: 56 in 93.6 s (mpi: 51% -> 31% of tets
+ * under 10 degrees, the only model it helps more than the scan).
  * Measured in doubles: the shape only chooses which sub-faces get a point; where the
  * point lies and how the mesh changes is decided exactly by the facet split path. */
 #include <math.h>
