@@ -28,7 +28,8 @@
  * tets for 3.87% of tets under 10 degrees against 3.95%; most thin sub-faces there lie
  * across the wedges of thin input triangles, which the second rule leaves.
  * Whole bench (bench/quality, 74 models, same tree and load): off, targets met on 54 in
- * 76.7 s; on, 58 in 98.8 s (+29%). The extra cost is sub-segment points, not facet points:
+ * 76.7 s; on without the lineage bound of rf_subshape_may_split, 58 in 98.8 s (+29%). The
+ * extra cost was sub-segment points, not facet points:
  * f's circumcentre lies beyond a protected sub-segment that rf_subshape_may_split lets it
  * split (cheese 14,610 -> 42,049 edge points for 4,736 -> 8,021 facet points; pinion 3,076
  * -> 5,729 for 0 -> 22), and that is also where every gain comes from: without the
@@ -113,7 +114,14 @@ tr_status rf_subshape_scan(rf_ctx *c)
  * protect g from that vertex), or when the new vertex's insertion radius (at most half of
  * g) is at least f's shortest edge, the one f's split is meant to lengthen (Shewchuk's
  * rule for small angles in 2D, 2002): a split that would make a shorter edge than f's is
- * refused, so the splits do not follow the corner down. */
+ * refused, so the splits do not follow the corner down.
+ * Either way only while g is at least half its input edge: the bound on g's lineage. Each
+ * such split lets f's pieces, thin again along the new halves, split them in turn, and
+ * that chain of sub-segment points was the option's whole cost (see the top: cheese
+ * 14,610 -> 42,049 edge points); the first split of an input edge is where its gains come
+ * from (beam, horizons-domain, torus_quad meet the targets with it). Whole bench with the
+ * bound: targets met on 57 of 74 (54 off, 58 unbounded) for 5% more CPU than off (29%
+ * unbounded); mpi 50.7% -> 33.8% of tets under 10 degrees. */
 int rf_subshape_may_split(const rf_ctx *c, uint32_t f, uint32_t g)
 {
   const uint32_t *T = c->plc->tris + 3 * (size_t)c->sftri[f];
@@ -124,6 +132,10 @@ int rf_subshape_may_split(const rf_ctx *c, uint32_t f, uint32_t g)
     hb |= T[i] == B;
   }
   if (!ha || !hb)
+    return 0;
+  const double *pa = c->plc->xyz + 3 * (size_t)A, *pb = c->plc->xyz + 3 * (size_t)B;
+  if (4 * len2(c->m->xyz + 3 * (size_t)c->ssv[2 * (size_t)g],
+               c->m->xyz + 3 * (size_t)c->ssv[2 * (size_t)g + 1]) < len2(pa, pb))
     return 0;
   const uint32_t *v = c->sfv + 3 * (size_t)f;
   /* a vertex of f inside g's diametral sphere: the facet's triangulation is not Delaunay
