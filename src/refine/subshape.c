@@ -27,6 +27,18 @@
  * Measured on 12 CGAL models (README): at S = R = 1.414 it costs 41% more CPU and 26% more
  * tets for 3.87% of tets under 10 degrees against 3.95%; most thin sub-faces there lie
  * across the wedges of thin input triangles, which the second rule leaves.
+ * Whole bench (bench/quality, 74 models, same tree and load): off, targets met on 54 in
+ * 76.7 s; on without the lineage bound of rf_subshape_may_split, 58 in 98.8 s (+29%). The
+ * extra cost was sub-segment points, not facet points:
+ * f's circumcentre lies beyond a protected sub-segment that rf_subshape_may_split lets it
+ * split (cheese 14,610 -> 42,049 edge points for 4,736 -> 8,021 facet points; pinion 3,076
+ * -> 5,729 for 0 -> 22), and that is also where every gain comes from: without the
+ * may_split allowance beam, horizons-domain, torus_quad and oblong are as with it off.
+ * Splitting only a sub-face under a bad tet that refinement leaves (every tet on a sub-face
+ * over S >= R is over R: its circumsphere holds the sub-face's circumcircle) pays less:
+ * 54 models in 120.7 s, the splits coming late among more points; the input's sub-faces
+ * scanned and the later ones only under a left tet: 56 in 93.6 s (mpi: 51% -> 31% of tets
+ * under 10 degrees, the only model it helps more than the scan).
  * Measured in doubles: the shape only chooses which sub-faces get a point; where the
  * point lies and how the mesh changes is decided exactly by the facet split path. */
 #include <math.h>
@@ -102,7 +114,14 @@ tr_status rf_subshape_scan(rf_ctx *c)
  * protect g from that vertex), or when the new vertex's insertion radius (at most half of
  * g) is at least f's shortest edge, the one f's split is meant to lengthen (Shewchuk's
  * rule for small angles in 2D, 2002): a split that would make a shorter edge than f's is
- * refused, so the splits do not follow the corner down. */
+ * refused, so the splits do not follow the corner down.
+ * Either way only while g is at least half its input edge: the bound on g's lineage. Each
+ * such split lets f's pieces, thin again along the new halves, split them in turn, and
+ * that chain of sub-segment points was the option's whole cost (see the top: cheese
+ * 14,610 -> 42,049 edge points); the first split of an input edge is where its gains come
+ * from (beam, horizons-domain, torus_quad meet the targets with it). Whole bench with the
+ * bound: targets met on 57 of 74 (54 off, 58 unbounded) for 5% more CPU than off (29%
+ * unbounded); mpi 50.7% -> 33.8% of tets under 10 degrees. */
 int rf_subshape_may_split(const rf_ctx *c, uint32_t f, uint32_t g)
 {
   const uint32_t *T = c->plc->tris + 3 * (size_t)c->sftri[f];
@@ -113,6 +132,10 @@ int rf_subshape_may_split(const rf_ctx *c, uint32_t f, uint32_t g)
     hb |= T[i] == B;
   }
   if (!ha || !hb)
+    return 0;
+  const double *pa = c->plc->xyz + 3 * (size_t)A, *pb = c->plc->xyz + 3 * (size_t)B;
+  if (4 * len2(c->m->xyz + 3 * (size_t)c->ssv[2 * (size_t)g],
+               c->m->xyz + 3 * (size_t)c->ssv[2 * (size_t)g + 1]) < len2(pa, pb))
     return 0;
   const uint32_t *v = c->sfv + 3 * (size_t)f;
   /* a vertex of f inside g's diametral sphere: the facet's triangulation is not Delaunay
