@@ -335,6 +335,15 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, void
     if (s == TR_OK && better) {
       for (uint32_t v = 0; v < z.nv; v++) /* the old vertices' flags again */
         tc.movable[v] = c->movable[v];
+      /* and c's measures and failed insertions: keyed by vertex ids, and no old vertex
+       * moved (the polish's rounds would measure every tet and try every insertion that
+       * failed again, the bulk of the cost) */
+      struct tr_sliver_shapes *sh = tc.shapes;
+      tc.shapes = c->shapes;
+      c->shapes = sh;
+      tr_vtmap f = tc.failed;
+      tc.failed = c->failed;
+      c->failed = f;
       snap_free(&z);
       tr_sliver_ctx_free(c);
       *c = tc;
@@ -344,8 +353,7 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, void
       *done = 1;
     } else {
       tr_sliver_ctx_free(&tc);
-      snap_restore(m, sub, &z);
-      tr_sliver_forget_all(c); /* the trial's vertex ids come back with other points */
+      snap_restore(m, sub, &z); /* c's measures hold: the trial measured with tc only */
     }
   }
   free(id);
