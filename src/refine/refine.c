@@ -636,6 +636,39 @@ tr_status tr_refine_open_pinned(struct tr_mesh *m, const struct tr_plc *plc, tr_
   return s;
 }
 
+/* The sliver polish's hook (sliver/caps.c): one named piece is split, a sub-segment
+ * (nv = 2) or a sub-face (nv = 3), as an encroached one would be, and the cascade it
+ * starts runs within par->budget (reaching it is no error). Nothing when the piece is
+ * no constraint or may not be split. */
+tr_status tr_refine_split_piece(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
+                                const tr_refine_params *par, const uint32_t *v, int nv,
+                                tr_refine_stats *st)
+{
+  discard_outer(m);
+  rf_ctx c;
+  ctx_setup(&c, m, plc, par, st);
+  tr_status s = rf_subs_init(&c, sub);
+  if (s == TR_OK && nv == 2) {
+    uint32_t g = rf_subseg_of(&c, v[0], v[1]);
+    if (g != TR_NONE && !c.ssnosplit[g])
+      s = tr_u32buf_push(&c.qseg, g);
+  } else if (s == TR_OK && nv == 3) {
+    uint32_t f = rf_subface_of(&c, v[0], v[1], v[2]);
+    if (f != TR_NONE && !c.sfnosplit[f])
+      s = tr_u32buf_push(&c.qface, f);
+  }
+  if (s == TR_OK)
+    s = run(&c);
+  if (s == TR_ERR_NOMEM && st->points >= c.par.budget) {
+    tr_error_clear();
+    s = TR_OK;
+  }
+  if (s == TR_OK && st->points)
+    s = rf_subs_export(&c, sub);
+  ctx_free(&c);
+  return s;
+}
+
 tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
                     const tr_refine_params *par, tr_refine_stats *st)
 {

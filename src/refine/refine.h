@@ -88,4 +88,12 @@ tr_status tr_refine_open_pinned(struct tr_mesh *m, const struct tr_plc *plc, tr_
                                 const tr_refine_params *par, const uint32_t *tets,
                                 uint32_t ntets, tr_refine_stats *st);
 
+/* The sliver polish's hook: the sub-segment v[0]-v[1] (nv = 2) or the sub-face v[0..2]
+ * (nv = 3) is split as an encroached piece is, within par->budget points (no error when
+ * reached); nothing when it is no constraint piece or may not be split. sub is replaced
+ * by the new sub-faces when a point went in. */
+tr_status tr_refine_split_piece(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
+                                const tr_refine_params *par, const uint32_t *v, int nv,
+                                tr_refine_stats *st);
+
 #endif

@@ -318,7 +318,7 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
     }
   }
   if (s == TR_OK) /* the worst tets, also those over the bound */
-    s = tr_sliver_polish(&c, par->level, st);
+    s = tr_sliver_polish(&c, sub, par->level, st);
   tr_sliver_ctx_free(&c);
   return s;
 }

@@ -34,7 +34,11 @@
  *    worst tet is above it kept its refinement angles (icosahedron.off: 20.9 degrees).
  *    The globally worst tets, whatever their angle, worst first, get the best flip,
  *    moves of their movable vertices and (level 3) a new interior point, each kept
- *    under the same rules; a few rounds over the 32 + nt/1024 worst tets.
+ *    under the same rules; a few rounds over the 32 + nt/1024 worst tets. A worst tet
+ *    none of them opens (level 3, with the plc) gets points on its constraint pieces
+ *    (caps.c: refinement splits one sub-segment or sub-face, the new tets get flips,
+ *    moves and points), kept only when its tets beat the ones they replace and undone
+ *    exactly otherwise, within 16 trials (8 on 16,384 tets or more).
  *
  * Angles are measured in doubles (src/refine/quality.h, on m->xyz): they only rank
  * choices; every topological decision is exact. Both steps run in fixed passes in slot /
@@ -175,8 +179,22 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
 tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done);
 void *tr_sliver_insert_scratch(void);
 /* The final polish (polish.c): the globally worst tets, whatever their angle, get flips,
- * moves and points (as par->level allows) that raise their local minimum. */
-tr_status tr_sliver_polish(tr_sliver_ctx *c, int level, tr_sliver_stats *st);
+ * moves and points (as par->level allows) that raise their local minimum; at level 3 with
+ * c->keep.plc and sub, also points on their constraint pieces (caps.c). */
+tr_status tr_sliver_polish(tr_sliver_ctx *c, tr_subfaces *sub, int level, tr_sliver_stats *st);
+
+/* Constraint pieces tried per tet, points per trial (the piece's split and the cascade of
+ * encroached pieces it starts). */
+#define SL_CAP_PIECES 4
+#define SL_CAP_POINTS 8
+#define SL_CAP_PASSES 2 /* of flips, moves and interior points over a trial's new tets */
+/* caps.c: the constraint pieces of tet t (its worst edge's sub-segment, its sub-faces
+ * there, its other sub-segments) split by refinement, one per trial, the first whose new
+ * tets' smallest angle beats the deleted tets' (t among them) kept (*done = 1, c rebuilt
+ * on the new sub-faces), every other trial undone exactly; *tried = trials made.
+ * scratch: tr_sliver_insert_scratch(). */
+tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, void *scratch,
+                            tr_sliver_stats *st, int *done, int *tried);
 
 /* The stage: m holds only inner tets (tr_refine's output), sub their sub-faces, vkind the
  * vertex origins (tetrec.h's enum tr_vertex_origin; NULL: none known, so only vertices

@@ -421,6 +421,46 @@ static void the_polish_raises_the_minimum_of_an_icosahedron(void)
   tr_plc_destroy(p);
 }
 
+/* A beam (CGAL's beam.off, scaled to dyadic coordinates): the box [0,1]^2 x [0,9], each
+ * side two triangles, so the long sides stand on triangles of 6.3 degrees. Refinement
+ * splits the long edges once and stops (its circumcentres lie too close to those
+ * points); the worst tets, 8.93 degrees, have all four vertices on the surface, and no
+ * flip, move or interior point opens them (level 1 keeps 8.93; so did level 3 before the
+ * polish split constraint pieces). With points exactly on the long input edges the
+ * smallest angle rises over TetGen 1.6's 17.4 (-pq1.414 on beam.off), every mesh through
+ * the mesh and exact conformity validators (tmesh.h). */
+static void a_beam_pinned_between_its_sides_rises_only_with_points_on_its_edges(void)
+{
+  static const double x[24] = {1, 1, 9, 1, 0, 9, 0, 1, 9, 0, 0, 9,
+                               1, 1, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0};
+  static const uint32_t quads[6][4] = {{0, 1, 3, 2}, {5, 4, 6, 7}, {0, 2, 6, 4},
+                                       {3, 1, 5, 7}, {0, 4, 5, 1}, {6, 2, 3, 7}};
+  uint32_t tris[36];
+  for (int q = 0; q < 6; q++) { /* the diagonal from each quad's second to fourth vertex */
+    const uint32_t *v = quads[q];
+    uint32_t t[6] = {v[0], v[1], v[3], v[1], v[2], v[3]};
+    memcpy(tris + 6 * q, t, sizeof t);
+  }
+  tr_plc *p = tm_plc(x, 8, tris, 12);
+  tm_run r1, r3;
+  tr_mesh *m1 = mesh(&r1, "beam", p, 1, TR_CHK_TOPOLOGY);
+  tr_mesh *m3 = mesh(&r3, "beam", p, 3, TR_CHK_TOPOLOGY);
+  if (m1 && m3) {
+    const tr_stats *s1 = &r1.st, *s3 = &r3.st;
+    EXPECT(s1->min_dihedral < 10, "beam -O 1: smallest dihedral %.3f: no longer pinned?",
+           s1->min_dihedral);
+    EXPECT(s3->min_dihedral > 17.446, "beam -O 3: smallest dihedral %.3f, TetGen's 17.446",
+           s3->min_dihedral);
+    EXPECT(s3->points_added_for_sliver > 0, "beam -O 3: no point added");
+    fprintf(stderr, "beam: min dihedral -O 1 %.3f (%llu tets), -O 3 %.3f (%llu tets)\n",
+            s1->min_dihedral, (unsigned long long)s1->volume_elements, s3->min_dihedral,
+            (unsigned long long)s3->volume_elements);
+  }
+  tm_free(&r1);
+  tm_free(&r3);
+  tr_plc_destroy(p);
+}
+
 /* Two runs, the same bytes; an unknown level is a usage error before any work. */
 static void deterministic_and_levels_checked(const char *dir)
 {
@@ -572,6 +612,7 @@ int main(int argc, char **argv)
       {"passes", no_pass_lowers_the_smallest_angle, NULL},
       {"cap", a_pinned_cap_is_opened_by_a_point_off_its_plane, NULL},
       {"pinned", a_tet_pinned_between_sub_faces_gets_points_on_them, NULL},
+      {"beam", a_beam_pinned_between_its_sides_rises_only_with_points_on_its_edges, NULL},
       {"polish", the_polish_raises_the_minimum_of_an_icosahedron, NULL},
       {"surfaces", NULL, refined_surfaces},
       {"determinism", NULL, deterministic_and_levels_checked},

@@ -1,0 +1,362 @@
+/* Points on the constraints for the polish's worst tets (sliver.h, polish.c): a tet with
+ * all four vertices on the surface, or standing on an input triangle with a small angle,
+ * is pinned between constraints, and no flip, move or interior point opens it (beam.off:
+ * 12 tets whose worst, 8.9 degrees, spans a 0.4 x 1.8 side of the box; TetGen splits the
+ * long input edges once more and gets 17.4). Here the constraint pieces of such a tet are
+ * split by refinement itself (tr_refine_split_piece: the same exact points on input edges
+ * and triangles as any encroached piece), one piece per trial: the sub-segment of the
+ * tet's smallest dihedral angle, then its sub-faces, then its other sub-segments. A trial
+ * is kept only when the smallest angle of the tets it created beats that of the tets it
+ * deleted (the worst tet among them) and the new tets keep the ratio bound as the other
+ * steps do; otherwise the mesh and the sub-faces are put back exactly as they were
+ * (a snapshot of the tet slots, the vertex count and the sub-faces). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "refine/quality.h"
+#include "refine/refine.h"
+#include "refine/refine_stage.h"
+#include "sliver/sliver.h"
+
+/* One trial's snapshot: what refinement may change. Vertices are only appended, and the
+ * old ones keep their coordinates. */
+typedef struct snap {
+  uint32_t nv, nt, free_head, nfree;
+  uint32_t *tv, *tn, *region, *v2t;
+  uint8_t *flags;
+  tr_subfaces sub;
+} snap;
+
+static void snap_free(snap *z)
+{
+  free(z->tv);
+  free(z->tn);
+  free(z->region);
+  free(z->v2t);
+  free(z->flags);
+  tr_subfaces_free(&z->sub);
+  memset(z, 0, sizeof *z);
+}
+
+static tr_status snap_take(const struct tr_mesh *m, const tr_subfaces *sub, snap *z)
+{
+  memset(z, 0, sizeof *z);
+  z->nv = m->nv;
+  z->nt = m->nt;
+  z->free_head = m->free_head;
+  z->nfree = m->nfree;
+  size_t nt = m->nt ? m->nt : 1, nv = m->nv ? m->nv : 1, ns = sub->n ? sub->n : 1;
+  z->tv = malloc(sizeof *z->tv * 4 * nt);
+  z->tn = malloc(sizeof *z->tn * 4 * nt);
+  z->flags = malloc(nt);
+  z->region = m->region ? malloc(sizeof *z->region * nt) : NULL;
+  z->v2t = malloc(sizeof *z->v2t * nv);
+  z->sub.v = malloc(sizeof *z->sub.v * 3 * ns);
+  z->sub.tri = malloc(sizeof *z->sub.tri * ns);
+  if (!z->tv || !z->tn || !z->flags || (m->region && !z->region) || !z->v2t || !z->sub.v ||
+      !z->sub.tri) {
+    snap_free(z);
+    return tr_error(TR_ERR_NOMEM, "out of memory for a snapshot of %u tets", m->nt);
+  }
+  memcpy(z->tv, m->tv, sizeof *z->tv * 4 * (size_t)m->nt);
+  memcpy(z->tn, m->tn, sizeof *z->tn * 4 * (size_t)m->nt);
+  memcpy(z->flags, m->flags, m->nt);
+  if (m->region)
+    memcpy(z->region, m->region, sizeof *z->region * (size_t)m->nt);
+  memcpy(z->v2t, m->v2t, sizeof *z->v2t * (size_t)m->nv);
+  z->sub.n = sub->n;
+  memcpy(z->sub.v, sub->v, sizeof *sub->v * 3 * (size_t)sub->n);
+  memcpy(z->sub.tri, sub->tri, sizeof *sub->tri * (size_t)sub->n);
+  return TR_OK;
+}
+
+/* The mesh and sub-faces as they were at the snapshot (which is consumed). */
+static void snap_restore(struct tr_mesh *m, tr_subfaces *sub, snap *z)
+{
+  for (uint32_t v = z->nv; v < m->nv; v++)
+    if (m->vq && m->vq[v]) {
+      tr_qpoint_clear(m->vq[v]);
+      free(m->vq[v]);
+      m->vq[v] = NULL;
+    }
+  m->nv = z->nv;
+  m->nt = z->nt;
+  m->free_head = z->free_head;
+  m->nfree = z->nfree;
+  memcpy(m->tv, z->tv, sizeof *z->tv * 4 * (size_t)z->nt);
+  memcpy(m->tn, z->tn, sizeof *z->tn * 4 * (size_t)z->nt);
+  memcpy(m->flags, z->flags, z->nt);
+  if (m->region && z->region)
+    memcpy(m->region, z->region, sizeof *z->region * (size_t)z->nt);
+  memcpy(m->v2t, z->v2t, sizeof *z->v2t * (size_t)z->nv);
+  tr_subfaces_free(sub);
+  *sub = z->sub;
+  memset(&z->sub, 0, sizeof z->sub);
+  snap_free(z);
+}
+
+static int snap_real(const snap *z, uint32_t t)
+{
+  const uint32_t *v = z->tv + 4 * (size_t)t;
+  return v[0] != TR_NONE && v[3] != TR_GHOST;
+}
+
+static void sorted_key(const uint32_t *v, uint32_t key[4])
+{
+  memcpy(key, v, 4 * sizeof *key);
+  for (int i = 1; i < 4; i++)
+    for (int j = i; j > 0 && key[j - 1] > key[j]; j--) {
+      uint32_t x = key[j];
+      key[j] = key[j - 1];
+      key[j - 1] = x;
+    }
+}
+
+static int slot_changed(const struct tr_mesh *m, const snap *z, uint32_t u);
+
+/* *better = 1 when the tets the trial created beat the ones it deleted, the worst tet t
+ * among them, and keep the ratio bound (as tr_sliver_keeps_bounds: a new tet over
+ * max(ratio bound, the deleted tets' largest ratio) only with no angle under c->bound;
+ * refinement kept the volume bounds). A tet deleted and made again (in another slot or
+ * rotation: a cavity's rim) is neither. */
+static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, double top_ratio,
+                          int *better)
+{
+  const struct tr_mesh *m = c->m;
+  *better = 0;
+  tr_vtmap old = {0};
+  uint32_t key[4], tkey[4];
+  sorted_key(z->tv + 4 * (size_t)t, tkey);
+  tr_status s = TR_OK;
+  for (uint32_t u = 0; u < z->nt && s == TR_OK; u++)
+    if (snap_real(z, u) && slot_changed(m, z, u)) {
+      sorted_key(z->tv + 4 * (size_t)u, key);
+      s = tr_vtmap_set(&old, 4, key, u);
+    }
+  double newmin = INFINITY, newratio = 0;
+  int again = 0, nnew = 0, nold = 0;
+  for (uint32_t u = 0; u < m->nt && s == TR_OK; u++) {
+    if (!tr_tet_is_real(m, u) || !slot_changed(m, z, u))
+      continue;
+    sorted_key(m->tv + 4 * (size_t)u, key);
+    uint32_t was = tr_vtmap_get(&old, 4, key);
+    if (was != TR_VTMAP_NONE) {
+      again += !memcmp(key, tkey, sizeof key);
+      s = tr_vtmap_set(&old, 4, key, TR_NONE - 1); /* made again: not deleted */
+      continue;
+    }
+    double r, q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)u, TR_NONE, NULL, &r);
+    nnew = q < newmin ? 1 : nnew + (q == newmin);
+    newmin = fmin(newmin, q);
+    if (!(q >= c->bound))
+      newratio = fmax(newratio, r);
+  }
+  double oldmin = INFINITY, was = 0;
+  int gone = 0;
+  for (uint32_t u = 0; u < z->nt && s == TR_OK; u++) {
+    if (!snap_real(z, u) || !slot_changed(m, z, u))
+      continue;
+    sorted_key(z->tv + 4 * (size_t)u, key);
+    if (tr_vtmap_get(&old, 4, key) == TR_NONE - 1)
+      continue;
+    gone += !memcmp(key, tkey, sizeof key);
+    double r, q = tr_sliver_min_dihedral_at(m, z->tv + 4 * (size_t)u, TR_NONE, NULL, &r);
+    nold = q < oldmin ? 1 : nold + (q == oldmin);
+    oldmin = fmin(oldmin, q);
+    was = fmax(was, r);
+  }
+  tr_vtmap_free(&old);
+  /* a congruent copy of the worst tet elsewhere in the trial (3torus: symmetric caps)
+   * keeps the minimum; fewer tets at it is progress all the same */
+  *better = s == TR_OK && gone && !again &&
+            (newmin > oldmin || (newmin == oldmin && nnew < nold)) &&
+            !(c->keep.ratio > 0 && newratio > fmax(c->keep.ratio, fmax(was, top_ratio)));
+  return s;
+}
+
+/* The context of a trial on the new sub-faces: only the trial's new vertices move (an
+ * old vertex's exact point may be no double, and the snapshot keeps no coordinates). */
+static tr_status trial_ctx(const tr_sliver_ctx *c, const tr_subfaces *sub, uint32_t nv0,
+                           tr_sliver_ctx *tc)
+{
+  TR_CHECK(tr_sliver_ctx_init(tc, c->m, sub, NULL, 0, c->bound));
+  memset(tc->movable, 0, nv0 < c->m->nv ? nv0 : c->m->nv);
+  tc->insert_bound = c->insert_bound;
+  tc->point_budget = c->point_budget;
+  tc->keep = c->keep;
+  return TR_OK;
+}
+
+/* 1 when slot u holds another tet than at the snapshot (or none was there) */
+static int slot_changed(const struct tr_mesh *m, const snap *z, uint32_t u)
+{
+  return u >= z->nt || u >= m->nt ||
+         memcmp(m->tv + 4 * (size_t)u, z->tv + 4 * (size_t)u, 4 * sizeof *z->tv);
+}
+
+/* The trial's new tets under the bound get the polish's steps (a split leaves slivers
+ * next to the new points that they open), SL_CAP_PASSES times over them. */
+static tr_status tidy(tr_sliver_ctx *tc, const snap *z, void *scratch, tr_sliver_stats *st)
+{
+  struct tr_mesh *m = tc->m;
+  tr_u32buf sh = {0}, ball = {0};
+  tr_status s = TR_OK;
+  uint32_t points = 0;
+  for (int pass = 0; pass < SL_CAP_PASSES && s == TR_OK; pass++) {
+    uint32_t nt = m->nt;
+    for (uint32_t u = 0; u < nt && s == TR_OK; u++) {
+      if (!tr_tet_is_real(m, u) || !slot_changed(m, z, u) ||
+          !(tr_sliver_tet_min(tc, u, NULL) < tc->bound))
+        continue;
+      uint32_t v[4];
+      memcpy(v, m->tv + 4 * (size_t)u, sizeof v);
+      int done = 0;
+      s = tr_sliver_flip_tet(tc, u, &sh, st, &done);
+      for (int j = 0; j < 4 && s == TR_OK && !done; j++)
+        s = tr_sliver_smooth_vertex(tc, v[j], INFINITY, &ball, st, &done);
+      if (s == TR_OK && !done && points < SL_CAP_POINTS) {
+        s = tr_sliver_insert_tet(tc, u, scratch, &done);
+        points += (uint32_t)done;
+        st->points += (uint64_t)done;
+      }
+    }
+  }
+  tr_u32buf_free(&sh);
+  tr_u32buf_free(&ball);
+  return s;
+}
+
+/* The pieces to try for tet t, best first, into p (2 or 3 vertex ids each, n[i] of them):
+ * the sub-face edges in the order of their dihedral angles (refinement splits those that
+ * are sub-segments), the sub-face of the smallest angle's faces first. */
+static int pieces(const tr_sliver_ctx *c, uint32_t t, uint32_t p[][3], int n[])
+{
+  const struct tr_mesh *m = c->m;
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  const double *q[4];
+  for (int i = 0; i < 4; i++)
+    q[i] = m->xyz + 3 * (size_t)v[i];
+  double r, w, d[6];
+  if (!tr_tet_shape(q[0], q[1], q[2], q[3], &r, &w, d, NULL))
+    for (int e = 0; e < 6; e++) /* no circumcentre: the angles are still there */
+      if (!isfinite(d[e]))
+        d[e] = 0;
+  int order[6] = {0, 1, 2, 3, 4, 5};
+  for (int i = 1; i < 6; i++) /* stable: ties to the lower edge code */
+    for (int j = i; j > 0 && d[order[j - 1]] > d[order[j]]; j--) {
+      int x = order[j];
+      order[j] = order[j - 1];
+      order[j - 1] = x;
+    }
+  int k = 0;
+  /* the worst edge, then the sub-faces of t on it, then the other sub-face edges */
+  int e0 = order[0], a = tr_edge_vtx[e0][0], b = tr_edge_vtx[e0][1];
+  uint32_t ev[2] = {v[a], v[b]};
+  if (tr_sliver_protected(c, ev, 2)) {
+    p[k][0] = ev[0], p[k][1] = ev[1], n[k++] = 2;
+  }
+  for (int f = 0; f < 4; f++) {
+    if (f == a || f == b)
+      continue; /* face f lacks vertex f: it holds edge ab only when f is neither */
+    uint32_t fv[3] = {v[tr_face_vtx[f][0]], v[tr_face_vtx[f][1]], v[tr_face_vtx[f][2]]};
+    if (tr_sliver_protected(c, fv, 3)) {
+      memcpy(p[k], fv, sizeof fv);
+      n[k++] = 3;
+    }
+  }
+  for (int i = 1; i < 6 && k < SL_CAP_PIECES; i++) {
+    uint32_t uv[2] = {v[tr_edge_vtx[order[i]][0]], v[tr_edge_vtx[order[i]][1]]};
+    if (tr_sliver_protected(c, uv, 2)) {
+      p[k][0] = uv[0], p[k][1] = uv[1], n[k++] = 2;
+    }
+  }
+  return k < SL_CAP_PIECES ? k : SL_CAP_PIECES;
+}
+
+tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, void *scratch,
+                            tr_sliver_stats *st, int *done, int *tried)
+{
+  struct tr_mesh *m = c->m;
+  *done = 0;
+  *tried = 0;
+  if (!c->keep.plc || !sub)
+    return TR_OK;
+  uint32_t p[SL_CAP_PIECES + 8][3];
+  int n[SL_CAP_PIECES + 8];
+  int np = pieces(c, t, p, n);
+  if (!np)
+    return TR_OK;
+  /* the mesh's largest ratio among the tets the bound looks at (cached) */
+  double top_ratio = 0;
+  for (uint32_t u = 0; u < m->nt; u++)
+    if (tr_tet_is_real(m, u)) {
+      double r, q = tr_sliver_tet_min(c, u, &r);
+      if (!(q >= c->bound))
+        top_ratio = fmax(top_ratio, r);
+    }
+  tr_refine_params rp;
+  memset(&rp, 0, sizeof rp);
+  /* the refinement's own ratio bound: the new tets around the piece that are over it
+   * are refined as there (beam: one split leaves the long tets next to it) */
+  rp.ratio = c->keep.ratio;
+  rp.max_volume = c->keep.max_volume;
+  rp.keep_edges = c->keep.keep_edges;
+  rp.budget = SL_CAP_POINTS;
+  uint32_t *id = NULL;
+  double *bound = NULL, least = 0;
+  tr_status s = tr_refine_region_bounds(c->keep.plc, &id, &bound, &rp.nregion_bounds, &least);
+  rp.region_id = id;
+  rp.region_max_volume = bound;
+  for (int i = 0; i < np && s == TR_OK && !*done; i++) {
+    snap z;
+    s = snap_take(m, sub, &z);
+    if (s != TR_OK)
+      break;
+    tr_refine_stats rs;
+    memset(&rs, 0, sizeof rs);
+    tr_status r = tr_refine_split_piece(m, c->keep.plc, sub, &rp, p[i], n[i], &rs);
+    if (r != TR_OK)
+      tr_error_clear(); /* e.g. a point past the bit-size guard: this piece stays */
+    ++*tried;
+    tr_sliver_ctx tc;
+    memset(&tc, 0, sizeof tc);
+    tr_sliver_stats ts = *st;
+    if (r == TR_OK && rs.points) {
+      r = trial_ctx(c, sub, z.nv, &tc);
+      if (r == TR_OK)
+        r = tidy(&tc, &z, scratch, &ts);
+      if (r != TR_OK)
+        tr_error_clear();
+    }
+    int better = 0;
+    if (r == TR_OK && rs.points)
+      s = improved(c, &z, t, top_ratio, &better);
+    if (s == TR_OK && better) {
+      for (uint32_t v = 0; v < z.nv; v++) /* the old vertices' flags again */
+        tc.movable[v] = c->movable[v];
+      /* and c's measures and failed insertions: keyed by vertex ids, and no old vertex
+       * moved (the polish's rounds would measure every tet and try every insertion that
+       * failed again, the bulk of the cost) */
+      struct tr_sliver_shapes *sh = tc.shapes;
+      tc.shapes = c->shapes;
+      c->shapes = sh;
+      tr_vtmap f = tc.failed;
+      tc.failed = c->failed;
+      c->failed = f;
+      snap_free(&z);
+      tr_sliver_ctx_free(c);
+      *c = tc;
+      *st = ts;
+      st->points += rs.points;
+      st->on_constraints += rs.on_segments + rs.on_facets;
+      *done = 1;
+    } else {
+      tr_sliver_ctx_free(&tc);
+      snap_restore(m, sub, &z); /* c's measures hold: the trial measured with tc only */
+    }
+  }
+  free(id);
+  free(bound);
+  return s;
+}
