@@ -102,17 +102,6 @@ static int snap_real(const snap *z, uint32_t t)
   return v[0] != TR_NONE && v[3] != TR_GHOST;
 }
 
-static void sorted_key(const uint32_t *v, uint32_t key[4])
-{
-  memcpy(key, v, 4 * sizeof *key);
-  for (int i = 1; i < 4; i++)
-    for (int j = i; j > 0 && key[j - 1] > key[j]; j--) {
-      uint32_t x = key[j];
-      key[j] = key[j - 1];
-      key[j - 1] = x;
-    }
-}
-
 static int slot_changed(const struct tr_mesh *m, const snap *z, uint32_t u);
 
 /* *better = 1 when the tets the trial created beat the ones it deleted, the worst tet t
@@ -127,11 +116,11 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
   *better = 0;
   tr_vtmap old = {0};
   uint32_t key[4], tkey[4];
-  sorted_key(z->tv + 4 * (size_t)t, tkey);
+  tr_sliver_tet_key(z->tv + 4 * (size_t)t, tkey);
   tr_status s = TR_OK;
   for (uint32_t u = 0; u < z->nt && s == TR_OK; u++)
     if (snap_real(z, u) && slot_changed(m, z, u)) {
-      sorted_key(z->tv + 4 * (size_t)u, key);
+      tr_sliver_tet_key(z->tv + 4 * (size_t)u, key);
       s = tr_vtmap_set(&old, 4, key, u);
     }
   double newmin = INFINITY, newratio = 0;
@@ -139,7 +128,7 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
   for (uint32_t u = 0; u < m->nt && s == TR_OK; u++) {
     if (!tr_tet_is_real(m, u) || !slot_changed(m, z, u))
       continue;
-    sorted_key(m->tv + 4 * (size_t)u, key);
+    tr_sliver_tet_key(m->tv + 4 * (size_t)u, key);
     uint32_t was = tr_vtmap_get(&old, 4, key);
     if (was != TR_VTMAP_NONE) {
       again += !memcmp(key, tkey, sizeof key);
@@ -157,7 +146,7 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
   for (uint32_t u = 0; u < z->nt && s == TR_OK; u++) {
     if (!snap_real(z, u) || !slot_changed(m, z, u))
       continue;
-    sorted_key(z->tv + 4 * (size_t)u, key);
+    tr_sliver_tet_key(z->tv + 4 * (size_t)u, key);
     if (tr_vtmap_get(&old, 4, key) == TR_NONE - 1)
       continue;
     gone += !memcmp(key, tkey, sizeof key);

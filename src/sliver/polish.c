@@ -88,18 +88,6 @@ static void worst_tets(const tr_sliver_ctx *c, worst *h, uint32_t k, uint32_t *n
   *n = cnt;
 }
 
-/* sorted vertex ids: the key of a tet whatever its rotation */
-static void tet_key(const uint32_t *v, uint32_t key[4])
-{
-  memcpy(key, v, 4 * sizeof *key);
-  for (int i = 1; i < 4; i++)
-    for (int j = i; j > 0 && key[j - 1] > key[j]; j--) {
-      uint32_t x = key[j];
-      key[j] = key[j - 1];
-      key[j - 1] = x;
-    }
-}
-
 tr_status tr_sliver_polish(tr_sliver_ctx *c, tr_subfaces *sub, int level, tr_sliver_stats *st)
 {
   struct tr_mesh *m = c->m;
@@ -137,7 +125,7 @@ tr_status tr_sliver_polish(tr_sliver_ctx *c, tr_subfaces *sub, int level, tr_sli
       /* pinned between constraints: only a point on one of them opens it */
       uint32_t key[4];
       if (s == TR_OK && !done && scratch && sub && c->keep.plc && trials < max_trials) {
-        tet_key(h[i].v, key);
+        tr_sliver_tet_key(h[i].v, key);
         if (tr_vtmap_get(&capped, 4, key) == TR_VTMAP_NONE) {
           int tried;
           s = tr_sliver_cap_tet(c, sub, t, scratch, st, &done, &tried);

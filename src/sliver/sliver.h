@@ -202,4 +202,18 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, void
 tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *vkind,
                            uint32_t npoints, const tr_sliver_params *par, tr_sliver_stats *st);
 
+/* A tet's vertex ids sorted: its key whatever its rotation (the polish and its cap
+ * trials match tets across a rebuild by it). */
+static inline void tr_sliver_tet_key(const uint32_t *v, uint32_t key[4])
+{
+  for (int i = 0; i < 4; i++)
+    key[i] = v[i];
+  for (int i = 1; i < 4; i++)
+    for (int j = i; j > 0 && key[j - 1] > key[j]; j--) {
+      uint32_t x = key[j];
+      key[j] = key[j - 1];
+      key[j - 1] = x;
+    }
+}
+
 #endif
