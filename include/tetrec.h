@@ -229,7 +229,9 @@ typedef struct tr_options {
   int optimize; /* sliver removal after quality refinement (src/sliver/sliver.h), run only
                    when refinement runs: 0 off, 1 flips that raise the smallest dihedral
                    angle, 2 those flips and smoothing of interior points, 3 (default)
-                   also new interior points at slivers (src/sliver/insert.c) */
+                   also new points at slivers: interior ones
+                   (src/sliver/insert.c) and, under the worst tets, exact ones on their
+                   input edges and facets (src/sliver/caps.c, src/sliver/sliver.c) */
   int threads; /* threads for the Delaunay stage: 0 (default) every online core, N > 0 at
                   most N (64 at most are used); the output is the same byte for byte for
                   any value. Negative: TR_ERR_USAGE */

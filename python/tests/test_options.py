@@ -7,7 +7,7 @@ import pytest
 
 import tetrec
 from conftest import DATA, cube
-from exact import check_mesh, face_key, frac_points, tets_volume6
+from exact import check_mesh, cross, dot, face_key, frac_points, sub, tets_volume6
 
 
 def box_in_box():
@@ -82,3 +82,55 @@ def test_bad_hole_and_region_rows_are_refused(unit_cube):
         tetrec.tetrahedralize(*unit_cube, holes=[[0.5, 0.5]])
     with pytest.raises(ValueError):
         tetrec.tetrahedralize(*unit_cube, regions=[[0.5, 0.5, 0.5, 1.5, 0.0]])
+
+
+def slab():
+    """The box [0,8] x [0,1] x [0,1]: its long sides are two triangles of radius-edge
+    ratio about 4 each."""
+    p, t = cube()
+    return p * np.array([8.0, 1.0, 1.0]), t
+
+
+def face_ratio2(pts, f):
+    """The squared radius-edge ratio of triangle f, exactly: R^2 = |ab|^2 |bc|^2 |ca|^2 /
+    (4 |ab x ac|^2), over its shortest squared edge."""
+    a, b, c = (pts[i] for i in f)
+    e = [dot(sub(b, a), sub(b, a)), dot(sub(c, b), sub(c, b)), dot(sub(a, c), sub(a, c))]
+    n = cross(sub(b, a), sub(c, a))
+    return e[0] * e[1] * e[2] / (4 * dot(n, n)) / min(e)
+
+
+def test_subface_quality_bounds_every_boundary_face_ratio():
+    points, tris = slab()
+    plain = tetrec.tetrahedralize(points, tris, quality=1.414)
+    split = tetrec.tetrahedralize(points, tris, quality=1.414, subface_quality=1.5)
+    for mesh in (plain, split):
+        check_mesh(mesh, points, tris)
+    worst = []
+    for mesh in (plain, split):
+        pts = frac_points(mesh.points)
+        worst.append(max(face_ratio2(pts, f) for f in mesh.boundary_faces.tolist()))
+    # the box has only right angles, so no small input angle excuses a face over S
+    assert worst[1] <= Fraction(1.5) ** 2 < worst[0]
+    with pytest.raises(tetrec.Error) as e:
+        tetrec.tetrahedralize(points, tris, quality=1.414, subface_quality=0.5)
+    assert e.value.status == "TR_ERR_USAGE"
+
+
+def test_refine_budget_stops_refinement_with_an_error():
+    points, tris = slab()
+    with pytest.raises(tetrec.Error) as e:
+        tetrec.tetrahedralize(points, tris, quality=1.414, max_volume=1e-4, refine_budget=10)
+    assert e.value.status == "TR_ERR_NOMEM"
+    with pytest.raises(ValueError):
+        tetrec.tetrahedralize(points, tris, quality=1.414, refine_budget=0)
+    mesh = tetrec.tetrahedralize(points, tris, quality=1.414, refine_budget=10**6)
+    check_mesh(mesh, points, tris)
+
+
+def test_refinement_options_without_refinement_warn(unit_cube):
+    for kw in ({"optimize": 2}, {"subface_quality": 1.5}, {"refine_budget": 5},
+               {"keep_edges": True}):
+        with pytest.warns(UserWarning, match="no effect without quality refinement"):
+            mesh = tetrec.tetrahedralize(*unit_cube, **kw)
+        check_mesh(mesh, *unit_cube)

@@ -180,7 +180,8 @@ def validate(points, triangles=None, *, markers=None):
 
 def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
                    keep_surface=False, keep_steiner=False, quality=None, max_volume=None,
-                   optimize=None, keep_edges=False, exact=False,
+                   optimize=None, keep_edges=False, subface_quality=None,
+                   refine_budget=None, exact=False,
                    smooth=True, round_budget=None, verbose=0, progress=None, threads=0):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
@@ -201,7 +202,12 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     default the edges between exactly coplanar input triangles of the same marker are
     merged away, and refinement's sub-faces may cross them).
     optimize: sliver removal after refinement, 0 off, 1 flips, 2 flips and smoothing of
-    interior points, 3 (default) also new interior points at slivers.
+    interior points, 3 (default) also new points at slivers: interior ones, and
+    exact ones on the input edges and facets under the worst tets.
+    subface_quality: S >= 1, refinement also splits the boundary triangles whose
+    radius-edge ratio is above S, except where a small input angle forces it.
+    refine_budget: the points refinement may add before it stops (tetrec.Error,
+    TR_ERR_NOMEM); by default 100 per input point + 100,000.
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: Mesh.write() defaults to writing exact rational Steiner points.
@@ -222,6 +228,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
                                                ("quality", quality),
                                                ("max_volume", max_volume),
                                                ("optimize", optimize),
+                                               ("subface_quality", subface_quality),
+                                               ("refine_budget", refine_budget),
                                                ("round_budget", round_budget))
                if value is not None}
     if keep_surface:
@@ -241,6 +249,21 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
         options["progress"] = progress
     if threads:
         options["threads"] = int(threads)
+    # the refinement options act only when refinement runs: say so rather than drop them
+    refined = quality is not None or (max_volume is not None and max_volume > 0)
+    if regions is not None and not refined:
+        try:
+            r = np.asarray(regions, dtype=float)
+            refined = r.ndim == 2 and r.shape[1] == 5 and bool(np.any(r[:, 4] > 0))
+        except (TypeError, ValueError):
+            refined = True  # malformed: the C layer names what is wrong with it
+    if not refined:
+        idle = [name for name in ("optimize", "subface_quality", "refine_budget", "keep_edges")
+                if name in options]
+        if idle:
+            warnings.warn(f"tetrahedralize({', '.join(idle)}): no effect without quality "
+                          "refinement (quality, max_volume or a region's max_volume)",
+                          stacklevel=2)
     pts, tris, mk = _prepare(points, triangles, markers)
     handle, stats = _tetrec.tetrahedralize(pts, tris, mk, options)
     return Mesh(handle, stats, bool(exact))

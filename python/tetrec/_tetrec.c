@@ -147,7 +147,7 @@ static int progress_hook(void *user, const char *stage, double fraction)
  * key here and add its name to SUPPORTED_OPTIONS below. */
 static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
-    "max_volume", "optimize", "keep_edges",
+    "max_volume", "optimize", "keep_edges", "subface_quality", "refine_budget",
     "holes", "regions", "threads", NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
@@ -263,6 +263,19 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         return -1;
       }
       opt->optimize = (int)x;
+    } else if (!strcmp(k, "subface_quality")) {
+      /* the library refuses S < 1 (TR_ERR_USAGE) like the CLI's --subface-quality */
+      if ((opt->quality_subface_ratio = positive(value, "subface_quality")) < 0)
+        return -1;
+    } else if (!strcmp(k, "refine_budget")) {
+      unsigned long long x = PyLong_AsUnsignedLongLong(value);
+      if (x == (unsigned long long)-1 && PyErr_Occurred())
+        return -1;
+      if (x == 0) {
+        PyErr_SetString(PyExc_ValueError, "refine_budget must be positive");
+        return -1;
+      }
+      opt->refine_budget = (uint64_t)x;
     } else if (!strcmp(k, "max_volume")) {
       if ((opt->max_volume = positive(value, "max_volume")) < 0)
         return -1;

@@ -132,9 +132,10 @@ static const struct option {
      "sliver removal after quality refinement (runs only with\n"
      "--quality or --max-volume): 0 off, 1 flips that raise the\n"
      "smallest dihedral angle, 2 those flips and smoothing of\n"
-     "interior points, 3 (default) also new interior points at\n"
-     "slivers; no point is added on or moved off an input edge\n"
-     "or facet"},
+     "interior points, 3 (default) also new points at slivers:\n"
+     "interior ones, and exact ones on the input edges and\n"
+     "facets under the worst tets; no point is moved off an\n"
+     "input edge or facet"},
     {"-O", "N", C_MESH, "the same as --optimize (TetGen's switch)"},
     {"--progress", NULL, C_MESH,
      "a progress line (stage, share of stages done) on stderr from\n"
@@ -242,7 +243,11 @@ static void print_help(const struct command *c)
     char head[40];
     snprintf(head, sizeof head, "%s%s%s", options[i].name, options[i].arg ? " " : "",
              options[i].arg ? options[i].arg : "");
-    printf("  %-18s", head);
+    /* a head wider than the column gets a line of its own */
+    if (strlen(head) >= 18)
+      printf("  %s\n  %-18s", head, "");
+    else
+      printf("  %-18s", head);
     for (const char *h = options[i].help; *h;) {
       const char *nl = strchr(h, '\n');
       int n = nl ? (int)(nl - h) : (int)strlen(h);
