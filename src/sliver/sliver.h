@@ -39,7 +39,7 @@
  *    (caps.c: refinement splits one sub-segment or sub-face, the new tets get flips,
  *    moves and points), kept only when its tets beat the ones they replace and undone
  *    exactly otherwise, within 16 trials (8 on 16,384 tets or more); then, for each
- *    round's worst tet on a mesh under 16,384 tets, the constraint pieces at its
+ *    round's worst tet (from the second round on) on a mesh under 16,384 tets, the constraint pieces at its
  *    vertices on constraints, within 16 more (a corner whose input edges fix the angle:
  *    part.off). A piece refinement refused is not tried again.
  *
