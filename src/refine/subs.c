@@ -121,8 +121,12 @@ static int on_line(const tr_point *a, const tr_point *b, const tr_point *p)
   return 1;
 }
 
-/* 1 iff u and w (mesh vertices) lie on the closed input edge AB (exact). */
-static int on_input_edge(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t A, uint32_t B)
+/* 1 iff u and w (mesh vertices) lie on the closed input edge AB (exact). line: per vertex
+ * the input edge (A, B) it was last found on the line of, or NULL; a vertex of k sub-faces
+ * is asked up to 6k times, and on the line is exactly the case no filter decides (the
+ * cost of every set-up, also of each of the sliver polish's trials) */
+static int on_input_edge(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t A, uint32_t B,
+                         uint32_t *line)
 {
   const struct tr_mesh *m = c->m;
   uint32_t np = c->plc->npoints;
@@ -134,12 +138,17 @@ static int on_input_edge(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t A, ui
     if (x[i] < np)
       return 0;
     tr_point p = tr_mesh_point(m, x[i]);
-    if (!on_line(&pa, &pb, &p))
-      return 0;
-    for (int d = 0; d < 3; d++) {
+    for (int d = 0; d < 3; d++) { /* first: cheaper than on_line, and mostly decides */
       int sa = tr_cmp_coord_p(&p, &pa, d), sb = tr_cmp_coord_p(&p, &pb, d);
       if (sa * sb > 0) /* beyond both ends along d */
         return 0;
+    }
+    uint32_t *l = line ? line + 2 * (size_t)x[i] : NULL;
+    if (!(l && l[0] == A && l[1] == B)) {
+      if (!on_line(&pa, &pb, &p))
+        return 0;
+      if (l)
+        l[0] = A, l[1] = B;
     }
   }
   return 1;
@@ -151,11 +160,11 @@ static int on_input_edge(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t A, ui
  * facet's boundary edges. Inner edges of a facet are no constraints. *A = TR_NONE if the
  * edge lies on no constraint. */
 static int edge_of_triangle(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t t, uint32_t *A,
-                            uint32_t *B)
+                            uint32_t *B, uint32_t *line)
 {
   const uint32_t *T = c->plc->tris + 3 * (size_t)t;
   for (int k = 0; k < 3; k++)
-    if (!(c->fc.inner[t] >> k & 1) && on_input_edge(c, u, w, T[k], T[(k + 1) % 3])) {
+    if (!(c->fc.inner[t] >> k & 1) && on_input_edge(c, u, w, T[k], T[(k + 1) % 3], line)) {
       *A = T[k];
       *B = T[(k + 1) % 3];
       return 1;
@@ -164,15 +173,15 @@ static int edge_of_triangle(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t t,
 }
 
 static void input_edge_of(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t tri, int bdry,
-                          uint32_t *A, uint32_t *B)
+                          uint32_t *A, uint32_t *B, uint32_t *line)
 {
   const tr_facets *F = &c->fc;
   uint32_t g = F->group[tri];
   *A = *B = TR_NONE;
-  if (edge_of_triangle(c, u, w, tri, A, B) || !bdry)
+  if (edge_of_triangle(c, u, w, tri, A, B, line) || !bdry)
     return;
   for (uint32_t i = F->start[g]; i < F->start[g + 1]; i++)
-    if (F->member[i] != tri && edge_of_triangle(c, u, w, F->member[i], A, B))
+    if (F->member[i] != tri && edge_of_triangle(c, u, w, F->member[i], A, B, line))
       return;
 }
 
@@ -200,6 +209,9 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
    * boundary (the facet's sub-faces tile it), two inside */
   tr_vtmap cnt = {0};
   tr_status s = TR_OK;
+  uint32_t *line = malloc(sizeof *line * 2 * (size_t)(m->nv ? m->nv : 1));
+  if (line) /* no memory for it: every test made in full */
+    memset(line, 0xff, sizeof *line * 2 * (size_t)m->nv);
   if (c->fc.nmerged) {
     s = tr_vtmap_reserve(&cnt, 3, 3 * (size_t)sub->n / 2 + 1);
     for (uint32_t f = 0; s == TR_OK && f < sub->n; f++) {
@@ -230,7 +242,7 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
         bdry = tr_vtmap_get(&cnt, 3, k) == 1;
       }
       uint32_t A, B, id;
-      input_edge_of(c, u, w, tri, bdry, &A, &B);
+      input_edge_of(c, u, w, tri, bdry, &A, &B, line);
       if (A == TR_NONE)
         continue;
       if ((s = rf_subseg_add(c, u, w, A, B, &id)) != TR_OK)
@@ -246,6 +258,7 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
     }
   }
   tr_vtmap_free(&cnt);
+  free(line);
   TR_CHECK(s);
   for (uint32_t f = 0; f < c->nsf; f++)
     for (int i = 0; i < 3; i++) {

@@ -263,17 +263,54 @@ static int pieces(const tr_sliver_ctx *c, uint32_t t, uint32_t p[][3], int n[])
   return k < SL_CAP_PIECES ? k : SL_CAP_PIECES;
 }
 
-tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, void *scratch,
-                            tr_sliver_stats *st, int *done, int *tried)
+/* The fan of tet t: the sub-face edges at its vertices on constraints that are no edge of
+ * t, in the order of those vertices and of their stars, at most SL_CAP_FAN. */
+static tr_status fan(tr_sliver_ctx *c, uint32_t t, uint32_t p[][3], int n[], int *np)
+{
+  struct tr_mesh *m = c->m;
+  uint32_t v[4];
+  memcpy(v, m->tv + 4 * (size_t)t, sizeof v);
+  tr_u32buf ball = {0};
+  tr_status s = TR_OK;
+  *np = 0;
+  for (int i = 0; i < 4 && s == TR_OK && *np < SL_CAP_FAN; i++) {
+    if (c->movable[v[i]])
+      continue;
+    s = tr_ball(m, v[i], 0, &ball);
+    for (size_t j = 0; j < ball.n && s == TR_OK && *np < SL_CAP_FAN; j++) {
+      const uint32_t *tv = m->tv + 4 * (size_t)ball.a[j];
+      for (int k = 0; k < 4 && *np < SL_CAP_FAN; k++) {
+        uint32_t e[2] = {v[i], tv[k]};
+        int dup = tv[k] == v[i];
+        for (int l = 0; l < 4; l++) /* an edge of t: tried with t's own pieces */
+          dup |= tv[k] == v[l];
+        for (int l = 0; l < *np && !dup; l++)
+          dup = (p[l][0] == e[0] && p[l][1] == e[1]) || (p[l][0] == e[1] && p[l][1] == e[0]);
+        if (dup || !tr_sliver_protected(c, e, 2))
+          continue;
+        p[*np][0] = e[0], p[*np][1] = e[1], n[(*np)++] = 2;
+      }
+    }
+  }
+  tr_u32buf_free(&ball);
+  return s;
+}
+
+tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int wide,
+                            void *scratch, tr_vtmap *refused, tr_sliver_stats *st, int *done,
+                            int *tried)
 {
   struct tr_mesh *m = c->m;
   *done = 0;
   *tried = 0;
   if (!c->keep.plc || !sub)
     return TR_OK;
-  uint32_t p[SL_CAP_PIECES + 8][3];
-  int n[SL_CAP_PIECES + 8];
-  int np = pieces(c, t, p, n);
+  uint32_t p[SL_CAP_PIECES + SL_CAP_FAN + 8][3];
+  int n[SL_CAP_PIECES + SL_CAP_FAN + 8], np = 0;
+  if (wide)
+    TR_CHECK(fan(c, t, p, n, &np));
+  else
+    np = pieces(c, t, p, n);
   if (!np)
     return TR_OK;
   /* the mesh's largest ratio among the tets the bound looks at (cached) */
@@ -298,6 +335,15 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, void
   rp.region_id = id;
   rp.region_max_volume = bound;
   for (int i = 0; i < np && s == TR_OK && !*done; i++) {
+    uint32_t key[3] = {p[i][0], p[i][1], n[i] == 3 ? p[i][2] : TR_NONE};
+    for (int a = 1; a < n[i]; a++) /* sorted: the piece whatever its order */
+      for (int b = a; b > 0 && key[b - 1] > key[b]; b--) {
+        uint32_t x = key[b];
+        key[b] = key[b - 1];
+        key[b - 1] = x;
+      }
+    if (refused && tr_vtmap_get(refused, 3, key) != TR_VTMAP_NONE)
+      continue;
     snap z;
     s = snap_take(m, sub, &z);
     if (s != TR_OK)
@@ -308,6 +354,8 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, void
     if (r != TR_OK)
       tr_error_clear(); /* e.g. a point past the bit-size guard: this piece stays */
     ++*tried;
+    if (r == TR_OK && !rs.points && refused)
+      s = tr_vtmap_set(refused, 3, key, 0);
     tr_sliver_ctx tc;
     memset(&tc, 0, sizeof tc);
     tr_sliver_stats ts = *st;

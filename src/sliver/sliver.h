@@ -38,7 +38,10 @@
  *    none of them opens (level 3, with the plc) gets points on its constraint pieces
  *    (caps.c: refinement splits one sub-segment or sub-face, the new tets get flips,
  *    moves and points), kept only when its tets beat the ones they replace and undone
- *    exactly otherwise, within 16 trials (8 on 16,384 tets or more).
+ *    exactly otherwise, within 16 trials (8 on 16,384 tets or more); then, for each
+ *    round's worst tet (from the second round on) on a mesh under 16,384 tets, the constraint pieces at its
+ *    vertices on constraints, within 16 more (a corner whose input edges fix the angle:
+ *    part.off). A piece refinement refused is not tried again.
  *
  * Angles are measured in doubles (src/refine/quality.h, on m->xyz): they only rank
  * choices; every topological decision is exact. Both steps run in fixed passes in slot /
@@ -187,14 +190,20 @@ tr_status tr_sliver_polish(tr_sliver_ctx *c, tr_subfaces *sub, int level, tr_sli
  * encroached pieces it starts). */
 #define SL_CAP_PIECES 4
 #define SL_CAP_POINTS 8
+#define SL_CAP_FAN 8 /* pieces of a wide trial */
 #define SL_CAP_PASSES 2 /* of flips, moves and interior points over a trial's new tets */
 /* caps.c: the constraint pieces of tet t (its worst edge's sub-segment, its sub-faces
- * there, its other sub-segments) split by refinement, one per trial, the first whose new
+ * there, its other sub-segments; wide: instead the other sub-face edges at its vertices
+ * on constraints, up to SL_CAP_FAN) split by refinement, one per trial, the first whose new
  * tets' smallest angle beats the deleted tets' (t among them) kept (*done = 1, c rebuilt
  * on the new sub-faces), every other trial undone exactly; *tried = trials made.
+ * refused (or NULL): the pieces (sorted vertex ids, TR_NONE third for a sub-segment)
+ * refinement did not split (a sub-segment protected at a small input angle, a cavity it
+ * could not make); they are not tried again, and a piece that adds no point goes in.
  * scratch: tr_sliver_insert_scratch(). */
-tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, void *scratch,
-                            tr_sliver_stats *st, int *done, int *tried);
+tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int wide,
+                            void *scratch, tr_vtmap *refused, tr_sliver_stats *st, int *done,
+                            int *tried);
 
 /* The stage: m holds only inner tets (tr_refine's output), sub their sub-faces, vkind the
  * vertex origins (tetrec.h's enum tr_vertex_origin; NULL: none known, so only vertices
