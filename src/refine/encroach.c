@@ -357,7 +357,9 @@ tr_status rf_segment_split_point(rf_ctx *c, uint32_t s, tr_qpoint **out)
   if (mpq_cmp(lo, hi) > 0)
     mpq_swap(lo, hi);
   int at_a = mpq_sgn(lo) == 0, at_b = mpq_cmp_ui(hi, 1, 1) == 0;
-  if (at_a && at_b) {
+  if (rf_flat_split_param(c, s, lo, hi, t)) {
+    /* at a flat sub-face's vertex foot (flat.c) */
+  } else if (at_a && at_b) {
     mpq_set_ui(t, 1, 2);
   } else if (at_a || at_b) {
     /* concentric shells about the input vertex (Shewchuk 1998): the split point's distance

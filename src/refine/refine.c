@@ -509,6 +509,7 @@ static void ctx_free(rf_ctx *c)
   free(c->vkind);
   free(c->vown);
   free(c->vrad);
+  free(c->ssfoot);
   tr_u32buf *b[] = {&c->qseg, &c->qface, &c->qtet, &c->cav, &c->init, &c->bfaces,
                     &c->stack, &c->newsf, &c->tmp, &c->newtets};
   for (size_t i = 0; i < sizeof b / sizeof *b; i++)
@@ -594,6 +595,15 @@ static void ctx_setup(rf_ctx *c, struct tr_mesh *m, const struct tr_plc *plc,
     c->par.budget = tr_refine_default_budget(plc->npoints, 0, 0);
 }
 
+/* Flat sub-faces (flat.c): one scan of what the loop left, then the loop again for the
+ * splits it queued and the tets they make. */
+static tr_status flat_pass(rf_ctx *c)
+{
+  int pushed;
+  TR_CHECK(rf_flat_scan(c, &pushed));
+  return pushed ? run(c) : TR_OK;
+}
+
 /* A tet of the sliver stage's list: the pieces its own vertices encroach, else the
  * sub-faces it lies on (a flat tet on a sub-face is opened only by a point on it; the
  * split point, the sub-face's circumcentre, goes to a sub-segment it encroaches first,
@@ -626,6 +636,8 @@ tr_status tr_refine_open_pinned(struct tr_mesh *m, const struct tr_plc *plc, tr_
       s = open_pinned(&c, tets[i]);
   if (s == TR_OK)
     s = run(&c);
+  if (s == TR_OK && par->flat_splits)
+    s = flat_pass(&c); /* most flat sub-faces come from the splits above (flat.c) */
   if (s == TR_ERR_NOMEM && st->points >= c.par.budget) {
     tr_error_clear();
     s = TR_OK; /* the budget is the sliver stage's: what was split stays */
@@ -691,6 +703,8 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
     s = seed_all(&c);
   if (s == TR_OK)
     s = run(&c);
+  if (s == TR_OK && par->flat_splits)
+    s = flat_pass(&c);
   if (s == TR_OK)
     s = rf_subs_export(&c, sub);
   if (par->verbose >= 1 && (s == TR_OK || s == TR_ERR_NOMEM))

@@ -51,6 +51,8 @@ typedef struct tr_refine_params {
   double subface_ratio; /* sub-faces over this radius-edge ratio are split for their shape
                            (subshape.c); 0: off */
   int keep_edges;      /* every input edge stays a constraint: no merged facets (facets.h) */
+  int flat_splits;     /* 1: a sub-segment opposite an angle over 120 degrees of a sub-face
+                          is split at that vertex's foot, once (flat.c); 0: off */
   int verbose;
 } tr_refine_params;
 

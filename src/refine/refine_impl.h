@@ -60,6 +60,10 @@ typedef struct rf_ctx {
   int shape_on;
   double shape_bound;
   uint32_t shape_next;
+  /* flat sub-faces (flat.c): per sub-segment id below nssfoot, the parameter along its
+   * input edge of the vertex foot it is split at, NAN for none */
+  double *ssfoot;
+  uint32_t nssfoot;
 } rf_ctx;
 
 /* ---- subs.c ---- */
@@ -134,6 +138,16 @@ tr_status rf_subshape_scan(rf_ctx *c);
  * or lies beyond, may be split for f although protected near a sharp corner: a vertex of
  * f encroaches it, or its half is no shorter than f's shortest edge. */
 int rf_subshape_may_split(const rf_ctx *c, uint32_t f, uint32_t g);
+
+/* ---- flat.c ---- */
+/* Queues (c->qseg) each sub-segment opposite an angle over 120 degrees of a live
+ * sub-face, to be split at that vertex's foot (once: c->ssfoot); *pushed = 1 when one
+ * was. */
+tr_status rf_flat_scan(rf_ctx *c, int *pushed);
+/* For a sub-segment g queued by rf_flat_scan, with parameter interval [lo, hi] on its
+ * input edge: t = its split parameter, an exact rational inside (lo, hi); returns 1, else
+ * 0 (g is split as any other). */
+int rf_flat_split_param(const rf_ctx *c, uint32_t g, const mpq_t lo, const mpq_t hi, mpq_t t);
 
 /* ---- cavity.c ---- */
 /* Straight walk from tet t towards p; *found = tet whose closure holds p, or TR_NONE; if

@@ -227,6 +227,7 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
   rp.ratio = 0;
   rp.max_volume = c->keep.max_volume;
   rp.keep_edges = c->keep.keep_edges;
+  rp.flat_splits = c->keep.flat_splits;
   rp.budget = TR_SLIVER_POINTS(m->nv); /* its own: the interior points may have used theirs */
   uint32_t *id = NULL;
   double *bound = NULL, least = 0;

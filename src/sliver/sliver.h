@@ -89,6 +89,7 @@ typedef struct tr_sliver_bounds {
   double max_volume;           /* volume bound for every tet (0: none) */
   const struct tr_plc *plc;    /* NULL, or its region points' maximum volumes by attribute */
   int keep_edges;              /* refinement's tr_refine_params.keep_edges */
+  int flat_splits;             /* refinement's tr_refine_params.flat_splits */
 } tr_sliver_bounds;
 
 typedef struct tr_sliver_params {
