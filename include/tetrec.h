@@ -245,6 +245,11 @@ typedef struct tr_options {
                      into one planar facet, whose inner edges are no constraints: sub-faces
                      may cross them (they need not be chains of mesh edges; the facet is
                      covered exactly). 1: every input edge stays a chain of mesh edges */
+  int refine_spacing_radii; /* refinement: 1 refuses a circumcentre only within a vertex's
+                               current spacing (its insertion radius, shrunk by the points
+                               put next to it since), not its insertion radius; finer meshes
+                               with fewer slivers on long thin parts, more points and CPU
+                               (src/refine/refine.h). 0 (default): off */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);

@@ -99,6 +99,10 @@ static const struct option {
      "under refinement, keep every input edge a chain of mesh\n"
      "edges (by default edges between exactly coplanar input\n"
      "triangles with the same marker are merged away)"},
+    {"--spacing-radii", NULL, C_MESH,
+     "under refinement, refuse a circumcentre only within a new\n"
+     "vertex's current spacing, not its insertion radius (more\n"
+     "points, fewer slivers where long edges were split early)"},
     {"--keep-steiner", NULL, C_MESH,
      "leave the recovery's Steiner points where they are (by\n"
      "default the ones on the surface are removed or moved inside\n"
@@ -158,7 +162,7 @@ typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
   unsigned cmd_bit;
   int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
-  int keep_surface, keep_steiner, progress, keep_edges;
+  int keep_surface, keep_steiner, progress, keep_edges, spacing_radii;
   int threads; /* 0: every core */
   int msh_version; /* 41 or 22 */
   int optimize; /* sliver removal level + 1, 0: the default */
@@ -320,6 +324,8 @@ static tr_status set_option(args *a, const char *name, const char *v)
     a->keep_surface = 1;
   else if (!strcmp(name, "--keep-edges"))
     a->keep_edges = 1;
+  else if (!strcmp(name, "--spacing-radii"))
+    a->spacing_radii = 1;
   else if (!strcmp(name, "--keep-steiner"))
     a->keep_steiner = 1;
   else if (!strcmp(name, "--recovery")) {
@@ -526,6 +532,7 @@ static int cmd_mesh(const args *a)
   opt.recovery = a->recovery;
   opt.keep_surface = a->keep_surface;
   opt.keep_edges = a->keep_edges;
+  opt.refine_spacing_radii = a->spacing_radii;
   opt.quality_ratio = a->quality;
   opt.quality_min_dihedral = a->quality_dih;
   opt.quality_subface_ratio = a->subface_quality;

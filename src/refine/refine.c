@@ -141,11 +141,11 @@ static double dist2(const double *a, const double *b)
 }
 
 /* Would the point at p (doubles) lie closer to a vertex of the cavity than that vertex's
- * insertion radius? Such a point would make an edge shorter than the one its neighbour
- * was inserted to fix, and the next round of bad tets around it a finer one still: the
- * cascade that ends only at the budget (Shewchuk 1998, insertion radii; TetGen rejects
- * such circumcentres the same way, Si 2015). A measure in doubles: it only chooses which
- * points are inserted. */
+ * insertion radius (its spacing while c->spacing_on, see after_insert)? Such a point
+ * would make an edge shorter than the one its neighbour was inserted to fix, and the next
+ * round of bad tets around it a finer one still: the cascade that ends only at the budget
+ * (Shewchuk 1998, insertion radii; TetGen rejects such circumcentres the same way, Si
+ * 2015). A measure in doubles: it only chooses which points are inserted. */
 static int too_close(const rf_ctx *c, const double *p)
 {
   const struct tr_mesh *m = c->m;
@@ -153,6 +153,8 @@ static int too_close(const rf_ctx *c, const double *p)
     const uint32_t *v = m->tv + 4 * (size_t)c->cav.a[i];
     for (int j = 0; j < 4; j++) {
       double r = v[j] < c->capv ? c->vrad[v[j]] : 0;
+      if (c->spacing_on && v[j] < c->capspace && c->vspace[v[j]] > 0 && c->vspace[v[j]] < r)
+        r = c->vspace[v[j]];
       if (r > 0 && dist2(p, m->xyz + 3 * (size_t)v[j]) < r * r)
         return 1;
     }
@@ -160,12 +162,44 @@ static int too_close(const rf_ctx *c, const double *p)
   return 0;
 }
 
+/* Room for the spacing of vertices below nv. */
+static tr_status spacing_room(rf_ctx *c, uint32_t nv)
+{
+  if (nv <= c->capspace)
+    return TR_OK;
+  uint32_t n = c->capspace ? c->capspace : 64;
+  while (n < nv)
+    n = n > UINT32_MAX / 2 ? UINT32_MAX : 2 * n;
+  double *s = realloc(c->vspace, sizeof *s * n);
+  if (!s)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u vertex spacings", n);
+  for (uint32_t i = c->capspace; i < n; i++)
+    s[i] = 0;
+  c->vspace = s;
+  c->capspace = n;
+  return TR_OK;
+}
+
 /* rad: an upper bound of the new point's insertion radius (the shortest edge of the tet
  * it refines), INFINITY if none; its distance to the nearest vertex of its new tets is
- * taken when smaller. */
+ * taken when smaller.
+ *
+ * While c->spacing_on (par.spacing_radii), the spacing of every refinement vertex of the
+ * new tets shrinks to its distance to the new point when that is smaller: its current
+ * spacing, not the one it had when inserted. A point split into a long sub-segment keeps
+ * the sub-segment's half as its insertion radius after its neighbours on the adjacent
+ * input edges came within a tenth of that, and the insertion-radius rule refuses every
+ * circumcentre within that half (pipe.off: 977 bad tets left so, most beside 40 input
+ * edges of length 1 with points 0.05 apart around them). With spacings the rule still
+ * refuses a point that would make an edge shorter than every edge at such a vertex; it
+ * is no proof of termination: merged_facet_notch.off splits facets to any budget with it
+ * (and, once it has started, with the insertion radii too), so the stage ends at
+ * spacing_cap points, its mesh valid and the bad tets left. */
 static tr_status after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own, double rad)
 {
   TR_CHECK(rf_vertex_room(c, pid + 1));
+  if (c->spacing_on)
+    TR_CHECK(spacing_room(c, pid + 1));
   c->vkind[pid] = (uint8_t)kind;
   c->vown[pid] = own;
   const double *x = c->m->xyz + 3 * (size_t)pid;
@@ -176,9 +210,18 @@ static tr_status after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own, d
       if (v[j] != pid) {
         double d = dist2(x, c->m->xyz + 3 * (size_t)v[j]);
         r2 = d < r2 ? d : r2;
+        if (c->spacing_on && c->vrad[v[j]] > 0) {
+          double *s = c->vspace + v[j];
+          if (!(*s > 0))
+            *s = c->vrad[v[j]];
+          if (d < *s * *s)
+            *s = sqrt(d);
+        }
       }
   }
   c->vrad[pid] = isfinite(r2) ? sqrt(r2) : 0;
+  if (c->spacing_on)
+    c->vspace[pid] = c->vrad[pid];
   c->st->points++;
   for (size_t i = 0; i < c->newtets.n; i++) {
     TR_CHECK(push_tet(c, c->newtets.a[i]));
@@ -510,6 +553,7 @@ static void ctx_free(rf_ctx *c)
   free(c->vown);
   free(c->vrad);
   free(c->ssfoot);
+  free(c->vspace);
   tr_u32buf *b[] = {&c->qseg, &c->qface, &c->qtet, &c->cav, &c->init, &c->bfaces,
                     &c->stack, &c->newsf, &c->tmp, &c->newtets};
   for (size_t i = 0; i < sizeof b / sizeof *b; i++)
@@ -532,12 +576,25 @@ static void compact_queue(tr_u32buf *q, size_t *head)
   }
 }
 
+/* The points refinement may add with spacings (par.spacing_radii): 20 per input point
+ * plus 10,000, at most half the budget. Reaching it ends the stage (see after_insert). */
+static uint64_t spacing_cap(const rf_ctx *c)
+{
+  uint64_t cap = 20 * (uint64_t)c->plc->npoints + 10000;
+  return cap < c->par.budget / 2 ? cap : c->par.budget / 2;
+}
+
 /* Serves the queues until they are empty; the caller seeds them. */
 static tr_status run(rf_ctx *c)
 {
   struct tr_mesh *m = c->m;
   for (;;) {
     TR_CHECK(rf_subshape_scan(c));
+    if (c->spacing_on && c->st->points >= spacing_cap(c)) {
+      c->spacing_on = 0; /* a cascade the spacings let through: see after_insert */
+      c->st->spacing_stopped = 1;
+      return TR_OK;
+    }
     if (c->st->points >= c->par.budget && (left(&c->qseg, c->hseg, 1) || left(&c->qface, c->hface, 1) ||
                                             left(&c->qtet, c->htet, 5)))
       return tr_error(TR_ERR_NOMEM,
@@ -698,6 +755,7 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
   /* off by default: on CGAL's models it costs more CPU and tets than it gains
    * (subshape.c) */
   c.shape_on = par->subface_ratio > 0;
+  c.spacing_on = par->spacing_radii;
   c.shape_bound = par->subface_ratio;
   if (s == TR_OK)
     s = seed_all(&c);
@@ -712,11 +770,12 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
             "tetrec: refinement added %llu points (%llu on edges, %llu on facets, %llu "
             "inside); bad tets left: %llu for small input angles, %llu whose circumcentre "
             "lies too close to a new vertex, %llu otherwise; %u input edges inside exactly "
-            "planar facets merged away (--keep-edges keeps them)\n",
+            "planar facets merged away (--keep-edges keeps them)%s\n",
             (unsigned long long)st->points, (unsigned long long)st->on_segments,
             (unsigned long long)st->on_facets, (unsigned long long)st->inside,
             (unsigned long long)st->skipped_small_angle, (unsigned long long)st->skipped_close,
-            (unsigned long long)st->skipped_other, st->merged_edges);
+            (unsigned long long)st->skipped_other, st->merged_edges,
+            st->spacing_stopped ? "; stopped at the point cap of --spacing-radii" : "");
   ctx_free(&c);
   return s;
 }

@@ -26,10 +26,11 @@
  * bad tet whose shortest edge joins points on two input edges that meet at an input
  * vertex under less than 60 degrees is left as it is (its quality is forced by that
  * angle); a circumcentre closer to a vertex of its cavity than that vertex's insertion
- * radius (its distance to its nearest vertex when refinement added it) is not inserted,
- * unless its tet is over the volume bound; and a point budget stops a runaway with
- * TR_ERR_NOMEM ("a size limit was exceeded") and a message. Outer and ghost tets are
- * discarded first. */
+ * radius (its distance to its nearest vertex when refinement added it; with spacing_radii,
+ * that radius shrunk by the points put next to the vertex since, and the stage ends at a
+ * point cap) is not inserted, unless its tet is over the volume bound; and a point budget
+ * stops a runaway with TR_ERR_NOMEM ("a size limit was exceeded") and a message. Outer
+ * and ghost tets are discarded first. */
 #ifndef TR_REFINE_H
 #define TR_REFINE_H
 
@@ -53,6 +54,10 @@ typedef struct tr_refine_params {
   int keep_edges;      /* every input edge stays a constraint: no merged facets (facets.h) */
   int flat_splits;     /* 1: a sub-segment opposite an angle over 120 degrees of a sub-face
                           is split at that vertex's foot, once (flat.c); 0: off */
+  int spacing_radii;   /* the circumcentre rule takes a vertex's current spacing (refine.c,
+                          after_insert) instead of its insertion radius; the stage ends
+                          (no error, bad tets left) at 20 points per input point + 10,000
+                          or half the budget */
   int verbose;
 } tr_refine_params;
 
@@ -64,6 +69,7 @@ typedef struct tr_refine_stats {
                                insertion radius (refine.c, too_close) */
   uint64_t skipped_other;   /* bad tets left: circumcentre blocked / refused */
   uint32_t merged_edges;    /* input edges inside merged planar facets: no constraints */
+  int spacing_stopped;      /* spacing_radii: the stage ended at its point cap (refine.c) */
 } tr_refine_stats;
 
 /* The default budget: 100 points per input point plus 100,000, plus, with a volume bound,

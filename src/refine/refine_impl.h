@@ -46,6 +46,11 @@ typedef struct rf_ctx {
    * their nearest vertex when inserted (Shewchuk 1998; Si 2015); a circumcentre closer
    * than that to such a point is not inserted (refine.c, too_close) */
   double *vrad;
+  /* with par.spacing_radii while spacing_on: each vertex's spacing, its insertion radius
+   * shrunk to its distance to every point later put next to it (0: none) */
+  double *vspace;
+  uint32_t capspace;
+  int spacing_on;
   uint8_t *sfnosplit;
   /* queues (FIFO through a head index) */
   tr_u32buf qseg, qface, qtet; /* qtet: 5 entries per item: tet, its 4 vertices */

@@ -106,6 +106,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   par.verbose = opt->verbose;
   par.keep_edges = opt->keep_edges;
   par.flat_splits = opt->quality_subface_ratio > 0; /* flat.c: part of the option */
+  par.spacing_radii = opt->refine_spacing_radii;
   /* the smallest bound of all sizes the default budget */
   double least = opt->max_volume;
   uint32_t *id, n;

@@ -75,6 +75,40 @@ static void merged_slab(void)
   tr_plc_destroy(p);
 }
 
+/* The box [0,1] x [0,0.1] x [0,0.1] under R = 1.414, refinement alone: its four long
+ * edges are split at their midpoints first, each point with an insertion radius of 0.5,
+ * and once points came 0.1 away on the neighbouring edges every circumcentre within 0.5
+ * of them is refused as too close: 12 tets are left, all over the bound. With
+ * refine_spacing_radii the rule takes the spacing at those points instead (refine.c,
+ * after_insert): every tet meets the bound. Both meshes validate exactly. */
+static void long_box_spacing_radii(void)
+{
+  const double lo[3] = {0, 0, 0}, hi[3] = {1, 0.1, 0.1};
+  tr_plc *p = tm_box(lo, hi);
+  tr_options radii = quality(1.414, 0);
+  radii.optimize = 0;
+  tr_options spacing = radii;
+  spacing.refine_spacing_radii = 1;
+  tm_run a, b;
+  tm_mesh(&a, "long box, insertion radii", p, &radii, TR_CHK_TOPOLOGY);
+  tm_mesh(&b, "long box, spacings", p, &spacing, TR_CHK_TOPOLOGY);
+  if (a.m && b.m) {
+    tr_quality qa, qb;
+    tr_quality_measure(a.m, &qa);
+    tr_quality_measure(b.m, &qb);
+    EXPECT(qa.max_radius_edge > 1.414, "long box: radii already meet the bound (%g): the "
+           "case no longer shows the rule", qa.max_radius_edge);
+    EXPECT(qb.max_radius_edge <= 1.414, "long box: worst radius-edge %g over the bound with "
+           "spacings", qb.max_radius_edge);
+    fprintf(stderr, "long box: radii %llu tets, worst ratio %.3f; spacings %llu tets, %.3f\n",
+            (unsigned long long)qa.ntets, qa.max_radius_edge, (unsigned long long)qb.ntets,
+            qb.max_radius_edge);
+  }
+  tm_free(&a);
+  tm_free(&b);
+  tr_plc_destroy(p);
+}
+
 /* tests/data/merged_facet_notch.off (found by fuzz_pipeline_quality): a union of voxels
  * whose top at z = 16 is one merged facet of two thin strips joined at one end, with a
  * notch between them that lies inside the domain. A refinement cavity from a point on one
@@ -98,12 +132,40 @@ static void notch(const char *path)
   tr_plc_destroy(p);
 }
 
+/* The same input with refine_spacing_radii: its facet splits run to any budget once the
+ * radii no longer hold them back, so the stage ends at its point cap (20 per input point
+ * + 10,000) without error, and the mesh is made and conforms exactly. */
+static void notch_spacing(const char *path)
+{
+  tr_plc *p = NULL;
+  if (tr_plc_read(path, &p) != TR_OK) {
+    fprintf(stderr, "%s: %s\n", path, tr_last_error());
+    exit(1);
+  }
+  tr_options opt = tm_options();
+  opt.quality_ratio = 1.414;
+  opt.refine_spacing_radii = 1;
+  opt.optimize = 0;
+  tm_run r;
+  if (tm_mesh(&r, "notch, spacings", p, &opt, TR_CHK_TOPOLOGY)) {
+    EXPECT(r.st.points_added_for_quality <= 20 * (uint64_t)p->npoints + 10000,
+           "notch, spacings: %llu points, over the cap",
+           (unsigned long long)r.st.points_added_for_quality);
+    fprintf(stderr, "notch, spacings: %llu points, %u tets\n",
+            (unsigned long long)r.st.points_added_for_quality, tr_mesh_num_tets(r.m));
+  }
+  tm_free(&r);
+  tr_plc_destroy(p);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
       {"thin_box", thin_box_diagonals_merge, NULL},
       {"slab", merged_slab, NULL},
       {"notch", NULL, notch},
+      {"long_box", long_box_spacing_radii, NULL},
+      {"notch_spacing", NULL, notch_spacing},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
