@@ -181,7 +181,7 @@ def validate(points, triangles=None, *, markers=None):
 def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
                    keep_surface=False, keep_steiner=False, quality=None, max_volume=None,
                    optimize=None, keep_edges=False, subface_quality=None,
-                   refine_budget=None, exact=False,
+                   refine_budget=None, spacing_radii=False, exact=False,
                    smooth=True, round_budget=None, verbose=0, progress=None, threads=0):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
@@ -205,7 +205,12 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     interior points, 3 (default) also new points at slivers: interior ones, and
     exact ones on the input edges and facets under the worst tets.
     subface_quality: S >= 1, refinement also splits the boundary triangles whose
-    radius-edge ratio is above S, except where a small input angle forces it.
+    radius-edge ratio is above S, except where a small input angle forces it, and
+    splits an input-edge piece once under a boundary angle over 120 degrees.
+    spacing_radii: refinement refuses a circumcentre only within a new vertex's current
+    spacing, not its insertion radius: fewer slivers on long thin parts, more points and
+    CPU; no termination proof, so the stage stops (valid mesh, bad tets left) at 20
+    points per input point + 10,000.
     refine_budget: the points refinement may add before it stops (tetrec.Error,
     TR_ERR_NOMEM); by default 100 per input point + 100,000.
     Options the C library does not offer raise NotImplementedError
@@ -241,6 +246,11 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
         raise TypeError(f"keep_edges must be True or False, not {type(keep_edges).__name__}")
     if keep_edges:
         options["keep_edges"] = True
+    if not isinstance(spacing_radii, (bool, np.bool_)):
+        raise TypeError("spacing_radii must be True or False, not "
+                        f"{type(spacing_radii).__name__}")
+    if spacing_radii:
+        options["spacing_radii"] = True
     if not smooth:
         options["smooth"] = 0
     if verbose:
@@ -258,7 +268,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
         except (TypeError, ValueError):
             refined = True  # malformed: the C layer names what is wrong with it
     if not refined:
-        idle = [name for name in ("optimize", "subface_quality", "refine_budget", "keep_edges")
+        idle = [name for name in ("optimize", "subface_quality", "refine_budget", "keep_edges",
+                                     "spacing_radii")
                 if name in options]
         if idle:
             warnings.warn(f"tetrahedralize({', '.join(idle)}): no effect without quality "

@@ -148,7 +148,7 @@ static int progress_hook(void *user, const char *stage, double fraction)
 static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
     "max_volume", "optimize", "keep_edges", "subface_quality", "refine_budget",
-    "holes", "regions", "threads", NULL};
+    "spacing_radii", "holes", "regions", "threads", NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
 static double positive(PyObject *value, const char *name)
@@ -220,7 +220,7 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
       }
       opt->threads = (int)x;
     } else if (!strcmp(k, "keep_surface") || !strcmp(k, "keep_steiner") ||
-               !strcmp(k, "keep_edges")) {
+               !strcmp(k, "keep_edges") || !strcmp(k, "spacing_radii")) {
       int x = PyObject_IsTrue(value);
       if (x < 0)
         return -1;
@@ -228,6 +228,8 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         opt->keep_surface = x;
       else if (!strcmp(k, "keep_edges"))
         opt->keep_edges = x;
+      else if (!strcmp(k, "spacing_radii"))
+        opt->refine_spacing_radii = x;
       else
         opt->keep_steiner = x;
     } else if (!strcmp(k, "quality")) {

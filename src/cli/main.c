@@ -125,7 +125,8 @@ static const struct option {
     {"--subface-quality", "S", C_MESH,
      "with refinement: also split the boundary triangles whose\n"
      "radius-edge ratio is above S (>= 1), except where a small\n"
-     "input angle forces it (default: off)"},
+     "input angle forces it, and split an input-edge piece once\n"
+     "under a boundary angle over 120 degrees (default: off)"},
     {"--max-volume", "V", C_MESH, "refinement until every tet's volume is at most V"},
     {"-a", "V", C_MESH, "the same as --max-volume (TetGen's switch)"},
     {"--refine-budget", "N", C_MESH,
@@ -600,6 +601,9 @@ static int cmd_mesh(const args *a)
             "(--quality, --max-volume or a region's maximum volume)\n");
   if (a->subface_quality > 0 && !bounded && !a->quiet)
     fprintf(stderr, "tetrec: warning: --subface-quality has no effect without quality "
+            "refinement (--quality, --max-volume or a region's maximum volume)\n");
+  if (a->spacing_radii && !bounded && !a->quiet)
+    fprintf(stderr, "tetrec: warning: --spacing-radii has no effect without quality "
             "refinement (--quality, --max-volume or a region's maximum volume)\n");
   if (a->keep_edges && !bounded && !a->quiet)
     fprintf(stderr, "tetrec: warning: --keep-edges has no effect without quality refinement: "

@@ -438,7 +438,11 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
   }
   /* constraints the circumcentre encroaches are split instead; if one of them cannot be
    * split (protected near a small input angle, or refused), the tet is left as it is: a
-   * point inserted that close to a constraint would only make worse tets there */
+   * point inserted that close to a constraint would only make worse tets there. The
+   * centroid of a tet over the volume bound is the exception (must): the bound is the
+   * user's hard limit, so a piece that cannot be split does not stop it, nor does the
+   * cone check below (found by fuzz_pipeline_quality: tests/data/volume_blocked.off) */
+  int must = at_centroid && big;
   int pushed = 0, blocked = 0;
   tr_status st = TR_OK;
   for (size_t i = 0; st == TR_OK && i < c->cav.n && !blocked; i++) {
@@ -452,7 +456,7 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
       if (!rf_in_equatorial(&a, &b, &d, &p))
         continue;
       if (c->sfnosplit[f])
-        blocked = 1;
+        blocked = !must;
       else {
         st = tr_u32buf_push(&c->qface, f);
         pushed = 1;
@@ -466,7 +470,7 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
       if (!rf_in_diametral(&a, &b, &p))
         continue;
       if (c->ssnosplit[g])
-        blocked = 1;
+        blocked = !must;
       else {
         st = tr_u32buf_push(&c->qseg, g);
         pushed = 1;
@@ -482,7 +486,7 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
   }
   /* a cavity shrunk to be star-shaped can leave a face the point sees almost edge-on:
    * the cone would hold a tet far worse than the one being refined; leave that one */
-  for (size_t i = 0; i < c->bfaces.n; i++) {
+  for (size_t i = 0; !must && i < c->bfaces.n; i++) {
     uint32_t u = c->bfaces.a[i] >> 2;
     int k = (int)(c->bfaces.a[i] & 3);
     const double *x[3];

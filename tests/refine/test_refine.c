@@ -754,6 +754,38 @@ static void pinned_flat_tet_is_opened(void)
   tr_plc_destroy(plc);
 }
 
+/* tests/data/volume_blocked.off (found by fuzz_pipeline_quality): a union of voxels with
+ * uneven spacings, R = 2 and V = 0.0014. The circumcentre and then the centroid of 8 tets
+ * over V encroached sub-faces refinement had marked as not to be split (their split
+ * points lay in protected sub-segments' diametral spheres), so those tets were left over
+ * the bound. The centroid of a tet over the volume bound is now inserted whatever it
+ * encroaches (refine.c, refine_tet): every tet's exact volume is at most V, for every
+ * ratio bound and with sliver removal too. */
+static void volume_blocked(const char *path)
+{
+  tr_plc *p = NULL;
+  if (tr_plc_read(path, &p) != TR_OK) {
+    fprintf(stderr, "%s: %s\n", path, tr_last_error());
+    exit(1);
+  }
+  const double V = 0.0013999999999974306, R[3] = {1.414, 2.0, 3.0};
+  for (int i = 0; i < 3; i++)
+    for (int o = 0; o <= 3; o += 3) {
+      tr_options opt = refinement(R[i], V);
+      opt.optimize = o;
+      char name[64];
+      snprintf(name, sizeof name, "volume_blocked R %g O %d", R[i], o);
+      tm_run r;
+      tr_mesh *m = tm_mesh(&r, name, p, &opt, TR_CHK_TOPOLOGY);
+      if (m) {
+        uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
+        EXPECT(over == 0, "%s: %u of %u tets have a volume above %.17g", name, over, n, V);
+      }
+      tm_free(&r);
+    }
+  tr_plc_destroy(p);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -769,6 +801,7 @@ int main(int argc, char **argv)
       {"max_volume", max_volume, NULL},
       {"region_max_volume", region_max_volume, NULL},
       {"shapes", NULL, shapes},
+      {"volume_blocked", NULL, volume_blocked},
       {"determinism", determinism, NULL},
       {"pinned", pinned_flat_tet_is_opened, NULL},
   };
