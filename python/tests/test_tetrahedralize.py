@@ -15,12 +15,14 @@ OFF_FILES = sorted(DATA.glob("*.off")) + sorted((DATA / "regressions").glob("*.o
 
 
 def is_closed(triangles):
-    """Every edge in an even, non-zero number of triangles, half of them each way."""
+    """Every edge in an even number of triangles. Not half of them each way: tetrec
+    orients the triangles of each shell itself, and fuzz finds such as
+    tests/data/volume_blocked.off come with some of them scrambled."""
     uses = Counter()
     for a, b, c in triangles:
         for u, v in ((a, b), (b, c), (c, a)):
-            uses[(int(u), int(v))] += 1
-    return all(uses[(v, u)] == k for (u, v), k in uses.items())
+            uses[(min(int(u), int(v)), max(int(u), int(v)))] += 1
+    return all(k % 2 == 0 for k in uses.values())
 
 
 def test_cube_volume_is_exactly_one(unit_cube):
