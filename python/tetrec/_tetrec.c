@@ -233,8 +233,8 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
       else
         opt->keep_steiner = x;
     } else if (!strcmp(k, "quality")) {
-      /* R, or (R, D) with D a minimum dihedral angle in degrees (the library refuses a
-       * nonzero D as not supported yet) */
+      /* R, or (R, D) with D a minimum dihedral angle in degrees that sliver removal
+       * works towards (tr_options.quality_min_dihedral) */
       PyObject *r = value, *d = NULL;
       if (PyTuple_Check(value) || PyList_Check(value)) {
         if (PySequence_Size(value) != 2) {
