@@ -112,6 +112,25 @@ tr_status tr_ball_find_ex(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
   return s;
 }
 
+tr_status tr_ball_find_domain(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
+                              uint32_t *t)
+{
+  TR_CHECK(tr_ball_find(m, p, b, c, t));
+  if (*t == TR_NONE)
+    TR_CHECK(tr_ball_find(m, b, p, c, t));
+  if (*t == TR_NONE && c != TR_NONE)
+    TR_CHECK(tr_ball_find(m, c, p, b, t));
+  /* every ball's v2t piece missed it: the rare non-manifold vertex, or no such edge */
+  for (uint32_t u = 0; *t == TR_NONE && u < m->nt; u++) {
+    if (!tr_tet_is_real(m, u))
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)u;
+    if (tet_has(tv, p) && tet_has(tv, b) && (c == TR_NONE || tet_has(tv, c)))
+      *t = u;
+  }
+  return TR_OK;
+}
+
 tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                              uint32_t *tet)
 {

@@ -249,6 +249,13 @@ tr_status tr_ball(struct tr_mesh *m, uint32_t p, int with_ghosts, tr_u32buf *out
  * (an edge or face on the hull is also in the real tet inside it). The presence tests of
  * both recovery stages: no allocation for balls of up to 256 tets. */
 tr_status tr_ball_find(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c, uint32_t *t);
+/* tr_ball_find for a mesh of the domain alone (outer tets freed, as in refinement): there
+ * a vertex where parts of the domain touch (two cubes sharing an edge) has a ball of two
+ * or more pieces, and the one v2t names need not hold the edge. The balls of p, b and c
+ * are searched in turn, then every tet: *t = TR_NONE only if the edge (face) is no
+ * mesh edge (face) at all. */
+tr_status tr_ball_find_domain(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
+                              uint32_t *t);
 /* with_ghosts: the first tet in tr_ball(p, 1)'s order that has b (and c), ghost or not. */
 tr_status tr_ball_find_ex(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
                           int with_ghosts, uint32_t *t);

@@ -467,7 +467,7 @@ static tr_status facet_neighbour(rf_ctx *c, uint32_t f, int e, uint32_t *out)
   const uint32_t *S = c->sfv + 3 * (size_t)f;
   uint32_t a = S[e], b = S[(e + 1) % 3], t;
   *out = TR_NONE;
-  TR_CHECK(tr_ball_find(c->m, S[0], S[1], S[2], &t));
+  TR_CHECK(tr_ball_find_domain(c->m, S[0], S[1], S[2], &t));
   if (t == TR_NONE)
     return tr_error(TR_ERR_INTERNAL, "refinement: sub-face %u is not a mesh face", f);
   int closed;

@@ -233,7 +233,7 @@ static tr_status split_segment(rf_ctx *c, uint32_t g)
 {
   struct tr_mesh *m = c->m;
   uint32_t u = c->ssv[2 * (size_t)g], w = c->ssv[2 * (size_t)g + 1], t;
-  TR_CHECK(tr_ball_find(m, u, w, TR_NONE, &t));
+  TR_CHECK(tr_ball_find_domain(m, u, w, TR_NONE, &t));
   if (t == TR_NONE)
     return tr_error(TR_ERR_INTERNAL, "refinement: sub-segment %u-%u is not a mesh edge", u, w);
   tr_qpoint *q = NULL;
@@ -299,7 +299,7 @@ static tr_status split_facet(rf_ctx *c, uint32_t f)
     return TR_OK;
   }
   const uint32_t *S = c->sfv + 3 * (size_t)where;
-  tr_status st0 = tr_ball_find(m, S[0], S[1], S[2], &t);
+  tr_status st0 = tr_ball_find_domain(m, S[0], S[1], S[2], &t);
   if (st0 == TR_OK && t == TR_NONE)
     st0 = tr_error(TR_ERR_INTERNAL, "refinement: sub-face %u-%u-%u is not a mesh face", S[0],
                    S[1], S[2]);

@@ -786,6 +786,34 @@ static void volume_blocked(const char *path)
   tr_plc_destroy(p);
 }
 
+/* tests/data/edge_touching_boxes.off (found by fuzz_pipeline_quality): boxes of a voxel
+ * union that touch along edges, far from the origin (x near 3e8, z near 2.6e9). Once the
+ * outer tets are freed, the tets at vertex 5 form two pieces joined only through that
+ * vertex, and the search from the piece v2t names did not find the sub-segments 5-3 and
+ * 5-8 in the other one: refinement stopped with TR_ERR_INTERNAL ("sub-segment 5-3 is not
+ * a mesh edge"). tr_ball_find_domain (mesh/iter.c) searches the other ends' balls and then
+ * every tet; the mesh is made under each ratio bound and validates exactly. */
+static void ball_in_pieces(const char *path)
+{
+  tr_plc *p = NULL;
+  if (tr_plc_read(path, &p) != TR_OK) {
+    fprintf(stderr, "%s: %s\n", path, tr_last_error());
+    exit(1);
+  }
+  const double R[3] = {1.414, 2.0, 3.0};
+  for (int i = 0; i < 3; i++) {
+    tr_options opt = refinement(R[i], 0);
+    opt.optimize = 3;
+    char name[64];
+    snprintf(name, sizeof name, "ball_in_pieces R %g", R[i]);
+    tm_run r;
+    tr_mesh *m = tm_mesh(&r, name, p, &opt, TR_CHK_TOPOLOGY);
+    EXPECT(m != NULL, "%s: no mesh", name);
+    tm_free(&r);
+  }
+  tr_plc_destroy(p);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -802,6 +830,7 @@ int main(int argc, char **argv)
       {"region_max_volume", region_max_volume, NULL},
       {"shapes", NULL, shapes},
       {"volume_blocked", NULL, volume_blocked},
+      {"ball_in_pieces", NULL, ball_in_pieces},
       {"determinism", determinism, NULL},
       {"pinned", pinned_flat_tet_is_opened, NULL},
   };
