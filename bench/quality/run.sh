@@ -23,9 +23,12 @@
 #   triangle). bench/quality/tg_surface.py counts, on TetGen's boundary faces (.face), the
 #   input edges that are not a chain of their edges (N of the E input edges: "drops N/E")
 #   and of those the ones between two faces that are not exactly coplanar (M: "M
-#   non-copl."; exact orient3d of the input doubles); "keeps" when N = 0. The models both
-#   meshed where M = 0 (TetGen keeps the input surface, up to exactly flat merges) are
-#   totalled again as the like-for-like comparison.
+#   non-copl."; exact orient3d of the input doubles); "keeps" when N = 0; and the OFF
+#   polygons whose vertices are not exactly coplanar (P: "P non-planar polygons"), where
+#   tetrec keeps its splitting diagonals as constraints and TetGen takes the polygon as
+#   one facet and picks its own. The models both meshed where M = 0 and P = 0 (TetGen
+#   keeps the input surface, up to exactly flat merges) are totalled again as the
+#   like-for-like comparison.
 #
 # usage: TETGEN=/path/to/tetgen-1.6 bench/quality/run.sh [BUILD_DIR]
 #   BUILD_DIR  a build of tetrec (default build; set up with meson if missing)
@@ -128,7 +131,7 @@ for model in "$DATA"/data/meshes/*.off; do
     rb=fail
   fi
   b="- - - - - -"
-  surf=- edges=- dropped=- noncopl=-
+  surf=- edges=- dropped=- noncopl=- nonplanar=-
   if [ $rb = ok ] && [ -f "$w/tg/$name.1.node" ]; then
     # the validator may reject it (-p merges coplanar facets, dropping input edges): the
     # shape figures are printed all the same, and the row is marked
@@ -138,9 +141,10 @@ for model in "$DATA"/data/meshes/*.off; do
       surf="- (no .face)"
     elif python3 "$ROOT/bench/quality/tg_surface.py" "$model" "$w/tg/$name.1" -v \
         >"$w/tetgen.surface" 2>&1; then
-      read -r edges dropped noncopl <<<"$(tail -n 1 "$w/tetgen.surface")"
+      read -r edges dropped noncopl nonplanar <<<"$(tail -n 1 "$w/tetgen.surface")"
       if [ "$dropped" = 0 ]; then surf="keeps all $edges"
       else surf="drops $dropped/$edges, $noncopl non-copl."; fi
+      [ "$nonplanar" = 0 ] || surf="$surf; $nonplanar non-planar polygons"
     else
       surf="? (see work/$name/tetgen.surface)"
     fi
@@ -163,15 +167,16 @@ for model in "$DATA"/data/meshes/*.off; do
       if (2 * na * tb > nb * ta) m = "<10"
       if (da + 0 < db + 0) m = m (m == "" ? "" : ",") "min"
       print m == "" ? "yes" : "no:" m }')
-    echo "$name $ca $ta $da $na $na5 $xa $cb $tb $db $nb $nb5 $xb $target $dropped $noncopl" >>"$rows"
+    echo "$name $ca $ta $da $na $na5 $xa $cb $tb $db $nb $nb5 $xb $target $dropped $noncopl $nonplanar" >>"$rows"
   elif [ "$edges" != - ]; then
     # TetGen's surface is still counted on the models only TetGen meshed
-    echo "$name - - - - - - - - - - - - - $dropped $noncopl" >>"$rows"
+    echo "$name - - - - - - - - - - - - - $dropped $noncopl $nonplanar" >>"$rows"
   fi
   printf "%-28s | %-44s | %-44s | %-13s | %s\n" "$name" "$a" "$b" "$target" "$surf" | tee -a "$table"
 done
 # totals: the first four lines as before the targets and surface columns came (others read them)
-# rows: name, tetrec's cpu tets min n10 n5 maxR, TetGen's the same, target, dropped, non-coplanar
+# rows: name, tetrec's cpu tets min n10 n5 maxR, TetGen's the same, target, dropped,
+# non-coplanar, non-planar polygons
 awk '
   function add(k) {
     n[k]++; A[k] += $2; TA[k] += $3; NA[k] += $5; NA5[k] += $6
@@ -191,17 +196,21 @@ awk '
     if (B[k] > 0 && TB[k] > 0) printf "  ratios tetrec/tetgen: cpu %.2fx, tets %.2fx\n", A[k] / B[k], TA[k] / TB[k]
   }
   {
-    if ($15 != "-") { tg++; if ($15 > 0) tgd++; if ($16 == 0) tgk++ }
+    if ($15 != "-") { tg++; if ($15 > 0) tgd++; if ($16 > 0) tgn++; if ($17 > 0) tgp++; if ($16 == 0 && $17 == 0) tgk++ }
     if ($2 == "-") next
     add("all")
-    if ($15 != "-") { ed += $15; em += $16; if ($16 == 0) add("lfl"); if ($15 == 0) add("same") }
+    if ($15 != "-") {
+      ed += $15; em += $16
+      if ($16 == 0 && $17 == 0) add("lfl")
+      if ($15 == 0 && $17 == 0) add("same")
+    }
   }
   END {
     printf "\ntotal over the %d models both meshed:\n", n["all"]
     totals("all")
     printf "  issue 17 targets (per model: share under 10 deg at most half of TetGen'"'"'s, min dihedral at least TetGen'"'"'s): met on %d of %d models", met["all"], n["all"]
     if (B["all"] > 0 && TB["all"] > 0) printf "; cpu %.2fx (target <= 1), tets %.2fx (target <= 1.2)", A["all"] / B["all"], TA["all"] / TB["all"]
-    printf "\n\nTetGen'"'"'s surface (%d models TetGen meshed): it drops input edges on %d, edges between non-coplanar faces on %d; it keeps the input surface (drops no edge between non-coplanar faces) on %d\n", tg, tgd, tg - tgk, tgk
+    printf "\n\nTetGen'"'"'s surface (%d models TetGen meshed): it drops input edges on %d, edges between non-coplanar faces on %d; %d have non-planar polygons; it keeps the input surface (drops no edge between non-coplanar faces, no non-planar polygon) on %d\n", tg, tgd, tgn + 0, tgp + 0, tgk
     printf "  over the %d models both meshed: %d input edges dropped, %d of them between non-coplanar faces\n", n["all"], ed, em
     printf "like-for-like: the %d models both meshed where TetGen keeps the input surface:\n", n["lfl"]
     totals("lfl")

@@ -5,10 +5,14 @@ usage: tg_surface.py MODEL.off STEM [-v]
   MODEL.off  the input surface given to TetGen
   STEM       TetGen's output stem (STEM.node and STEM.face: its boundary faces)
   -v         also list the dropped edges (input vertex ids, 0-based, and their class)
-prints one line "E N M": E input edges (the sides of the OFF faces; the diagonals that
+prints one line "E N M P": E input edges (the sides of the OFF faces; the diagonals that
 a mesher adds to split a polygon are its own choice and are not counted), N of them not
 a chain of edges of TetGen's boundary faces, M of those N not between two exactly
-coplanar faces (an edge of one face or of three or more counts there too).
+coplanar faces (an edge of one face or of three or more counts there too), and P the
+polygons (faces of more than 3 sides) whose vertices are not exactly coplanar. Such a
+polygon has no surface of its own: tetrec keeps the diagonals it splits it with as
+constraints (src/io/polytri.c), TetGen takes it as one facet and picks its own, so a
+model with P > 0 is no like-for-like comparison even when N = 0.
 
 TetGen -p merges adjacent facets whose dihedral angle is within its tolerance of flat
 (facet_separate_ang_tol, 179.9 degrees by default) and then no longer keeps the edge
@@ -186,6 +190,12 @@ def main():
             cur, tcur = best, tbest
 
     xp = None
+    nonplanar = 0
+    for f in ifaces:
+        if len(set(f)) > 3:
+            if xp is None:
+                xp = exact_coords(ip)
+            nonplanar += not coplanar_faces(xp, f, [])
     dropped = noncoplanar = 0
     for (a, b), fs in sorted(edge_faces.items()):
         if image[a] == image[b] or chain(image[a], image[b]):
@@ -198,7 +208,7 @@ def main():
             noncoplanar += 1
         if verbose:
             print("dropped %d %d %s" % (a, b, "coplanar" if flat else "non-coplanar"))
-    print(len(edge_faces), dropped, noncoplanar)
+    print(len(edge_faces), dropped, noncoplanar, nonplanar)
 
 
 if __name__ == "__main__":
