@@ -78,7 +78,7 @@ static const double *X(const rf_ctx *c, uint32_t v)
   return c->plc->xyz + 3 * (size_t)v;
 }
 
-static double cos_between(const double *o, const double *p, const double *q)
+double rf_cos_angle(const double *o, const double *p, const double *q)
 {
   double a[3], b[3];
   for (int i = 0; i < 3; i++) {
@@ -113,9 +113,9 @@ static int seg_facet_small(const rf_ctx *c, uint32_t V, uint32_t P, const elemen
       o[k++] = t->v[i];
   if (P == o[0] || P == o[1]) /* an edge of T: T's own corner, where concentric shells
                                  * end the descent unless the corner is sharp */
-    return cos_between(X(c, V), X(c, o[0]), X(c, o[1])) > RF_SHARP_COS;
-  if (cos_between(X(c, V), X(c, P), X(c, o[0])) > RF_SMALL_COS ||
-      cos_between(X(c, V), X(c, P), X(c, o[1])) > RF_SMALL_COS)
+    return rf_cos_angle(X(c, V), X(c, o[0]), X(c, o[1])) > RF_SHARP_COS;
+  if (rf_cos_angle(X(c, V), X(c, P), X(c, o[0])) > RF_SMALL_COS ||
+      rf_cos_angle(X(c, V), X(c, P), X(c, o[1])) > RF_SMALL_COS)
     return 1;
   /* elevation of VP over T's plane, when VP lies over T's corner */
   double u[3], w[3], p[3], n[3];
@@ -163,7 +163,7 @@ static int facet_facet_small(const rf_ctx *c, uint32_t V, uint32_t W, uint32_t A
     a[i] -= ta * e[i];
     b[i] -= tb * e[i];
   }
-  return cos_between(zero, a, b) > RF_SMALL_COS;
+  return rf_cos_angle(zero, a, b) > RF_SMALL_COS;
 }
 
 /* Do the constraints of e and f meet at input vertex V under a small angle? */
@@ -173,7 +173,7 @@ static int small_at(const rf_ctx *c, uint32_t V, const element *e, const element
     uint32_t P = e->v[0] == V ? e->v[1] : e->v[0], Q = f->v[0] == V ? f->v[1] : f->v[0];
     /* two edges of one input triangle: its own corner (see seg_facet_small) */
     double lim = rf_face_get(&c->trimap, V, P, Q) != TR_NONE ? RF_SHARP_COS : RF_SMALL_COS;
-    return P != Q && cos_between(X(c, V), X(c, P), X(c, Q)) > lim;
+    return P != Q && rf_cos_angle(X(c, V), X(c, P), X(c, Q)) > lim;
   }
   if (e->kind == RF_SEG || f->kind == RF_SEG) {
     const element *s = e->kind == RF_SEG ? e : f, *t = e->kind == RF_SEG ? f : e;

@@ -38,17 +38,6 @@
 
 #define RF_FLAT_COS (-0.5) /* cos 120 degrees */
 
-static double cos_at(const double *o, const double *p, const double *q)
-{
-  double a[3], b[3];
-  for (int i = 0; i < 3; i++) {
-    a[i] = p[i] - o[i];
-    b[i] = q[i] - o[i];
-  }
-  double n = sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
-  return n > 0 ? (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / n : 1;
-}
-
 /* Parameter of x's foot on the input edge (A, B) of sub-segment g, along A -> B. */
 static double foot_param(const rf_ctx *c, uint32_t g, const double *x)
 {
@@ -68,7 +57,7 @@ static int input_flat(const rf_ctx *c, uint32_t f)
 {
   const uint32_t *T = c->plc->tris + 3 * (size_t)c->sftri[f];
   for (int i = 0; i < 3; i++)
-    if (cos_at(c->plc->xyz + 3 * (size_t)T[i], c->plc->xyz + 3 * (size_t)T[(i + 1) % 3],
+    if (rf_cos_angle(c->plc->xyz + 3 * (size_t)T[i], c->plc->xyz + 3 * (size_t)T[(i + 1) % 3],
                c->plc->xyz + 3 * (size_t)T[(i + 2) % 3]) < RF_FLAT_COS)
       return 1;
   return 0;
@@ -113,7 +102,7 @@ tr_status rf_flat_scan(rf_ctx *c, int *pushed)
     for (int i = 0; i < 3; i++) {
       uint32_t p = v[(i + 1) % 3], q = v[(i + 2) % 3];
       const double *x = c->m->xyz + 3 * (size_t)v[i];
-      if (!(cos_at(x, c->m->xyz + 3 * (size_t)p, c->m->xyz + 3 * (size_t)q) < RF_FLAT_COS))
+      if (!(rf_cos_angle(x, c->m->xyz + 3 * (size_t)p, c->m->xyz + 3 * (size_t)q) < RF_FLAT_COS))
         continue;
       /* a triangle has one angle over 90 degrees at most: f is done either way */
       uint32_t g = rf_subseg_of(c, p, q);

@@ -124,6 +124,9 @@ int rf_in_input_triangle(const rf_ctx *c, uint32_t tri, const tr_point *p);
 uint32_t rf_facet_triangle_of(const rf_ctx *c, uint32_t g, const tr_point *p, uint32_t hint);
 
 /* ---- angles.c ---- */
+/* The cosine of the angle at o between o->p and o->q, in doubles (1 for a zero side): the
+ * angle rules are thresholds on input geometry, decided once, not exact predicates. */
+double rf_cos_angle(const double *o, const double *p, const double *q);
 /* 1 iff the constraints x and y lie on meet at an input vertex under a small angle. */
 int rf_small_angle_edge(const rf_ctx *c, uint32_t x, uint32_t y);
 /* 1 iff sub-segment (seg) / sub-face id is protected from a split caused by vertex v. */

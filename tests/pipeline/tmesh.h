@@ -24,6 +24,17 @@ static inline tr_options tm_options(void)
   return opt;
 }
 
+/* The surface at path (a test's data file), or exit 1 with the reader's message. */
+static inline tr_plc *tm_read(const char *path)
+{
+  tr_plc *p = NULL;
+  if (tr_plc_read(path, &p) != TR_OK) {
+    fprintf(stderr, "%s: %s\n", path, tr_last_error());
+    exit(1);
+  }
+  return p;
+}
+
 /* One meshing: the mesh (NULL when it failed), the PLC as meshed, the whole stats. */
 typedef struct {
   tr_mesh *m;

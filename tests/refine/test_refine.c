@@ -754,6 +754,29 @@ static void pinned_flat_tet_is_opened(void)
   tr_plc_destroy(plc);
 }
 
+/* Meshes the surface at path under each ratio bound, with and without sliver removal,
+ * and with volume bound V (0: none) checks every tet's exact volume against it. */
+static void each_bound(const char *what, const char *path, double V)
+{
+  tr_plc *p = tm_read(path);
+  const double R[3] = {1.414, 2.0, 3.0};
+  for (int i = 0; i < 3; i++)
+    for (int o = 0; o <= 3; o += 3) {
+      tr_options opt = refinement(R[i], V);
+      opt.optimize = o;
+      char name[80];
+      snprintf(name, sizeof name, "%s R %g O %d", what, R[i], o);
+      tm_run r;
+      tr_mesh *m = tm_mesh(&r, name, p, &opt, TR_CHK_TOPOLOGY);
+      if (m && V > 0) {
+        uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
+        EXPECT(over == 0, "%s: %u of %u tets have a volume above %.17g", name, over, n, V);
+      }
+      tm_free(&r);
+    }
+  tr_plc_destroy(p);
+}
+
 /* tests/data/volume_blocked.off (found by fuzz_pipeline_quality): a union of voxels with
  * uneven spacings, R = 2 and V = 0.0014. The circumcentre and then the centroid of 8 tets
  * over V encroached sub-faces refinement had marked as not to be split (their split
@@ -763,27 +786,7 @@ static void pinned_flat_tet_is_opened(void)
  * ratio bound and with sliver removal too. */
 static void volume_blocked(const char *path)
 {
-  tr_plc *p = NULL;
-  if (tr_plc_read(path, &p) != TR_OK) {
-    fprintf(stderr, "%s: %s\n", path, tr_last_error());
-    exit(1);
-  }
-  const double V = 0.0013999999999974306, R[3] = {1.414, 2.0, 3.0};
-  for (int i = 0; i < 3; i++)
-    for (int o = 0; o <= 3; o += 3) {
-      tr_options opt = refinement(R[i], V);
-      opt.optimize = o;
-      char name[64];
-      snprintf(name, sizeof name, "volume_blocked R %g O %d", R[i], o);
-      tm_run r;
-      tr_mesh *m = tm_mesh(&r, name, p, &opt, TR_CHK_TOPOLOGY);
-      if (m) {
-        uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
-        EXPECT(over == 0, "%s: %u of %u tets have a volume above %.17g", name, over, n, V);
-      }
-      tm_free(&r);
-    }
-  tr_plc_destroy(p);
+  each_bound("volume_blocked", path, 0.0013999999999974306);
 }
 
 /* tests/data/edge_touching_boxes.off (found by fuzz_pipeline_quality): boxes of a voxel
@@ -795,23 +798,7 @@ static void volume_blocked(const char *path)
  * every tet; the mesh is made under each ratio bound and validates exactly. */
 static void ball_in_pieces(const char *path)
 {
-  tr_plc *p = NULL;
-  if (tr_plc_read(path, &p) != TR_OK) {
-    fprintf(stderr, "%s: %s\n", path, tr_last_error());
-    exit(1);
-  }
-  const double R[3] = {1.414, 2.0, 3.0};
-  for (int i = 0; i < 3; i++) {
-    tr_options opt = refinement(R[i], 0);
-    opt.optimize = 3;
-    char name[64];
-    snprintf(name, sizeof name, "ball_in_pieces R %g", R[i]);
-    tm_run r;
-    tr_mesh *m = tm_mesh(&r, name, p, &opt, TR_CHK_TOPOLOGY);
-    EXPECT(m != NULL, "%s: no mesh", name);
-    tm_free(&r);
-  }
-  tr_plc_destroy(p);
+  each_bound("ball_in_pieces", path, 0);
 }
 
 int main(int argc, char **argv)
