@@ -118,11 +118,7 @@ static void long_box_spacing_radii(void)
  * made, valid and exactly conforming, with the sliver stage's pinned refinement too. */
 static void notch(const char *path)
 {
-  tr_plc *p = NULL;
-  if (tr_plc_read(path, &p) != TR_OK) {
-    fprintf(stderr, "%s: %s\n", path, tr_last_error());
-    exit(1);
-  }
+  tr_plc *p = tm_read(path);
   tr_options opt = tm_options();
   opt.quality_ratio = 1.414;
   tm_run r;
@@ -137,11 +133,7 @@ static void notch(const char *path)
  * + 10,000) without error, and the mesh is made and conforms exactly. */
 static void notch_spacing(const char *path)
 {
-  tr_plc *p = NULL;
-  if (tr_plc_read(path, &p) != TR_OK) {
-    fprintf(stderr, "%s: %s\n", path, tr_last_error());
-    exit(1);
-  }
+  tr_plc *p = tm_read(path);
   tr_options opt = tm_options();
   opt.quality_ratio = 1.414;
   opt.refine_spacing_radii = 1;
