@@ -241,16 +241,12 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
         options["keep_surface"] = keep_surface
     if keep_steiner:
         options["keep_steiner"] = keep_steiner
-    # a flag, not a truth value: keep_edges="no" must not turn it on
-    if not isinstance(keep_edges, (bool, np.bool_)):
-        raise TypeError(f"keep_edges must be True or False, not {type(keep_edges).__name__}")
-    if keep_edges:
-        options["keep_edges"] = True
-    if not isinstance(spacing_radii, (bool, np.bool_)):
-        raise TypeError("spacing_radii must be True or False, not "
-                        f"{type(spacing_radii).__name__}")
-    if spacing_radii:
-        options["spacing_radii"] = True
+    # flags, not truth values: keep_edges="no" must not turn it on
+    for name, flag in (("keep_edges", keep_edges), ("spacing_radii", spacing_radii)):
+        if not isinstance(flag, (bool, np.bool_)):
+            raise TypeError(f"{name} must be True or False, not {type(flag).__name__}")
+        if flag:
+            options[name] = True
     if not smooth:
         options["smooth"] = 0
     if verbose:

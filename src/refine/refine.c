@@ -153,31 +153,13 @@ static int too_close(const rf_ctx *c, const double *p)
     const uint32_t *v = m->tv + 4 * (size_t)c->cav.a[i];
     for (int j = 0; j < 4; j++) {
       double r = v[j] < c->capv ? c->vrad[v[j]] : 0;
-      if (c->spacing_on && v[j] < c->capspace && c->vspace[v[j]] > 0 && c->vspace[v[j]] < r)
+      if (c->spacing_on && v[j] < c->capv && c->vspace[v[j]] > 0 && c->vspace[v[j]] < r)
         r = c->vspace[v[j]];
       if (r > 0 && dist2(p, m->xyz + 3 * (size_t)v[j]) < r * r)
         return 1;
     }
   }
   return 0;
-}
-
-/* Room for the spacing of vertices below nv. */
-static tr_status spacing_room(rf_ctx *c, uint32_t nv)
-{
-  if (nv <= c->capspace)
-    return TR_OK;
-  uint32_t n = c->capspace ? c->capspace : 64;
-  while (n < nv)
-    n = n > UINT32_MAX / 2 ? UINT32_MAX : 2 * n;
-  double *s = realloc(c->vspace, sizeof *s * n);
-  if (!s)
-    return tr_error(TR_ERR_NOMEM, "out of memory for %u vertex spacings", n);
-  for (uint32_t i = c->capspace; i < n; i++)
-    s[i] = 0;
-  c->vspace = s;
-  c->capspace = n;
-  return TR_OK;
 }
 
 /* rad: an upper bound of the new point's insertion radius (the shortest edge of the tet
@@ -198,8 +180,6 @@ static tr_status spacing_room(rf_ctx *c, uint32_t nv)
 static tr_status after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own, double rad)
 {
   TR_CHECK(rf_vertex_room(c, pid + 1));
-  if (c->spacing_on)
-    TR_CHECK(spacing_room(c, pid + 1));
   c->vkind[pid] = (uint8_t)kind;
   c->vown[pid] = own;
   const double *x = c->m->xyz + 3 * (size_t)pid;

@@ -46,10 +46,10 @@ typedef struct rf_ctx {
    * their nearest vertex when inserted (Shewchuk 1998; Si 2015); a circumcentre closer
    * than that to such a point is not inserted (refine.c, too_close) */
   double *vrad;
-  /* with par.spacing_radii while spacing_on: each vertex's spacing, its insertion radius
-   * shrunk to its distance to every point later put next to it (0: none) */
+  /* with par.spacing_radii (capv of them, grown with vrad): each vertex's spacing, its
+   * insertion radius shrunk to its distance to every point later put next to it while
+   * spacing_on (0: none) */
   double *vspace;
-  uint32_t capspace;
   int spacing_on;
   uint8_t *sfnosplit;
   /* queues (FIFO through a head index) */

@@ -101,12 +101,17 @@ tr_status rf_vertex_room(rf_ctx *c, uint32_t nv)
   double *r = realloc(c->vrad, sizeof *r * nc);
   if (r)
     c->vrad = r;
-  if (!k || !o || !r)
+  double *sp = NULL;
+  if (c->par.spacing_radii && (sp = realloc(c->vspace, sizeof *sp * nc)))
+    c->vspace = sp;
+  if (!k || !o || !r || (c->par.spacing_radii && !sp))
     return tr_error(TR_ERR_NOMEM, "out of memory for %u vertices", nv);
   memset(c->vkind + c->capv, RF_FREE, nc - c->capv);
   for (uint32_t i = c->capv; i < nc; i++) {
     c->vown[i] = TR_NONE;
     c->vrad[i] = 0;
+    if (sp)
+      sp[i] = 0;
   }
   c->capv = nc;
   return TR_OK;
