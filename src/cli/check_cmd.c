@@ -154,6 +154,30 @@ static tr_status conformity(const struct tr_mesh *m, const struct tr_plc *surfac
   return st2;
 }
 
+/* The distance of the rounded Steiner points from the surface, measured on those that lie
+ * on a constraint only: the vertices of the mesh's boundary faces and of the faces the
+ * mesh file lists (internal facets). A refined mesh has interior points near the surface,
+ * whose distance from it says nothing about rounding. */
+static tr_status constrained_distance(const struct tr_mesh *m, const struct tr_plc *surface,
+                                      const struct tr_plc *vol, double *dev, uint32_t *far)
+{
+  uint8_t *on = calloc(vol->npoints ? vol->npoints : 1, 1);
+  if (!on)
+    return tr_error(TR_ERR_NOMEM, "out of memory");
+  for (uint32_t t = 0; t < vol->ntets; t++)
+    for (int k = 0; k < 4; k++)
+      if (m->tn[4 * (size_t)t + k] == TR_NONE)
+        for (int i = 0; i < 3; i++)
+          on[vol->tets[4 * (size_t)t + tr_face_vtx[k][i]]] = 1;
+  for (size_t i = 0; i < 3 * (size_t)vol->ntris; i++)
+    if (vol->tris[i] < vol->npoints)
+      on[vol->tris[i]] = 1;
+  tr_status st = tr_plc_points_distance(surface, vol->xyz, surface->npoints, vol->npoints, on,
+                                        dev, far);
+  free(on);
+  return st;
+}
+
 tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, tr_qpoint **exact,
                        int exact_file, int allow_open, int verbose)
 {
@@ -192,10 +216,10 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
   double dev = 0;
   uint32_t far = 0;
   if (st == TR_OK && rounded)
-    st = tr_plc_points_distance(surface, vol->xyz, surface->npoints, vol->npoints, &dev, &far);
+    st = constrained_distance(m, surface, vol, &dev, &far);
   if (st == TR_OK && rounded && verbose)
-    fprintf(stderr, "tetrec: check: the rounded Steiner points lie at most %.3g of the bounding "
-            "box diagonal from the surface%s\n", dev,
+    fprintf(stderr, "tetrec: check: the rounded Steiner points on the surface lie at most %.3g of "
+            "the bounding box diagonal from it%s\n", dev,
             dev > 0x1p-40 ? " (above 2^-40: write the mesh with --exact to have them exactly)"
                           : "");
   if (st == TR_OK && verbose) {

@@ -333,7 +333,7 @@ static double tri_dist2(const double *p, const double *a, const double *b, const
 }
 
 tr_status tr_plc_points_distance(const struct tr_plc *plc, const double *xyz, uint32_t first,
-                                 uint32_t n, double *dev, uint32_t *vertex)
+                                 uint32_t n, const uint8_t *on, double *dev, uint32_t *vertex)
 {
   *dev = 0;
   *vertex = TR_NONE;
@@ -343,6 +343,8 @@ tr_status tr_plc_points_distance(const struct tr_plc *plc, const double *xyz, ui
   TR_CHECK(finder_init(&f, plc));
   double best = 0;
   for (uint32_t v = first; v < n; v++) {
+    if (on && !on[v])
+      continue;
     const double *p = xyz + 3 * (size_t)v;
     uint32_t ncand;
     const uint32_t *cand = candidates(&f, plc, p, &ncand);
