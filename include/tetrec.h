@@ -222,7 +222,10 @@ typedef struct tr_options {
                                   optimize >= 1; a warning counts the tets left under it */
   double max_volume;           /* bound on every tet's volume, 0: none */
   uint64_t refine_budget;      /* points refinement may add (0: 100 per input point +
-                                  100,000, + 20 per max_volume in the domain's volume) */
+                                  100,000, + 20 per max_volume in the domain's volume,
+                                  at most 2^24 or 8 per input point); volume bounds that
+                                  ask for over 8 tets per budget point are refused
+                                  (TR_ERR_NOMEM) before refinement starts */
   int keep_steiner; /* 1: the recovery's Steiner points stay where they are (on the input
                        edges and facets, exact rationals); 0 (default): the suppression
                        stage removes them or moves them inside where it can */

@@ -209,10 +209,12 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     splits an input-edge piece once under a boundary angle over 120 degrees.
     spacing_radii: refinement refuses a circumcentre only within a new vertex's current
     spacing, not its insertion radius: fewer slivers on long thin parts, more points and
-    CPU; no termination proof, so the stage stops (valid mesh, bad tets left) at 20
-    points per input point + 10,000.
+    CPU; no termination proof, so the radius-edge refinement stops (valid mesh, bad
+    tets left) at 20 points per input point + 10,000; max_volume still holds.
     refine_budget: the points refinement may add before it stops (tetrec.Error,
-    TR_ERR_NOMEM); by default 100 per input point + 100,000.
+    TR_ERR_NOMEM); by default 100 per input point + 100,000, + 20 per max_volume in
+    the domain's volume, at most 2^24 or 8 per input point. A volume bound asking for
+    more than 8 tets per budget point raises TR_ERR_NOMEM before refinement starts.
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: Mesh.write() defaults to writing exact rational Steiner points.

@@ -132,7 +132,9 @@ static const struct option {
     {"--refine-budget", "N", C_MESH,
      "points refinement may add before it stops with exit 8\n"
      "(default: 100 per input point + 100,000, + 20 per V of the\n"
-     "domain's volume with --max-volume)"},
+     "domain's volume with --max-volume, at most 2^24 or 8 per\n"
+     "input point); a volume bound asking for over 8 tets per\n"
+     "budget point is refused (exit 8) before refinement starts"},
     {"--optimize", "N", C_MESH,
      "sliver removal after quality refinement (runs only with\n"
      "--quality or --max-volume): 0 off, 1 flips that raise the\n"

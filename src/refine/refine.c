@@ -24,7 +24,12 @@ uint64_t tr_refine_default_budget(uint32_t npoints, double domain_volume, double
   double b = 100.0 * npoints + 100000;
   if (max_volume > 0 && domain_volume > 0)
     b += 20.0 * domain_volume / max_volume;
-  return b > 4e9 ? (uint64_t)4e9 : (uint64_t)b;
+  /* a point costs about 1.2 KB and 60 us: past the ceiling a default run would fill the
+   * memory of most machines for hours (-a 1e-300 asked for 4e9 points); a larger mesh
+   * takes an explicit budget */
+  double ceiling = 8.0 * npoints > TR_REFINE_BUDGET_CEILING ? 8.0 * npoints
+                                                            : TR_REFINE_BUDGET_CEILING;
+  return b > ceiling ? (uint64_t)ceiling : (uint64_t)b;
 }
 
 /* Radius-edge ratio in doubles (a measure: it only decides which tets get a point); the
@@ -63,7 +68,7 @@ static int tet_bad(const rf_ctx *c, uint32_t t)
   double ratio, vol;
   tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1], m->xyz + 3 * (size_t)v[2],
                m->xyz + 3 * (size_t)v[3], &ratio, &vol, NULL, NULL);
-  return (c->par.ratio > 0 && ratio > c->par.ratio) || too_big(c, t);
+  return (c->par.ratio > 0 && !c->volume_only && ratio > c->par.ratio) || too_big(c, t);
 }
 
 static tr_status push_tet(rf_ctx *c, uint32_t t)
@@ -577,7 +582,12 @@ static tr_status run(rf_ctx *c)
     if (c->spacing_on && c->st->points >= spacing_cap(c)) {
       c->spacing_on = 0; /* a cascade the spacings let through: see after_insert */
       c->st->spacing_stopped = 1;
-      return TR_OK;
+      /* ratio refinement ends here; the volume bounds do not: their tets go on being
+       * refined, with the insertion radii (it once stopped with half the tets of a cube
+       * under -a 1e-4 over the bound) */
+      if (!(c->par.max_volume > 0) && !c->par.nregion_bounds)
+        return TR_OK;
+      c->volume_only = 1;
     }
     if (c->st->points >= c->par.budget && (left(&c->qseg, c->hseg, 1) || left(&c->qface, c->hface, 1) ||
                                             left(&c->qtet, c->htet, 5)))
@@ -759,7 +769,8 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
             (unsigned long long)st->on_facets, (unsigned long long)st->inside,
             (unsigned long long)st->skipped_small_angle, (unsigned long long)st->skipped_close,
             (unsigned long long)st->skipped_other, st->merged_edges,
-            st->spacing_stopped ? "; stopped at the point cap of --spacing-radii" : "");
+            st->spacing_stopped ? "; the radius-edge refinement stopped at the point cap of "
+                                  "--spacing-radii (volume bounds still met)" : "");
   ctx_free(&c);
   return s;
 }

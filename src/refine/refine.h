@@ -27,8 +27,9 @@
  * vertex under less than 60 degrees is left as it is (its quality is forced by that
  * angle); a circumcentre closer to a vertex of its cavity than that vertex's insertion
  * radius (its distance to its nearest vertex when refinement added it; with spacing_radii,
- * that radius shrunk by the points put next to the vertex since, and the stage ends at a
- * point cap) is not inserted, unless its tet is over the volume bound; and a point budget
+ * that radius shrunk by the points put next to the vertex since, and the radius-edge
+ * refinement ends at a point cap, after which only tets over a volume bound are refined,
+ * with the insertion radii) is not inserted, unless its tet is over the volume bound; and a point budget
  * stops a runaway with TR_ERR_NOMEM ("a size limit was exceeded") and a message. Outer
  * and ghost tets are discarded first. */
 #ifndef TR_REFINE_H
@@ -69,12 +70,15 @@ typedef struct tr_refine_stats {
                                insertion radius (refine.c, too_close) */
   uint64_t skipped_other;   /* bad tets left: circumcentre blocked / refused */
   uint32_t merged_edges;    /* input edges inside merged planar facets: no constraints */
-  int spacing_stopped;      /* spacing_radii: the stage ended at its point cap (refine.c) */
+  int spacing_stopped;      /* spacing_radii: the radius-edge refinement ended at its point
+                               cap (refine.c); tets over a volume bound were still refined */
 } tr_refine_stats;
 
 /* The default budget: 100 points per input point plus 100,000, plus, with a volume bound,
  * 20 per multiple of V in the domain's volume (a mesh of tets of volume about V/6 needs
- * about 6 times that many points). */
+ * about 6 times that many points), at most TR_REFINE_BUDGET_CEILING or 8 per input point,
+ * whichever is larger. */
+#define TR_REFINE_BUDGET_CEILING 16777216.0 /* 2^24 points: ~20 GB */
 uint64_t tr_refine_default_budget(uint32_t npoints, double domain_volume, double max_volume);
 
 /* m: the recovered mesh with outer tets flagged (tr_outer_color), vertex ids = plc's point

@@ -51,6 +51,9 @@ typedef struct rf_ctx {
    * spacing_on (0: none) */
   double *vspace;
   int spacing_on;
+  /* 1 once the --spacing-radii cap ended ratio refinement: the tets over a volume bound
+   * are still refined (refine.c, run), since that bound is the user's hard limit */
+  int volume_only;
   uint8_t *sfnosplit;
   /* queues (FIFO through a head index) */
   tr_u32buf qseg, qface, qtet; /* qtet: 5 entries per item: tet, its 4 vertices */

@@ -1,6 +1,7 @@
 /* The refinement stage as the pipeline calls it: option checks, the default budget, the
  * statistics rows (refine.h, quality.h). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -81,6 +82,27 @@ tr_status tr_refine_region_bounds(const struct tr_plc *plc, uint32_t **ids, doub
   return TR_OK;
 }
 
+/* Tet t's volume bound: the global one or its region's, the smaller; 0: none (the same
+ * choice as refine.c's too_big). */
+static double tet_bound(const struct tr_mesh *m, uint32_t t, double global, const uint32_t *id,
+                        const double *bound, uint32_t n)
+{
+  double b = global;
+  if (n && m->region) {
+    uint32_t r = m->region[t], lo = 0, hi = n;
+    while (lo < hi) {
+      uint32_t mid = lo + (hi - lo) / 2;
+      if (id[mid] < r)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    if (lo < n && id[lo] == r && (!(b > 0) || bound[lo] < b))
+      b = bound[lo];
+  }
+  return b;
+}
+
 tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
                           const tr_options *opt, int keep_hull, uint64_t *points,
                           uint64_t *merged)
@@ -89,7 +111,13 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   if (keep_hull)
     return tr_error(TR_ERR_UNSUPPORTED, "quality refinement of an open surface meshed within "
                     "its convex hull is not supported yet");
-  double vol = 0;
+  /* the smallest of all bounds sizes the default budget */
+  double least = opt->max_volume;
+  uint32_t *id, n;
+  double *bound;
+  TR_CHECK(tr_refine_region_bounds(plc, &id, &bound, &n, &least));
+  /* each tet holds at most its bound: the bounds alone ask for at least `need` tets */
+  double vol = 0, need = 0;
   for (uint32_t t = 0; t < m->nt; t++)
     if (tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER)) {
       const uint32_t *v = m->tv + 4 * (size_t)t;
@@ -97,7 +125,27 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
       tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
                    m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &r, &w, d, NULL);
       vol += w;
+      double b = tet_bound(m, t, opt->max_volume, id, bound, n);
+      if (b > 0)
+        need += w / b;
     }
+  uint64_t budget = opt->refine_budget ? opt->refine_budget
+                                       : tr_refine_default_budget(plc->npoints, vol, least);
+  /* a refined mesh has about 6 tets per point (8 taken, to refuse only what cannot fit):
+   * what the budget cannot reach is refused now, not after hours of refinement */
+  if (need / 8 > (double)budget) {
+    free(id);
+    free(bound);
+    char what[64];
+    if (opt->max_volume > 0)
+      snprintf(what, sizeof what, "-a %g%s", opt->max_volume, n ? " with the regions' bounds" : "");
+    else
+      snprintf(what, sizeof what, "the regions' volume bounds");
+    return tr_error(TR_ERR_NOMEM, "%s asks for at least %.3g tets in a domain of volume %.6g, "
+                    "about %.3g points: over the refinement budget of %llu points "
+                    "(--refine-budget); relax the bound or raise the budget", what, need, vol,
+                    need / 6, (unsigned long long)budget);
+  }
   tr_refine_params par;
   memset(&par, 0, sizeof par);
   par.ratio = opt->quality_ratio;
@@ -107,16 +155,10 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   par.keep_edges = opt->keep_edges;
   par.flat_splits = opt->quality_subface_ratio > 0; /* flat.c: part of the option */
   par.spacing_radii = opt->refine_spacing_radii;
-  /* the smallest bound of all sizes the default budget */
-  double least = opt->max_volume;
-  uint32_t *id, n;
-  double *bound;
-  TR_CHECK(tr_refine_region_bounds(plc, &id, &bound, &n, &least));
   par.region_id = id;
   par.region_max_volume = bound;
   par.nregion_bounds = n;
-  par.budget = opt->refine_budget ? opt->refine_budget
-                                  : tr_refine_default_budget(plc->npoints, vol, least);
+  par.budget = budget;
   tr_refine_stats rs;
   tr_status s = tr_refine(m, plc, sub, &par, &rs);
   *points = rs.points;

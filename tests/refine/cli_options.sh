@@ -40,7 +40,10 @@ expect 0 "warning: --subface-quality has no effect without quality refinement" -
 expect 0 "warning: --keep-edges has no effect without quality refinement" -- mesh "$S" --keep-edges -o "$W/h.node"
 expect 1 "positive volume" -- mesh "$S" -a -1 -o "$W/c.node"
 expect 1 "does not apply to 'delaunay'" -- delaunay "$S" --quality 1.414
-expect 8 "point budget of 50 points" -- mesh "$S" -a 0.001 --refine-budget 50 -o "$W/c.node"
+# a bound asking for more than 8 tets per budget point (1,000 tets, 50 points) is refused
+# before refinement; one within that (130 points) runs until the budget stops it
+expect 8 "asks for at least 1e\+03 tets .* budget of 50 points" -- mesh "$S" -a 0.001 --refine-budget 50 -o "$W/c.node"
+expect 8 "point budget of 130 points" -- mesh "$S" -a 0.001 --refine-budget 130 -o "$W/c.node"
 expect 1 "whole number" -- mesh "$S" --refine-budget 0 -o "$W/c.node"
 [ ! -e "$W/c.node" ] || { echo "FAIL: a refused run wrote a mesh"; fails=$((fails + 1)); }
 exit $((fails != 0))
