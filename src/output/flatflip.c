@@ -5,10 +5,12 @@
 #include "classify.h"
 #include "output/flatflip.h"
 #include "output/round.h"
+#include "refine/refine_impl.h" /* rf_volume_above: the bound decided as refinement does */
 
 typedef struct {
   struct tr_mesh *m;
   const tr_plc *plc;
+  double max_volume;
   uint32_t *sub; /* the sub-faces as sorted triples, in lexicographic order */
   uint32_t nsub;
   tr_u32buf shell;
@@ -48,6 +50,23 @@ static int on_segment(const ctx *c, uint32_t a, uint32_t b)
       return 1;
   }
   return 0;
+}
+
+/* Tet v of region r keeps the volume bound: the smaller of max_volume and r's region
+ * points'. */
+static int within_bound(const ctx *c, const uint32_t *v, uint32_t r)
+{
+  double b = c->max_volume;
+  for (uint32_t i = 0; i < c->plc->nregions; i++)
+    if (c->plc->region_maxvol[i] > 0 && (uint32_t)c->plc->region_attr[i] == r &&
+        (!(b > 0) || c->plc->region_maxvol[i] < b))
+      b = c->plc->region_maxvol[i];
+  if (!(b > 0))
+    return 1;
+  tr_point p[4];
+  for (int i = 0; i < 4; i++)
+    p[i] = tr_mesh_point(c->m, v[i]);
+  return !rf_volume_above(&p[0], &p[1], &p[2], &p[3], b);
 }
 
 static tr_status commit(ctx *c, const uint32_t *old, uint32_t nold, const uint32_t *newv,
@@ -182,15 +201,64 @@ static tr_status run(ctx *c, uint64_t *nflips)
   return TR_OK;
 }
 
+/* A flip makes fewer, larger tets (3-2, edge removal), and a tet it makes may be over the
+ * volume bound refinement met (chazelle_rounding_budget.off under -a 1.024: one). Such a
+ * tet is split in four at its centroid, a double (an interior point: written exactly),
+ * when the four new tets are positive exactly and in doubles; each split quarters the
+ * volume, so the passes end. Refusing those flips instead left tets flat in doubles that
+ * the rounding repair could not fix. */
+static tr_status split_over(ctx *c, uint64_t *nsplits)
+{
+  struct tr_mesh *m = c->m;
+  for (int changed = 1; changed;) {
+    changed = 0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+      if (!kept(m, t) || within_bound(c, m->tv + 4 * (size_t)t, m->region[t]))
+        continue;
+      uint32_t v[4], newv[16], pid = m->nv, ids[4];
+      memcpy(v, m->tv + 4 * (size_t)t, sizeof v);
+      double g[3];
+      for (int i = 0; i < 3; i++)
+        g[i] = 0.25 * (m->xyz[3 * (size_t)v[0] + i] + m->xyz[3 * (size_t)v[1] + i] +
+                       m->xyz[3 * (size_t)v[2] + i] + m->xyz[3 * (size_t)v[3] + i]);
+      tr_point q[4], pg = tr_pt_d(g);
+      for (int i = 0; i < 4; i++)
+        q[i] = tr_mesh_point(m, v[i]);
+      int ok = 1;
+      for (int k = 0; k < 4 && ok; k++) {
+        memcpy(newv + 4 * k, v, sizeof v);
+        newv[4 * k + k] = pid;
+        tr_point r[4] = {q[0], q[1], q[2], q[3]};
+        r[k] = pg;
+        const double *x[4];
+        for (int i = 0; i < 4; i++)
+          x[i] = i == k ? g : m->xyz + 3 * (size_t)v[i];
+        ok = tr_orient3d_p(&r[0], &r[1], &r[2], &r[3]) > 0 && tr_orient3d(x[0], x[1], x[2], x[3]) > 0;
+      }
+      if (!ok)
+        continue;
+      uint32_t id;
+      TR_CHECK(tr_mesh_add_vertex(m, g, &id));
+      uint32_t region = m->region[t];
+      TR_CHECK(tr_mesh_replace(m, &t, 1, newv, 4, ids));
+      for (int i = 0; i < 4; i++)
+        m->region[ids[i]] = region;
+      (*nsplits)++;
+      changed = 1;
+    }
+  }
+  return TR_OK;
+}
+
 tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr_plc *plc,
-                             uint64_t *nflips)
+                             double max_volume, uint64_t *nflips)
 {
   *nflips = 0;
   if (!m->vq || !m->region)
     return TR_OK; /* no Steiner point: the doubles are the exact points */
   if (tr_round_count_nonpositive(m, NULL) == 0)
     return TR_OK;
-  ctx c = {.m = m, .plc = plc, .nsub = sub->n};
+  ctx c = {.m = m, .plc = plc, .max_volume = max_volume, .nsub = sub->n};
   c.sub = malloc(3 * sizeof *c.sub * (sub->n ? sub->n : 1));
   if (!c.sub)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-faces", sub->n);
@@ -200,6 +268,9 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
   }
   qsort(c.sub, sub->n, 3 * sizeof *c.sub, tr_cmp_face_key);
   tr_status st = run(&c, nflips);
+  uint64_t nsplits = 0;
+  if (st == TR_OK && *nflips)
+    st = split_over(&c, &nsplits);
   free(c.sub);
   tr_u32buf_free(&c.shell);
   return st;

@@ -21,6 +21,11 @@
  * over the tets in slot order repeat until one takes no flip; each flip lowers the total
  * number of flat tets, so this ends, and the result depends only on the mesh.
  *
+ * A flip makes fewer, larger tets (3-2, edge removal): after the passes, a tet over the
+ * volume bound of refinement (-a, region points) is split in four at its centroid, an
+ * interior double, when its new tets are positive exactly and in doubles (the passes
+ * repeat; each split quarters the volume).
+ *
  * The exact points never change, so the mesh stays exactly conforming and the --exact
  * output is the same mesh as the double one. */
 #ifndef TR_OUTPUT_FLATFLIP_H
@@ -35,8 +40,9 @@
 #define TR_FLATFLIP_MAX_SHELL 6
 
 /* m: the working mesh after tr_outer_color (regions enabled); sub: its sub-faces; plc:
- * the meshed PLC (its segments are constraints too). *nflips = flips taken. */
+ * the meshed PLC (its segments are constraints too, its region points' maximum volumes
+ * bounds); max_volume: the bound on every tet (0: none). *nflips = flips taken. */
 tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr_plc *plc,
-                             uint64_t *nflips);
+                             double max_volume, uint64_t *nflips);
 
 #endif

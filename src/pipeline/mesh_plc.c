@@ -301,8 +301,11 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   double t5 = tr_pipeline_now();
   PROGRESS(TR_STAGE_ROUND, 0);
   /* Before compaction: the flips need the sub-faces, which are in m's numbering. */
+  uint32_t nv_flips = m->nv;
   if (st == TR_OK)
-    st = tr_round_flip_flat(m, &sub, p, &stats->rounding_flips);
+    st = tr_round_flip_flat(m, &sub, p, opt.max_volume, &stats->rounding_flips);
+  if (st == TR_OK && m->nv > nv_flips) /* centroids of tets the flips made over -a */
+    st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv_flips, &vkind, &vindex);
   if (st == TR_OK && stats->rounding_flips && opt.verbose >= 2)
     fprintf(stderr, "tetrec: %llu flips took away tets flat in doubles\n",
             (unsigned long long)stats->rounding_flips);

@@ -142,7 +142,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
     else
       snprintf(what, sizeof what, "the regions' volume bounds");
     return tr_error(TR_ERR_NOMEM, "%s asks for at least %.3g tets in a domain of volume %.6g, "
-                    "about %.3g points: over the refinement budget of %llu points "
+                    "about %.3g points: over the point budget of %llu points "
                     "(--refine-budget); relax the bound or raise the budget", what, need, vol,
                     need / 6, (unsigned long long)budget);
   }
