@@ -266,8 +266,9 @@ typedef struct tr_stats {
   uint64_t missing_facets, facets_recovered_by_swap, points_added_for_facets;
   uint64_t surface_swaps, rounding_repairs;
   uint64_t rounding_flips; /* flips that took away tets flat in doubles (output/flatflip.h) */
-  /* input semantics: hole and region points given, nested shells made cavities (given
-   * facing into themselves, or holding a hole point) and inclusions (regions of their own) */
+  /* input semantics: hole and region points given, nested shells made cavities (holding a
+   * hole point, or given facing into themselves with no region point in them) and
+   * inclusions (regions of their own) */
   uint64_t hole_points, region_points, cavities, inclusions;
   double total_seconds, recovery_seconds;
   uint64_t peak_memory_bytes;

@@ -3,9 +3,12 @@
  * inclusion (its inside is a region of its own; it stays outward, an internal boundary).
  *
  * Rule (validate.h): a shell directly inside a shell whose inside is in the domain is a
- * cavity iff it was given facing into itself (negative enclosed volume by the majority
- * of its triangles as read; a tie keeps the former rule, cavity) or a hole point lies
- * in it and in none of its own nested shells; otherwise an inclusion. A shell at top
+ * cavity iff a hole point lies in it and in none of its own nested shells, or, with no
+ * region point there either, it was given facing into itself (negative enclosed volume
+ * by the majority of its triangles as read; a tie keeps the former rule, cavity);
+ * otherwise an inclusion. A region point asks for its cell to be meshed: TetGen's .poly
+ * facets carry no orientation, so an inner box given either way with a region point in
+ * it is a region (it was a cavity, and the region point an error, "outside the domain"). A shell at top
  * level or directly inside a cavity bounds a body of its own (outward).
  *
  * A shell lies inside another iff a point of it off the other does (shells may share
@@ -279,9 +282,10 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
   uint32_t *depth = calloc(ncomp, sizeof *depth), *parent = malloc(sizeof *parent * ncomp);
   uint32_t *cstart = calloc((size_t)ncomp + 1, sizeof *cstart), *list = NULL, nl = 0, cap = 0;
   uint32_t *byd = malloc(sizeof *byd * ncomp), *holed = calloc(ncomp, sizeof *holed);
+  uint32_t *regioned = calloc(ncomp, sizeof *regioned);
   char *dom_in = calloc(ncomp, 1);
   tr_status st = TR_OK;
-  if (!depth || !parent || !cstart || !byd || !holed || !dom_in) {
+  if (!depth || !parent || !cstart || !byd || !holed || !regioned || !dom_in) {
     st = tr_error(TR_ERR_NOMEM, "out of memory deciding shell nesting");
     goto done;
   }
@@ -327,12 +331,14 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
   for (uint32_t c = 0; c < ncomp; c++)
     if (closed[c] && depth[c])
       parent[c] = innermost(list + cstart[c], depth[c], depth);
-  /* Hole points: the innermost shell around each (one on a shell decides nothing here;
-   * the coloring stage rejects it). */
+  /* Hole points, then region points: the innermost shell around each (one on a shell
+   * decides nothing here; the coloring stage rejects it). */
   {
     uint32_t *hl = NULL, hn = 0, hcap = 0;
-    for (uint32_t h = 0; h < plc->nholes; h++) {
-      tr_point P = tr_pt_d(plc->holes + 3 * (size_t)h);
+    for (uint32_t h = 0; h < plc->nholes + plc->nregions; h++) {
+      int hole = h < plc->nholes;
+      uint32_t i = hole ? h : h - plc->nholes;
+      tr_point P = tr_pt_d(hole ? plc->holes + 3 * (size_t)i : plc->region_xyz + 3 * (size_t)i);
       hn = 0;
       int r = containers(&N, &P, UINT32_MAX, &hl, &hn, &hcap);
       if (r == -2) {
@@ -342,8 +348,9 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
       }
       if (r == 0 && hn) {
         uint32_t c = innermost(hl, hn, depth);
-        if (!holed[c])
-          holed[c] = h + 1;
+        uint32_t *mark = hole ? holed : regioned;
+        if (!mark[c])
+          mark[c] = i + 1;
       }
     }
     free(hl);
@@ -364,7 +371,7 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
       continue;
     }
     uint32_t t0 = tnum[order[start[c]]], tp = tnum[order[start[p]]];
-    if (holed[c] || given[c] <= 0) {
+    if (holed[c] || (!regioned[c] && given[c] <= 0)) {
       cavity[c] = 1;
       (*ncav)++;
       if (holed[c] && plc->hole_cavity)
@@ -385,10 +392,16 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
     } else {
       dom_in[c] = 1;
       (*nincl)++;
-      tr_report_add(rep, TR_REP_SHELL,
-                    "shell of triangle %u (inside the shell of triangle %u) is an inclusion, "
-                    "a region of its own: it faces outward as given (reverse it, or put a "
-                    "hole point in it, to make it a cavity)", t0, tp);
+      if (given[c] <= 0)
+        tr_report_add(rep, TR_REP_SHELL,
+                      "shell of triangle %u (inside the shell of triangle %u) is an inclusion, "
+                      "a region of its own: region point %u lies in it (a hole point in it "
+                      "would make it a cavity)", t0, tp, regioned[c] - 1);
+      else
+        tr_report_add(rep, TR_REP_SHELL,
+                      "shell of triangle %u (inside the shell of triangle %u) is an inclusion, "
+                      "a region of its own: it faces outward as given (reverse it, or put a "
+                      "hole point in it, to make it a cavity)", t0, tp);
     }
   }
 done:
@@ -403,6 +416,7 @@ done:
   free(list);
   free(byd);
   free(holed);
+  free(regioned);
   free(dom_in);
   return st;
 }

@@ -73,11 +73,13 @@ struct tr_qpoint;
 void tr_input_tri_centroid(const struct tr_plc *plc, uint32_t t, struct tr_qpoint *q);
 
 /* Nesting of the closed shells (nesting.c). cavity[c] = 1 iff closed shell c is a cavity:
- * it lies directly inside a shell whose inside is in the domain, and either given[c] <= 0
- * (as read, the majority of its triangles faced into it: -1; a tie: 0, the rule before
- * inclusions existed) or a hole point of plc lies in it (and in none of the shells
- * nested in it). Any other shell nested in a domain is an inclusion: its inside is a
- * region of its own (plc->hole_cavity marks the hole points that made a cavity). A shell at top level or directly inside a cavity bounds a body.
+ * it lies directly inside a shell whose inside is in the domain, and either a hole point
+ * of plc lies in it (and in none of the shells nested in it), or given[c] <= 0 (as read,
+ * the majority of its triangles faced into it: -1; a tie: 0, the rule before inclusions
+ * existed) and no region point of plc lies in it so. Any other shell nested in a domain
+ * is an inclusion: its inside is a region of its own (plc->hole_cavity marks the hole
+ * points that made a cavity). A shell at top level or directly inside a cavity bounds a
+ * body.
  * Shell c's triangles are order[start[c] .. start[c+1]), consistently oriented; given[c]
  * is the sign of its enclosed volume as given. Each nested shell's kind is reported in
  * rep (tnum: triangle numbers for messages); *ncav / *nincl count them. Near-linear:

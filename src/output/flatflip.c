@@ -206,7 +206,7 @@ static tr_status run(ctx *c, uint64_t *nflips)
  * tet is split in four at its centroid, a double (an interior point: written exactly),
  * when the four new tets are positive exactly and in doubles; each split quarters the
  * volume, so the passes end. Refusing those flips instead left tets flat in doubles that
- * the rounding repair could not fix. */
+ * the rounding repair could not fix. The pass runs with any volume bound, flips or not. */
 static tr_status split_over(ctx *c, uint64_t *nsplits)
 {
   struct tr_mesh *m = c->m;
@@ -254,22 +254,29 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
                              double max_volume, uint64_t *nflips)
 {
   *nflips = 0;
-  if (!m->vq || !m->region)
-    return TR_OK; /* no Steiner point: the doubles are the exact points */
-  if (tr_round_count_nonpositive(m, NULL) == 0)
+  if (!m->region)
     return TR_OK;
-  ctx c = {.m = m, .plc = plc, .max_volume = max_volume, .nsub = sub->n};
-  c.sub = malloc(3 * sizeof *c.sub * (sub->n ? sub->n : 1));
+  int bounded = max_volume > 0;
+  for (uint32_t i = 0; i < plc->nregions; i++)
+    bounded |= plc->region_maxvol[i] > 0;
+  /* no Steiner point: the doubles are the exact points */
+  int flat = m->vq && tr_round_count_nonpositive(m, NULL) > 0;
+  if (!flat && !bounded)
+    return TR_OK;
+  ctx c = {.m = m, .plc = plc, .max_volume = max_volume, .nsub = flat ? sub->n : 0};
+  c.sub = malloc(3 * sizeof *c.sub * (c.nsub ? c.nsub : 1));
   if (!c.sub)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-faces", sub->n);
-  for (uint32_t i = 0; i < sub->n; i++) {
+  for (uint32_t i = 0; i < c.nsub; i++) {
     memcpy(c.sub + 3 * (size_t)i, sub->v + 3 * (size_t)i, 3 * sizeof *c.sub);
     tr_sort3(c.sub + 3 * (size_t)i);
   }
-  qsort(c.sub, sub->n, 3 * sizeof *c.sub, tr_cmp_face_key);
-  tr_status st = run(&c, nflips);
+  qsort(c.sub, c.nsub, 3 * sizeof *c.sub, tr_cmp_face_key);
+  tr_status st = flat ? run(&c, nflips) : TR_OK;
+  /* also the last net under every stage before: refinement's and sliver removal's own
+   * steps keep the bounds, and a tet still over one here is a defect they missed */
   uint64_t nsplits = 0;
-  if (st == TR_OK && *nflips)
+  if (st == TR_OK && bounded)
     st = split_over(&c, &nsplits);
   free(c.sub);
   tr_u32buf_free(&c.shell);

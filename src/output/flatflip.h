@@ -21,10 +21,11 @@
  * over the tets in slot order repeat until one takes no flip; each flip lowers the total
  * number of flat tets, so this ends, and the result depends only on the mesh.
  *
- * A flip makes fewer, larger tets (3-2, edge removal): after the passes, a tet over the
- * volume bound of refinement (-a, region points) is split in four at its centroid, an
- * interior double, when its new tets are positive exactly and in doubles (the passes
- * repeat; each split quarters the volume).
+ * A flip makes fewer, larger tets (3-2, edge removal): after the passes (and with any
+ * volume bound of refinement, -a or region points, flips or not: the last net under the
+ * stages before), a tet over its bound is split in four at its centroid, an interior
+ * double, when its new tets are positive exactly and in doubles (the passes repeat; each
+ * split quarters the volume).
  *
  * The exact points never change, so the mesh stays exactly conforming and the --exact
  * output is the same mesh as the double one. */

@@ -105,10 +105,11 @@ static int snap_real(const snap *z, uint32_t t)
 static int slot_changed(const struct tr_mesh *m, const snap *z, uint32_t u);
 
 /* *better = 1 when the tets the trial created beat the ones it deleted, the worst tet t
- * among them, and keep the ratio bound (as tr_sliver_keeps_bounds: a new tet over
- * max(ratio bound, the deleted tets' largest ratio) only with no angle under c->bound;
- * refinement kept the volume bounds). A tet deleted and made again (in another slot or
- * rotation: a cavity's rim) is neither. */
+ * among them, and keep the bounds (as tr_sliver_keeps_bounds: a new tet over max(ratio
+ * bound, the deleted tets' largest ratio) only with no angle under c->bound; none over
+ * its region's volume bound, which the trial's refinement leaves when it stops at its
+ * point budget: two boxes under region bounds once kept such a trial). A tet deleted and
+ * made again (in another slot or rotation: a cavity's rim) is neither. */
 static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, double top_ratio,
                           int *better)
 {
@@ -124,7 +125,7 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
       s = tr_vtmap_set(&old, 4, key, u);
     }
   double newmin = INFINITY, newratio = 0;
-  int again = 0, nnew = 0, nold = 0;
+  int again = 0, nnew = 0, nold = 0, over = 0;
   for (uint32_t u = 0; u < m->nt && s == TR_OK; u++) {
     if (!tr_tet_is_real(m, u) || !slot_changed(m, z, u))
       continue;
@@ -136,6 +137,9 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
       continue;
     }
     double r, q = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)u, TR_NONE, NULL, &r);
+    if (!tr_sliver_keeps_bounds(c, m->tv + 4 * (size_t)u, TR_NONE, NULL,
+                                m->region ? m->region[u] : 0, 0, INFINITY, 0))
+      over = 1; /* the volume part: the ratio part is decided below */
     nnew = q < newmin ? 1 : nnew + (q == newmin);
     newmin = fmin(newmin, q);
     if (!(q >= c->bound))
@@ -158,7 +162,7 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
   tr_vtmap_free(&old);
   /* a congruent copy of the worst tet elsewhere in the trial (3torus: symmetric caps)
    * keeps the minimum; fewer tets at it is progress all the same */
-  *better = s == TR_OK && gone && !again &&
+  *better = s == TR_OK && gone && !again && !over &&
             (newmin > oldmin || (newmin == oldmin && nnew < nold)) &&
             !(c->keep.ratio > 0 && newratio > fmax(c->keep.ratio, fmax(was, top_ratio)));
   return s;

@@ -908,6 +908,32 @@ static void volume_bound_kept(const char *path)
   tr_plc_destroy(p);
 }
 
+/* tests/data/boxes_regions_inner_facing_in.poly: a box [0,4]^3 around a box
+ * [1,2.5]^3 whose facets are given facing into it, as a TetGen .poly may (its facets carry
+ * no orientation), a region point in each: attribute 1 with maximum volume 0.05 outside,
+ * 2 with 0.001 inside. The region point makes the inner box a region of its own (it was a
+ * cavity, and the region point an error, "outside the domain"); under R = 1.414 with the
+ * input edges kept, every tet of each region is within its bound (a sliver polish trial
+ * whose refinement stopped at its point budget once kept a tet of region 1 at 0.063). */
+static void regions_inner_box(const char *path)
+{
+  tr_plc *p = tm_read(path);
+  tr_options opt = refinement(1.414, 0);
+  opt.keep_edges = 1;
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, "regions_inner_box", p, &opt, TR_CHK_TOPOLOGY);
+  if (m) {
+    uint32_t n1, n2, over1 = count_over(m, 0.05, 1, &n1), over2 = count_over(m, 0.001, 2, &n2);
+    EXPECT(r.st.inclusions == 1 && r.st.cavities == 0, "inner box: %llu inclusions, %llu cavities",
+           (unsigned long long)r.st.inclusions, (unsigned long long)r.st.cavities);
+    EXPECT(n1 > 0 && n2 >= 3375, "tets: %u in region 1, %u in region 2", n1, n2);
+    EXPECT(over1 == 0 && over2 == 0, "over the bound: %u of %u in region 1, %u of %u in 2",
+           over1, n1, over2, n2);
+  }
+  tm_free(&r);
+  tr_plc_destroy(p);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -928,6 +954,7 @@ int main(int argc, char **argv)
       {"volume_blocked", NULL, volume_blocked},
       {"ball_in_pieces", NULL, ball_in_pieces},
       {"volume_bound_kept", NULL, volume_bound_kept},
+      {"regions_inner_box", NULL, regions_inner_box},
       {"determinism", determinism, NULL},
       {"pinned", pinned_flat_tet_is_opened, NULL},
   };
