@@ -301,7 +301,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   double t5 = tr_pipeline_now();
   PROGRESS(TR_STAGE_ROUND, 0);
   /* Before compaction: the flips need the sub-faces, which are in m's numbering. */
-  uint32_t nv_flips = m->nv;
+  uint32_t nv_flips = m ? m->nv : 0; /* m is NULL once a stage before failed */
   if (st == TR_OK)
     st = tr_round_flip_flat(m, &sub, p, opt.max_volume, &stats->rounding_flips);
   if (st == TR_OK && m->nv > nv_flips) /* centroids of tets the flips made over -a */
