@@ -8,8 +8,8 @@
  * by the majority of its triangles as read; a tie keeps the former rule, cavity);
  * otherwise an inclusion. A region point asks for its cell to be meshed: TetGen's .poly
  * facets carry no orientation, so an inner box given either way with a region point in
- * it is a region (it was a cavity, and the region point an error, "outside the domain"). A shell at top
- * level or directly inside a cavity bounds a body of its own (outward).
+ * it is a region (it was a cavity, and the region point an error, "outside the domain").
+ * A shell at top level or directly inside a cavity bounds a body of its own (outward).
  *
  * A shell lies inside another iff a point of it off the other does (shells may share
  * vertices but do not cross: validation checks that after orientation). Point in

@@ -6,6 +6,7 @@
 #include "output/flatflip.h"
 #include "output/round.h"
 #include "refine/refine_impl.h" /* rf_volume_above: the bound decided as refinement does */
+#include "refine/refine_stage.h"
 
 typedef struct {
   struct tr_mesh *m;
@@ -52,15 +53,10 @@ static int on_segment(const ctx *c, uint32_t a, uint32_t b)
   return 0;
 }
 
-/* Tet v of region r keeps the volume bound: the smaller of max_volume and r's region
- * points'. */
+/* Tet v of region r keeps its volume bound. */
 static int within_bound(const ctx *c, const uint32_t *v, uint32_t r)
 {
-  double b = c->max_volume;
-  for (uint32_t i = 0; i < c->plc->nregions; i++)
-    if (c->plc->region_maxvol[i] > 0 && (uint32_t)c->plc->region_attr[i] == r &&
-        (!(b > 0) || c->plc->region_maxvol[i] < b))
-      b = c->plc->region_maxvol[i];
+  double b = tr_refine_region_volume_bound(c->plc, c->max_volume, r);
   if (!(b > 0))
     return 1;
   tr_point p[4];
@@ -207,7 +203,7 @@ static tr_status run(ctx *c, uint64_t *nflips)
  * when the four new tets are positive exactly and in doubles; each split quarters the
  * volume, so the passes end. Refusing those flips instead left tets flat in doubles that
  * the rounding repair could not fix. The pass runs with any volume bound, flips or not. */
-static tr_status split_over(ctx *c, uint64_t *nsplits)
+static tr_status split_over(ctx *c)
 {
   struct tr_mesh *m = c->m;
   for (int changed = 1; changed;) {
@@ -243,7 +239,6 @@ static tr_status split_over(ctx *c, uint64_t *nsplits)
       TR_CHECK(tr_mesh_replace(m, &t, 1, newv, 4, ids));
       for (int i = 0; i < 4; i++)
         m->region[ids[i]] = region;
-      (*nsplits)++;
       changed = 1;
     }
   }
@@ -275,9 +270,8 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
   tr_status st = flat ? run(&c, nflips) : TR_OK;
   /* also the last net under every stage before: refinement's and sliver removal's own
    * steps keep the bounds, and a tet still over one here is a defect they missed */
-  uint64_t nsplits = 0;
   if (st == TR_OK && bounded)
-    st = split_over(&c, &nsplits);
+    st = split_over(&c);
   free(c.sub);
   tr_u32buf_free(&c.shell);
   return st;

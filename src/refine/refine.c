@@ -32,27 +32,33 @@ uint64_t tr_refine_default_budget(uint32_t npoints, double domain_volume, double
   return b > ceiling ? (uint64_t)ceiling : (uint64_t)b;
 }
 
+double tr_refine_tet_bound(const tr_refine_params *par, const struct tr_mesh *m, uint32_t t)
+{
+  double bound = par->max_volume;
+  if (par->nregion_bounds && m->region) {
+    /* the region's own bound, by binary search of the sorted ids */
+    uint32_t r = m->region[t], lo = 0, hi = par->nregion_bounds;
+    while (lo < hi) {
+      uint32_t mid = lo + (hi - lo) / 2;
+      if (par->region_id[mid] < r)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    if (lo < par->nregion_bounds && par->region_id[lo] == r &&
+        (!(bound > 0) || par->region_max_volume[lo] < bound))
+      bound = par->region_max_volume[lo];
+  }
+  return bound;
+}
+
 /* Radius-edge ratio in doubles (a measure: it only decides which tets get a point); the
  * volume bound exactly, so that "every tet's volume is at most V" holds as stated. */
 static int too_big(const rf_ctx *c, uint32_t t)
 {
   const struct tr_mesh *m = c->m;
   const uint32_t *v = m->tv + 4 * (size_t)t;
-  double bound = c->par.max_volume;
-  if (c->par.nregion_bounds && m->region) {
-    /* the region's own bound, by binary search of the sorted ids */
-    uint32_t r = m->region[t], lo = 0, hi = c->par.nregion_bounds;
-    while (lo < hi) {
-      uint32_t mid = lo + (hi - lo) / 2;
-      if (c->par.region_id[mid] < r)
-        lo = mid + 1;
-      else
-        hi = mid;
-    }
-    if (lo < c->par.nregion_bounds && c->par.region_id[lo] == r &&
-        (!(bound > 0) || c->par.region_max_volume[lo] < bound))
-      bound = c->par.region_max_volume[lo];
-  }
+  double bound = tr_refine_tet_bound(&c->par, m, t);
   if (!(bound > 0))
     return 0;
   tr_point p[4];

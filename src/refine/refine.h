@@ -29,9 +29,9 @@
  * radius (its distance to its nearest vertex when refinement added it; with spacing_radii,
  * that radius shrunk by the points put next to the vertex since, and the radius-edge
  * refinement ends at a point cap, after which only tets over a volume bound are refined,
- * with the insertion radii) is not inserted, unless its tet is over the volume bound; and a point budget
- * stops a runaway with TR_ERR_NOMEM ("a size limit was exceeded") and a message. Outer
- * and ghost tets are discarded first. */
+ * with the insertion radii) is not inserted, unless its tet is over the volume bound; and
+ * a point budget stops a runaway with TR_ERR_NOMEM ("a size limit was exceeded") and a
+ * message. Outer and ghost tets are discarded first. */
 #ifndef TR_REFINE_H
 #define TR_REFINE_H
 
@@ -56,9 +56,9 @@ typedef struct tr_refine_params {
   int flat_splits;     /* 1: a sub-segment opposite an angle over 120 degrees of a sub-face
                           is split at that vertex's foot, once (flat.c); 0: off */
   int spacing_radii;   /* the circumcentre rule takes a vertex's current spacing (refine.c,
-                          after_insert) instead of its insertion radius; the stage ends
-                          (no error, bad tets left) at 20 points per input point + 10,000
-                          or half the budget */
+                          after_insert) instead of its insertion radius; the radius-edge
+                          refinement ends (no error, bad tets left) at 20 points per input
+                          point + 10,000 or half the budget, the volume bounds' goes on */
   int verbose;
 } tr_refine_params;
 
@@ -73,6 +73,10 @@ typedef struct tr_refine_stats {
   int spacing_stopped;      /* spacing_radii: the radius-edge refinement ended at its point
                                cap (refine.c); tets over a volume bound were still refined */
 } tr_refine_stats;
+
+/* Tet t's volume bound under par: the smaller of par->max_volume and its region's
+ * (m->region[t] among par->region_id); 0: none. */
+double tr_refine_tet_bound(const tr_refine_params *par, const struct tr_mesh *m, uint32_t t);
 
 /* The default budget: 100 points per input point plus 100,000, plus, with a volume bound,
  * 20 per multiple of V in the domain's volume (a mesh of tets of volume about V/6 needs

@@ -82,24 +82,14 @@ tr_status tr_refine_region_bounds(const struct tr_plc *plc, uint32_t **ids, doub
   return TR_OK;
 }
 
-/* Tet t's volume bound: the global one or its region's, the smaller; 0: none (the same
- * choice as refine.c's too_big). */
-static double tet_bound(const struct tr_mesh *m, uint32_t t, double global, const uint32_t *id,
-                        const double *bound, uint32_t n)
+double tr_refine_region_volume_bound(const struct tr_plc *plc, double max_volume,
+                                    uint32_t region)
 {
-  double b = global;
-  if (n && m->region) {
-    uint32_t r = m->region[t], lo = 0, hi = n;
-    while (lo < hi) {
-      uint32_t mid = lo + (hi - lo) / 2;
-      if (id[mid] < r)
-        lo = mid + 1;
-      else
-        hi = mid;
-    }
-    if (lo < n && id[lo] == r && (!(b > 0) || bound[lo] < b))
-      b = bound[lo];
-  }
+  double b = max_volume;
+  for (uint32_t i = 0; plc && i < plc->nregions; i++)
+    if (plc->region_maxvol[i] > 0 && (uint32_t)plc->region_attr[i] == region &&
+        (!(b > 0) || plc->region_maxvol[i] < b))
+      b = plc->region_maxvol[i];
   return b;
 }
 
@@ -111,11 +101,23 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   if (keep_hull)
     return tr_error(TR_ERR_UNSUPPORTED, "quality refinement of an open surface meshed within "
                     "its convex hull is not supported yet");
+  tr_refine_params par;
+  memset(&par, 0, sizeof par);
+  par.ratio = opt->quality_ratio;
+  par.subface_ratio = opt->quality_subface_ratio;
+  par.max_volume = opt->max_volume;
+  par.verbose = opt->verbose;
+  par.keep_edges = opt->keep_edges;
+  par.flat_splits = opt->quality_subface_ratio > 0; /* flat.c: part of the option */
+  par.spacing_radii = opt->refine_spacing_radii;
   /* the smallest of all bounds sizes the default budget */
   double least = opt->max_volume;
   uint32_t *id, n;
   double *bound;
   TR_CHECK(tr_refine_region_bounds(plc, &id, &bound, &n, &least));
+  par.region_id = id;
+  par.region_max_volume = bound;
+  par.nregion_bounds = n;
   /* each tet holds at most its bound: the bounds alone ask for at least `need` tets */
   double vol = 0, need = 0;
   for (uint32_t t = 0; t < m->nt; t++)
@@ -125,7 +127,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
       tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
                    m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &r, &w, d, NULL);
       vol += w;
-      double b = tet_bound(m, t, opt->max_volume, id, bound, n);
+      double b = tr_refine_tet_bound(&par, m, t);
       if (b > 0)
         need += w / b;
     }
@@ -146,18 +148,6 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
                     "(--refine-budget); relax the bound or raise the budget", what, need, vol,
                     need / 6, (unsigned long long)budget);
   }
-  tr_refine_params par;
-  memset(&par, 0, sizeof par);
-  par.ratio = opt->quality_ratio;
-  par.subface_ratio = opt->quality_subface_ratio;
-  par.max_volume = opt->max_volume;
-  par.verbose = opt->verbose;
-  par.keep_edges = opt->keep_edges;
-  par.flat_splits = opt->quality_subface_ratio > 0; /* flat.c: part of the option */
-  par.spacing_radii = opt->refine_spacing_radii;
-  par.region_id = id;
-  par.region_max_volume = bound;
-  par.nregion_bounds = n;
   par.budget = budget;
   tr_refine_stats rs;
   tr_status s = tr_refine(m, plc, sub, &par, &rs);

@@ -35,24 +35,13 @@ double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, u
   return tr_sliver_min_dihedral_at(m, t, TR_NONE, NULL, NULL);
 }
 
-/* The volume bound of region r: the smaller of max_volume and its region points'. */
-static double volume_bound(const tr_sliver_bounds *k, uint32_t r)
-{
-  double b = k->max_volume;
-  for (uint32_t i = 0; k->plc && i < k->plc->nregions; i++)
-    if (k->plc->region_maxvol[i] > 0 && (uint32_t)k->plc->region_attr[i] == r &&
-        (!(b > 0) || k->plc->region_maxvol[i] < b))
-      b = k->plc->region_maxvol[i];
-  return b;
-}
-
 int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
                            const double x[3], uint32_t region, double ratio, double dih,
                            double ratio_was)
 {
   if (c->keep.ratio > 0 && ratio > fmax(c->keep.ratio, ratio_was) && !(dih >= c->bound))
     return 0;
-  double V = volume_bound(&c->keep, region);
+  double V = tr_refine_region_volume_bound(c->keep.plc, c->keep.max_volume, region);
   if (!(V > 0))
     return 1;
   tr_point q[4];
