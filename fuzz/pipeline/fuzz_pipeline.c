@@ -31,11 +31,12 @@
  * Built with TR_FUZZ_QUALITY (the target fuzz_pipeline_quality, issue 17), the first byte
  * switches quality refinement on (the rest of the bytes are read as above): the radius-
  * edge bound R in {1.414, 1.6, 2, 3} and sliver removal -O 0..3 (bits 0-3), with bit 4 a
- * volume bound of 1/40 of the bounding box; the same validators run on the refined
- * mesh, and with the volume bound every tet's exact volume must be at most it. The point
- * budget is 500 (a box 2^-20 thin and 96 long needs ~10^15 points for R = 1.414, and the
- * default budget of ~10^5 would take minutes under the sanitizers): stopping at it with
- * its message is an expected outcome, any other error is a finding.
+ * volume bound of 1/40 of the bounding box, bit 5 --spacing-radii, bit 6 --subface-quality
+ * 1.414 (with its flat splits) and bit 7 --keep-edges; the same validators run on the
+ * refined mesh, and with the volume bound every tet's exact volume must be at most it.
+ * The point budget is 500 (a box 2^-20 thin and 96 long needs ~10^15 points for
+ * R = 1.414, and the default budget would take minutes under the sanitizers): stopping at
+ * it with its message is an expected outcome, any other error is a finding.
  *
  * TR_FUZZ_DUMP=path writes the generated PLC (.off, .mesh, ...) before meshing, to turn
  * a finding into a regression file; TR_FUZZ_VERBOSE=1 prints one line per input. */
@@ -200,6 +201,9 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
       vmax = 0;
     opt.max_volume = vmax;
   }
+  opt.refine_spacing_radii = (int)(quality_sel >> 5 & 1);
+  opt.quality_subface_ratio = quality_sel >> 6 & 1 ? 1.414 : 0;
+  opt.keep_edges = (int)(quality_sel >> 7 & 1);
   opt.refine_budget = 500;
 #endif
   tr_mesh *m = NULL;

@@ -85,6 +85,27 @@ static tr_status check_links(const struct tr_mesh *m)
   return TR_OK;
 }
 
+/* GMP's mpq functions assume canonical operands: mpq_equal compares limbs, so 16/32 and
+ * 1/2 differ for it. A Steiner point built from a hand-set fraction must canonicalize it. */
+static tr_status check_canonical(const struct tr_mesh *m)
+{
+  tr_status st = TR_OK;
+  mpz_t g;
+  mpz_init(g);
+  for (uint32_t v = 0; m->vq && v < m->nv && st == TR_OK; v++)
+    for (int k = 0; m->vq[v] && k < 3 && st == TR_OK; k++) {
+      mpq_srcptr c = m->vq[v]->c[k];
+      mpz_gcd(g, mpq_numref(c), mpq_denref(c));
+      if (mpz_cmp_ui(g, 1) != 0 || mpz_sgn(mpq_denref(c)) <= 0)
+        st = tr_error(TR_ERR_INVALID_MESH,
+                      "Steiner point %u: coordinate %d (%.17g) is not a canonical rational "
+                      "(a common factor or a denominator <= 0)",
+                      v, k, mpq_get_d(c));
+    }
+  mpz_clear(g);
+  return st;
+}
+
 static tr_status check_orient(const struct tr_mesh *m)
 {
   for (uint32_t t = 0; t < m->nt; t++) {
@@ -365,8 +386,10 @@ tr_status tr_check_mesh(const struct tr_mesh *m, unsigned what, mpq_srcptr volum
 {
   if (what & (TR_CHK_LINKS | TR_CHK_V2T | TR_CHK_EULER | TR_CHK_DELAUNAY))
     TR_CHECK(check_links(m));
-  if (what & TR_CHK_ORIENT)
+  if (what & TR_CHK_ORIENT) {
+    TR_CHECK(check_canonical(m));
     TR_CHECK(check_orient(m));
+  }
   if (what & (TR_CHK_V2T | TR_CHK_EULER))
     TR_CHECK(check_incidence(m, what));
   if (what & TR_CHK_DELAUNAY)

@@ -17,7 +17,8 @@ enum {
   /* tn symmetric, shared faces have the same 3 vertices in opposite orientation, codes
    * in range, no link to a free slot or to itself */
   TR_CHK_LINKS = 1u << 0,
-  /* every real tet strictly positive (exact); ghosts have TR_GHOST only in slot 3 */
+  /* every Steiner coordinate a canonical rational, every real tet strictly positive
+   * (exact); ghosts have TR_GHOST only in slot 3 */
   TR_CHK_ORIENT = 1u << 1,
   /* v2t[v] is a live tet containing v for every used vertex; with a dup_map, every kept
    * input point is used and every dropped one is unused; each face in at most two tets */
