@@ -78,7 +78,7 @@ int rf_flat_split_param(const rf_ctx *c, uint32_t g, const mpq_t lo, const mpq_t
   mpq_init(w);
   mpq_sub(w, hi, lo);
   mpq_set_ui(t, (unsigned long)s, 64);
-  mpq_canonicalize(t); /* 32/64: mpq_equal and the hash of exact points compare limbs */
+  mpq_canonicalize(t); /* 32/64: mpq_equal, which compares limbs, takes it for another value */
   mpq_mul(t, t, w);
   mpq_add(t, t, lo);
   mpq_clear(w);
