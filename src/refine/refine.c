@@ -379,6 +379,17 @@ static int forced_by_angle(const rf_ctx *c, uint32_t t)
   return rf_small_angle_edge(c, v[tr_edge_vtx[best][0]], v[tr_edge_vtx[best][1]]);
 }
 
+/* A close circumcentre (refine_tet) has sub-segment g split when g is at least twice as
+ * long as the tet's shortest edge (emin: its square) and at least half its input edge:
+ * a first split of a long input edge, not a cascade down a short one. */
+static int close_split(const rf_ctx *c, uint32_t g, double emin)
+{
+  const double *x = c->m->xyz;
+  double l2 = dist2(x + 3 * (size_t)c->ssv[2 * (size_t)g], x + 3 * (size_t)c->ssv[2 * (size_t)g + 1]);
+  double L2 = dist2(x + 3 * (size_t)c->ssab[2 * (size_t)g], x + 3 * (size_t)c->ssab[2 * (size_t)g + 1]);
+  return l2 >= 4 * emin && 4 * l2 >= L2;
+}
+
 static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
 {
   struct tr_mesh *m = c->m;
@@ -422,19 +433,33 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
   TR_CHECK(rf_cavity(c, found, &p, m->nv, 0, &ok));
   if (!ok)
     return leave_tet(c, t, at_centroid);
-  if (!big && too_close(c, cc)) {
-    rf_cavity_release(c);
-    c->st->skipped_close++;
-    return TR_OK;
-  }
   /* constraints the circumcentre encroaches are split instead; if one of them cannot be
    * split (protected near a small input angle, or refused), the tet is left as it is: a
    * point inserted that close to a constraint would only make worse tets there. The
    * centroid of a tet over the volume bound is the exception (must): the bound is the
    * user's hard limit, so a piece that cannot be split does not stop it, nor does the
-   * cone check below (found by fuzz_pipeline_quality: tests/data/volume_blocked.off) */
+   * cone check below (found by fuzz_pipeline_quality: tests/data/volume_blocked.off).
+   *
+   * A circumcentre too close to a new vertex is not inserted, but the long sub-segments
+   * it encroaches are still split (close splits, close_split): a point on a long input
+   * edge keeps half its first piece as insertion radius after points came near it on
+   * neighbouring edges, and refusing every circumcentre within that radius left the tets
+   * standing on the long thin sub-faces between them (oblong.off: 236 tets under 10
+   * degrees, 19 with close splits; pipe.off 7 -> 0; the long box of test_merge: worst
+   * ratio 2.598 -> 1.436). The length bounds keep such splits from cascading: with every
+   * encroached piece split, femur.off ran past 300 s and merged_facet_notch.off to the
+   * budget; with any piece twice the shortest edge, CPU on the CGAL bench went from 68 to
+   * 99 s. Encroached sub-faces are not split for a close circumcentre (couplingdown.off,
+   * pieces twice the shortest edge: 83.6k tets in 5.2 s with them, 70.8k in 3.9 s
+   * without, 392 against 433 tets under 10 degrees). After spacing_cap points the close
+   * splits stop (run), a guard. */
   int must = at_centroid && big;
-  int pushed = 0, blocked = 0;
+  int pushed = 0, blocked = 0, close = !big && too_close(c, cc);
+  if (close && !c->close_splits) {
+    rf_cavity_release(c);
+    c->st->skipped_close++;
+    return TR_OK;
+  }
   tr_status st = TR_OK;
   for (size_t i = 0; st == TR_OK && i < c->cav.n && !blocked; i++) {
     const uint32_t *w = m->tv + 4 * (size_t)c->cav.a[i];
@@ -444,7 +469,7 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
         continue;
       const uint32_t *S = c->sfv + 3 * (size_t)f;
       tr_point a = tr_mesh_point(m, S[0]), b = tr_mesh_point(m, S[1]), d = tr_mesh_point(m, S[2]);
-      if (!rf_in_equatorial(&a, &b, &d, &p))
+      if (close || !rf_in_equatorial(&a, &b, &d, &p))
         continue;
       if (c->sfnosplit[f])
         blocked = !must;
@@ -458,7 +483,7 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
       if (g == TR_NONE)
         continue;
       tr_point a = tr_mesh_point(m, c->ssv[2 * (size_t)g]), b = tr_mesh_point(m, c->ssv[2 * (size_t)g + 1]);
-      if (!rf_in_diametral(&a, &b, &p))
+      if (!rf_in_diametral(&a, &b, &p) || (close && !close_split(c, g, emin)))
         continue;
       if (c->ssnosplit[g])
         blocked = !must;
@@ -467,6 +492,12 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
         pushed = 1;
       }
     }
+  }
+  if (close && (blocked || !pushed)) {
+    rf_cavity_release(c);
+    TR_CHECK(st);
+    c->st->skipped_close++;
+    return TR_OK;
   }
   if (st != TR_OK || blocked || pushed) {
     rf_cavity_release(c);
@@ -605,6 +636,8 @@ static tr_status run(rf_ctx *c)
         return TR_OK;
       c->volume_only = 1;
     }
+    if (c->close_splits && c->st->points >= spacing_cap(c))
+      c->close_splits = 0; /* refine_tet */
     if (c->st->points >= c->par.budget && (left(&c->qseg, c->hseg, 1) || left(&c->qface, c->hface, 1) ||
                                             left(&c->qtet, c->htet, 5)))
       return tr_error(TR_ERR_NOMEM,
@@ -766,6 +799,7 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
    * (subshape.c) */
   c.shape_on = par->subface_ratio > 0;
   c.spacing_on = par->spacing_radii;
+  c.close_splits = 1;
   c.shape_bound = par->subface_ratio;
   if (s == TR_OK)
     s = seed_all(&c);

@@ -51,6 +51,9 @@ typedef struct rf_ctx {
    * spacing_on (0: none) */
   double *vspace;
   int spacing_on;
+  /* a circumcentre too close to a new vertex still has the long sub-segments it
+   * encroaches split (refine.c, refine_tet); 0 after spacing_cap points */
+  int close_splits;
   /* 1 once the --spacing-radii cap ended ratio refinement: the tets over a volume bound
    * are still refined (refine.c, run), since that bound is the user's hard limit */
   int volume_only;
