@@ -188,7 +188,8 @@ static tr_status check_incidence(const struct tr_mesh *m, unsigned what)
       if (kept != (e > b)) {
         s = tr_error(TR_ERR_INVALID_MESH,
                      kept ? "vertex %u: an input point that is in no tet"
-                          : "vertex %u: a dropped duplicate that is used by a tet",
+                     : m->dup_map[v] == TR_NONE ? "vertex %u: a removed point that is used by a tet"
+                                                : "vertex %u: a dropped duplicate that is used by a tet",
                      v);
         break;
       }

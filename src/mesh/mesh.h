@@ -94,7 +94,8 @@ struct tr_mesh {
   /* Delaunay bookkeeping: duplicate input points */
   uint32_t ndup;      /* number of input points dropped as duplicates */
   uint32_t *dup_map;  /* NULL, or nv entries: dup_map[i] = kept vertex equal to point i
-                         (dup_map[i] == i for kept points) */
+                         (dup_map[i] == i for kept points; TR_NONE for an interior point
+                         a sliver cavity swallowed, src/sliver/insert.c: in no tet) */
   struct tr_mesh_attrs *attrs; /* NULL, or output attributes (see above) */
 };
 typedef struct tr_mesh tr_mesh_store;

@@ -121,12 +121,44 @@ static int boundary(const struct tr_mesh *m, const idset *in, uint32_t t, int k)
   return nb == TR_NONE || !set_has(in, nb);
 }
 
+/* Takes out of the cavity every tet at a vertex it swallowed (one on no coned face: the
+ * mesh is not Delaunay, so the conflict tets of a point above a flat cap, whose sphere is
+ * huge, may surround a vertex); the vertex is then on the boundary again, and the shrink
+ * that follows restores visibility. Returns 0 when t itself has such a vertex. onb:
+ * scratch for the vertices of the coned faces. */
+static int carve(const struct tr_mesh *m, uint32_t t, uint32_t *cav, uint32_t *n, idset *in,
+                 idset *onb)
+{
+  set_clear(onb);
+  for (uint32_t i = 0; i < *n; i++)
+    for (int k = 0; k < 4; k++)
+      if (boundary(m, in, cav[i], k))
+        for (int j = 0; j < 3; j++)
+          set_add(onb, m->tv[4 * (size_t)cav[i] + (size_t)tr_face_vtx[k][j]]);
+  for (uint32_t i = 0; i < *n;) {
+    const uint32_t *tv = m->tv + 4 * (size_t)cav[i];
+    int swallows = 0;
+    for (int k = 0; k < 4; k++)
+      swallows |= !set_has(onb, tv[k]);
+    if (!swallows) {
+      i++;
+      continue;
+    }
+    if (cav[i] == t)
+      return 0;
+    set_del(in, cav[i]);
+    cav[i] = cav[--*n];
+  }
+  return 1;
+}
+
 /* The cavity of x from sliver t: t, grown through faces that are not sub-faces to real tets
  * whose circumsphere strictly holds x and to those behind a face x does not strictly see,
- * then shrunk (a tet with a coned face x does not strictly see leaves) until stable.
- * *n = 0 when t itself would have to leave or the cavity grows too big. */
+ * carved off the vertices it swallowed when onb is given (carve), then shrunk (a tet with
+ * a coned face x does not strictly see leaves) until stable. *n = 0 when t itself would
+ * have to leave or the cavity grows too big. */
 static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int screen,
-                   uint32_t *cav, uint32_t *n, idset *in)
+                   uint32_t *cav, uint32_t *n, idset *in, idset *onb)
 {
   const struct tr_mesh *m = c->m;
   *n = 0;
@@ -169,6 +201,10 @@ static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int sc
       cav[(*n)++] = nb;
       set_add(in, nb);
     }
+  }
+  if (onb && !carve(m, t, cav, n, in, onb)) {
+    *n = 0;
+    return;
   }
   /* then the faces it still does not see take their tet out */
   for (int changed = 1; changed && *n;) {
@@ -229,21 +265,24 @@ struct trial {
   uint32_t cav[SL_MAX_CAVITY], n, nf;
   uint32_t newv[4 * 4 * SL_MAX_CAVITY];
   double newmin;
+  int carve; /* the cavity is carved (see carve) */
+  int swallow; /* the cavity may swallow movable vertices (see insert_at) */
   idset in, cone; /* the tets of cav; the vertices of newv */
 };
 typedef struct trial trial;
 
 /* Every vertex of the cavity's tets on a coned face: the cavity swallows no vertex (the
  * mesh is not Delaunay, and growth past the conflict tets may surround one). */
-static int keeps_vertices(const struct tr_mesh *m, trial *z)
+static int keeps_vertices(const tr_sliver_ctx *c, trial *z)
 {
+  const struct tr_mesh *m = c->m;
   set_clear(&z->cone);
   for (uint32_t i = 0; i < 4 * z->nf; i++)
     set_add(&z->cone, z->newv[i]);
   for (uint32_t i = 0; i < z->n; i++)
     for (int k = 0; k < 4; k++) {
       uint32_t v = m->tv[4 * (size_t)z->cav[i] + (size_t)k];
-      if (!set_has(&z->cone, v))
+      if (!set_has(&z->cone, v) && !(z->swallow && c->movable[v]))
         return 0;
     }
   return 1;
@@ -278,7 +317,7 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
   const struct tr_mesh *m = c->m;
   memcpy(z->x, x, sizeof z->x);
   tr_point px = tr_pt_d(x);
-  cavity(c, t, &px, screen, z->cav, &z->n, &z->in);
+  cavity(c, t, &px, screen, z->cav, &z->n, &z->in, z->carve ? &z->cone : NULL);
   if (!z->n)
     return 0;
   uint32_t pid = m->nv; /* tr_mesh_add_vertex appends */
@@ -306,7 +345,7 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
     if (!(z->newmin > oldmin) || !(z->newmin > floor))
       return 0;
   }
-  if (!manifold(z->newv, apex, z->nf) || !keeps_vertices(m, z) || !keeps_subfaces(c, z))
+  if (!manifold(z->newv, apex, z->nf) || !keeps_vertices(c, z) || !keeps_subfaces(c, z))
     return 0;
   /* the ratios only where the bound looks at them (the circumsphere costs) */
   for (uint32_t i = 0; i < z->nf; i++) {
@@ -393,7 +432,8 @@ static int off_plane(const double *q[4], const double g[3], double out[][3])
 /* Tries the circumcentre of sliver t and points between it and the centroid (when the
  * circumcentre lies beyond a constraint or its cone is worse); the best one that beats
  * its cavity goes in (*done = 1). */
-static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, int *done)
+static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, int last, trial *best, trial *z,
+                           int *done)
 {
   struct tr_mesh *m = c->m;
   *done = 0;
@@ -443,18 +483,57 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, trial *best, trial *z, 
    * pinion; only when none opens it: rotor_small's minimum fell from 1.46 to 0.02) */
   int have = -1;
   double top = -1;
-  for (int f = 0; f < nc; f++)
+  for (int f = 0; f < nc && !last; f++)
     if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
       top = z->newmin, have = f;
   if ((have < 0 || top < SL_OFF_PLANE_ABOVE) && pinned(c, tv)) {
     int first = nc;
     nc += off_plane(q, g, cand + nc);
-    for (int f = first; f < nc; f++)
+    for (int f = first; f < nc && !last; f++)
       if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
         top = z->newmin, have = f;
   }
-  if (have < 0 || !try_point(c, t, cand[have], 0, -INFINITY, best))
+  /* the last resort (tr_sliver_insert_last): the same candidates with carved cavities,
+   * then with cavities that may swallow interior points on no constraint, which leave the
+   * mesh (for every tet, carving changed which candidate won elsewhere: pinion's smallest
+   * angle fell from 1.02 to 0.000) */
+  int carved = 0, swallow = 0;
+  if (last) {
+    z->carve = carved = 1;
+    for (int f = 0; f < nc; f++)
+      if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
+        top = z->newmin, have = f;
+    z->carve = 0;
+    if (have < 0) {
+      carved = 0;
+      z->swallow = swallow = 1;
+      for (int f = 0; f < nc; f++)
+        if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
+          top = z->newmin, have = f;
+      z->swallow = 0;
+    }
+  }
+  best->carve = carved;
+  best->swallow = swallow;
+  int ok = have >= 0 && try_point(c, t, cand[have], 0, -INFINITY, best);
+  best->carve = best->swallow = 0;
+  if (!ok)
     return TR_OK;
+  if (swallow) { /* the vertices swallowed leave the mesh: nothing moves them again, and
+                    the validator expects them in no tet (dup_map) */
+    set_clear(&best->cone);
+    for (uint32_t i = 0; i < 4 * best->nf; i++)
+      set_add(&best->cone, best->newv[i]);
+    for (uint32_t i = 0; i < best->n; i++)
+      for (int k = 0; k < 4; k++) {
+        uint32_t x = m->tv[4 * (size_t)best->cav[i] + (size_t)k];
+        if (!set_has(&best->cone, x)) {
+          c->movable[x] = 0;
+          if (m->dup_map)
+            m->dup_map[x] = TR_NONE;
+        }
+      }
+  }
   uint32_t v, ids[4 * SL_MAX_CAVITY];
   uint32_t region = m->region ? m->region[t] : 0;
   TR_CHECK(tr_mesh_add_vertex(m, best->x, &v));
@@ -481,8 +560,17 @@ tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int 
     }
   if (tr_vtmap_get(&c->failed, 4, key) != TR_VTMAP_NONE)
     return TR_OK;
-  TR_CHECK(insert_at(c, t, &z[0], &z[1], done));
+  TR_CHECK(insert_at(c, t, 0, &z[0], &z[1], done));
   return *done ? TR_OK : tr_vtmap_set(&c->failed, 4, key, 0);
+}
+
+tr_status tr_sliver_insert_last(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done)
+{
+  trial *z = scratch;
+  *done = 0;
+  if (!pinned(c, c->m->tv + 4 * (size_t)t))
+    return TR_OK;
+  return insert_at(c, t, 1, &z[0], &z[1], done);
 }
 
 void *tr_sliver_insert_scratch(void)
@@ -491,6 +579,7 @@ void *tr_sliver_insert_scratch(void)
   for (int i = 0; z && i < 2; i++) {
     set_init(&z[i].in);
     set_init(&z[i].cone);
+    z[i].carve = z[i].swallow = 0;
   }
   return z;
 }

@@ -181,6 +181,11 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
  * t failed before (c->failed; a failure is remembered). scratch: tr_sliver_insert_scratch()
  * (free() it; NULL: out of memory). */
 tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done);
+/* The polish's last resort for a pinned tet (three or four vertices on constraints) that
+ * nothing else opened: the same candidates, with cavities carved off the vertices they
+ * swallow, else with cavities that may swallow interior points on no constraint (they
+ * leave the mesh). Not remembered in c->failed. */
+tr_status tr_sliver_insert_last(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done);
 void *tr_sliver_insert_scratch(void);
 /* The final polish (polish.c): the globally worst tets, whatever their angle, get flips,
  * moves and points (as par->level allows) that raise their local minimum; at level 3 with

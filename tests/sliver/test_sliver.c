@@ -643,6 +643,99 @@ static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
   tr_mesh_destroy(m);
 }
 
+/* The live tet with exactly the vertices v, TR_NONE if none. */
+static uint32_t find_tet(const tr_mesh *m, const uint32_t v[4])
+{
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    int n = 0;
+    for (int i = 0; i < 4; i++)
+      n += tr_ncode(m, t, v[i]) >= 0;
+    if (n == 4)
+      return t;
+  }
+  return TR_NONE;
+}
+
+static int last_ordinary, last_resort; /* what the two calls of cap_under_a_point did */
+
+/* The pass of pinned_cap_under_a_free_point: the cap, tried as the insertion passes do,
+ * then as the polish's last resort. */
+static tr_status cap_under_a_point(tr_sliver_ctx *c, tr_sliver_stats *st)
+{
+  static const uint32_t cap[4] = {0, 1, 2, 3};
+  void *z = tr_sliver_insert_scratch();
+  if (!z)
+    return tr_error(TR_ERR_NOMEM, "scratch");
+  uint32_t t = find_tet(c->m, cap);
+  tr_status s = tr_sliver_insert_tet(c, t, z, &last_ordinary);
+  if (s == TR_OK && !last_ordinary)
+    s = tr_sliver_insert_last(c, t, z, &last_resort);
+  st->points += (uint64_t)(last_ordinary + last_resort);
+  free(z);
+  return s;
+}
+
+/* The cap of a_pinned_cap_is_opened_by_a_point_off_its_plane with a free point w (5)
+ * 1/128 above the cap's upper face p r s, in the tet u p r s, split there into four:
+ * every candidate's cavity swallows w, so the insertion passes leave the cap (insert.c,
+ * keeps_vertices); the polish's last resort (tr_sliver_insert_last) opens it with a cavity
+ * that swallows w, which leaves the mesh (in no tet; the output drops it). The input
+ * points stay, the smallest angle rises, the mesh validates with its exact volume. */
+static void a_pinned_cap_under_a_free_point_is_opened_by_the_last_resort(void)
+{
+  const double e = 1.0 / 64, x[15] = {0, 0, 0, 1, 0, 0, 0.5, 0.25, e, 0.5, -0.25, e, 0.5, 0, 1};
+  tr_mesh *m = NULL;
+  if (tr_delaunay_build(x, 5, &m) != TR_OK) {
+    EXPECT(0, "cap under w: Delaunay failed: %s", tr_last_error());
+    return;
+  }
+  const uint32_t cap[4] = {0, 1, 2, 3}, above[4] = {4, 0, 2, 3};
+  uint32_t ta = find_tet(m, above), w;
+  EXPECT(find_tet(m, cap) != TR_NONE && ta != TR_NONE, "cap under w: not the cap's mesh");
+  if (ta == TR_NONE) {
+    tr_mesh_destroy(m);
+    return;
+  }
+  /* the plane p r s is z = 2 e x: w at x = 0.3 lies 1/128 above it, inside u p r s */
+  const double wx[3] = {0.3, 0, 0.6 * e + 1.0 / 128};
+  tr_status s = tr_mesh_add_vertex(m, wx, &w);
+  uint32_t newv[16];
+  for (int k = 0; k < 4; k++) {
+    memcpy(newv + 4 * k, m->tv + 4 * (size_t)ta, 4 * sizeof *newv);
+    newv[4 * k + k] = w;
+  }
+  if (s == TR_OK)
+    s = tr_mesh_replace(m, &ta, 1, newv, 4, NULL);
+  EXPECT(s == TR_OK, "cap under w: split: %s", tr_last_error());
+  mpq_t six_v; /* the hull is u over p q r and p q s: 6 V = 1/4 + 1/4 */
+  mpq_init(six_v);
+  mpq_set_ui(six_v, 1, 2);
+  EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v) == TR_OK, "cap under w: setup: %s",
+         tr_last_error());
+  double before = min_dihedral(m);
+  tr_subfaces none = {0, NULL, NULL};
+  tr_sliver_stats st;
+  s = one_pass(m, &none, 5, cap_under_a_point, &st);
+  EXPECT(s == TR_OK, "cap under w: %s", tr_last_error());
+  EXPECT(!last_ordinary, "cap under w: the insertion pass opened the cap: w no longer in "
+         "its way?");
+  EXPECT(last_resort && !has_tet(m, cap), "cap under w: the last resort left the cap");
+  EXPECT(m->v2t[w] == TR_NONE, "cap under w: w is still in the mesh");
+  for (uint32_t v = 0; v < 5; v++)
+    EXPECT(!memcmp(x + 3 * v, m->xyz + 3 * (size_t)v, 24) && m->v2t[v] != TR_NONE,
+           "cap under w: input vertex %u moved or left", v);
+  double after = min_dihedral(m);
+  EXPECT(after > before, "cap under w: smallest dihedral angle %g -> %g: not raised", before,
+         after);
+  s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v);
+  EXPECT(s == TR_OK, "cap under w: mesh validator: %s", tr_last_error());
+  fprintf(stderr, "cap under w: smallest dihedral %.3f -> %.3f\n", before, after);
+  mpq_clear(six_v);
+  tr_mesh_destroy(m);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -652,6 +745,7 @@ int main(int argc, char **argv)
       {"insertion", a_sliver_is_removed_by_a_new_interior_point, NULL},
       {"passes", no_pass_lowers_the_smallest_angle, NULL},
       {"cap", a_pinned_cap_is_opened_by_a_point_off_its_plane, NULL},
+      {"cap_under_point", a_pinned_cap_under_a_free_point_is_opened_by_the_last_resort, NULL},
       {"pinned", a_tet_pinned_between_sub_faces_gets_points_on_them, NULL},
       {"beam", a_beam_on_thin_side_triangles_is_no_longer_pinned_and_rises_over_tetgen, NULL},
       {"polish", the_polish_raises_the_minimum_of_an_icosahedron, NULL},
