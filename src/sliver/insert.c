@@ -520,10 +520,8 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, int last, trial *best, 
   if (!ok)
     return TR_OK;
   if (swallow) { /* the vertices swallowed leave the mesh: nothing moves them again, and
-                    the validator expects them in no tet (dup_map) */
-    set_clear(&best->cone);
-    for (uint32_t i = 0; i < 4 * best->nf; i++)
-      set_add(&best->cone, best->newv[i]);
+                    the validator expects them in no tet (dup_map); best->cone still holds
+                    the cone's vertices (keeps_vertices) */
     for (uint32_t i = 0; i < best->n; i++)
       for (int k = 0; k < 4; k++) {
         uint32_t x = m->tv[4 * (size_t)best->cav[i] + (size_t)k];

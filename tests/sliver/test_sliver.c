@@ -34,8 +34,8 @@ static tr_mesh *sliver_box(double e)
   return m;
 }
 
-/* 1 iff some live tet has exactly the vertices v (any order). */
-static int has_tet(const tr_mesh *m, const uint32_t v[4])
+/* The live tet with exactly the vertices v, TR_NONE if none. */
+static uint32_t find_tet(const tr_mesh *m, const uint32_t v[4])
 {
   for (uint32_t t = 0; t < m->nt; t++) {
     if (!tr_tet_is_real(m, t))
@@ -44,9 +44,15 @@ static int has_tet(const tr_mesh *m, const uint32_t v[4])
     for (int i = 0; i < 4; i++)
       n += tr_ncode(m, t, v[i]) >= 0;
     if (n == 4)
-      return 1;
+      return t;
   }
-  return 0;
+  return TR_NONE;
+}
+
+/* 1 iff some live tet has exactly the vertices v (any order). */
+static int has_tet(const tr_mesh *m, const uint32_t v[4])
+{
+  return find_tet(m, v) != TR_NONE;
 }
 
 static double min_dihedral(const tr_mesh *m)
@@ -598,6 +604,22 @@ static void a_tet_pinned_between_sub_faces_gets_points_on_them(void)
   tr_plc_destroy(plc);
 }
 
+/* The ridge hull of the two cap tests (p q r s u, see below). */
+#define RIDGE_E (1.0 / 64)
+static const double ridge_x[15] = {0, 0, 0, 1, 0, 0, 0.5, 0.25, RIDGE_E, 0.5, -0.25, RIDGE_E,
+                                   0.5, 0, 1};
+
+/* The Delaunay mesh of the ridge hull p q r s u (ridge_x), NULL (and a failure) if none. */
+static tr_mesh *ridge_hull(const char *name)
+{
+  tr_mesh *m = NULL;
+  if (tr_delaunay_build(ridge_x, 5, &m) != TR_OK) {
+    EXPECT(0, "%s: Delaunay failed: %s", name, tr_last_error());
+    return NULL;
+  }
+  return m;
+}
+
 /* A cap over a nearly flat ridge: the hull's bottom is folded along p q (0 1) by 1/64 up
  * to r and s (2 3), its top is the apex u (4). The Delaunay mesh is the cap p q r s and
  * the two tets from u over p r s and q r s; the cap's four points are not cocircular, so
@@ -607,12 +629,10 @@ static void a_tet_pinned_between_sub_faces_gets_points_on_them(void)
  * off_plane), strictly inside the hull, and the smallest angle rises. */
 static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
 {
-  const double e = 1.0 / 64, x[15] = {0, 0, 0, 1, 0, 0, 0.5, 0.25, e, 0.5, -0.25, e, 0.5, 0, 1};
-  tr_mesh *m = NULL;
-  if (tr_delaunay_build(x, 5, &m) != TR_OK) {
-    EXPECT(0, "cap: Delaunay failed: %s", tr_last_error());
+  const double e = RIDGE_E, *x = ridge_x;
+  tr_mesh *m = ridge_hull("cap");
+  if (!m)
     return;
-  }
   const uint32_t cap[4] = {0, 1, 2, 3};
   EXPECT(has_tet(m, cap), "cap: the cap is not a tet of the Delaunay mesh");
   double before = min_dihedral(m);
@@ -643,21 +663,6 @@ static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
   tr_mesh_destroy(m);
 }
 
-/* The live tet with exactly the vertices v, TR_NONE if none. */
-static uint32_t find_tet(const tr_mesh *m, const uint32_t v[4])
-{
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t))
-      continue;
-    int n = 0;
-    for (int i = 0; i < 4; i++)
-      n += tr_ncode(m, t, v[i]) >= 0;
-    if (n == 4)
-      return t;
-  }
-  return TR_NONE;
-}
-
 static int last_ordinary, last_resort; /* what the two calls of cap_under_a_point did */
 
 /* The pass of pinned_cap_under_a_free_point: the cap, tried as the insertion passes do,
@@ -685,12 +690,10 @@ static tr_status cap_under_a_point(tr_sliver_ctx *c, tr_sliver_stats *st)
  * points stay, the smallest angle rises, the mesh validates with its exact volume. */
 static void a_pinned_cap_under_a_free_point_is_opened_by_the_last_resort(void)
 {
-  const double e = 1.0 / 64, x[15] = {0, 0, 0, 1, 0, 0, 0.5, 0.25, e, 0.5, -0.25, e, 0.5, 0, 1};
-  tr_mesh *m = NULL;
-  if (tr_delaunay_build(x, 5, &m) != TR_OK) {
-    EXPECT(0, "cap under w: Delaunay failed: %s", tr_last_error());
+  const double e = RIDGE_E, *x = ridge_x;
+  tr_mesh *m = ridge_hull("cap under w");
+  if (!m)
     return;
-  }
   const uint32_t cap[4] = {0, 1, 2, 3}, above[4] = {4, 0, 2, 3};
   uint32_t ta = find_tet(m, above), w;
   EXPECT(find_tet(m, cap) != TR_NONE && ta != TR_NONE, "cap under w: not the cap's mesh");
