@@ -429,6 +429,16 @@ static int off_plane(const double *q[4], const double g[3], double out[][3])
   return n;
 }
 
+/* Screens candidates [from, to) of t on the doubles: the one whose new tets' smallest
+ * angle beats *top (and its cavity) becomes *have. */
+static void rank(const tr_sliver_ctx *c, uint32_t t, const double (*cand)[3], int from, int to,
+                 trial *z, double *top, int *have)
+{
+  for (int f = from; f < to; f++)
+    if (try_point(c, t, cand[f], 1, *top, z) && z->newmin > *top)
+      *top = z->newmin, *have = f;
+}
+
 /* Tries the circumcentre of sliver t and points between it and the centroid (when the
  * circumcentre lies beyond a constraint or its cone is worse); the best one that beats
  * its cavity goes in (*done = 1). */
@@ -483,15 +493,13 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, int last, trial *best, 
    * pinion; only when none opens it: rotor_small's minimum fell from 1.46 to 0.02) */
   int have = -1;
   double top = -1;
-  for (int f = 0; f < nc && !last; f++)
-    if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
-      top = z->newmin, have = f;
+  if (!last)
+    rank(c, t, cand, 0, nc, z, &top, &have);
   if ((have < 0 || top < SL_OFF_PLANE_ABOVE) && pinned(c, tv)) {
     int first = nc;
     nc += off_plane(q, g, cand + nc);
-    for (int f = first; f < nc && !last; f++)
-      if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
-        top = z->newmin, have = f;
+    if (!last)
+      rank(c, t, cand, first, nc, z, &top, &have);
   }
   /* the last resort (tr_sliver_insert_last): the same candidates with carved cavities,
    * then with cavities that may swallow interior points on no constraint, which leave the
@@ -500,16 +508,12 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, int last, trial *best, 
   int carved = 0, swallow = 0;
   if (last) {
     z->carve = carved = 1;
-    for (int f = 0; f < nc; f++)
-      if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
-        top = z->newmin, have = f;
+    rank(c, t, cand, 0, nc, z, &top, &have);
     z->carve = 0;
     if (have < 0) {
       carved = 0;
       z->swallow = swallow = 1;
-      for (int f = 0; f < nc; f++)
-        if (try_point(c, t, cand[f], 1, top, z) && z->newmin > top)
-          top = z->newmin, have = f;
+      rank(c, t, cand, 0, nc, z, &top, &have);
       z->swallow = 0;
     }
   }

@@ -620,6 +620,18 @@ static tr_mesh *ridge_hull(const char *name)
   return m;
 }
 
+/* The validator, with the ridge hull's exact volume (u over p q r and p q s: 6 V = 1/4 +
+ * 1/4). */
+static void ridge_valid(const char *name, const char *when, const tr_mesh *m)
+{
+  mpq_t six_v;
+  mpq_init(six_v);
+  mpq_set_ui(six_v, 1, 2);
+  tr_status s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v);
+  EXPECT(s == TR_OK, "%s: %s: %s", name, when, tr_last_error());
+  mpq_clear(six_v);
+}
+
 /* A cap over a nearly flat ridge: the hull's bottom is folded along p q (0 1) by 1/64 up
  * to r and s (2 3), its top is the apex u (4). The Delaunay mesh is the cap p q r s and
  * the two tets from u over p r s and q r s; the cap's four points are not cocircular, so
@@ -637,10 +649,7 @@ static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
   EXPECT(has_tet(m, cap), "cap: the cap is not a tet of the Delaunay mesh");
   double before = min_dihedral(m);
   EXPECT(before < 5, "cap: its smallest angle %g is not small", before);
-  mpq_t six_v; /* the hull is u over p q r and p q s: 6 V = 1/4 + 1/4 */
-  mpq_init(six_v);
-  mpq_set_ui(six_v, 1, 2);
-  EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v) == TR_OK, "cap: setup: %s", tr_last_error());
+  ridge_valid("cap", "setup", m);
   tr_subfaces none = {0, NULL, NULL};
   tr_sliver_stats st;
   tr_status s = one_pass(m, &none, 5, tr_sliver_insert_pass, &st);
@@ -657,9 +666,7 @@ static void a_pinned_cap_is_opened_by_a_point_off_its_plane(void)
   }
   double after = min_dihedral(m);
   EXPECT(after > before, "cap: smallest dihedral angle %g -> %g: not raised", before, after);
-  s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v);
-  EXPECT(s == TR_OK, "cap: mesh validator: %s", tr_last_error());
-  mpq_clear(six_v);
+  ridge_valid("cap", "mesh validator", m);
   tr_mesh_destroy(m);
 }
 
@@ -712,11 +719,7 @@ static void a_pinned_cap_under_a_free_point_is_opened_by_the_last_resort(void)
   if (s == TR_OK)
     s = tr_mesh_replace(m, &ta, 1, newv, 4, NULL);
   EXPECT(s == TR_OK, "cap under w: split: %s", tr_last_error());
-  mpq_t six_v; /* the hull is u over p q r and p q s: 6 V = 1/4 + 1/4 */
-  mpq_init(six_v);
-  mpq_set_ui(six_v, 1, 2);
-  EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v) == TR_OK, "cap under w: setup: %s",
-         tr_last_error());
+  ridge_valid("cap under w", "setup", m);
   double before = min_dihedral(m);
   tr_subfaces none = {0, NULL, NULL};
   tr_sliver_stats st;
@@ -732,10 +735,8 @@ static void a_pinned_cap_under_a_free_point_is_opened_by_the_last_resort(void)
   double after = min_dihedral(m);
   EXPECT(after > before, "cap under w: smallest dihedral angle %g -> %g: not raised", before,
          after);
-  s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v);
-  EXPECT(s == TR_OK, "cap under w: mesh validator: %s", tr_last_error());
+  ridge_valid("cap under w", "mesh validator", m);
   fprintf(stderr, "cap under w: smallest dihedral %.3f -> %.3f\n", before, after);
-  mpq_clear(six_v);
   tr_mesh_destroy(m);
 }
 
