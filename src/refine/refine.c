@@ -576,6 +576,7 @@ static void ctx_free(rf_ctx *c)
   tr_facets_free(&c->fc);
   free(c->sfv);
   free(c->sftri);
+  free(c->sfexp);
   free(c->sfdead);
   free(c->sfnosplit);
   tr_vtmap_free(&c->fm);
@@ -595,6 +596,9 @@ static void ctx_free(rf_ctx *c)
   for (size_t i = 0; i < sizeof b / sizeof *b; i++)
     tr_u32buf_free(b[i]);
   free(c->tstate);
+  free(c->vcone);
+  free(c->vhead);
+  tr_u32buf_free(&c->cnext);
 }
 
 static size_t left(const tr_u32buf *q, size_t head, size_t w)

@@ -41,6 +41,17 @@
 #include "mesh/mesh.h"
 #include "recover_facets/recover_facets.h"
 
+/* What one refinement set-up found that the next may take as it is, for a caller that
+ * runs many (the sliver stage's hooks below): per vertex id below n, the input edge
+ * (two input ids) whose line it was found exactly on, TR_NONE twice for none known. The
+ * owner lowers n when ids from n on may name other points (vertices dropped and their
+ * ids reused: caps.c's undone trials). A zeroed struct is empty; tr_refine_memo_free. */
+typedef struct tr_refine_memo {
+  uint32_t *line;
+  uint32_t n, cap;
+} tr_refine_memo;
+void tr_refine_memo_free(tr_refine_memo *memo);
+
 typedef struct tr_refine_params {
   double ratio;        /* radius-edge bound R (> 0), 0: no ratio criterion */
   double max_volume;   /* volume bound, 0: none */
@@ -59,6 +70,12 @@ typedef struct tr_refine_params {
                           after_insert) instead of its insertion radius; the radius-edge
                           refinement ends (no error, bad tets left) at 20 points per input
                           point + 10,000 or half the budget, the volume bounds' goes on */
+  /* sub is rf_subs_export's output (of tr_refine or of the hooks below, or a copy of it):
+   * the input triangle of each sub-face still there at the end is taken from sub->tri,
+   * not located again by its exact centroid (the bulk of each of the sliver polish's
+   * trials on a model with large planar facets: cheese.off) */
+  int sub_exported;
+  tr_refine_memo *memo; /* NULL, or the caller's memo: read and extended by the set-up */
   int verbose;
 } tr_refine_params;
 

@@ -28,6 +28,8 @@ typedef struct rf_ctx {
    * its input triangles, a triangle of the facet: it spans the facet's plane exactly) */
   uint32_t nsf, capsf;
   uint32_t *sfv, *sftri;
+  uint32_t *sfexp; /* the input triangle export gives it, known from par.sub_exported, or
+                      TR_NONE */
   uint8_t *sfdead;
   tr_vtmap fm;      /* sorted sub-face vertices -> sub-face id (rf_face_set); a split
                        sub-face's entry stays and points to a dead id */
@@ -65,6 +67,10 @@ typedef struct rf_ctx {
   tr_u32buf cav, init, bfaces, stack, newsf, tmp, newtets;
   uint8_t *tstate; /* cavity state per tet slot (cavity.c), 0 at rest */
   uint32_t captstate;
+  /* per vertex slot: the stamp of the last cone whose faces hold it, and there the first
+   * of its coned-face incidences (3 * face + corner, chained by cnext) (cavity.c) */
+  uint32_t *vcone, *vhead, capvcone, cone_stamp;
+  tr_u32buf cnext;
   uint32_t split_seg; /* the sub-segment the point being inserted splits, or TR_NONE */
   /* sub-faces split for their shape (subshape.c): on in tr_refine with a ratio bound; the
    * sub-faces from shape_next on are not checked yet */

@@ -2,6 +2,7 @@
  * mesh face a sub-face?") and sub-segments (tr_edgeset), and what each vertex lies on.
  * Sub-segments are derived from the sub-faces: a sub-face edge whose ends both lie on
  * one edge of its input triangle (exact collinearity) is a piece of that input edge. */
+#include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -43,19 +44,21 @@ static tr_status grow_arrays(void **arrs, const size_t *sizes, int n, uint32_t *
 tr_status rf_subface_add(rf_ctx *c, uint32_t a, uint32_t b, uint32_t d, uint32_t tri,
                          uint32_t *id)
 {
-  void *arrs[4] = {c->sfv, c->sftri, c->sfdead, c->sfnosplit};
-  size_t sizes[4] = {3 * sizeof(uint32_t), sizeof(uint32_t), 1, 1};
-  tr_status s = grow_arrays(arrs, sizes, 4, &c->capsf, c->nsf + 1);
+  void *arrs[5] = {c->sfv, c->sftri, c->sfdead, c->sfnosplit, c->sfexp};
+  size_t sizes[5] = {3 * sizeof(uint32_t), sizeof(uint32_t), 1, 1, sizeof(uint32_t)};
+  tr_status s = grow_arrays(arrs, sizes, 5, &c->capsf, c->nsf + 1);
   c->sfv = arrs[0];
   c->sftri = arrs[1];
   c->sfdead = arrs[2];
   c->sfnosplit = arrs[3];
+  c->sfexp = arrs[4];
   TR_CHECK(s);
   uint32_t f = c->nsf++;
   c->sfv[3 * (size_t)f] = a;
   c->sfv[3 * (size_t)f + 1] = b;
   c->sfv[3 * (size_t)f + 2] = d;
   c->sftri[f] = tri;
+  c->sfexp[f] = TR_NONE;
   c->sfdead[f] = c->sfnosplit[f] = 0;
   if (id)
     *id = f;
@@ -154,7 +157,8 @@ static int on_input_edge(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t A, ui
         return 0;
       if (l)
         l[0] = A, l[1] = B;
-    }
+    } else
+      assert(on_line(&pa, &pb, &p)); /* a memo kept across runs names the same point */
   }
   return 1;
 }
@@ -190,6 +194,37 @@ static void input_edge_of(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t tri,
       return;
 }
 
+void tr_refine_memo_free(tr_refine_memo *memo)
+{
+  free(memo->line);
+  memset(memo, 0, sizeof *memo);
+}
+
+/* The per-vertex lines of on_input_edge for nv vertices: the memo's, its entries from
+ * memo->n on reset, or a fresh array without one (the caller frees it). NULL when out of
+ * memory: every test is then made in full. */
+static uint32_t *memo_line(tr_refine_memo *memo, uint32_t nv)
+{
+  size_t n = nv ? nv : 1;
+  if (!memo) {
+    uint32_t *l = malloc(sizeof *l * 2 * n);
+    if (l)
+      memset(l, 0xff, sizeof *l * 2 * n);
+    return l;
+  }
+  if (memo->cap < n) {
+    uint32_t *l = realloc(memo->line, sizeof *l * 2 * n);
+    if (!l)
+      return NULL;
+    memo->line = l;
+    memo->cap = (uint32_t)n;
+  }
+  if (memo->n > nv)
+    memo->n = nv;
+  memset(memo->line + 2 * (size_t)memo->n, 0xff, sizeof *memo->line * 2 * (n - memo->n));
+  return memo->line;
+}
+
 tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
 {
   const struct tr_plc *plc = c->plc;
@@ -214,9 +249,7 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
    * boundary (the facet's sub-faces tile it), two inside */
   tr_vtmap cnt = {0};
   tr_status s = TR_OK;
-  uint32_t *line = malloc(sizeof *line * 2 * (size_t)(m->nv ? m->nv : 1));
-  if (line) /* no memory for it: every test made in full */
-    memset(line, 0xff, sizeof *line * 2 * (size_t)m->nv);
+  uint32_t *line = memo_line(c->par.memo, m->nv);
   if (c->fc.nmerged) {
     s = tr_vtmap_reserve(&cnt, 3, 3 * (size_t)sub->n / 2 + 1);
     for (uint32_t f = 0; s == TR_OK && f < sub->n; f++) {
@@ -235,8 +268,11 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
   for (uint32_t f = 0; s == TR_OK && f < sub->n; f++) {
     const uint32_t *v = sub->v + 3 * (size_t)f, tri = sub->tri[f];
     uint32_t g = c->fc.group[tri];
-    if ((s = rf_subface_add(c, v[0], v[1], v[2], g, NULL)) != TR_OK)
+    uint32_t sf;
+    if ((s = rf_subface_add(c, v[0], v[1], v[2], g, &sf)) != TR_OK)
       break;
+    if (c->par.sub_exported)
+      c->sfexp[sf] = tri;
     for (int e = 0; e < 3; e++) {
       uint32_t u = v[e], w = v[(e + 1) % 3];
       if (tr_edgeset_get(&c->es, u, w) != TR_EDGESET_NONE)
@@ -263,7 +299,10 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
     }
   }
   tr_vtmap_free(&cnt);
-  free(line);
+  if (!c->par.memo)
+    free(line);
+  else if (line)
+    c->par.memo->n = m->nv;
   TR_CHECK(s);
   for (uint32_t f = 0; f < c->nsf; f++)
     for (int i = 0; i < 3; i++) {
@@ -291,7 +330,7 @@ static int cmp_sf(const void *pa, const void *pb)
 /* The input triangle of sub-face f: its facet's, or for a merged facet the facet's
  * smallest triangle that holds the sub-face's exact centroid (a sub-face may straddle
  * inner edges). */
-static tr_status export_triangle(const rf_ctx *c, uint32_t f, uint32_t *tri)
+static tr_status locate_triangle(const rf_ctx *c, uint32_t f, uint32_t *tri)
 {
   uint32_t g = c->sftri[f];
   *tri = g;
@@ -318,6 +357,23 @@ static tr_status export_triangle(const rf_ctx *c, uint32_t f, uint32_t *tri)
   tr_qpoint_clear(&q);
   if (*tri == TR_NONE)
     return tr_error(TR_ERR_INTERNAL, "refinement: sub-face %u lies outside its facet %u", f, g);
+  return TR_OK;
+}
+
+/* locate_triangle's answer, known for the sub-faces of an exported input (a debug build
+ * checks it) */
+static tr_status export_triangle(const rf_ctx *c, uint32_t f, uint32_t *tri)
+{
+#ifdef NDEBUG
+  if (c->sfexp[f] != TR_NONE) {
+    *tri = c->sfexp[f];
+    return TR_OK;
+  }
+#endif
+  TR_CHECK(locate_triangle(c, f, tri));
+  if (c->sfexp[f] != TR_NONE && c->sfexp[f] != *tri)
+    return tr_error(TR_ERR_INTERNAL, "refinement: sub-face %u came in on triangle %u but "
+                    "lies on %u", f, c->sfexp[f], *tri);
   return TR_OK;
 }
 

@@ -178,6 +178,7 @@ static tr_status trial_ctx(const tr_sliver_ctx *c, const tr_subfaces *sub, uint3
   tc->insert_bound = c->insert_bound;
   tc->point_budget = c->point_budget;
   tc->keep = c->keep;
+  tc->memo = c->memo;
   return TR_OK;
 }
 
@@ -333,6 +334,8 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
   rp.max_volume = c->keep.max_volume;
   rp.keep_edges = c->keep.keep_edges;
   rp.budget = SL_CAP_POINTS;
+  rp.sub_exported = 1; /* tr_refine's or a hook's output (tr_sliver_remove) */
+  rp.memo = c->memo;
   uint32_t *id = NULL;
   double *bound = NULL, least = 0;
   tr_status s = tr_refine_region_bounds(c->keep.plc, &id, &bound, &rp.nregion_bounds, &least);
@@ -394,6 +397,8 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
       *done = 1;
     } else {
       tr_sliver_ctx_free(&tc);
+      if (c->memo && c->memo->n > z.nv) /* the trial's vertex ids go to other points */
+        c->memo->n = z.nv;
       snap_restore(m, sub, &z); /* c's measures hold: the trial measured with tc only */
     }
   }

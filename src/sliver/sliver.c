@@ -218,6 +218,8 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
   rp.keep_edges = c->keep.keep_edges;
   rp.flat_splits = c->keep.flat_splits;
   rp.budget = TR_SLIVER_POINTS(m->nv); /* its own: the interior points may have used theirs */
+  rp.sub_exported = 1; /* tr_refine's or a hook's output (tr_sliver_remove) */
+  rp.memo = c->memo;
   uint32_t *id = NULL;
   double *bound = NULL, least = 0;
   s = tr_refine_region_bounds(plc, &id, &bound, &rp.nregion_bounds, &least);
@@ -250,6 +252,7 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
   /* the next insertion pass: as many interior points as went on the constraints */
   c->point_budget = st->points + rs.points;
   c->keep = keep.keep;
+  c->memo = keep.memo;
   return s;
 }
 
@@ -274,6 +277,8 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   if (par->insert_bound > 0)
     c.insert_bound = par->insert_bound;
   c.keep = par->keep;
+  tr_refine_memo memo = {0};
+  c.memo = &memo;
   uint64_t added = 0;
   for (int r = 0; s == TR_OK && r < par->rounds; r++) {
     tr_sliver_stats before = *st;
@@ -310,5 +315,6 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   if (s == TR_OK) /* the worst tets, also those over the bound */
     s = tr_sliver_polish(&c, sub, par->level, st);
   tr_sliver_ctx_free(&c);
+  tr_refine_memo_free(&memo);
   return s;
 }

@@ -123,6 +123,9 @@ typedef struct tr_sliver_ctx {
   tr_vtmap failed;         /* insertion: tets (sorted vertices) no candidate point opened;
                               later passes skip them (most stay pinned) */
   tr_sliver_bounds keep;
+  /* the refinement set-ups' memo (refine.h), tr_sliver_remove's, shared by the contexts
+   * it rebuilds and by the trials' (not owned; NULL: none) */
+  struct tr_refine_memo *memo;
 } tr_sliver_ctx;
 
 /* The context of one mesh: c->m = m, the constraint sets of sub, the movable vertices
@@ -211,9 +214,10 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
                             void *scratch, tr_vtmap *refused, tr_sliver_stats *st, int *done,
                             int *tried);
 
-/* The stage: m holds only inner tets (tr_refine's output), sub their sub-faces, vkind the
- * vertex origins (tetrec.h's enum tr_vertex_origin; NULL: none known, so only vertices
- * above npoints on no sub-face move). */
+/* The stage: m holds only inner tets (tr_refine's output), sub their sub-faces as
+ * tr_refine exported them (their triangles are taken as they are: tr_refine_params'
+ * sub_exported), vkind the vertex origins (tetrec.h's enum tr_vertex_origin; NULL: none
+ * known, so only vertices above npoints on no sub-face move). */
 tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *vkind,
                            uint32_t npoints, const tr_sliver_params *par, tr_sliver_stats *st);
 

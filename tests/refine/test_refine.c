@@ -844,6 +844,94 @@ static void pinned_flat_tet_is_opened(void)
   tr_plc_destroy(plc);
 }
 
+/* The hooks' reuse of an earlier set-up (tr_refine_memo: which input edge each vertex
+ * lies on; sub_exported: each kept sub-face's input triangle) changes no decision: the
+ * flat tet of pinned_flat_tet_is_opened opened, then a sub-face and a sub-segment split,
+ * once with a fresh set-up each time and once with the memo (lowered in between, as an
+ * undone trial does), give the same vertices, tets and sub-faces, and a valid mesh. A
+ * debug build also checks each memo entry and each triangle taken against the full test. */
+static void memo_changes_nothing(void)
+{
+  const double x[12] = {0, 0, 0, 8, 0, 0, 4, 7, 0, 4, 3, 0.25};
+  uint32_t nv[2] = {0, 0}, nt[2] = {0, 0}, nsub[2] = {0, 0};
+  uint32_t *tv[2] = {NULL, NULL}, *sv[2] = {NULL, NULL}, *stri[2] = {NULL, NULL};
+  for (int use = 0; use < 2; use++) {
+    tr_plc *plc = tet_surface(x, x + 3, x + 6, x + 9);
+    tr_mesh *m = NULL;
+    if (tr_delaunay_build(x, 4, &m) != TR_OK) {
+      EXPECT(0, "memo: Delaunay failed: %s", tr_last_error());
+      tr_plc_destroy(plc);
+      return;
+    }
+    uint32_t t0 = TR_NONE;
+    for (uint32_t t = 0; t < m->nt; t++)
+      if (tr_tet_is_real(m, t))
+        t0 = t;
+    tr_subfaces sub = {0, NULL, NULL};
+    sub.n = plc->ntris;
+    sub.v = malloc(3 * sizeof *sub.v * plc->ntris);
+    sub.tri = malloc(sizeof *sub.tri * plc->ntris);
+    for (uint32_t i = 0; i < plc->ntris; i++) {
+      memcpy(sub.v + 3 * i, plc->tris + 3 * i, 3 * sizeof *sub.v);
+      sub.tri[i] = i;
+    }
+    tr_refine_memo memo = {0};
+    tr_refine_params par;
+    memset(&par, 0, sizeof par);
+    par.budget = 50;
+    par.memo = use ? &memo : NULL;
+    tr_refine_stats st;
+    tr_status s = tr_refine_open_pinned(m, plc, &sub, &par, &t0, 1, &st);
+    EXPECT(s == TR_OK && st.points > 0, "memo %d: open_pinned: %s", use, tr_last_error());
+    par.sub_exported = use; /* sub is open_pinned's export from here on */
+    uint32_t face[3];
+    memcpy(face, sub.v, sizeof face);
+    if (s == TR_OK)
+      s = tr_refine_split_piece(m, plc, &sub, &par, face, 3, &st);
+    EXPECT(s == TR_OK, "memo %d: a sub-face split: %s", use, tr_last_error());
+    memo.n = memo.n > 5 ? 5 : memo.n; /* as after an undone trial: later ids unknown */
+    int grew = 0;
+    for (uint32_t f = 0; s == TR_OK && f < sub.n && !grew; f++) { /* the first sub-segment */
+      uint32_t e[2] = {sub.v[3 * f], sub.v[3 * f + 1]};
+      uint32_t nv0 = m->nv;
+      s = tr_refine_split_piece(m, plc, &sub, &par, e, 2, &st);
+      grew = m->nv > nv0;
+    }
+    EXPECT(s == TR_OK && grew, "memo %d: no sub-segment split: %s", use, tr_last_error());
+    EXPECT(!use || memo.n >= 5, "memo: the set-ups left %u vertices in it", memo.n);
+    mpq_t six_v;
+    mpq_init(six_v);
+    mpq_set_ui(six_v, 14, 1);
+    s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v);
+    EXPECT(s == TR_OK, "memo %d: mesh validator: %s", use, tr_last_error());
+    mpq_clear(six_v);
+    nv[use] = m->nv;
+    nt[use] = m->nt;
+    nsub[use] = sub.n;
+    tv[use] = malloc(sizeof *tv[use] * 4 * (m->nt ? m->nt : 1));
+    memcpy(tv[use], m->tv, sizeof *tv[use] * 4 * m->nt);
+    sv[use] = sub.v;
+    stri[use] = sub.tri;
+    tr_refine_memo_free(&memo);
+    tr_mesh_destroy(m);
+    tr_plc_destroy(plc);
+  }
+  EXPECT(nv[0] == nv[1] && nt[0] == nt[1] && nsub[0] == nsub[1],
+         "memo: %u/%u vertices, %u/%u tet slots, %u/%u sub-faces without/with", nv[0], nv[1],
+         nt[0], nt[1], nsub[0], nsub[1]);
+  if (nt[0] == nt[1] && nsub[0] == nsub[1]) {
+    EXPECT(!memcmp(tv[0], tv[1], sizeof *tv[0] * 4 * nt[0]), "memo: the tets differ");
+    EXPECT(!memcmp(sv[0], sv[1], sizeof *sv[0] * 3 * nsub[0]) &&
+               !memcmp(stri[0], stri[1], sizeof *stri[0] * nsub[0]),
+           "memo: the sub-faces differ");
+  }
+  for (int i = 0; i < 2; i++) {
+    free(tv[i]);
+    free(sv[i]);
+    free(stri[i]);
+  }
+}
+
 /* Meshes the surface at path under each ratio bound, with and without sliver removal,
  * and with volume bound V (0: none) checks every tet's exact volume against it. */
 static void each_bound(const char *what, const char *path, double V)
@@ -981,6 +1069,7 @@ int main(int argc, char **argv)
       {"regions_inner_box", NULL, regions_inner_box},
       {"determinism", determinism, NULL},
       {"pinned", pinned_flat_tet_is_opened, NULL},
+      {"memo", memo_changes_nothing, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
