@@ -130,9 +130,9 @@ static int on_line(const tr_point *a, const tr_point *b, const tr_point *p)
 }
 
 /* 1 iff u and w (mesh vertices) lie on the closed input edge AB (exact). line: per vertex
- * the input edge (A, B) it was last found on the line of, or NULL; a vertex of k sub-faces
- * is asked up to 6k times, and on the line is exactly the case no filter decides (the
- * cost of every set-up, also of each of the sliver polish's trials) */
+ * the input edge it was found on (its ids sorted), or NULL; a vertex of k sub-faces is
+ * asked up to 6k times, and on the line is exactly the case no filter decides (the cost
+ * of every set-up, also of each of the sliver polish's trials) */
 static int on_input_edge(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t A, uint32_t B,
                          uint32_t *line)
 {
@@ -151,14 +151,23 @@ static int on_input_edge(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t A, ui
       if (sa * sb > 0) /* beyond both ends along d */
         return 0;
     }
+    /* the edge as an unordered pair: its two triangles list it both ways */
+    uint32_t lo = A < B ? A : B, hi = A < B ? B : A;
     uint32_t *l = line ? line + 2 * (size_t)x[i] : NULL;
-    if (!(l && l[0] == A && l[1] == B)) {
+    if (l && l[0] != TR_NONE) {
+      /* found on the closed input edge {l0,l1} and no input point: inside it, so on no
+       * other input edge, which the validated input's edges meet only at their ends (the
+       * exact test again for each triangle around x was the bulk of each set-up) */
+      int on = l[0] == lo && l[1] == hi;
+      assert(on == on_line(&pa, &pb, &p)); /* and a memo kept across runs, the same point */
+      if (!on)
+        return 0;
+    } else {
       if (!on_line(&pa, &pb, &p))
         return 0;
       if (l)
-        l[0] = A, l[1] = B;
-    } else
-      assert(on_line(&pa, &pb, &p)); /* a memo kept across runs names the same point */
+        l[0] = lo, l[1] = hi;
+    }
   }
   return 1;
 }
