@@ -192,25 +192,30 @@ static int shrink(const struct tr_mesh *m, uint32_t t, const tr_point *x, int sc
  * whose circumsphere strictly holds x and to those behind a face x does not strictly see,
  * carved off the vertices it swallowed when onb is given (carve), then shrunk (a tet with
  * a coned face x does not strictly see leaves) until stable. *n = 0 when t itself would
- * have to leave or the cavity grows too big. */
+ * have to leave or the cavity grows too big. out: scratch (onb may be the same set). */
 static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int screen,
-                   uint32_t *cav, uint32_t *n, idset *in, idset *onb)
+                   uint32_t *cav, uint32_t *n, idset *in, idset *out, idset *onb)
 {
   const struct tr_mesh *m = c->m;
   uint8_t vis[SL_MAX_CAVITY]; /* the faces' visibility, as far as known (seen) */
   *n = 0;
   set_clear(in);
+  set_clear(out); /* the tets found out of conflict: each is tested once */
   cav[(*n)++] = t; /* the sliver goes whether or not its sphere holds x */
   set_add(in, t);
   for (uint32_t i = 0; i < *n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)cav[i];
     for (int k = 0; k < 4; k++) {
       uint32_t nb = TR_NEIG(m, cav[i], k);
-      if (nb == TR_NONE || !tr_tet_is_real(m, nb) || set_has(in, nb))
+      if (nb == TR_NONE || !tr_tet_is_real(m, nb) || set_has(in, nb) || set_has(out, nb))
         continue;
       uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
-      if (tr_sliver_protected(c, f, 3) || !conflicts(m, nb, x, screen))
+      if (tr_sliver_protected(c, f, 3))
         continue;
+      if (!conflicts(m, nb, x, screen)) {
+        set_add(out, nb);
+        continue;
+      }
       if (*n == SL_MAX_CAVITY) {
         *n = 0;
         return;
@@ -342,7 +347,8 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
   const struct tr_mesh *m = c->m;
   memcpy(z->x, x, sizeof z->x);
   tr_point px = tr_pt_d(x);
-  cavity(c, t, &px, screen, z->cav, &z->n, &z->in, z->carve ? &z->cone : NULL);
+  /* the cone's set is scratch until keeps_vertices fills it */
+  cavity(c, t, &px, screen, z->cav, &z->n, &z->in, &z->cone, z->carve ? &z->cone : NULL);
   if (!z->n)
     return 0;
   uint32_t pid = m->nv; /* tr_mesh_add_vertex appends */
