@@ -254,10 +254,19 @@ static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int sc
     *n = 0;
 }
 
-static int cmp_u64(const void *a, const void *b)
+/* Sorts e[0..n) ascending: Shell's sort with Ciura's gaps, inline (a cone has a few
+ * hundred edges at most, and qsort's calls through its comparator were 2% of pinion.off) */
+static void sort_u64(uint64_t *e, uint32_t n)
 {
-  uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-  return x < y ? -1 : x > y;
+  static const uint32_t gaps[] = {701, 301, 132, 57, 23, 10, 4, 1};
+  for (size_t g = 0; g < sizeof gaps / sizeof *gaps; g++)
+    for (uint32_t i = gaps[g]; i < n; i++) {
+      uint64_t x = e[i];
+      uint32_t j = i;
+      for (; j >= gaps[g] && e[j - gaps[g]] > x; j -= gaps[g])
+        e[j] = e[j - gaps[g]];
+      e[j] = x;
+    }
 }
 
 /* Every edge of the coned faces (vertex k of each new tet is the new vertex) in exactly
@@ -273,7 +282,7 @@ static int manifold(const uint32_t *newv, const uint8_t *apex, uint32_t nf)
                b = newv[4 * i + tr_face_vtx[apex[i]][(j + 1) % 3]];
       e[ne++] = a < b ? a << 32 | b : b << 32 | a;
     }
-  qsort(e, ne, sizeof *e, cmp_u64);
+  sort_u64(e, ne);
   for (uint32_t i = 0; i < ne; i += 2)
     if (i + 1 >= ne || e[i] != e[i + 1] || (i + 2 < ne && e[i + 2] == e[i]))
       return 0;
