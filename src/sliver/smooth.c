@@ -88,7 +88,10 @@ static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
   }
   for (size_t i = 0; i < ball->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
-    double r, q = tr_sliver_min_dihedral_at(m, tv, v, x, &r);
+    /* the ratio only where the bound looks at it (the circumsphere costs) */
+    double r = 0, q = tr_sliver_min_dihedral_at(m, tv, v, x, NULL);
+    if (c->keep.ratio > 0 && !(q >= c->bound))
+      tr_sliver_min_dihedral_at(m, tv, v, x, &r);
     if (!tr_sliver_keeps_bounds(c, tv, v, x, m->region ? m->region[ball->a[i]] : 0, r, q, was))
       return 0;
   }
