@@ -767,6 +767,32 @@ static double smallest_dihedral(const tr_mesh *m)
   return q.min_dihedral;
 }
 
+/* The flat tet A B C D of the two tests below, Delaunay-meshed: the input surface (*plc),
+ * its four sub-faces (*sub) and the one real tet (*t0); NULL when Delaunay fails. */
+static tr_mesh *flat_tet(tr_plc **plc, tr_subfaces *sub, uint32_t *t0)
+{
+  static const double x[12] = {0, 0, 0, 8, 0, 0, 4, 7, 0, 4, 3, 0.25};
+  *plc = tet_surface(x, x + 3, x + 6, x + 9);
+  tr_mesh *m = NULL;
+  if (tr_delaunay_build(x, 4, &m) != TR_OK) {
+    EXPECT(0, "flat tet: Delaunay failed: %s", tr_last_error());
+    tr_plc_destroy(*plc);
+    return NULL;
+  }
+  *t0 = TR_NONE;
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (tr_tet_is_real(m, t))
+      *t0 = t;
+  sub->n = (*plc)->ntris;
+  sub->v = malloc(3 * sizeof *sub->v * sub->n);
+  sub->tri = malloc(sizeof *sub->tri * sub->n);
+  for (uint32_t i = 0; i < sub->n; i++) {
+    memcpy(sub->v + 3 * i, (*plc)->tris + 3 * i, 3 * sizeof *sub->v);
+    sub->tri[i] = i;
+  }
+  return m;
+}
+
 /* The tet A B C D with D a quarter above the base ABC (z = 0), over its circumcircle: one
  * flat tet whose four faces are sub-faces and four vertices input points, which no flip
  * or move changes. tr_refine_open_pinned puts points under it, each exactly on a face of
@@ -775,26 +801,12 @@ static double smallest_dihedral(const tr_mesh *m)
  * the smallest dihedral angle, the input's own at edge AC, is kept. */
 static void pinned_flat_tet_is_opened(void)
 {
-  const double x[12] = {0, 0, 0, 8, 0, 0, 4, 7, 0, 4, 3, 0.25};
-  tr_plc *plc = tet_surface(x, x + 3, x + 6, x + 9);
-  tr_mesh *m = NULL;
-  if (tr_delaunay_build(x, 4, &m) != TR_OK) {
-    EXPECT(0, "pinned: Delaunay failed: %s", tr_last_error());
-    tr_plc_destroy(plc);
-    return;
-  }
-  uint32_t t0 = TR_NONE;
-  for (uint32_t t = 0; t < m->nt; t++)
-    if (tr_tet_is_real(m, t))
-      t0 = t;
+  tr_plc *plc;
   tr_subfaces sub = {0, NULL, NULL};
-  sub.n = plc->ntris;
-  sub.v = malloc(3 * sizeof *sub.v * plc->ntris);
-  sub.tri = malloc(sizeof *sub.tri * plc->ntris);
-  for (uint32_t i = 0; i < plc->ntris; i++) {
-    memcpy(sub.v + 3 * i, plc->tris + 3 * i, 3 * sizeof *sub.v);
-    sub.tri[i] = i;
-  }
+  uint32_t t0;
+  tr_mesh *m = flat_tet(&plc, &sub, &t0);
+  if (!m)
+    return;
   double before = smallest_dihedral(m);
   double ratio_before = max_ratio(m);
   tr_refine_params par;
@@ -852,29 +864,15 @@ static void pinned_flat_tet_is_opened(void)
  * debug build also checks each memo entry and each triangle taken against the full test. */
 static void memo_changes_nothing(void)
 {
-  const double x[12] = {0, 0, 0, 8, 0, 0, 4, 7, 0, 4, 3, 0.25};
   uint32_t nv[2] = {0, 0}, nt[2] = {0, 0}, nsub[2] = {0, 0};
   uint32_t *tv[2] = {NULL, NULL}, *sv[2] = {NULL, NULL}, *stri[2] = {NULL, NULL};
   for (int use = 0; use < 2; use++) {
-    tr_plc *plc = tet_surface(x, x + 3, x + 6, x + 9);
-    tr_mesh *m = NULL;
-    if (tr_delaunay_build(x, 4, &m) != TR_OK) {
-      EXPECT(0, "memo: Delaunay failed: %s", tr_last_error());
-      tr_plc_destroy(plc);
-      return;
-    }
-    uint32_t t0 = TR_NONE;
-    for (uint32_t t = 0; t < m->nt; t++)
-      if (tr_tet_is_real(m, t))
-        t0 = t;
+    tr_plc *plc;
     tr_subfaces sub = {0, NULL, NULL};
-    sub.n = plc->ntris;
-    sub.v = malloc(3 * sizeof *sub.v * plc->ntris);
-    sub.tri = malloc(sizeof *sub.tri * plc->ntris);
-    for (uint32_t i = 0; i < plc->ntris; i++) {
-      memcpy(sub.v + 3 * i, plc->tris + 3 * i, 3 * sizeof *sub.v);
-      sub.tri[i] = i;
-    }
+    uint32_t t0;
+    tr_mesh *m = flat_tet(&plc, &sub, &t0);
+    if (!m)
+      break;
     tr_refine_memo memo = {0};
     tr_refine_params par;
     memset(&par, 0, sizeof par);
