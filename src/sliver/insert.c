@@ -121,6 +121,14 @@ static int boundary(const struct tr_mesh *m, const idset *in, uint32_t t, int k)
   return nb == TR_NONE || !set_has(in, nb);
 }
 
+/* Takes cav[i] out of the cavity, the last tet (and its face answers, seen) in its place. */
+static void take_out(idset *in, uint32_t *cav, uint32_t *n, uint8_t *vis, uint32_t i)
+{
+  set_del(in, cav[i]);
+  cav[i] = cav[--*n];
+  vis[i] = vis[*n];
+}
+
 /* Takes out of the cavity every tet at a vertex it swallowed (one on no coned face: the
  * mesh is not Delaunay, so the conflict tets of a point above a flat cap, whose sphere is
  * huge, may surround a vertex); the vertex is then on the boundary again, and the shrink
@@ -146,9 +154,7 @@ static int carve(const struct tr_mesh *m, uint32_t t, uint32_t *cav, uint32_t *n
     }
     if (cav[i] == t)
       return 0;
-    set_del(in, cav[i]);
-    cav[i] = cav[--*n];
-    vis[i] = vis[*n];
+    take_out(in, cav, n, vis, i);
   }
   return 1;
 }
@@ -178,9 +184,7 @@ static int shrink(const struct tr_mesh *m, uint32_t t, const tr_point *x, int sc
         if (boundary(m, in, cav[i], k) && !seen(m, cav, i, k, x, screen, vis)) {
           if (cav[i] == t)
             return 0;
-          set_del(in, cav[i]);
-          cav[i] = cav[--*n];
-          vis[i] = vis[*n];
+          take_out(in, cav, n, vis, i);
           changed = 1;
           break;
         }
