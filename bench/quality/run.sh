@@ -32,7 +32,10 @@
 #
 # usage: TETGEN=/path/to/tetgen-1.6 bench/quality/run.sh [BUILD_DIR]
 #   BUILD_DIR  a build of tetrec (default build; set up with meson if missing)
-#   TETGEN     the TetGen 1.6 binary (required; not part of the repository)
+#   TETGEN     the TetGen 1.6 binary (required; not part of the repository). Build it with
+#              bench/peer/build_tetgen.sh (all of it at -O3): TetGen's own makefile builds
+#              predicates.cxx at -O0, which makes it about 40% slower on cheese, and the
+#              CPU ratio is only comparable between runs against the same build
 #   R=1.414    the radius-edge bound given to both
 #   TIMEOUT=s  per-process wall-clock limit (default 120)
 #   ONLY=regex only the models whose name matches (grep -E)

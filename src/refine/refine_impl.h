@@ -2,7 +2,8 @@
  *   subs.c      the sub-face and sub-segment tables and the face map
  *   encroach.c  exact encroachment tests and the exact split points on constraints
  *   cavity.c    constrained Bowyer-Watson: locate, cavity, insertion
- *   refine.c    the queues and the main loop */
+ *   refine.c    the queues and the main loop
+ *   longs.c     the long sub-segments near a point (a close circumcentre's shortcut) */
 #ifndef TR_REFINE_IMPL_H
 #define TR_REFINE_IMPL_H
 
@@ -15,6 +16,15 @@
 
 /* What a vertex lies on: for split points the constraint it was inserted on. */
 enum { RF_FREE = 0, RF_INPUT = 1, RF_SEG = 2, RF_FACET = 3 };
+
+/* The grid of the long sub-segments' diametral balls (longs.c). */
+typedef struct rf_longs {
+  int built;
+  double o[3], h;  /* grid origin and cell size */
+  tr_vtmap cells;  /* cell (i,j,k) -> its first entry in ent */
+  tr_u32buf ent;   /* per entry: sub-segment, next entry of the cell (TR_VTMAP_NONE: end) */
+  tr_u32buf wide;  /* sub-segments whose ball spans too many cells: scanned every query */
+} rf_longs;
 
 typedef struct rf_ctx {
   struct tr_mesh *m;
@@ -56,6 +66,7 @@ typedef struct rf_ctx {
   /* a circumcentre too close to a new vertex still has the long sub-segments it
    * encroaches split (refine.c, refine_tet); 0 after spacing_cap points */
   int close_splits;
+  rf_longs longs; /* the pieces close splits may still take (longs.c) */
   /* 1 once the --spacing-radii cap ended ratio refinement: the tets over a volume bound
    * are still refined (refine.c, run), since that bound is the user's hard limit */
   int volume_only;
@@ -82,6 +93,19 @@ typedef struct rf_ctx {
   double *ssfoot;
   uint32_t nssfoot;
 } rf_ctx;
+
+/* ---- longs.c ---- */
+/* Sub-segment g is at least half its input edge (on the doubles). */
+int rf_piece_long(const rf_ctx *c, uint32_t g);
+/* A close circumcentre of a tet whose shortest edge has square emin splits g (refine.c):
+ * g is at least twice that edge and at least half its input edge. */
+int rf_close_split(const rf_ctx *c, uint32_t g, double emin);
+/* *maybe = 0 only if no live sub-segment g with rf_close_split(c, g, emin) has p in its
+ * diametral ball (exactly, rf_in_diametral); builds the grid on the first call. */
+tr_status rf_longs_near(rf_ctx *c, const double p[3], double emin, int *maybe);
+/* A new sub-segment g: into the grid if it is built and g is long. */
+tr_status rf_longs_added(rf_ctx *c, uint32_t g);
+void rf_longs_free(rf_longs *L);
 
 /* ---- subs.c ---- */
 /* Face keys in the shared vertex-tuple map: any listing of the face's vertices. */

@@ -85,7 +85,8 @@ tr_status rf_subseg_add(rf_ctx *c, uint32_t u, uint32_t v, uint32_t A, uint32_t 
     *id = g;
   /* tr_edgeset keeps the first value of a key: a split sub-segment's key is never
    * reused (its two ends are no longer joined by a constraint piece), so this is new */
-  return tr_edgeset_put(&c->es, u, v, g);
+  TR_CHECK(tr_edgeset_put(&c->es, u, v, g));
+  return rf_longs_added(c, g);
 }
 
 tr_status rf_vertex_room(rf_ctx *c, uint32_t nv)

@@ -4,6 +4,7 @@
  * gives the star the largest smallest angle; the move is kept only when that beats the
  * star as it is and every tet of the star is exactly positive with the new point, which
  * keeps the point strictly inside its link polyhedron, so it reaches no constraint. */
+#include <assert.h>
 #include <math.h>
 #include <string.h>
 
@@ -12,6 +13,7 @@
 
 #define SL_STEPS 6 /* trial steps: h/2, h/4, ..., h the shortest edge at the vertex */
 #define SL_MOVES 4 /* moves per vertex and pass */
+#define SL_STAR_COS 256 /* the largest star whose trial cosines are kept (move) */
 
 /* The smallest dihedral angle of the star as it is; *worst = its tet (ball index). */
 static double star_min(const tr_sliver_ctx *c, const tr_u32buf *ball, size_t *worst)
@@ -31,24 +33,53 @@ static double star_min(const tr_sliver_ctx *c, const tr_u32buf *ball, size_t *wo
  * or some angle at most `floor` once a tet is that bad: the caller only looks at values
  * above floor. Ranked by cosine, with one arccosine at the end: the angle is a
  * non-decreasing function of the cosine, so every tet with a cosine at most cf has an
- * angle at most floor. The worst tet as it is (`first`) goes first: a trial that does not
- * open it stops there. */
+ * angle at most floor. The tets `first` and `second` (ball indices) go first: the worst
+ * tet as it is, and the worst of the best trial so far, the likeliest to stop a trial
+ * early. *arg = the ball index of the tet that gave the value; cs (may be NULL): the
+ * smallest cosine of each tet measured, by ball index (all of them unless it stopped
+ * early). */
 static double star_min_at(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
-                          const double x[3], double floor, double cf, size_t first)
+                          const double x[3], double floor, double cf, size_t first,
+                          size_t second, size_t *arg, double *cs)
 {
   double lo = 2;
   int flat = 0;
+  if (second == first)
+    second = ball->n; /* no second: the plain order after the first */
   for (size_t j = 0; j < ball->n; j++) {
-    size_t i = j == 0 ? first : j <= first ? j - 1 : j;
+    size_t i;
+    if (j == 0)
+      i = first;
+    else if (j == 1 && second < ball->n)
+      i = second;
+    else { /* the others in ball order, skipping the one or two taken */
+      size_t r = j - 1 - (second < ball->n), lo2 = first < second ? first : second,
+             hi2 = first < second ? second : first;
+      i = r;
+      if (second < ball->n) {
+        if (i >= lo2)
+          i++;
+        if (i >= hi2)
+          i++;
+      } else if (i >= first)
+        i++;
+    }
     const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
     const double *p[4];
     for (int k = 0; k < 4; k++)
       p[k] = tv[k] == v ? x : m->xyz + 3 * (size_t)tv[k];
     double w, q = tr_tet_min_cos(p[0], p[1], p[2], p[3], &w);
-    if (!(w != 0))
+    if (cs)
+      cs[i] = q;
+    if (!(w != 0)) {
+      if (!flat)
+        *arg = i;
       flat = 1; /* angle 0 (tr_sliver_min_dihedral_at) */
-    else if (q < lo)
+    } else if (q < lo) {
       lo = q;
+      if (!flat)
+        *arg = i;
+    }
     if ((flat && 0 <= floor) || lo <= cf)
       break;
   }
@@ -73,9 +104,10 @@ static double cos_floor(double floor)
 }
 
 /* Every tet of the star exactly positive with v at x, and within the bounds (a tet's
- * ratio may exceed the bound only up to the star's largest ratio as it is, `was`). */
+ * ratio may exceed the bound only up to the star's largest ratio as it is, `was`). cs
+ * (may be NULL): each tet's smallest cosine with v at x, none flat (star_min_at's). */
 static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
-                      const double x[3], double was)
+                      const double x[3], double was, const double *cs)
 {
   const struct tr_mesh *m = c->m;
   for (size_t i = 0; i < ball->n; i++) {
@@ -88,8 +120,14 @@ static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
   }
   for (size_t i = 0; i < ball->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
-    /* the ratio only where the bound looks at it (the circumsphere costs) */
-    double r = 0, q = tr_sliver_min_dihedral_at(m, tv, v, x, NULL);
+    /* the angle as tr_sliver_min_dihedral_at gives it, from the cosine when known; the
+     * ratio only where the bound looks at it (the circumsphere costs) */
+    double r = 0, q;
+    if (cs) {
+      q = tr_dihedral_of_cos(cs[i]);
+      q = isfinite(q) ? q : 0;
+    } else
+      q = tr_sliver_min_dihedral_at(m, tv, v, x, NULL);
     if (c->keep.ratio > 0 && !(q >= c->bound))
       tr_sliver_min_dihedral_at(m, tv, v, x, &r);
     if (!tr_sliver_keeps_bounds(c, tv, v, x, m->region ? m->region[ball->a[i]] : 0, r, q, was))
@@ -173,24 +211,74 @@ static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, doub
     trial[nt + 1][j] = 0.5 * (x0[j] + cen[j]);
   }
   nt += 2;
-  double cf = cos_floor(q0);
-  for (int i = 0; i < nt; i++)
-    val[i] = star_min_at(m, ball, v, trial[i], q0, cf, worst);
+  /* Each trial is measured above the best so far (`best`): one that cannot beat it stops
+   * at its first tet that bad (its value is then only a bound, `cut`). The best trial is
+   * exact, and is the one measuring every trial above q0 would pick, ties to the earlier:
+   * a later trial with a larger value never gets that low. */
+  double cf = cos_floor(q0), best = q0, cfb = cf;
+  size_t second = worst, arg = worst;
+  int cut[SL_STEPS + 2], top = -1;
+  /* the cosines of the trial being measured and of the best one: its validity check
+   * needs its angles again (a star of more than SL_STAR_COS tets measures them anew) */
+  double cs[2][SL_STAR_COS], *cur = ball->n <= SL_STAR_COS ? cs[0] : NULL, *kept = cs[1];
+  for (int i = 0; i < nt; i++) {
+    val[i] = star_min_at(m, ball, v, trial[i], best, cfb, worst, second, &arg, cur);
+    cut[i] = best > q0;
+    if (val[i] > best) { /* measured whole, every tet not flat */
+      best = val[i];
+      cfb = cos_floor(best);
+      second = arg;
+      top = i;
+      if (cur) {
+        double *sw = kept;
+        kept = cur;
+        cur = sw;
+      }
+    }
+  }
   double was = star_ratio(c, ball);
   /* the best trial that is exactly valid; ties to the earlier one */
-  for (;;) {
+  int pick = -1;
+  for (int exact = 0;;) {
     int b = -1;
     for (int i = 0; i < nt; i++)
       if (val[i] > q0 && (b < 0 || val[i] > val[b]))
         b = i;
     if (b < 0)
-      return;
-    if (star_valid(c, ball, v, trial[b], was)) {
-      memcpy(to, trial[b], sizeof trial[b]);
-      *moved = 1;
-      return;
+      break;
+    if (star_valid(c, ball, v, trial[b], was, b == top && cur ? kept : NULL)) {
+      pick = b;
+      break;
     }
     val[b] = -1;
+    /* the runner-up may be among the cut ones: they are measured above q0 alone now */
+    for (int i = 0; i < nt && !exact; i++)
+      if (cut[i] && val[i] >= 0)
+        val[i] = star_min_at(m, ball, v, trial[i], q0, cf, worst, worst, &arg, NULL);
+    exact = 1;
+  }
+#ifndef NDEBUG
+  /* the pick of every trial measured whole above q0, each checked without the kept
+   * cosines: the same trial */
+  int ref = -1;
+  for (int i = 0; i < nt; i++)
+    val[i] = star_min_at(m, ball, v, trial[i], q0, cf, worst, worst, &arg, NULL);
+  for (;;) {
+    int b = -1;
+    for (int i = 0; i < nt; i++)
+      if (val[i] > q0 && (b < 0 || val[i] > val[b]))
+        b = i;
+    if (b < 0 || star_valid(c, ball, v, trial[b], was, NULL)) {
+      ref = b;
+      break;
+    }
+    val[b] = -1;
+  }
+  assert(ref == pick);
+#endif
+  if (pick >= 0) {
+    memcpy(to, trial[pick], sizeof trial[pick]);
+    *moved = 1;
   }
 }
 
