@@ -1018,6 +1018,50 @@ static void volume_bound_kept(const char *path)
   tr_plc_destroy(p);
 }
 
+/* tests/data/thin_boxes_1e-6.off (found by fuzz_pipeline_quality as a slow unit: 20 s a
+ * run under its sanitizers): boxes 96 x 24 and 1e-6 thick, with every option the fuzzer
+ * had on (R = 1.414, sliver level 3, a volume bound of 1/40 of the bounding box,
+ * spacing radii, input edges kept, a budget of 500 points). Every tet is flat there; the
+ * sliver insertion's candidates far off them (circumcentres 100 edges away) were a sixth
+ * of its candidates and most of its time, and are no longer tried (src/sliver/insert.c,
+ * SL_FAR). The mesh validates, conforms exactly, keeps the volume bound, and the sliver
+ * stage still adds points. */
+static void thin_boxes_all_options(const char *path)
+{
+  tr_plc *p = tm_read(path);
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; k++)
+    lo[k] = hi[k] = p->xyz[k];
+  for (uint32_t i = 1; i < p->npoints; i++)
+    for (int k = 0; k < 3; k++) {
+      lo[k] = fmin(lo[k], p->xyz[3 * (size_t)i + k]);
+      hi[k] = fmax(hi[k], p->xyz[3 * (size_t)i + k]);
+    }
+  double V = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]) / 40;
+  tr_options opt = refinement(1.414, V);
+  opt.optimize = 3;
+  opt.refine_spacing_radii = 1;
+  opt.keep_edges = 1;
+  opt.refine_budget = 500;
+  tr_mesh *m = NULL;
+  tr_plc *used = NULL;
+  tr_stats st = {.size = sizeof st};
+  tr_status s = tr_mesh_plc_flags(p, &opt, &m, &st, &used, TR_PIPE_KEEP_EXACT);
+  EXPECT(s == TR_OK, "%s: %s", path, tr_last_error());
+  if (m) {
+    EXPECT(tr_check_mesh(m, TR_CHK_TOPOLOGY, NULL) == TR_OK, "%s: mesh validator: %s", path,
+           tr_last_error());
+    EXPECT(tr_check_conformity(m, used, NULL, 0) == TR_OK, "%s: exact conformity: %s", path,
+           tr_last_error());
+    uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
+    EXPECT(over == 0, "%s: %u of %u tets have a volume above %.17g", path, over, n, V);
+    EXPECT(st.points_added_for_sliver > 0, "%s: the sliver stage added no point", path);
+  }
+  tr_mesh_destroy(m);
+  tr_plc_destroy(used);
+  tr_plc_destroy(p);
+}
+
 /* tests/data/boxes_regions_inner_facing_in.poly: a box [0,4]^3 around a box
  * [1,2.5]^3 whose facets are given facing into it, as a TetGen .poly may (its facets carry
  * no orientation), a region point in each: attribute 1 with maximum volume 0.05 outside,
@@ -1065,6 +1109,7 @@ int main(int argc, char **argv)
       {"ball_in_pieces", NULL, ball_in_pieces},
       {"volume_bound_kept", NULL, volume_bound_kept},
       {"regions_inner_box", NULL, regions_inner_box},
+      {"thin_boxes", NULL, thin_boxes_all_options},
       {"determinism", determinism, NULL},
       {"pinned", pinned_flat_tet_is_opened, NULL},
       {"memo", memo_changes_nothing, NULL},
