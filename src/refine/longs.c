@@ -26,27 +26,31 @@
 #define RF_LONGS_SPAN 4     /* cells per axis a ball may span before it goes to the list */
 #define RF_LONGS_MAXC (1u << 20) /* cell coordinates are clamped to [0, RF_LONGS_MAXC) */
 
+/* The squared distance between vertices a and b (on the doubles). */
+static double len2(const rf_ctx *c, uint32_t a, uint32_t b)
+{
+  const double *u = c->m->xyz + 3 * (size_t)a, *v = c->m->xyz + 3 * (size_t)b;
+  double l2 = 0;
+  for (int j = 0; j < 3; j++)
+    l2 += (v[j] - u[j]) * (v[j] - u[j]);
+  return l2;
+}
+
+/* Whether piece g, of squared length l2, is at least half its input edge. */
+static int long_at(const rf_ctx *c, uint32_t g, double l2)
+{
+  return 4 * l2 >= len2(c, c->ssab[2 * (size_t)g], c->ssab[2 * (size_t)g + 1]);
+}
+
 int rf_piece_long(const rf_ctx *c, uint32_t g)
 {
-  const double *x = c->m->xyz;
-  const double *u = x + 3 * (size_t)c->ssv[2 * (size_t)g], *v = x + 3 * (size_t)c->ssv[2 * (size_t)g + 1];
-  const double *A = x + 3 * (size_t)c->ssab[2 * (size_t)g], *B = x + 3 * (size_t)c->ssab[2 * (size_t)g + 1];
-  double l2 = 0, L2 = 0;
-  for (int j = 0; j < 3; j++) {
-    l2 += (v[j] - u[j]) * (v[j] - u[j]);
-    L2 += (B[j] - A[j]) * (B[j] - A[j]);
-  }
-  return 4 * l2 >= L2;
+  return long_at(c, g, len2(c, c->ssv[2 * (size_t)g], c->ssv[2 * (size_t)g + 1]));
 }
 
 int rf_close_split(const rf_ctx *c, uint32_t g, double emin)
 {
-  const double *x = c->m->xyz;
-  const double *u = x + 3 * (size_t)c->ssv[2 * (size_t)g], *v = x + 3 * (size_t)c->ssv[2 * (size_t)g + 1];
-  double l2 = 0;
-  for (int j = 0; j < 3; j++)
-    l2 += (v[j] - u[j]) * (v[j] - u[j]);
-  return l2 >= 4 * emin && rf_piece_long(c, g);
+  double l2 = len2(c, c->ssv[2 * (size_t)g], c->ssv[2 * (size_t)g + 1]);
+  return l2 >= 4 * emin && long_at(c, g, l2);
 }
 
 /* Piece g's ball: centre, radius with the margin. */
@@ -114,19 +118,19 @@ static tr_status build(rf_ctx *c)
     n += !c->ssdead[g] && rf_piece_long(c, g);
   if (!n)
     return TR_OK;
-  double *len = malloc(sizeof *len * n);
-  if (!len)
+  double *rad = malloc(sizeof *rad * n);
+  if (!rad)
     return tr_error(TR_ERR_NOMEM, "out of memory for %zu long sub-segments", n);
   size_t k = 0;
   for (uint32_t g = 0; g < c->nss; g++)
     if (!c->ssdead[g] && rf_piece_long(c, g)) {
       double o[3], r;
       ball_of(c, g, o, &r);
-      len[k++] = r;
+      rad[k++] = r;
     }
-  qsort(len, n, sizeof *len, by_value);
-  L->h = 4 * len[n / 2]; /* the radius is half the length */
-  free(len);
+  qsort(rad, n, sizeof *rad, by_value);
+  L->h = 4 * rad[n / 2]; /* the radius is half the length */
+  free(rad);
   for (int j = 0; j < 3; j++)
     L->o[j] = INFINITY;
   for (uint32_t v = 0; v < m->nv; v++)

@@ -153,11 +153,12 @@ static double dist2(const double *a, const double *b)
 }
 
 /* Would the point at p (doubles) lie closer to a vertex of the tets (the cavity) than
- * that vertex's insertion radius (its spacing while c->spacing_on, see after_insert)? Such a point
- * would make an edge shorter than the one its neighbour was inserted to fix, and the next
- * round of bad tets around it a finer one still: the cascade that ends only at the budget
- * (Shewchuk 1998, insertion radii; TetGen rejects such circumcentres the same way, Si
- * 2015). A measure in doubles: it only chooses which points are inserted. */
+ * that vertex's insertion radius (its spacing while c->spacing_on, see after_insert)?
+ * Such a point would make an edge shorter than the one its neighbour was inserted to
+ * fix, and the next round of bad tets around it a finer one still: the cascade that ends
+ * only at the budget (Shewchuk 1998, insertion radii; TetGen rejects such circumcentres
+ * the same way, Si 2015). A measure in doubles: it only chooses which points are
+ * inserted. */
 static int too_close(const rf_ctx *c, const uint32_t *tets, size_t n, const double *p)
 {
   const struct tr_mesh *m = c->m;
@@ -392,15 +393,16 @@ static tr_status check_close_skip(rf_ctx *c, uint32_t found, const tr_point *p, 
   if (!ok)
     return TR_OK;
   assert(too_close(c, c->cav.a, c->cav.n, p->d));
-  for (size_t i = 0; c->close_splits && i < c->cav.n; i++)
+  for (size_t i = 0; c->close_splits && i < c->cav.n; i++) {
+    const uint32_t *w = m->tv + 4 * (size_t)c->cav.a[i];
     for (int e = 0; e < 6; e++) {
-      const uint32_t *w = m->tv + 4 * (size_t)c->cav.a[i];
       uint32_t g = rf_subseg_of(c, w[tr_edge_vtx[e][0]], w[tr_edge_vtx[e][1]]);
       if (g == TR_NONE || !rf_close_split(c, g, emin))
         continue;
       tr_point a = tr_mesh_point(m, c->ssv[2 * (size_t)g]), b = tr_mesh_point(m, c->ssv[2 * (size_t)g + 1]);
       assert(!rf_in_diametral(&a, &b, p));
     }
+  }
   rf_cavity_release(c);
   return TR_OK;
 }

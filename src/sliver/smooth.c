@@ -44,26 +44,11 @@ static double star_min_at(const struct tr_mesh *m, const tr_u32buf *ball, uint32
 {
   double lo = 2;
   int flat = 0;
-  if (second == first)
-    second = ball->n; /* no second: the plain order after the first */
-  for (size_t j = 0; j < ball->n; j++) {
-    size_t i;
-    if (j == 0)
-      i = first;
-    else if (j == 1 && second < ball->n)
-      i = second;
-    else { /* the others in ball order, skipping the one or two taken */
-      size_t r = j - 1 - (second < ball->n), lo2 = first < second ? first : second,
-             hi2 = first < second ? second : first;
-      i = r;
-      if (second < ball->n) {
-        if (i >= lo2)
-          i++;
-        if (i >= hi2)
-          i++;
-      } else if (i >= first)
-        i++;
-    }
+  size_t head[2] = {first, second}, nh = second == first ? 1 : 2;
+  for (size_t j = 0; j < nh + ball->n; j++) {
+    size_t i = j < nh ? head[j] : j - nh; /* first, second, then the rest in ball order */
+    if (j >= nh && (i == first || i == second))
+      continue;
     const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
     const double *p[4];
     for (int k = 0; k < 4; k++)
@@ -158,6 +143,16 @@ static int star_closed(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t 
   return 1;
 }
 
+/* The trial with the largest value over q0, the earlier one on ties; -1 if none. */
+static int best_trial(const double *val, int nt, double q0)
+{
+  int b = -1;
+  for (int i = 0; i < nt; i++)
+    if (val[i] > q0 && (b < 0 || val[i] > val[b]))
+      b = i;
+  return b;
+}
+
 /* One improving move of v, if there is one (*moved = 1). */
 static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, double q0,
                  size_t worst, double to[3], int *moved)
@@ -240,10 +235,7 @@ static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, doub
   /* the best trial that is exactly valid; ties to the earlier one */
   int pick = -1;
   for (int exact = 0;;) {
-    int b = -1;
-    for (int i = 0; i < nt; i++)
-      if (val[i] > q0 && (b < 0 || val[i] > val[b]))
-        b = i;
+    int b = best_trial(val, nt, q0);
     if (b < 0)
       break;
     if (star_valid(c, ball, v, trial[b], was, b == top && cur ? kept : NULL)) {
@@ -264,10 +256,7 @@ static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, doub
   for (int i = 0; i < nt; i++)
     val[i] = star_min_at(m, ball, v, trial[i], q0, cf, worst, worst, &arg, NULL);
   for (;;) {
-    int b = -1;
-    for (int i = 0; i < nt; i++)
-      if (val[i] > q0 && (b < 0 || val[i] > val[b]))
-        b = i;
+    int b = best_trial(val, nt, q0);
     if (b < 0 || star_valid(c, ball, v, trial[b], was, NULL)) {
       ref = b;
       break;
