@@ -61,6 +61,26 @@ void tr_facets_free(tr_facets *f)
   memset(f, 0, sizeof *f);
 }
 
+tr_status tr_facets_copy(tr_facets *dst, const tr_facets *src)
+{
+  size_t n = src->ntris ? src->ntris : 1;
+  *dst = *src;
+  dst->group = malloc(sizeof *dst->group * n);
+  dst->inner = malloc(n);
+  dst->start = malloc(sizeof *dst->start * ((size_t)src->ntris + 2));
+  dst->member = malloc(sizeof *dst->member * n);
+  if (!dst->group || !dst->inner || !dst->start || !dst->member) {
+    tr_facets_free(dst);
+    return tr_error(TR_ERR_NOMEM, "out of memory for a copy of %u facets' triangles",
+                    src->ntris);
+  }
+  memcpy(dst->group, src->group, sizeof *dst->group * n);
+  memcpy(dst->inner, src->inner, n);
+  memcpy(dst->start, src->start, sizeof *dst->start * ((size_t)src->ntris + 2));
+  memcpy(dst->member, src->member, sizeof *dst->member * n);
+  return TR_OK;
+}
+
 tr_status tr_facets_build(const struct tr_plc *plc, int keep_edges, tr_facets *out)
 {
   uint32_t n = plc->ntris;

@@ -26,6 +26,8 @@ typedef struct tr_facets {
 /* Groups plc's triangles (union-find, deterministic). keep_edges: every triangle alone. */
 tr_status tr_facets_build(const struct tr_plc *plc, int keep_edges, tr_facets *out);
 void tr_facets_free(tr_facets *f);
+/* dst = a copy of src (dst is overwritten, not freed). */
+tr_status tr_facets_copy(tr_facets *dst, const tr_facets *src);
 
 /* An axis along which input triangle t's projection is not degenerate (its normal's
  * component there is non-zero, exact), -1 if none: the projection facets and the

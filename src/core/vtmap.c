@@ -80,6 +80,25 @@ static tr_status rehash(tr_vtmap *m, uint32_t cap)
   return m->bits ? refilter(m) : TR_OK;
 }
 
+tr_status tr_vtmap_copy(tr_vtmap *dst, const tr_vtmap *src)
+{
+  tr_vtmap_free(dst);
+  tr_vtmap d = {NULL, src->n, src->cap, src->arity, NULL};
+  size_t ns = (size_t)src->cap * (src->arity + 1);
+  if (src->slot && !(d.slot = malloc(ns * sizeof *d.slot)))
+    return tr_error(TR_ERR_NOMEM, "out of memory for a copy of %u vertex-tuple keys", src->n);
+  if (src->bits && !(d.bits = malloc((size_t)src->cap / 8 * sizeof *d.bits))) {
+    free(d.slot);
+    return tr_error(TR_ERR_NOMEM, "out of memory for a copy of %u vertex-tuple keys", src->n);
+  }
+  if (d.slot)
+    memcpy(d.slot, src->slot, ns * sizeof *d.slot);
+  if (d.bits)
+    memcpy(d.bits, src->bits, (size_t)src->cap / 8 * sizeof *d.bits);
+  *dst = d;
+  return TR_OK;
+}
+
 tr_status tr_vtmap_filter(tr_vtmap *m)
 {
   if (!m->cap)

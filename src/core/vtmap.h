@@ -31,6 +31,9 @@ typedef struct tr_vtmap {
 void tr_vtmap_free(tr_vtmap *m);
 /* Empties the map, keeping its memory and arity. */
 void tr_vtmap_clear(tr_vtmap *m);
+/* dst = an exact copy of src (same slots, filter and capacity: the same probes and
+ * the same order of keys); dst's memory is freed first. */
+tr_status tr_vtmap_copy(tr_vtmap *dst, const tr_vtmap *src);
 /* Room for n keys of the given arity without growing (a hint: put grows anyway). */
 tr_status tr_vtmap_reserve(tr_vtmap *m, uint32_t arity, uint32_t n);
 /* Turns on a filter for maps probed mostly for absent keys (every face of a mesh against

@@ -611,21 +611,6 @@ static void discard_outer(struct tr_mesh *m)
 static void ctx_free(rf_ctx *c)
 {
   rf_longs_free(&c->longs);
-  tr_facets_free(&c->fc);
-  free(c->sfv);
-  free(c->sftri);
-  free(c->sfexp);
-  free(c->sfdead);
-  free(c->sfnosplit);
-  tr_vtmap_free(&c->fm);
-  tr_vtmap_free(&c->trimap);
-  free(c->ssv);
-  free(c->ssab);
-  free(c->ssdead);
-  free(c->ssnosplit);
-  tr_edgeset_free(&c->es);
-  free(c->vkind);
-  free(c->vown);
   free(c->vrad);
   free(c->ssfoot);
   free(c->vspace);
@@ -637,6 +622,7 @@ static void ctx_free(rf_ctx *c)
   free(c->vcone);
   free(c->vhead);
   tr_u32buf_free(&c->cnext);
+  rf_tables_free(c); /* last: it zeroes the whole context */
 }
 
 static size_t left(const tr_u32buf *q, size_t head, size_t w)

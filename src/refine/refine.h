@@ -49,6 +49,10 @@
 typedef struct tr_refine_memo {
   uint32_t *line;
   uint32_t n, cap;
+  /* the constraint tables of the last set-up that built them, for the next set-up on the
+   * same sub-faces (memo.c) */
+  struct rf_subs_cache *subs;
+  uint32_t copies; /* set-ups that copied those tables instead of building them */
 } tr_refine_memo;
 void tr_refine_memo_free(tr_refine_memo *memo);
 

@@ -3,7 +3,8 @@
  *   encroach.c  exact encroachment tests and the exact split points on constraints
  *   cavity.c    constrained Bowyer-Watson: locate, cavity, insertion
  *   refine.c    the queues and the main loop
- *   longs.c     the long sub-segments near a point (a close circumcentre's shortcut) */
+ *   longs.c     the long sub-segments near a point (a close circumcentre's shortcut)
+ *   memo.c      what a caller's tr_refine_memo keeps from one set-up for the next */
 #ifndef TR_REFINE_IMPL_H
 #define TR_REFINE_IMPL_H
 
@@ -106,6 +107,23 @@ tr_status rf_longs_near(rf_ctx *c, const double p[3], double emin, int *maybe);
 /* A new sub-segment g: into the grid if it is built and g is long. */
 tr_status rf_longs_added(rf_ctx *c, uint32_t g);
 void rf_longs_free(rf_longs *L);
+
+/* ---- memo.c (what a tr_refine_memo keeps between set-ups) ---- */
+/* Frees the tables rf_subs_init builds (fc, the sub-face and sub-segment arrays, fm,
+ * trimap, es, vkind, vown), then zeroes all of *t. */
+void rf_tables_free(rf_ctx *t);
+/* The memo holds the tables of a set-up on these sub-faces, and the vertex ids they name
+ * still name the same points (the memo's n: ids from n on may have been reused). */
+int rf_memo_fits(const rf_ctx *c, const tr_subfaces *sub);
+/* c's tables copied from the memo's (rf_memo_fits); c's vertex arrays have room. */
+tr_status rf_memo_copy(rf_ctx *c);
+/* The memo (if any) keeps a copy of c's tables, just built from sub; none when out of
+ * memory (the copy only saves time). */
+void rf_memo_keep(rf_ctx *c, const tr_subfaces *sub);
+/* The per-vertex lines of on_input_edge for nv vertices (subs.c): the memo's, its entries
+ * from memo->n on reset, or without a memo a fresh array the caller frees. NULL when out
+ * of memory: every test is then made in full. */
+uint32_t *rf_memo_line(tr_refine_memo *memo, uint32_t nv);
 
 /* ---- subs.c ---- */
 /* Face keys in the shared vertex-tuple map: any listing of the face's vertices. */

@@ -204,38 +204,7 @@ static void input_edge_of(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t tri,
       return;
 }
 
-void tr_refine_memo_free(tr_refine_memo *memo)
-{
-  free(memo->line);
-  memset(memo, 0, sizeof *memo);
-}
-
-/* The per-vertex lines of on_input_edge for nv vertices: the memo's, its entries from
- * memo->n on reset, or a fresh array without one (the caller frees it). NULL when out of
- * memory: every test is then made in full. */
-static uint32_t *memo_line(tr_refine_memo *memo, uint32_t nv)
-{
-  size_t n = nv ? nv : 1;
-  if (!memo) {
-    uint32_t *l = malloc(sizeof *l * 2 * n);
-    if (l)
-      memset(l, 0xff, sizeof *l * 2 * n);
-    return l;
-  }
-  if (memo->cap < n) {
-    uint32_t *l = realloc(memo->line, sizeof *l * 2 * n);
-    if (!l)
-      return NULL;
-    memo->line = l;
-    memo->cap = (uint32_t)n;
-  }
-  if (memo->n > nv)
-    memo->n = nv;
-  memset(memo->line + 2 * (size_t)memo->n, 0xff, sizeof *memo->line * 2 * (n - memo->n));
-  return memo->line;
-}
-
-tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
+static tr_status build_tables(rf_ctx *c, const tr_subfaces *sub)
 {
   const struct tr_plc *plc = c->plc;
   struct tr_mesh *m = c->m;
@@ -259,7 +228,7 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
    * boundary (the facet's sub-faces tile it), two inside */
   tr_vtmap cnt = {0};
   tr_status s = TR_OK;
-  uint32_t *line = memo_line(c->par.memo, m->nv);
+  uint32_t *line = rf_memo_line(c->par.memo, m->nv);
   if (c->fc.nmerged) {
     s = tr_vtmap_reserve(&cnt, 3, 3 * (size_t)sub->n / 2 + 1);
     for (uint32_t f = 0; s == TR_OK && f < sub->n; f++) {
@@ -322,6 +291,68 @@ tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
         c->vown[u] = c->sftri[f];
       }
     }
+  return TR_OK;
+}
+
+#ifndef NDEBUG
+/* The copied tables are those a set-up from scratch builds, slot for slot. */
+static void check_copy(const rf_ctx *c, const tr_subfaces *sub)
+{
+  rf_ctx f;
+  tr_refine_stats st;
+  memset(&f, 0, sizeof f);
+  f.m = c->m;
+  f.plc = c->plc;
+  f.par = c->par;
+  f.par.memo = NULL;
+  f.st = &st;
+  if (build_tables(&f, sub) != TR_OK) {
+    tr_error_clear(); /* out of memory: nothing to compare */
+    free(f.vrad);
+    free(f.vspace);
+    rf_tables_free(&f);
+    return;
+  }
+  uint32_t nv = c->m->nv;
+  assert(f.nsf == c->nsf && f.nss == c->nss);
+  assert(!memcmp(f.sfv, c->sfv, sizeof *f.sfv * 3 * (size_t)f.nsf));
+  assert(!memcmp(f.sftri, c->sftri, sizeof *f.sftri * (size_t)f.nsf));
+  assert(!memcmp(f.sfexp, c->sfexp, sizeof *f.sfexp * (size_t)f.nsf));
+  assert(!memcmp(f.ssv, c->ssv, sizeof *f.ssv * 2 * (size_t)f.nss));
+  assert(!memcmp(f.ssab, c->ssab, sizeof *f.ssab * 2 * (size_t)f.nss));
+  assert(!memcmp(f.vkind, c->vkind, nv) && !memcmp(f.vown, c->vown, sizeof *f.vown * nv));
+  for (uint32_t i = 0; i < f.nsf; i++) /* a build sets no flag */
+    assert(!c->sfdead[i] && !c->sfnosplit[i]);
+  for (uint32_t i = 0; i < f.nss; i++)
+    assert(!c->ssdead[i] && !c->ssnosplit[i]);
+  assert(f.fc.ntris == c->fc.ntris && f.fc.ninner == c->fc.ninner &&
+         f.fc.nmerged == c->fc.nmerged &&
+         !memcmp(f.fc.group, c->fc.group, sizeof *f.fc.group * f.fc.ntris) &&
+         !memcmp(f.fc.member, c->fc.member, sizeof *f.fc.member * f.fc.ntris));
+  const tr_vtmap *a[3] = {&f.fm, &f.trimap, &f.es.m}, *b[3] = {&c->fm, &c->trimap, &c->es.m};
+  for (int i = 0; i < 3; i++)
+    assert(a[i]->cap == b[i]->cap && a[i]->n == b[i]->n &&
+           !memcmp(a[i]->slot, b[i]->slot,
+                   sizeof *a[i]->slot * (size_t)a[i]->cap * (a[i]->arity + 1)));
+  free(f.vrad);
+  free(f.vspace);
+  rf_tables_free(&f); /* last: it zeroes f */
+}
+#endif
+
+tr_status rf_subs_init(rf_ctx *c, const tr_subfaces *sub)
+{
+  if (!rf_memo_fits(c, sub)) {
+    TR_CHECK(build_tables(c, sub));
+    rf_memo_keep(c, sub);
+    return TR_OK;
+  }
+  TR_CHECK(rf_vertex_room(c, c->m->nv + 1));
+  TR_CHECK(rf_memo_copy(c));
+  c->st->merged_edges = c->fc.ninner;
+#ifndef NDEBUG
+  check_copy(c, sub);
+#endif
   return TR_OK;
 }
 

@@ -137,6 +137,44 @@ static int deterministic_layout(void)
   return 0;
 }
 
+/* A copy has the original's slots and filter, answers alone once the original is gone,
+ * grows on its own, and replaces what the destination held. */
+static int copy_is_independent(void)
+{
+  tr_vtmap a = {0}, b = {0};
+  uint32_t k[2];
+  EXPECT_OK(tr_vtmap_reserve(&a, 2, 64), "reserve");
+  EXPECT_OK(tr_vtmap_filter(&a), "filter");
+  for (uint32_t i = 0; i < 100; i++) {
+    tr_vtkey_edge(i, i + 1, k);
+    EXPECT_OK(tr_vtmap_put(&a, 2, k, i, NULL), "a");
+  }
+  tr_vtkey_edge(7, 70, k);
+  EXPECT_OK(tr_vtmap_put(&b, 2, k, 1, NULL), "b before the copy");
+  EXPECT_OK(tr_vtmap_copy(&b, &a), "copy");
+  EXPECT(b.cap == a.cap && b.n == a.n && b.bits &&
+             !memcmp(b.slot, a.slot, (size_t)a.cap * 3 * sizeof *a.slot) &&
+             !memcmp(b.bits, a.bits, (size_t)a.cap / 8 * sizeof *a.bits),
+         "the copy's table differs");
+  EXPECT(tr_vtmap_get(&b, 2, k) == TR_VTMAP_NONE, "the copy kept the destination's key");
+  tr_vtmap_free(&a);
+  for (uint32_t i = 0; i < 100; i++) {
+    tr_vtkey_edge(i + 1, i, k);
+    EXPECT(tr_vtmap_get(&b, 2, k) == i, "the copy lost key %u", i);
+  }
+  for (uint32_t i = 100; i < 1000; i++) { /* past its capacity */
+    tr_vtkey_edge(i, i + 1, k);
+    EXPECT_OK(tr_vtmap_set(&b, 2, k, i), "grow");
+  }
+  tr_vtkey_edge(999, 1000, k);
+  EXPECT(tr_vtmap_get(&b, 2, k) == 999 && b.n == 1000, "the copy did not grow");
+  tr_vtmap empty = {0}, c = {0};
+  EXPECT_OK(tr_vtmap_copy(&c, &empty), "copy of an empty map");
+  EXPECT(c.n == 0 && !c.slot, "an empty map's copy holds something");
+  tr_vtmap_free(&b);
+  return 0;
+}
+
 /* Unoriented keys: an edge or a face read from either side is one key. */
 static int unoriented_keys(void)
 {
@@ -165,5 +203,7 @@ int main(int argc, char **argv)
     return deterministic_layout();
   if (!strcmp(c, "keys"))
     return unoriented_keys();
+  if (!strcmp(c, "copy"))
+    return copy_is_independent();
   return 2;
 }

@@ -857,8 +857,10 @@ static void pinned_flat_tet_is_opened(void)
 }
 
 /* The hooks' reuse of an earlier set-up (tr_refine_memo: which input edge each vertex
- * lies on; sub_exported: each kept sub-face's input triangle) changes no decision: the
- * flat tet of pinned_flat_tet_is_opened opened, then a sub-face and a sub-segment split,
+ * lies on, the tables of the last set-up; sub_exported:
+ * each kept sub-face's input triangle) changes no decision: the flat tet of
+ * pinned_flat_tet_is_opened opened, then a sub-face split (and tried twice more, once
+ * copying the tables of the set-up before) and a sub-segment split,
  * once with a fresh set-up each time and once with the memo (lowered in between, as an
  * undone trial does), give the same vertices, tets and sub-faces, and a valid mesh. A
  * debug build also checks each memo entry and each triangle taken against the full test. */
@@ -887,6 +889,15 @@ static void memo_changes_nothing(void)
     if (s == TR_OK)
       s = tr_refine_split_piece(m, plc, &sub, &par, face, 3, &st);
     EXPECT(s == TR_OK, "memo %d: a sub-face split: %s", use, tr_last_error());
+    /* the split sub-face again: no piece now, so two set-ups on the same sub-faces, the
+     * second one copying the first's tables (a debug build compares them with a build) */
+    for (int again = 0; again < 2 && s == TR_OK; again++) {
+      uint32_t nv0 = m->nv;
+      s = tr_refine_split_piece(m, plc, &sub, &par, face, 3, &st);
+      EXPECT(s == TR_OK && m->nv == nv0, "memo %d: a dead sub-face split: %s", use,
+             tr_last_error());
+    }
+    EXPECT(!use || memo.copies == 1, "memo: %u set-ups copied the tables, not 1", memo.copies);
     memo.n = memo.n > 5 ? 5 : memo.n; /* as after an undone trial: later ids unknown */
     int grew = 0;
     for (uint32_t f = 0; s == TR_OK && f < sub.n && !grew; f++) { /* the first sub-segment */
