@@ -39,7 +39,7 @@ static double ratio_of(const tr_sliver_ctx *c, const uint32_t p[4], double dih)
 {
   double r = 0;
   if (c->keep.ratio > 0 && !(dih >= c->bound))
-    tr_sliver_min_dihedral_at(c->m, p, TR_NONE, NULL, &r);
+    r = tr_sliver_ratio_at(c->m, p, TR_NONE, NULL);
   return r;
 }
 

@@ -8,6 +8,7 @@
  * exactly positive. The insertion is kept only when the smallest dihedral angle of the new
  * tets beats that of the cavity and the refinement's bounds hold, so the mesh's smallest
  * angle never drops. */
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -359,10 +360,38 @@ static int keeps_subfaces(const tr_sliver_ctx *c, const trial *z)
   return 1;
 }
 
-/* The cavity and cone of x for sliver t; 1 when the new tets' smallest angle beats the
- * cavity's and `floor` (the best screened candidate so far) and they keep the bounds. */
-static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int screen,
-                     double floor, trial *z)
+/* The faces of sliver t that no cavity crosses (a sub-face, or one without a real tet
+ * behind it) are on the boundary of every cavity that keeps t (else the tet behind one is
+ * inside, which keeps_subfaces refuses), so x must strictly see each (else shrink takes t
+ * out), and its new tet there must beat `floor`. Where this fails, try_point would too,
+ * after building the cavity: a sixth of the candidates on cheese.off fail here (points
+ * off a cap's plane on the far side). */
+static int fixed_faces_pass(const tr_sliver_ctx *c, uint32_t t, const double x[3],
+                            const tr_point *px, int screen, double floor)
+{
+  const struct tr_mesh *m = c->m;
+  const uint32_t *tv = m->tv + 4 * (size_t)t;
+  for (int k = 0; k < 4; k++) {
+    uint32_t nb = TR_NEIG(m, t, k);
+    uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
+    if (nb != TR_NONE && tr_tet_is_real(m, nb) && !tr_sliver_protected(c, f, 3))
+      continue;
+    if (!sees(m, t, k, px, screen))
+      return 0;
+    if (floor >= 0) { /* the new tet as try_point builds it (angles are at least 0) */
+      uint32_t p[4];
+      memcpy(p, tv, sizeof p);
+      p[k] = m->nv;
+      if (!(tr_sliver_min_dihedral_at(m, p, m->nv, x, NULL) > floor))
+        return 0;
+    }
+  }
+  return 1;
+}
+
+/* try_point after fixed_faces_pass */
+static int try_cavity(const tr_sliver_ctx *c, uint32_t t, const double x[3], int screen,
+                      double floor, trial *z)
 {
   const struct tr_mesh *m = c->m;
   memcpy(z->x, x, sizeof z->x);
@@ -402,7 +431,7 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
   for (uint32_t i = 0; i < z->nf; i++) {
     rat[i] = 0;
     if (c->keep.ratio > 0 && !(dih[i] >= c->bound))
-      tr_sliver_min_dihedral_at(m, z->newv + 4 * (size_t)i, pid, x, &rat[i]);
+      rat[i] = tr_sliver_ratio_at(m, z->newv + 4 * (size_t)i, pid, x);
   }
   uint32_t region = m->region ? m->region[t] : 0; /* no sub-face inside the cavity */
   for (uint32_t i = 0; i < z->nf; i++)
@@ -411,6 +440,22 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
                                          dih[i], was))
       return 0; /* the screen: the ratio part only (the volume part is exact) */
   return 1;
+}
+
+/* The cavity and cone of x for sliver t; 1 when the new tets' smallest angle beats the
+ * cavity's and `floor` (the best screened candidate so far) and they keep the bounds. */
+static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int screen,
+                     double floor, trial *z)
+{
+  tr_point px = tr_pt_d(x);
+  if (fixed_faces_pass(c, t, x, &px, screen, floor))
+    return try_cavity(c, t, x, screen, floor, z);
+#ifndef NDEBUG
+  int full = try_cavity(c, t, x, screen, floor, z); /* the same answer the long way */
+  assert(!full);
+  (void)full;
+#endif
+  return 0;
 }
 
 /* |b - a| */

@@ -28,6 +28,17 @@ double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], u
   return isfinite(lo) ? lo : 0;
 }
 
+double tr_sliver_ratio_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
+                          const double x[3])
+{
+  const double *p[4];
+  for (int i = 0; i < 4; i++)
+    p[i] = t[i] == v ? x : m->xyz + 3 * (size_t)t[i];
+  double r, w; /* tr_tet_min_dihedral's ratio: tr_tet_shape's */
+  tr_tet_shape(p[0], p[1], p[2], p[3], &r, &w, NULL, NULL);
+  return isnan(r) ? INFINITY : r;
+}
+
 double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c,
                               uint32_t d)
 {

@@ -114,7 +114,7 @@ static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
     } else
       q = tr_sliver_min_dihedral_at(m, tv, v, x, NULL);
     if (c->keep.ratio > 0 && !(q >= c->bound))
-      tr_sliver_min_dihedral_at(m, tv, v, x, &r);
+      r = tr_sliver_ratio_at(m, tv, v, x);
     if (!tr_sliver_keeps_bounds(c, tv, v, x, m->region ? m->region[ball->a[i]] : 0, r, q, was))
       return 0;
   }
