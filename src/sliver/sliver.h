@@ -142,12 +142,12 @@ double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, u
                               uint32_t d);
 /* The same with vertex v's coordinates replaced by x (v may be none of them); *ratio (may
  * be NULL) = its radius-edge ratio. */
+double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
+                                 const double x[3], double *ratio);
 /* The radius-edge ratio tr_sliver_min_dihedral_at gives in *ratio, alone (the same
  * double, without the angles it would also measure). */
 double tr_sliver_ratio_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
                           const double x[3]);
-double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
-                                 const double x[3], double *ratio);
 /* tr_sliver_min_dihedral_at(m, m->tv + 4 * t, TR_NONE, NULL, ratio) (the same doubles),
  * remembered per slot: every pass measures every tet, and most did not change since the
  * last. A slot's entry holds its vertex ids, so a tet a flip or a point replaced is
