@@ -110,6 +110,18 @@ double tr_dihedral_of_cos(double lo)
   return 180.0 - acos(lo) * (180.0 / 3.14159265358979323846);
 }
 
+/* the guard of tr_quality_measure's cosines (TR_QUALITY_COS_GUARD, below): f(c) = 180 -
+ * acos(c) 180/pi rises at least 180/pi per unit of cosine, so a cosine 1e-9 under that of
+ * d has an angle at least 5.7e-8 degrees under d, and the roundings of cos, acos and the
+ * products err by under 1e-13 degrees (where the slope is steep, near 0 and 180 degrees,
+ * the guard's gap in degrees grows with it) */
+double tr_dihedral_cos_below(double degrees)
+{
+  if (!(degrees > 0))
+    return -INFINITY;
+  return -cos(degrees * (3.14159265358979323846 / 180.0)) - 1e-9;
+}
+
 double tr_tet_min_dihedral(const double *a, const double *b, const double *c, const double *d,
                            double *ratio, double *volume)
 {

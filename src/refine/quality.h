@@ -28,6 +28,9 @@ double tr_tet_min_dihedral(const double *a, const double *b, const double *c, co
 double tr_tet_min_cos(const double *a, const double *b, const double *c, const double *d,
                       double *volume);
 double tr_dihedral_of_cos(double lo);
+/* A cosine under tr_dihedral_cos_below(d) has tr_dihedral_of_cos under d (-inf for d <= 0:
+ * no angle is under it): a test that an angle loses without its arccosine. */
+double tr_dihedral_cos_below(double degrees);
 
 #define TR_QUALITY_DIH_BINS 18   /* dihedral angles, 10 degrees each */
 #define TR_QUALITY_RATIO_BINS 7  /* radius-edge: <1, <1.414, <2, <4, <10, <100, >=100 */

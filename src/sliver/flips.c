@@ -4,6 +4,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "refine/quality.h"
 #include "sliver/sliver.h"
 
 #define SL_MAX_NEW (2 * SL_MAX_RING - 4)
@@ -67,11 +68,16 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, double floor, ca
   double beat = fmax(floor, x->oldmin);
   /* (f_i, f_i+1, b, a) positive for all three exactly when ab crosses the open face:
    * f is listed so that (f0, f1, f2, a) is positive */
+  const double below = tr_dihedral_cos_below(beat); /* the screen of insert.c's cones */
   x->newmin = INFINITY;
   for (int i = 0; i < 3; i++) {
     uint32_t *p = x->newv + 4 * i;
     p[0] = f[i], p[1] = f[(i + 1) % 3], p[2] = b, p[3] = a;
-    dih[i] = tr_sliver_min_dihedral_at(m, p, TR_NONE, NULL, NULL);
+    int flat;
+    double lo = tr_sliver_min_cos_at(m, p, TR_NONE, NULL, &flat);
+    if (flat ? !(0 > beat) : lo < below)
+      return 0;
+    dih[i] = tr_sliver_angle_of_cos(lo, flat);
     x->newmin = fmin(x->newmin, dih[i]);
     if (!(x->newmin > beat))
       return 0; /* the exact tests only for a flip worth making */
@@ -120,10 +126,19 @@ static void ring_dp(ring *R)
           continue;
         uint32_t pa[4] = {R->A, R->r[i], R->r[k], R->r[j]};
         uint32_t pb[4] = {R->B, R->r[j], R->r[k], R->r[i]};
-        double qa = tr_sliver_min_dihedral_at(R->m, pa, TR_NONE, NULL, NULL);
+        /* each of the two tets must beat best: its cosine screened first (insert.c) */
+        const double below = tr_dihedral_cos_below(best);
+        int fa, fb;
+        double ca = tr_sliver_min_cos_at(R->m, pa, TR_NONE, NULL, &fa);
+        if (fa ? !(0 > best) : ca < below)
+          continue;
+        double qa = tr_sliver_angle_of_cos(ca, fa);
         if (fmin(q, qa) <= best)
           continue;
-        double qb = tr_sliver_min_dihedral_at(R->m, pb, TR_NONE, NULL, NULL);
+        double cb = tr_sliver_min_cos_at(R->m, pb, TR_NONE, NULL, &fb);
+        if (fb ? !(0 > best) : cb < below)
+          continue;
+        double qb = tr_sliver_angle_of_cos(cb, fb);
         q = fmin(q, fmin(qa, qb));
         if (q <= best || !positive(R->m, pa[0], pa[1], pa[2], pa[3]) ||
             !positive(R->m, pb[0], pb[1], pb[2], pb[3]) ||

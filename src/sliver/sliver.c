@@ -28,6 +28,25 @@ double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], u
   return isfinite(lo) ? lo : 0;
 }
 
+double tr_sliver_min_cos_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
+                            const double x[3], int *flat)
+{
+  const double *p[4];
+  for (int i = 0; i < 4; i++)
+    p[i] = t[i] == v ? x : m->xyz + 3 * (size_t)t[i];
+  double w, lo = tr_tet_min_cos(p[0], p[1], p[2], p[3], &w);
+  *flat = !(w != 0);
+  return lo;
+}
+
+double tr_sliver_angle_of_cos(double lo, int flat)
+{
+  if (flat)
+    return 0; /* as tr_sliver_min_dihedral_at */
+  double a = tr_dihedral_of_cos(lo);
+  return isfinite(a) ? a : 0;
+}
+
 double tr_sliver_ratio_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
                           const double x[3])
 {

@@ -144,6 +144,13 @@ double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, u
  * be NULL) = its radius-edge ratio. */
 double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
                                  const double x[3], double *ratio);
+/* tr_sliver_min_dihedral_at without a ratio, in two steps: the smallest of the six
+ * cosines (*flat = 1 for a tet flat in doubles), then its angle, the same double. A
+ * caller that only asks whether the angle beats a bound screens the cosine against
+ * tr_dihedral_cos_below first: most candidates lose there, without an arccosine. */
+double tr_sliver_min_cos_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
+                            const double x[3], int *flat);
+double tr_sliver_angle_of_cos(double lo, int flat);
 /* The radius-edge ratio tr_sliver_min_dihedral_at gives in *ratio, alone (the same
  * double, without the angles it would also measure). */
 double tr_sliver_ratio_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,

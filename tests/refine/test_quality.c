@@ -188,12 +188,46 @@ static void quality_summary_equals_per_angle_definition(void)
   }
 }
 
+/* tr_dihedral_cos_below(d) is a safe screen: every cosine under it has an angle under d,
+ * on random bounds and cosines, on the bounds' own cosines moved by a few ulps and by the
+ * guard's width (where the screen must not claim what only the arccosine decides), near 0
+ * and 180 degrees where an angle moves fastest with its cosine, and for d <= 0. */
+static void cos_below_screens_only_angles_under_the_bound(void)
+{
+  uint64_t r = 4242;
+  long screened = 0;
+  for (int it = 0; it < 200000; it++) {
+    double d = it % 4 == 0 ? 180 * unit(&r) : it % 4 == 1 ? 1e-3 * unit(&r)
+             : it % 4 == 2 ? 180 - 1e-3 * unit(&r) : 5 + 10 * unit(&r);
+    double cb = tr_dihedral_cos_below(d), c0 = -cos(d * (3.14159265358979323846 / 180.0));
+    double c;
+    switch (it % 5) {
+    case 0: c = 2 * unit(&r) - 1; break;
+    case 1: c = nextafter(cb, -2); break;
+    case 2: c = c0 - 2e-9 * unit(&r); break;
+    case 3: c = nextafter(nextafter(c0, -2), -2); break;
+    default: c = c0 - 1e-9 * (1 - 1e-6); break;
+    }
+    c = c < -1 ? -1 : c > 1 ? 1 : c;
+    if (!(c < cb))
+      continue;
+    screened++;
+    EXPECT(tr_dihedral_of_cos(c) < d, "bound %.17g degrees, cosine %.17g: angle %.17g", d, c,
+           tr_dihedral_of_cos(c));
+  }
+  EXPECT(screened > 50000, "only %ld cosines screened", screened);
+  EXPECT(tr_dihedral_cos_below(0) == -INFINITY && tr_dihedral_cos_below(-1) == -INFINITY &&
+             tr_dihedral_cos_below(NAN) == -INFINITY,
+         "a bound of 0 degrees or less screens no cosine");
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
       {"min_dihedral", min_dihedral_equals_smallest_of_six, NULL},
       {"quality_summary", quality_summary_equals_per_angle_definition, NULL},
       {"dihedral_at_edge", dihedral_at_edge_matches_geometry, NULL},
+      {"cos_below", cos_below_screens_only_angles_under_the_bound, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }

@@ -740,10 +740,40 @@ static void a_pinned_cap_under_a_free_point_is_opened_by_the_last_resort(void)
   tr_mesh_destroy(m);
 }
 
+/* tr_sliver_min_cos_at then tr_sliver_angle_of_cos give tr_sliver_min_dihedral_at's double,
+ * on every tet of sliver boxes folded by 0 (a flat tet: angle 0), 1e-12 and 0.1, with the
+ * tet's own vertices and with one of them moved (into the square's plane: flat again). */
+static void the_two_step_angle_is_the_one_step_angle(void)
+{
+  const double folds[] = {0, 1e-12, 0.1};
+  int flat = 0, n = 0;
+  for (int f = 0; f < 3; f++) {
+    tr_mesh *m = sliver_box(folds[f]);
+    for (uint32_t t = 0; t < m->nt; t++) {
+      if (!tr_tet_is_real(m, t))
+        continue;
+      const uint32_t *tv = m->tv + 4 * (size_t)t;
+      for (int mv = -1; mv < 4; mv++) {
+        uint32_t v = mv < 0 ? TR_NONE : tv[mv];
+        double x[3] = {0.5, 0.5, 0.5};
+        int fl;
+        double lo = tr_sliver_min_cos_at(m, tv, v, x, &fl);
+        double a = tr_sliver_angle_of_cos(lo, fl), b = tr_sliver_min_dihedral_at(m, tv, v, x, NULL);
+        EXPECT(a == b, "fold %g tet %u vertex %d: %.17g vs %.17g", folds[f], t, mv, a, b);
+        flat += fl;
+        n++;
+      }
+    }
+    tr_mesh_destroy(m);
+  }
+  EXPECT(flat > 0 && n > flat, "%d tets measured, %d flat: both kinds wanted", n, flat);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
       {"flip", a_sliver_is_removed_by_a_flip, NULL},
+      {"two_step", the_two_step_angle_is_the_one_step_angle, NULL},
       {"constraints", constraints_are_kept_and_their_vertices_stay, NULL},
       {"smoothing", smoothing_moves_a_free_vertex_and_raises_the_angle, NULL},
       {"insertion", a_sliver_is_removed_by_a_new_interior_point, NULL},
