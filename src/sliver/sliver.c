@@ -2,6 +2,7 @@
  * (sliver.h). */
 #include "sliver/sliver.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -83,6 +84,23 @@ int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t
 int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv)
 {
   uint32_t k[3];
+  /* a constraint's vertices are never movable (tr_sliver_ctx_init clears them, and only
+   * new interior points become movable), and most faces asked about have a movable one:
+   * no key to sort and no probe for them (this function went from 3.7% to 1.7% of
+   * cheese.off's CPU) */
+  int any = 0;
+  for (int i = 0; i < nv; i++)
+    any |= c->movable[v[i]];
+  if (any) {
+#ifndef NDEBUG
+    if (nv == 3)
+      tr_vtkey_face(v[0], v[1], v[2], k);
+    else
+      tr_vtkey_edge(v[0], v[1], k);
+    assert(tr_vtmap_get(nv == 3 ? &c->faces : &c->edges, (uint32_t)nv, k) == TR_VTMAP_NONE);
+#endif
+    return 0;
+  }
   if (nv == 3) {
     tr_vtkey_face(v[0], v[1], v[2], k);
     return tr_vtmap_get(&c->faces, 3, k) != TR_VTMAP_NONE;
