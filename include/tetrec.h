@@ -211,7 +211,9 @@ typedef struct tr_options {
                       from Swap32 straight to cavity retriangulation (for comparisons) */
   int keep_surface;      /* no Steiner point on the surface: the output's boundary faces
                             are exactly the input triangles, or the call fails naming the
-                            point (TetGen's -Y; implies no smoothing; default 0) */
+                            point (TetGen's -Y; implies no smoothing; default 0). Quality
+                            refinement and sliver removal then add interior points only;
+                            quality_subface_ratio with it is TR_ERR_USAGE */
   int strict_doubles; /* a written double farther than 2^-40 of the bounding box diagonal
                          from the constraint its exact point lies on makes tr_mesh_plc fail
                          with TR_ERR_INVALID_MESH (default 0: a warning on stderr) */

@@ -27,6 +27,24 @@ def test_keep_surface_boundary_faces_are_the_input_triangles():
     assert mesh.stats["steiner_on_edges"] == 0 and mesh.stats["steiner_on_facets"] == 0
 
 
+def test_keep_surface_with_quality_adds_interior_points_only():
+    surface = tetrec.read(str(DATA / "schoenhardt.off"))
+    mesh = tetrec.tetrahedralize(surface.points, surface.triangles, keep_surface=True,
+                                 quality=1.414, max_volume=0.05)
+    check_mesh(mesh, surface.points, surface.triangles)
+    assert mesh.stats["points_added_for_quality"] > 0
+    got = sorted(face_key(f) for f in mesh.boundary_faces.tolist())
+    want = sorted(face_key(t) for t in surface.triangles.tolist())
+    assert got == want
+    pts = frac_points(mesh.points)
+    for t in mesh.tets.tolist():
+        assert tets_volume6(pts, [t]) <= Fraction(6) * Fraction(0.05)
+    with pytest.raises(tetrec.Error) as e:
+        tetrec.tetrahedralize(surface.points, surface.triangles, keep_surface=True,
+                              quality=1.414, subface_quality=2.0)
+    assert e.value.status == "TR_ERR_USAGE"
+
+
 def test_quality_refinement_adds_points_and_conforms(unit_cube):
     mesh = tetrec.tetrahedralize(*unit_cube, quality=1.414, max_volume=0.05)
     check_mesh(mesh, *unit_cube)

@@ -93,7 +93,8 @@ static const struct option {
     {"--keep-surface", NULL, C_MESH,
      "no Steiner point on the surface: the boundary faces of the\n"
      "output are exactly the input triangles (no smoothing either);\n"
-     "fails naming the point where this cannot be done"},
+     "fails naming the point where this cannot be done; --quality\n"
+     "and --max-volume then add interior points only"},
     {"-Y", NULL, C_MESH, "the same as --keep-surface (TetGen's switch)"},
     {"--keep-edges", NULL, C_MESH,
      "under refinement, keep every input edge a chain of mesh\n"

@@ -829,6 +829,10 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
   c.spacing_on = par->spacing_radii;
   c.close_splits = 1;
   c.shape_bound = par->subface_ratio;
+  if (s == TR_OK && par->keep_surface) { /* the input triangles stay the boundary faces */
+    memset(c.ssnosplit, 1, c.nss);
+    memset(c.sfnosplit, 1, c.nsf);
+  }
   if (s == TR_OK)
     s = seed_all(&c);
   if (s == TR_OK)
@@ -842,13 +846,15 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
             "tetrec: refinement added %llu points (%llu on edges, %llu on facets, %llu "
             "inside); bad tets left: %llu for small input angles, %llu whose circumcentre "
             "lies too close to a new vertex, %llu otherwise; %u input edges inside exactly "
-            "planar facets merged away (--keep-edges keeps them)%s\n",
+            "planar facets merged away (--keep-edges keeps them)%s%s\n",
             (unsigned long long)st->points, (unsigned long long)st->on_segments,
             (unsigned long long)st->on_facets, (unsigned long long)st->inside,
             (unsigned long long)st->skipped_small_angle, (unsigned long long)st->skipped_close,
             (unsigned long long)st->skipped_other, st->merged_edges,
             st->spacing_stopped ? "; the radius-edge refinement stopped at the point cap of "
-                                  "--spacing-radii (volume bounds still met)" : "");
+                                  "--spacing-radii (volume bounds still met)" : "",
+            par->keep_surface ? "; --keep-surface: no point on the surface, so a bad tet whose "
+                                "circumcentre encroaches it is left" : "");
   ctx_free(&c);
   return s;
 }

@@ -68,6 +68,10 @@ typedef struct tr_refine_params {
   double subface_ratio; /* sub-faces over this radius-edge ratio are split for their shape
                            (subshape.c); 0: off */
   int keep_edges;      /* every input edge stays a constraint: no merged facets (facets.h) */
+  int keep_surface;    /* no point on a constraint (--keep-surface): every sub-segment and
+                          sub-face is unsplittable, so only interior points are added and a
+                          bad tet whose circumcentre encroaches a piece is left (tr_refine
+                          only; the hooks below are not called under it) */
   int flat_splits;     /* 1: a sub-segment opposite an angle over 120 degrees of a sub-face
                           is split at that vertex's foot, once (flat.c); 0: off */
   int spacing_radii;   /* the circumcentre rule takes a vertex's current spacing (refine.c,

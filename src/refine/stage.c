@@ -28,6 +28,9 @@ tr_status tr_refine_check_options(const tr_options *opt)
       !(opt->quality_subface_ratio >= 1 && isfinite(opt->quality_subface_ratio)))
     return tr_error(TR_ERR_USAGE, "sub-face radius-edge bound %g: it must be at least 1",
                     opt->quality_subface_ratio);
+  if (opt->quality_subface_ratio != 0 && opt->keep_surface)
+    return tr_error(TR_ERR_USAGE, "--subface-quality splits boundary triangles, which "
+                    "--keep-surface keeps as they are");
   if (opt->max_volume != 0 && !(opt->max_volume > 0 && isfinite(opt->max_volume)))
     return tr_error(TR_ERR_USAGE, "maximum volume %g: it must be positive", opt->max_volume);
   return TR_OK;
@@ -107,8 +110,10 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   par.subface_ratio = opt->quality_subface_ratio;
   par.max_volume = opt->max_volume;
   par.verbose = opt->verbose;
-  par.keep_edges = opt->keep_edges;
-  par.flat_splits = opt->quality_subface_ratio > 0; /* flat.c: part of the option */
+  /* under --keep-surface no facet is merged either: its input edges are boundary edges */
+  par.keep_edges = opt->keep_edges || opt->keep_surface;
+  par.keep_surface = opt->keep_surface;
+  par.flat_splits = opt->quality_subface_ratio > 0 && !opt->keep_surface; /* flat.c */
   par.spacing_radii = opt->refine_spacing_radii;
   /* the smallest of all bounds sizes the default budget */
   double least = opt->max_volume;

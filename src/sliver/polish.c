@@ -140,7 +140,8 @@ tr_status tr_sliver_polish(tr_sliver_ctx *c, tr_subfaces *sub, int level, tr_sli
        * pipe 5.99 -> 5.19) */
       uint32_t key[4];
       tr_sliver_tet_key(h[i].v, key);
-      for (int wide = 0; wide < 2 && s == TR_OK && !done && scratch && sub && c->keep.plc;
+      for (int wide = 0; wide < 2 && s == TR_OK && !done && scratch && sub && c->keep.plc &&
+                         !c->keep.keep_surface;
            wide++) {
         tr_vtmap *memo = wide ? &fanned : &capped;
         if (!(wide ? i == 0 && r > 0 && wide_trials < max_wide : trials < max_trials) ||

@@ -90,6 +90,8 @@ typedef struct tr_sliver_bounds {
   const struct tr_plc *plc;    /* NULL, or its region points' maximum volumes by attribute */
   int keep_edges;              /* refinement's tr_refine_params.keep_edges */
   int flat_splits;             /* refinement's tr_refine_params.flat_splits */
+  int keep_surface;            /* --keep-surface: no point on a constraint, so no pinned
+                                  tets' points (sliver.c) and no cap trials (caps.c) */
 } tr_sliver_bounds;
 
 typedef struct tr_sliver_params {

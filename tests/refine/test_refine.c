@@ -11,6 +11,7 @@
 #include "refine/quality.h"
 #include "refine/refine.h"
 #include "../pipeline/tmesh.h"
+#include "tvolume.h"
 
 /* The tetrahedron a, b, c, d as a closed surface (orientation repaired by validation). */
 static tr_plc *tet_surface(const double a[3], const double b[3], const double c[3],
@@ -546,52 +547,6 @@ static void wedge_5_degrees_in_a_facet(void)
   prism_subfaces("wedge_5_facet", 10, 0.875, 2, 5000, 0);
 }
 
-/* The tets of m (of region `region`, or all when it is UINT32_MAX) whose exact volume is
- * above V. */
-static uint32_t count_over(const tr_mesh *m, double V, uint32_t region, uint32_t *counted)
-{
-  mpq_t v6, lim, x;
-  mpq_inits(v6, lim, x, NULL);
-  mpq_set_d(lim, V);
-  mpq_set_ui(x, 6, 1);
-  mpq_mul(lim, lim, x);
-  uint32_t over = 0;
-  *counted = 0;
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t) || (region != UINT32_MAX && m->region[t] != region))
-      continue;
-    (*counted)++;
-    mpq_t a[3], b[3], c[3], d[3];
-    for (int i = 0; i < 3; i++)
-      mpq_inits(a[i], b[i], c[i], d[i], NULL);
-    coords(m, m->tv[4 * t], a);
-    coords(m, m->tv[4 * t + 1], b);
-    coords(m, m->tv[4 * t + 2], c);
-    coords(m, m->tv[4 * t + 3], d);
-    for (int i = 0; i < 3; i++) {
-      mpq_sub(b[i], b[i], a[i]);
-      mpq_sub(c[i], c[i], a[i]);
-      mpq_sub(d[i], d[i], a[i]);
-    }
-    /* det[b; c; d] */
-    mpq_set_ui(v6, 0, 1);
-    static const int P[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
-    for (int k = 0; k < 6; k++) {
-      mpq_mul(x, b[P[k][0]], c[P[k][1]]);
-      mpq_mul(x, x, d[P[k][2]]);
-      if (k < 3)
-        mpq_add(v6, v6, x);
-      else
-        mpq_sub(v6, v6, x);
-    }
-    over += mpq_cmp(v6, lim) > 0;
-    for (int i = 0; i < 3; i++)
-      mpq_clears(a[i], b[i], c[i], d[i], NULL);
-  }
-  mpq_clears(v6, lim, x, NULL);
-  return over;
-}
-
 /* -a V: the exact volume of every tet is at most V. */
 static void max_volume(void)
 {
@@ -601,7 +556,7 @@ static void max_volume(void)
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "max_volume", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
-    uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
+    uint32_t n, over = tv_count_over(m, V, UINT32_MAX, &n);
     EXPECT(over == 0, "max_volume: %u tets have a volume above %g", over, V);
     EXPECT(n >= 100, "max_volume: %u tets cannot all be under 1/100", n);
   }
@@ -665,7 +620,7 @@ static void max_volume_past_the_spacing_cap(void)
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "max_volume_spacing_cap", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
-    uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
+    uint32_t n, over = tv_count_over(m, V, UINT32_MAX, &n);
     EXPECT(r.st.points_added_for_quality > 2500, "the cap was not reached: %llu points",
            (unsigned long long)r.st.points_added_for_quality);
     EXPECT(over == 0, "max_volume_spacing_cap: %u of %u tets have a volume above %g", over, n,
@@ -699,10 +654,10 @@ static void region_max_volume(void)
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "region_max_volume", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
-    uint32_t n, over = count_over(m, V, 5, &n), nout;
+    uint32_t n, over = tv_count_over(m, V, 5, &n), nout;
     EXPECT(over == 0, "region_max_volume: %u tets of the inner region above %g", over, V);
     EXPECT(n >= 63, "region_max_volume: %u inner tets cannot all be under 1/500", n);
-    count_over(m, V, 3, &nout);
+    tv_count_over(m, V, 3, &nout);
     EXPECT(nout > 0 && r.st.points_added_for_quality > 0,
            "region_max_volume: %u outer tets, %llu points added", nout,
            (unsigned long long)r.st.points_added_for_quality);
@@ -956,7 +911,7 @@ static void each_bound(const char *what, const char *path, double V)
       tm_run r;
       tr_mesh *m = tm_mesh(&r, name, p, &opt, TR_CHK_TOPOLOGY);
       if (m && V > 0) {
-        uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
+        uint32_t n, over = tv_count_over(m, V, UINT32_MAX, &n);
         EXPECT(over == 0, "%s: %u of %u tets have a volume above %.17g", name, over, n, V);
       }
       tm_free(&r);
@@ -1014,7 +969,7 @@ static void bounded_run(const char *path, tr_options opt, double div, tr_stats *
            tr_last_error());
     EXPECT(tr_check_conformity(m, used, NULL, 0) == TR_OK, "%s: exact conformity: %s", path,
            tr_last_error());
-    uint32_t n, over = count_over(m, V, UINT32_MAX, &n);
+    uint32_t n, over = tv_count_over(m, V, UINT32_MAX, &n);
     EXPECT(over == 0, "%s: %u of %u tets have a volume above %.17g", path, over, n, V);
   }
   tr_mesh_destroy(m);
@@ -1072,7 +1027,7 @@ static void regions_inner_box(const char *path)
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "regions_inner_box", p, &opt, TR_CHK_TOPOLOGY);
   if (m) {
-    uint32_t n1, n2, over1 = count_over(m, 0.05, 1, &n1), over2 = count_over(m, 0.001, 2, &n2);
+    uint32_t n1, n2, over1 = tv_count_over(m, 0.05, 1, &n1), over2 = tv_count_over(m, 0.001, 2, &n2);
     EXPECT(r.st.inclusions == 1 && r.st.cavities == 0, "inner box: %llu inclusions, %llu cavities",
            (unsigned long long)r.st.inclusions, (unsigned long long)r.st.cavities);
     EXPECT(n1 > 0 && n2 >= 3375, "tets: %u in region 1, %u in region 2", n1, n2);

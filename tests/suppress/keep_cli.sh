@@ -5,7 +5,10 @@
 # (an internal facet, tets of one region on both sides) is meshed with its surface as
 # given; with --recovery paper (a Steiner point on the fin's edge, whose star meets the
 # fin) it exits 11 naming the point and the edge, and writes nothing; --keep-surface with
-# --keep-steiner is a usage error.
+# --keep-steiner is a usage error. With --quality, refinement adds interior points only:
+# Schoenhardt's prism under -Y -q 1.414 -a 0.05 gets points, none on its surface, and check
+# verifies the result; --subface-quality with -Y is a usage error (it splits the boundary
+# triangles -Y keeps).
 # usage: keep_cli.sh TETREC GEN_HARD SCHOENHARDT.off WORKDIR
 set -u
 tetrec=$1
@@ -54,4 +57,21 @@ grep -q -- "--keep-surface: Steiner point .* on input edge (" "$work/finp.log" |
 "$tetrec" mesh "$schoen" -o "$work/u.node" -Y --keep-steiner 2>"$work/u.log"
 rc=$?
 [ $rc -eq 1 ] || say "-Y --keep-steiner: exit $rc, want 1"
+# quality refinement under -Y: interior points only, and the volume bound still holds
+"$tetrec" mesh "$schoen" -o "$work/q.node" -Y --quality 1.414 -a 0.05 --stats "$work/q.json" \
+  2>"$work/q.log" || say "-Y -q: mesh exited $?: $(tail -1 "$work/q.log")"
+grep -q '"points_added_for_quality": 0,' "$work/q.json" && say "-Y -q: refinement added no point"
+grep -q '"steiner_on_edges": 0,' "$work/q.json" && grep -q '"steiner_on_facets": 0,' "$work/q.json" ||
+  say "-Y -q: Steiner points on the surface: $(grep steiner "$work/q.json")"
+grep -q "0 on edges, 0 on facets" "$work/q.log" ||
+  say "-Y -q: refinement put points on the surface: $(grep refinement "$work/q.log")"
+"$tetrec" check "$schoen" "$work/q.node" -v 2>"$work/q.check" ||
+  say "-Y -q: check exited $?: $(tail -1 "$work/q.check")"
+grep -q "conforms exactly to the surface, volume equals the enclosed volume" "$work/q.check" ||
+  say "-Y -q: check did not verify the mesh: $(cat "$work/q.check")"
+"$tetrec" mesh "$schoen" -o "$work/qs.node" -Y --quality 1.414 --subface-quality 2 2>"$work/qs.log"
+rc=$?
+[ $rc -eq 1 ] || say "-Y --subface-quality: exit $rc, want 1"
+grep -q -- "--subface-quality splits boundary triangles, which --keep-surface keeps" "$work/qs.log" ||
+  say "-Y --subface-quality: message: $(cat "$work/qs.log")"
 exit $fail

@@ -9,7 +9,12 @@
  *            the validators after every removal or relocation (TR_SUP_CHECK), in the
  *            --keep-surface mode;
  *   refused: keep_surface fails with TR_ERR_UNSUPPORTED and a message naming the point
- *            and the input edge or facet, and writes no mesh. */
+ *            and the input edge or facet, and writes no mesh;
+ *   quality: keep_surface with quality refinement (R = 1.414, and a volume bound of half
+ *            the mean volume of the keep mode's tets, so that refinement must add points):
+ *            everything keep checks, points added, every one inside (the boundary faces
+ *            are still the input triangles), and every tet's exact volume within the
+ *            bound (issue 17: refinement adds interior points only under it). */
 #include <gmp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,14 +33,39 @@
 #include "../pipeline/texpect.h"
 #include "../pipeline/trecover.h"
 #include "keepcheck.h"
+#include "../refine/tvolume.h"
 
 static void run(const char *name, tr_plc *plc, double vol6, int ball, const char *mode)
 {
   int keep = strcmp(mode, "default") != 0, refused = !strcmp(mode, "refused");
+  int quality = !strcmp(mode, "quality");
   tr_options opt;
   tr_options_default(&opt);
   opt.verbose = 0;
   opt.keep_surface = keep;
+  double bound = 0;
+  if (quality) { /* the keep mode's mesh first: its tets' mean volume */
+    tr_mesh *m0 = NULL;
+    tr_plc *used0 = NULL;
+    tr_status s0 = tr_mesh_plc_ex(plc, &opt, &m0, NULL, &used0);
+    EXPECT(s0 == TR_OK, "%s: keep mode: %s", name, tr_last_error());
+    if (s0 == TR_OK) {
+      mpq_t v;
+      mpq_init(v);
+      if (vol6 != 0)
+        mpq_set_d(v, vol6);
+      else
+        tr_input_domain_volume6(used0, v);
+      bound = mpq_get_d(v) / 6 / (2.0 * tr_mesh_num_tets(m0));
+      mpq_clear(v);
+    }
+    tr_mesh_destroy(m0);
+    tr_plc_destroy(used0);
+    if (!(bound > 0))
+      return;
+    opt.quality_ratio = 1.414;
+    opt.max_volume = bound;
+  }
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
   tr_stats st;
@@ -75,6 +105,16 @@ static void run(const char *name, tr_plc *plc, double vol6, int ball, const char
          "%s: %llu Steiner points in the mesh, counted %llu/%llu/%llu", name,
          (unsigned long long)nsteiner, (unsigned long long)st.steiner_on_edges,
          (unsigned long long)st.steiner_on_facets, (unsigned long long)st.steiner_interior);
+  if (quality) {
+    uint32_t n, over = tv_count_over(m, bound, UINT32_MAX, &n);
+    EXPECT(over == 0, "%s: %u of %u tets over the volume bound %g", name, over, n, bound);
+    EXPECT(st.points_added_for_quality > 0, "%s: refinement added no point: a test of nothing",
+           name);
+    fprintf(stderr, "%s (quality): %llu interior points from refinement, %llu from sliver "
+            "removal, %u tets within %g\n", name,
+            (unsigned long long)st.points_added_for_quality,
+            (unsigned long long)st.points_added_for_sliver, n, bound);
+  }
   if (keep) {
     char why[256];
     EXPECT(keep_surface_holds(m, used, why, sizeof why) == 0, "%s: surface: %s", name, why);
@@ -122,12 +162,12 @@ static void steps(const char *name, tr_plc *plc)
 int main(int argc, char **argv)
 {
   if (argc != 3) {
-    fprintf(stderr, "usage: %s CASE|FILE.off default|keep|refused|steps\n", argv[0]);
+    fprintf(stderr, "usage: %s CASE|FILE.off default|keep|refused|steps|quality\n", argv[0]);
     return 2;
   }
   const char *name = argv[1], *mode = argv[2];
   if (strcmp(mode, "default") && strcmp(mode, "keep") && strcmp(mode, "refused") &&
-      strcmp(mode, "steps")) {
+      strcmp(mode, "steps") && strcmp(mode, "quality")) {
     fprintf(stderr, "unknown mode '%s'\n", mode);
     return 2;
   }
