@@ -34,6 +34,10 @@
  * volume bound of 1/40 of the bounding box, bit 5 --spacing-radii, bit 6 --subface-quality
  * 1.414 (with its flat splits) and bit 7 --keep-edges; the same validators run on the
  * refined mesh, and with the volume bound every tet's exact volume must be at most it.
+ * Bit 0 of the second byte adds --keep-surface (without --subface-quality, which it
+ * refuses): the boundary must then be the input triangles with no point on them
+ * (tests/suppress/keepcheck.h), and a refusal naming a Steiner point is an expected
+ * outcome.
  * The point budget is 500 (a box 2^-20 thin and 96 long needs ~10^15 points for
  * R = 1.414, and the default budget would take minutes under the sanitizers): stopping at
  * it with its message is an expected outcome, any other error is a finding.
@@ -53,6 +57,10 @@
 #include "output/round.h"
 #include "pipeline/pipeline.h"
 #include "tetrec.h"
+#ifdef TR_FUZZ_QUALITY
+#include "../../tests/refine/tvolume.h"
+#include "../../tests/suppress/keepcheck.h"
+#endif
 
 /* ---- the byte stream: bits in order, zeros once the input is exhausted ---- */
 typedef struct {
@@ -113,50 +121,9 @@ static void add_quad(gen *g, bitrd *r, const uint32_t q[4])
 }
 
 #ifdef TR_FUZZ_QUALITY
-/* the quality byte of this input (see the top comment) */
-static uint32_t quality_sel;
+/* the quality bytes of this input (see the top comment) */
+static uint32_t quality_sel, keep_sel;
 
-/* Every real tet's exact volume is at most V: 6 V against the determinant. */
-static uint32_t count_over_volume(const tr_mesh *m, double V)
-{
-  mpq_t v6, lim, x, p[4][3];
-  mpq_inits(v6, lim, x, NULL);
-  for (int k = 0; k < 4; k++)
-    for (int i = 0; i < 3; i++)
-      mpq_init(p[k][i]);
-  mpq_set_d(lim, V);
-  mpq_set_ui(x, 6, 1);
-  mpq_mul(lim, lim, x);
-  uint32_t over = 0;
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t))
-      continue;
-    for (int k = 0; k < 4; k++) {
-      tr_point q = tr_mesh_point(m, m->tv[4 * t + (uint32_t)k]);
-      for (int i = 0; i < 3; i++)
-        tr_point_get_q(&q, i, p[k][i]);
-    }
-    for (int k = 1; k < 4; k++)
-      for (int i = 0; i < 3; i++)
-        mpq_sub(p[k][i], p[k][i], p[0][i]);
-    static const int P[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
-    mpq_set_ui(v6, 0, 1);
-    for (int k = 0; k < 6; k++) {
-      mpq_mul(x, p[1][P[k][0]], p[2][P[k][1]]);
-      mpq_mul(x, x, p[3][P[k][2]]);
-      if (k < 3)
-        mpq_add(v6, v6, x);
-      else
-        mpq_sub(v6, v6, x);
-    }
-    over += mpq_cmp(v6, lim) > 0;
-  }
-  for (int k = 0; k < 4; k++)
-    for (int i = 0; i < 3; i++)
-      mpq_clear(p[k][i]);
-  mpq_clears(v6, lim, x, NULL);
-  return over;
-}
 #endif
 
 static void finding(const char *stage, tr_status st, const char *msg)
@@ -204,6 +171,9 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
   opt.refine_spacing_radii = (int)(quality_sel >> 5 & 1);
   opt.quality_subface_ratio = quality_sel >> 6 & 1 ? 1.414 : 0;
   opt.keep_edges = (int)(quality_sel >> 7 & 1);
+  opt.keep_surface = (int)(keep_sel & 1);
+  if (opt.keep_surface)
+    opt.quality_subface_ratio = 0;
   opt.refine_budget = 500;
 #endif
   tr_mesh *m = NULL;
@@ -223,7 +193,9 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
             (unsigned long long)stats.points_added_for_edges,
             (unsigned long long)stats.points_added_for_facets, 1e3 * stats.total_seconds);
 #ifdef TR_FUZZ_QUALITY
-  if (st == TR_ERR_NOMEM && strstr(tr_last_error(), "point budget")) {
+  if ((st == TR_ERR_NOMEM && strstr(tr_last_error(), "point budget")) ||
+      (st == TR_ERR_UNSUPPORTED && opt.keep_surface &&
+       strstr(tr_last_error(), "--keep-surface: Steiner point"))) {
     tr_mesh_destroy(m);
     tr_plc_destroy(used);
     tr_plc_destroy(plc);
@@ -266,8 +238,13 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
     mpq_clear(v);
   }
 #ifdef TR_FUZZ_QUALITY
+  if (opt.keep_surface) {
+    char why[256];
+    if (keep_surface_holds(m, used, why, sizeof why) != 0)
+      finding("--keep-surface", TR_ERR_INVALID_MESH, why);
+  }
   if (vmax > 0) {
-    uint32_t over = count_over_volume(m, vmax);
+    uint32_t counted, over = tv_count_over(m, vmax, UINT32_MAX, &counted);
     if (over) {
       char msg[160];
       snprintf(msg, sizeof msg, "%u tets have an exact volume above the bound %.17g", over,
@@ -583,6 +560,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   bitrd r = {data, size, 0, 0, 0};
 #ifdef TR_FUZZ_QUALITY
   quality_sel = bits(&r, 8);
+  keep_sel = bits(&r, 8);
 #endif
   uint32_t b0 = bits(&r, 8);
   if (b0 & 1)

@@ -669,10 +669,16 @@ static tr_status run(rf_ctx *c)
     if (c->st->points >= c->par.budget && (left(&c->qseg, c->hseg, 1) || left(&c->qface, c->hface, 1) ||
                                             left(&c->qtet, c->htet, 5)))
       return tr_error(TR_ERR_NOMEM,
-                      "refinement stopped at its point budget of %llu points with %zu bad tets "
-                      "and %zu encroached constraint pieces still queued (an input angle too "
-                      "small for the bound? raise the budget or relax -q/-a)",
-                      (unsigned long long)c->par.budget, left(&c->qtet, c->htet, 5),
+                      "refinement stopped at its point budget of %llu points (%llu on input "
+                      "edges, %llu on input faces, %llu inside) with %zu bad tets and %zu "
+                      "encroached constraint pieces still queued: an input angle too small "
+                      "for the bound, or a part of the domain much thinner than its faces "
+                      "are wide (its faces need points about as close as it is thin)? raise "
+                      "--refine-budget, relax -q/-a, or keep the surface as given "
+                      "(--keep-surface: interior points only)",
+                      (unsigned long long)c->par.budget, (unsigned long long)c->st->on_segments,
+                      (unsigned long long)c->st->on_facets, (unsigned long long)c->st->inside,
+                      left(&c->qtet, c->htet, 5),
                       left(&c->qseg, c->hseg, 1) + left(&c->qface, c->hface, 1));
     if (c->hseg < c->qseg.n) {
       uint32_t g = c->qseg.a[c->hseg++];

@@ -338,8 +338,8 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   }
   /* the tets left pinned between constraints get points on them, then a round of their
    * own (a plc is needed: refinement's points are placed on its input edges and faces) */
-  for (int r = 0; s == TR_OK && c.keep.plc && !c.keep.keep_surface && par->level >= TR_SLIVER_INSERT &&
-                  r < SL_PINNED_ROUNDS; r++) {
+  int pinned_points = c.keep.plc && !c.keep.keep_surface && par->level >= TR_SLIVER_INSERT;
+  for (int r = 0; s == TR_OK && pinned_points && r < SL_PINNED_ROUNDS; r++) {
     uint64_t on;
     s = open_pinned(&c, sub, npoints, st, &on);
     if (s != TR_OK || !on)

@@ -35,6 +35,15 @@
 #include "keepcheck.h"
 #include "../refine/tvolume.h"
 
+/* 6 x the domain's volume: the hard case's own figure (vol6 != 0), else the meshed PLC's */
+static void domain_vol6(const tr_plc *used, double vol6, mpq_t v)
+{
+  if (vol6 != 0)
+    mpq_set_d(v, vol6);
+  else
+    tr_input_domain_volume6(used, v);
+}
+
 static void run(const char *name, tr_plc *plc, double vol6, int ball, const char *mode)
 {
   int keep = strcmp(mode, "default") != 0, refused = !strcmp(mode, "refused");
@@ -52,10 +61,7 @@ static void run(const char *name, tr_plc *plc, double vol6, int ball, const char
     if (s0 == TR_OK) {
       mpq_t v;
       mpq_init(v);
-      if (vol6 != 0)
-        mpq_set_d(v, vol6);
-      else
-        tr_input_domain_volume6(used0, v);
+      domain_vol6(used0, vol6, v);
       bound = mpq_get_d(v) / 6 / (2.0 * tr_mesh_num_tets(m0));
       mpq_clear(v);
     }
@@ -91,10 +97,7 @@ static void run(const char *name, tr_plc *plc, double vol6, int ball, const char
   EXPECT(s == TR_OK, "%s: mesh validator: %s", name, tr_last_error());
   mpq_t v;
   mpq_init(v);
-  if (vol6 != 0)
-    mpq_set_d(v, vol6);
-  else
-    tr_input_domain_volume6(used, v);
+  domain_vol6(used, vol6, v);
   s = tr_check_conformity(m, used, v, 0);
   EXPECT(s == TR_OK, "%s: conformity: %s", name, tr_last_error());
   mpq_clear(v);
