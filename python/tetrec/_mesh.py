@@ -192,12 +192,13 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     attribute, max_volume), the tets of each point's cell carry the attribute in
     .regions, and a max_volume > 0 bounds their volumes (quality refinement).
     keep_surface: no Steiner point on the surface, the boundary faces are exactly the
-    input triangles (tetrec.Error when that cannot be done). keep_steiner: the
-    recovery's Steiner points stay on the input edges and facets (by default they are
-    removed or moved inside where that can be done exactly). quality: R or (R, D), the
-    radius-edge bound of constrained Delaunay refinement and a minimum dihedral angle D in
-    degrees that sliver removal works towards (a warning counts the tets left under it);
-    max_volume: refinement until every tet's volume is at most it.
+    input triangles (tetrec.Error when that cannot be done); with quality or max_volume,
+    refinement then adds interior points only (subface_quality with it is an error).
+    keep_steiner: the recovery's Steiner points stay on the input edges and facets (by
+    default they are removed or moved inside where that can be done exactly). quality: R
+    or (R, D), the radius-edge bound of constrained Delaunay refinement and a minimum
+    dihedral angle D in degrees that sliver removal works towards (a warning counts the
+    tets left under it); max_volume: refinement until every tet's volume is at most it.
     keep_edges: under refinement, every input edge stays a chain of mesh edges (by
     default the edges between exactly coplanar input triangles of the same marker are
     merged away, and refinement's sub-faces may cross them).
