@@ -113,7 +113,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   /* under --keep-surface no facet is merged either: its input edges are boundary edges */
   par.keep_edges = opt->keep_edges || opt->keep_surface;
   par.keep_surface = opt->keep_surface;
-  par.flat_splits = opt->quality_subface_ratio > 0 && !opt->keep_surface; /* flat.c */
+  par.flat_splits = opt->quality_subface_ratio > 0; /* flat.c: part of the option */
   par.spacing_radii = opt->refine_spacing_radii;
   /* the smallest of all bounds sizes the default budget */
   double least = opt->max_volume;

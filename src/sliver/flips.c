@@ -75,7 +75,7 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, double floor, ca
     p[0] = f[i], p[1] = f[(i + 1) % 3], p[2] = b, p[3] = a;
     int flat;
     double lo = tr_sliver_min_cos_at(m, p, TR_NONE, NULL, &flat);
-    if (flat ? !(0 > beat) : lo < below)
+    if (tr_sliver_cos_loses(lo, flat, below, beat))
       return 0;
     dih[i] = tr_sliver_angle_of_cos(lo, flat);
     x->newmin = fmin(x->newmin, dih[i]);
@@ -119,7 +119,7 @@ static void ring_dp(ring *R)
       int j = i + len, bk = -1;
       /* a sub-polygon whose best is at or under the floor spoils every triangulation that
        * holds it: it counts as none (-1), and the ones over the floor come out the same */
-      double best = R->floor;
+      double best = R->floor, below = tr_dihedral_cos_below(best);
       for (int k = i + 1; k < j; k++) {
         double q = fmin(R->val[i][k], R->val[k][j]);
         if (q < 0 || q <= best)
@@ -127,16 +127,15 @@ static void ring_dp(ring *R)
         uint32_t pa[4] = {R->A, R->r[i], R->r[k], R->r[j]};
         uint32_t pb[4] = {R->B, R->r[j], R->r[k], R->r[i]};
         /* each of the two tets must beat best: its cosine screened first (insert.c) */
-        const double below = tr_dihedral_cos_below(best);
         int fa, fb;
         double ca = tr_sliver_min_cos_at(R->m, pa, TR_NONE, NULL, &fa);
-        if (fa ? !(0 > best) : ca < below)
+        if (tr_sliver_cos_loses(ca, fa, below, best))
           continue;
         double qa = tr_sliver_angle_of_cos(ca, fa);
         if (fmin(q, qa) <= best)
           continue;
         double cb = tr_sliver_min_cos_at(R->m, pb, TR_NONE, NULL, &fb);
-        if (fb ? !(0 > best) : cb < below)
+        if (tr_sliver_cos_loses(cb, fb, below, best))
           continue;
         double qb = tr_sliver_angle_of_cos(cb, fb);
         q = fmin(q, fmin(qa, qb));
@@ -148,6 +147,7 @@ static void ring_dp(ring *R)
                                     qb, R->was))
           continue;
         best = q;
+        below = tr_dihedral_cos_below(best);
         bk = k;
       }
       R->val[i][j] = bk < 0 ? -1 : best;

@@ -427,7 +427,7 @@ static int try_cavity(const tr_sliver_ctx *c, uint32_t t, const double x[3], int
     int fl;
     lo[i] = tr_sliver_min_cos_at(m, z->newv + 4 * (size_t)i, pid, x, &fl);
     flat[i] = (uint8_t)fl;
-    if (fl ? !(0 > thr) : lo[i] < below)
+    if (tr_sliver_cos_loses(lo[i], fl, below, thr))
       return 0; /* its angle is at most thr */
   }
   if (!manifold(z->newv, apex, z->nf) || !keeps_vertices(c, z) || !keeps_subfaces(c, z))

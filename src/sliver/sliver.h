@@ -153,6 +153,12 @@ double tr_sliver_min_dihedral_at(const struct tr_mesh *m, const uint32_t t[4], u
 double tr_sliver_min_cos_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
                             const double x[3], int *flat);
 double tr_sliver_angle_of_cos(double lo, int flat);
+/* The screen itself: 1 when the angle of (lo, flat) is surely at most `bound`, whose
+ * tr_dihedral_cos_below is `below` (a flat tet's angle is 0). */
+static inline int tr_sliver_cos_loses(double lo, int flat, double below, double bound)
+{
+  return flat ? !(0 > bound) : lo < below;
+}
 /* The radius-edge ratio tr_sliver_min_dihedral_at gives in *ratio, alone (the same
  * double, without the angles it would also measure). */
 double tr_sliver_ratio_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t v,
