@@ -255,6 +255,13 @@ typedef struct tr_options {
                                put next to it since), not its insertion radius; finer meshes
                                with fewer slivers on long thin parts, more points and CPU
                                (src/refine/refine.h). 0 (default): off */
+  int refine_partial; /* what reaching refine_budget does. 0 (default): tr_mesh_plc fails
+                         with TR_ERR_NOMEM and no mesh. 1: refinement stops there and the
+                         rest of the pipeline (sliver removal, rounding) runs on the mesh
+                         made so far, which is returned with TR_OK: valid and conforming,
+                         the bounds not met everywhere (tr_stats.refine_budget_reached = 1,
+                         tets_over_bounds counts the tets left over them). The CLI sets it,
+                         writes that mesh and exits 8 */
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
@@ -295,6 +302,11 @@ typedef struct tr_stats {
   /* input edges inside merged planar facets under refinement (tr_options.keep_edges):
    * no constraints, so not kept as chains of mesh edges */
   uint64_t input_edges_merged;
+  /* refinement reached its point budget (1) and, under tr_options.refine_partial, returned
+   * the mesh made so far; tets_over_bounds: tets of the output whose radius-edge ratio is
+   * over quality_ratio or whose volume is over its bound (max_volume, its region's), in
+   * doubles, those a small input angle exempts included; both 0 without refinement */
+  uint64_t refine_budget_reached, tets_over_bounds;
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

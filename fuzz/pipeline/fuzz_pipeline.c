@@ -40,7 +40,10 @@
  * outcome.
  * The point budget is 500 (a box 2^-20 thin and 96 long needs ~10^15 points for
  * R = 1.414, and the default budget would take minutes under the sanitizers): stopping at
- * it with its message is an expected outcome, any other error is a finding.
+ * it with its message is an expected outcome, any other error is a finding. Bit 1 of the
+ * second byte sets refine_partial (the CLI's way): the mesh made at the budget is then
+ * returned and goes through every check but the volume bound's, with no point added by
+ * sliver removal after the stop.
  *
  * TR_FUZZ_DUMP=path writes the generated PLC (.off, .mesh, ...) before meshing, to turn
  * a finding into a regression file; TR_FUZZ_VERBOSE=1 prints one line per input. */
@@ -172,6 +175,7 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
   opt.quality_subface_ratio = quality_sel >> 6 & 1 ? 1.414 : 0;
   opt.keep_edges = (int)(quality_sel >> 7 & 1);
   opt.keep_surface = (int)(keep_sel & 1);
+  opt.refine_partial = (int)(keep_sel >> 1 & 1);
   if (opt.keep_surface)
     opt.quality_subface_ratio = 0;
   opt.refine_budget = 500;
@@ -243,7 +247,16 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
     if (keep_surface_holds(m, used, why, sizeof why) != 0)
       finding("--keep-surface", TR_ERR_INVALID_MESH, why);
   }
-  if (vmax > 0) {
+  if (stats.refine_budget_reached &&
+      (!opt.refine_partial || stats.points_added_for_sliver || stats.points_added_for_quality != 500)) {
+    char msg[160];
+    snprintf(msg, sizeof msg, "stopped at the budget of 500 with %llu refinement and %llu "
+             "sliver points (refine_partial %d)",
+             (unsigned long long)stats.points_added_for_quality,
+             (unsigned long long)stats.points_added_for_sliver, opt.refine_partial);
+    finding("refine_partial", TR_ERR_INVALID_MESH, msg);
+  }
+  if (vmax > 0 && !stats.refine_budget_reached) {
     uint32_t counted, over = tv_count_over(m, vmax, UINT32_MAX, &counted);
     if (over) {
       char msg[160];

@@ -147,6 +147,21 @@ def test_refine_budget_stops_refinement_with_an_error():
         tetrec.tetrahedralize(points, tris, quality=1.414, refine_budget=0)
     mesh = tetrec.tetrahedralize(points, tris, quality=1.414, refine_budget=10**6)
     check_mesh(mesh, points, tris)
+    assert mesh.stats["refine_budget_reached"] == 0
+
+
+def test_refine_partial_returns_the_mesh_made_at_the_budget():
+    points, tris = slab()
+    with pytest.warns(UserWarning, match="stopped at its point budget"):
+        mesh = tetrec.tetrahedralize(points, tris, quality=1.414, max_volume=1e-2,
+                                     refine_budget=150, refine_partial=True)
+    check_mesh(mesh, points, tris)
+    assert mesh.stats["refine_budget_reached"] == 1
+    assert mesh.stats["points_added_for_quality"] == 150
+    assert mesh.stats["points_added_for_sliver"] == 0
+    assert 0 < mesh.stats["tets_over_bounds"] <= mesh.stats["volume_elements"]
+    with pytest.raises(TypeError):
+        tetrec.tetrahedralize(points, tris, quality=1.414, refine_partial="yes")
 
 
 def test_refinement_options_without_refinement_warn(unit_cube):

@@ -181,7 +181,7 @@ def validate(points, triangles=None, *, markers=None):
 def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
                    keep_surface=False, keep_steiner=False, quality=None, max_volume=None,
                    optimize=None, keep_edges=False, subface_quality=None,
-                   refine_budget=None, spacing_radii=False, exact=False,
+                   refine_budget=None, refine_partial=False, spacing_radii=False, exact=False,
                    smooth=True, round_budget=None, verbose=0, progress=None, threads=0):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
@@ -216,6 +216,11 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     TR_ERR_NOMEM); by default 100 per input point + 100,000, + 20 per max_volume in
     the domain's volume, at most 2^24 or 8 per input point. A volume bound asking for
     more than 8 tets per budget point raises TR_ERR_NOMEM before refinement starts.
+    refine_partial: at the budget, return the mesh made so far instead (valid and
+    conforming, the bounds not met everywhere; sliver removal adds no point to it), with
+    a UserWarning and stats["refine_budget_reached"] = 1; stats["tets_over_bounds"]
+    counts its tets over the radius-edge or volume bound (the CLI writes such a mesh and
+    exits 8).
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: Mesh.write() defaults to writing exact rational Steiner points.
@@ -245,7 +250,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     if keep_steiner:
         options["keep_steiner"] = keep_steiner
     # flags, not truth values: keep_edges="no" must not turn it on
-    for name, flag in (("keep_edges", keep_edges), ("spacing_radii", spacing_radii)):
+    for name, flag in (("keep_edges", keep_edges), ("spacing_radii", spacing_radii),
+                       ("refine_partial", refine_partial)):
         if not isinstance(flag, (bool, np.bool_)):
             raise TypeError(f"{name} must be True or False, not {type(flag).__name__}")
         if flag:
@@ -268,7 +274,7 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
             refined = True  # malformed: the C layer names what is wrong with it
     if not refined:
         idle = [name for name in ("optimize", "subface_quality", "refine_budget", "keep_edges",
-                                     "spacing_radii")
+                                     "spacing_radii", "refine_partial")
                 if name in options]
         if idle:
             warnings.warn(f"tetrahedralize({', '.join(idle)}): no effect without quality "
@@ -276,4 +282,9 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
                           stacklevel=2)
     pts, tris, mk = _prepare(points, triangles, markers)
     handle, stats = _tetrec.tetrahedralize(pts, tris, mk, options)
+    if stats.get("refine_budget_reached"):
+        warnings.warn(f"tetrahedralize: refinement stopped at its point budget: the mesh is "
+                      f"valid and conforming, but {stats['tets_over_bounds']} of its "
+                      f"{stats['volume_elements']} tets are over the bounds (raise "
+                      "refine_budget or relax quality/max_volume)", stacklevel=2)
     return Mesh(handle, stats, bool(exact))

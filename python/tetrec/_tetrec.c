@@ -148,7 +148,7 @@ static int progress_hook(void *user, const char *stage, double fraction)
 static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
     "max_volume", "optimize", "keep_edges", "subface_quality", "refine_budget",
-    "spacing_radii", "holes", "regions", "threads", NULL};
+    "spacing_radii", "refine_partial", "holes", "regions", "threads", NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
 static double positive(PyObject *value, const char *name)
@@ -220,7 +220,8 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
       }
       opt->threads = (int)x;
     } else if (!strcmp(k, "keep_surface") || !strcmp(k, "keep_steiner") ||
-               !strcmp(k, "keep_edges") || !strcmp(k, "spacing_radii")) {
+               !strcmp(k, "keep_edges") || !strcmp(k, "spacing_radii") ||
+               !strcmp(k, "refine_partial")) {
       int x = PyObject_IsTrue(value);
       if (x < 0)
         return -1;
@@ -230,6 +231,8 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         opt->keep_edges = x;
       else if (!strcmp(k, "spacing_radii"))
         opt->refine_spacing_radii = x;
+      else if (!strcmp(k, "refine_partial"))
+        opt->refine_partial = x;
       else
         opt->keep_steiner = x;
     } else if (!strcmp(k, "quality")) {
@@ -345,7 +348,9 @@ static PyObject *stats_dict(const tr_stats *s)
                 {"points_added_for_sliver", s->points_added_for_sliver},
                 {"sliver_flips", s->sliver_flips},
                 {"sliver_points_smoothed", s->sliver_points_smoothed},
-                {"input_edges_merged", s->input_edges_merged}};
+                {"input_edges_merged", s->input_edges_merged},
+                {"refine_budget_reached", s->refine_budget_reached},
+                {"tets_over_bounds", s->tets_over_bounds}};
   const struct {
     const char *name;
     double value;

@@ -34,7 +34,8 @@ static const char usage[] =
     "exit status (= tr_status):\n"
     "  0 ok, 1 usage, 2 I/O error, 3 parse error, 4 invalid input (NaN, bad index,\n"
     "  zero-area triangle, ...), 5 degenerate point set, 6 open or non-manifold surface,\n"
-    "  7 self-intersecting input, 8 out of memory, 9 invalid mesh, 10 internal error,\n"
+    "  7 self-intersecting input, 8 out of memory or a size limit (--refine-budget:\n"
+    "  the mesh made so far is written), 9 invalid mesh, 10 internal error,\n"
     "  11 not implemented\n";
 
 enum { C_MESH = 1, C_DELAUNAY = 2, C_CHECK = 4, C_CONVERT = 8, C_CHECK_SURFACE = 16, C_ALL = 31 };
@@ -131,7 +132,9 @@ static const struct option {
     {"--max-volume", "V", C_MESH, "refinement until every tet's volume is at most V"},
     {"-a", "V", C_MESH, "the same as --max-volume (TetGen's switch)"},
     {"--refine-budget", "N", C_MESH,
-     "points refinement may add before it stops with exit 8\n"
+     "points refinement may add; at N it stops, the mesh made so\n"
+     "far (valid and conforming, the bounds not met everywhere)\n"
+     "is written and tetrec exits 8\n"
      "(default: 100 per input point + 100,000, + 20 per V of the\n"
      "domain's volume with --max-volume, at most 2^24 or 8 per\n"
      "input point); a volume bound asking for over 8 tets per\n"
@@ -542,6 +545,7 @@ static int cmd_mesh(const args *a)
   opt.quality_subface_ratio = a->subface_quality;
   opt.max_volume = a->max_volume;
   opt.refine_budget = a->refine_budget;
+  opt.refine_partial = 1; /* the mesh at the budget is written, then exit 8 */
   if (a->optimize)
     opt.optimize = a->optimize - 1;
   opt.threads = a->threads;
@@ -653,6 +657,11 @@ static int cmd_mesh(const args *a)
             (unsigned long long)stats.steiner_interior,
             (unsigned long long)stats.steiner_removed,
             (unsigned long long)stats.steiner_relocated);
+  if (s == TR_OK && stats.refine_budget_reached)
+    s = tr_error(TR_ERR_NOMEM, "refinement stopped at its point budget (--refine-budget): %s "
+                 "holds the mesh made so far, valid and conforming, with %llu of its %llu tets "
+                 "over the bounds", path, (unsigned long long)stats.tets_over_bounds,
+                 (unsigned long long)stats.volume_elements);
   tr_mesh_destroy(mesh);
   free(out);
   return finish(a, &stats, t0, s);

@@ -203,7 +203,7 @@ static tr_status run(ctx *c, uint64_t *nflips)
  * when the four new tets are positive exactly and in doubles; each split quarters the
  * volume, so the passes end. Refusing those flips instead left tets flat in doubles that
  * the rounding repair could not fix. The pass runs with any volume bound, flips or not. */
-static tr_status split_over(ctx *c)
+static tr_status split_over_bound(ctx *c)
 {
   struct tr_mesh *m = c->m;
   for (int changed = 1; changed;) {
@@ -246,7 +246,7 @@ static tr_status split_over(ctx *c)
 }
 
 tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr_plc *plc,
-                             double max_volume, uint64_t *nflips)
+                             double max_volume, int split_over, uint64_t *nflips)
 {
   *nflips = 0;
   if (!m->region)
@@ -254,6 +254,7 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
   int bounded = max_volume > 0;
   for (uint32_t i = 0; i < plc->nregions; i++)
     bounded |= plc->region_maxvol[i] > 0;
+  bounded &= split_over != 0;
   /* no Steiner point: the doubles are the exact points */
   int flat = m->vq && tr_round_count_nonpositive(m, NULL) > 0;
   if (!flat && !bounded)
@@ -271,7 +272,7 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
   /* also the last net under every stage before: refinement's and sliver removal's own
    * steps keep the bounds, and a tet still over one here is a defect they missed */
   if (st == TR_OK && bounded)
-    st = split_over(&c);
+    st = split_over_bound(&c);
   free(c.sub);
   tr_u32buf_free(&c.shell);
   return st;

@@ -42,8 +42,10 @@
 
 /* m: the working mesh after tr_outer_color (regions enabled); sub: its sub-faces; plc:
  * the meshed PLC (its segments are constraints too, its region points' maximum volumes
- * bounds); max_volume: the bound on every tet (0: none). *nflips = flips taken. */
+ * bounds); max_volume: the bound on every tet (0: none); split_over 0: no tet is split for
+ * a bound (refinement stopped at its point budget, tr_options.refine_partial, and the
+ * bounds are not met anyway). *nflips = flips taken. */
 tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr_plc *plc,
-                             double max_volume, uint64_t *nflips);
+                             double max_volume, int split_over, uint64_t *nflips);
 
 #endif

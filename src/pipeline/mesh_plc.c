@@ -260,20 +260,27 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   int region_bounds = 0; /* a region point with a maximum volume */
   for (uint32_t i = 0; p && i < p->nregions; i++)
     region_bounds |= p->region_maxvol[i] > 0;
-  if (st == TR_OK && (opt.quality_ratio != 0 || opt.max_volume != 0 ||
-                      opt.quality_min_dihedral != 0 || region_bounds)) {
+  int refined = opt.quality_ratio != 0 || opt.max_volume != 0 ||
+                opt.quality_min_dihedral != 0 || region_bounds;
+  if (st == TR_OK && refined) {
     PROGRESS(TR_STAGE_REFINE, 0);
     uint32_t nv0 = m->nv;
     if (st == TR_OK)
       st = tr_refine_stage(m, p, &sub, &opt, keep_hull, &stats->points_added_for_quality,
-                           &stats->input_edges_merged);
+                           &stats->input_edges_merged, &stats->refine_budget_reached);
     if (st == TR_OK)
       st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv0, &vkind, &vindex);
     /* sliver removal: refinement bounds the radius-edge ratio, which slivers meet */
     if (st == TR_OK && opt.optimize > 0) {
       /* a dihedral target D raises both bounds to D where it is above them */
       double dt = opt.quality_min_dihedral;
-      tr_sliver_params sp = {opt.optimize, fmax(TR_SLIVER_BOUND, dt), TR_SLIVER_ROUNDS,
+      /* at the point budget (refine_partial) none is left for sliver points: flips and
+       * moves only (slab_1e-9 once took 100 s more adding 67k points to a mesh of flat
+       * tets that refinement had left) */
+      int level = stats->refine_budget_reached && opt.optimize > TR_SLIVER_SMOOTH
+                      ? TR_SLIVER_SMOOTH
+                      : opt.optimize;
+      tr_sliver_params sp = {level, fmax(TR_SLIVER_BOUND, dt), TR_SLIVER_ROUNDS,
                              fmax(TR_SLIVER_INSERT_BOUND, dt),
                              {opt.quality_ratio, opt.max_volume, p, opt.keep_edges,
                               opt.quality_subface_ratio > 0, opt.keep_surface}};
@@ -303,7 +310,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   /* Before compaction: the flips need the sub-faces, which are in m's numbering. */
   uint32_t nv_flips = m ? m->nv : 0; /* m is NULL once a stage before failed */
   if (st == TR_OK)
-    st = tr_round_flip_flat(m, &sub, p, opt.max_volume, &stats->rounding_flips);
+    st = tr_round_flip_flat(m, &sub, p, opt.max_volume, !stats->refine_budget_reached,
+                            &stats->rounding_flips);
   if (st == TR_OK && m->nv > nv_flips) /* centroids of tets the flips made over -a */
     st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv_flips, &vkind, &vindex);
   if (st == TR_OK && stats->rounding_flips && opt.verbose >= 2)
@@ -368,6 +376,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
               "target %g degrees (the smallest %.3g): sliver removal could not lift them\n",
               (unsigned long long)tr_quality_count_below(res, dt),
               (unsigned long long)stats->volume_elements, dt, stats->min_dihedral);
+    if (refined)
+      st = tr_refine_count_over(res, p, &opt, &stats->tets_over_bounds);
     if (opt.verbose >= 2)
       fprintf(stderr, "tetrec: %u regions\n", nreg);
   }

@@ -845,6 +845,16 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
     s = run(&c);
   if (s == TR_OK && par->flat_splits)
     s = flat_pass(&c);
+  if (s == TR_ERR_NOMEM && par->partial && st->points >= c.par.budget) {
+    /* the loop stops between insertions, so the mesh holds every constraint: an
+     * encroached piece left unsplit is still a chain of mesh edges or faces */
+    if (par->verbose >= 1)
+      fprintf(stderr, "tetrec: warning: %s; the mesh made so far is kept (sliver removal "
+              "adds no point to it)\n", tr_last_error());
+    tr_error_clear();
+    st->budget_reached = 1;
+    s = TR_OK;
+  }
   if (s == TR_OK)
     s = rf_subs_export(&c, sub);
   if (par->verbose >= 1 && (s == TR_OK || s == TR_ERR_NOMEM))

@@ -82,6 +82,9 @@ typedef struct tr_refine_params {
    * the input triangle of each sub-face still there at the end is taken from sub->tri,
    * not located again by its exact centroid (the bulk of each of the sliver polish's
    * trials on a model with large planar facets: cheese.off) */
+  int partial;         /* reaching the budget ends tr_refine with TR_OK and the mesh made so
+                          far (st->budget_reached = 1): valid, the bounds not met everywhere;
+                          0: TR_ERR_NOMEM */
   int sub_exported;
   tr_refine_memo *memo; /* NULL, or the caller's memo: read and extended by the set-up */
   int verbose;
@@ -97,6 +100,7 @@ typedef struct tr_refine_stats {
   uint32_t merged_edges;    /* input edges inside merged planar facets: no constraints */
   int spacing_stopped;      /* spacing_radii: the radius-edge refinement ended at its point
                                cap (refine.c); tets over a volume bound were still refined */
+  int budget_reached;       /* par->partial: refinement stopped at par->budget points */
 } tr_refine_stats;
 
 /* Tet t's volume bound under par: the smaller of par->max_volume and its region's

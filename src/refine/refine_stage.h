@@ -9,11 +9,16 @@
 tr_status tr_refine_check_options(const tr_options *opt);
 /* tr_refine with the options' bounds and budget (default: tr_refine_default_budget on the
  * domain's volume); *points = points added, *merged = input edges inside merged planar
- * facets (core/facets.h; 0 with opt->keep_edges). keep_hull (open input in its hull):
- * refused. */
+ * facets (core/facets.h; 0 with opt->keep_edges), *budget_reached = 1 when the point
+ * budget ended it under opt->refine_partial (without it, reaching the budget is
+ * TR_ERR_NOMEM). keep_hull (open input in its hull): refused. */
 tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
                           const tr_options *opt, int keep_hull, uint64_t *points,
-                          uint64_t *merged);
+                          uint64_t *merged, uint64_t *budget_reached);
+/* *count = m's tets whose radius-edge ratio is over opt->quality_ratio or whose volume is
+ * over its bound (opt->max_volume, plc's region points'), both in doubles. */
+tr_status tr_refine_count_over(const struct tr_mesh *m, const struct tr_plc *plc,
+                               const tr_options *opt, uint64_t *count);
 /* The per-region volume bounds of plc's region points as tr_refine_params wants them
  * (ids sorted, distinct, the smallest bound of a repeated id; malloc'ed); *least is lowered
  * to the smallest (it is the caller's global bound, or 0 for none). */

@@ -96,9 +96,25 @@ double tr_refine_region_volume_bound(const struct tr_plc *plc, double max_volume
   return b;
 }
 
+/* par's volume bounds: opt->max_volume and plc's region points' (*id and *bound, which
+ * par points to, are the caller's to free); *least = the smallest of them (0: none). */
+static tr_status volume_bounds(const struct tr_plc *plc, const tr_options *opt,
+                               tr_refine_params *par, uint32_t **id, double **bound,
+                               double *least)
+{
+  par->max_volume = opt->max_volume;
+  *least = opt->max_volume;
+  uint32_t n;
+  TR_CHECK(tr_refine_region_bounds(plc, id, bound, &n, least));
+  par->region_id = *id;
+  par->region_max_volume = *bound;
+  par->nregion_bounds = n;
+  return TR_OK;
+}
+
 tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
                           const tr_options *opt, int keep_hull, uint64_t *points,
-                          uint64_t *merged)
+                          uint64_t *merged, uint64_t *budget_reached)
 {
   TR_CHECK(tr_refine_check_options(opt));
   if (keep_hull)
@@ -108,21 +124,17 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   memset(&par, 0, sizeof par);
   par.ratio = opt->quality_ratio;
   par.subface_ratio = opt->quality_subface_ratio;
-  par.max_volume = opt->max_volume;
   par.verbose = opt->verbose;
   /* under --keep-surface no facet is merged either: its input edges are boundary edges */
   par.keep_edges = opt->keep_edges || opt->keep_surface;
   par.keep_surface = opt->keep_surface;
   par.flat_splits = opt->quality_subface_ratio > 0; /* flat.c: part of the option */
   par.spacing_radii = opt->refine_spacing_radii;
+  par.partial = opt->refine_partial;
   /* the smallest of all bounds sizes the default budget */
-  double least = opt->max_volume;
-  uint32_t *id, n;
-  double *bound;
-  TR_CHECK(tr_refine_region_bounds(plc, &id, &bound, &n, &least));
-  par.region_id = id;
-  par.region_max_volume = bound;
-  par.nregion_bounds = n;
+  double least, *bound;
+  uint32_t *id;
+  TR_CHECK(volume_bounds(plc, opt, &par, &id, &bound, &least));
   /* each tet holds at most its bound: the bounds alone ask for at least `need` tets */
   double vol = 0, need = 0;
   for (uint32_t t = 0; t < m->nt; t++)
@@ -145,7 +157,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
     free(bound);
     char what[64];
     if (opt->max_volume > 0)
-      snprintf(what, sizeof what, "-a %g%s", opt->max_volume, n ? " with the regions' bounds" : "");
+      snprintf(what, sizeof what, "-a %g%s", opt->max_volume, par.nregion_bounds ? " with the regions' bounds" : "");
     else
       snprintf(what, sizeof what, "the regions' volume bounds");
     return tr_error(TR_ERR_NOMEM, "%s asks for at least %.3g tets in a domain of volume %.6g, "
@@ -158,6 +170,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   tr_status s = tr_refine(m, plc, sub, &par, &rs);
   *points = rs.points;
   *merged = rs.merged_edges;
+  *budget_reached = (uint64_t)rs.budget_reached;
   free(id);
   free(bound);
   return s;
@@ -174,4 +187,28 @@ void tr_quality_stats(const struct tr_mesh *m, tr_stats *s)
   s->tets_dihedral_below_10 = q.below10;
   memcpy(s->dihedral_histogram, q.dihedral_hist, sizeof s->dihedral_histogram);
   memcpy(s->radius_edge_histogram, q.ratio_hist, sizeof s->radius_edge_histogram);
+}
+
+tr_status tr_refine_count_over(const struct tr_mesh *m, const struct tr_plc *plc,
+                               const tr_options *opt, uint64_t *count)
+{
+  tr_refine_params par;
+  memset(&par, 0, sizeof par);
+  double least, *bound;
+  uint32_t *id;
+  TR_CHECK(volume_bounds(plc, opt, &par, &id, &bound, &least));
+  uint64_t c = 0;
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER)) {
+      const uint32_t *v = m->tv + 4 * (size_t)t;
+      double r, w;
+      tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
+                   m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &r, &w, NULL, NULL);
+      double b = tr_refine_tet_bound(&par, m, t);
+      c += (opt->quality_ratio > 0 && r > opt->quality_ratio) || (b > 0 && w > b);
+    }
+  free(id);
+  free(bound);
+  *count = c;
+  return TR_OK;
 }

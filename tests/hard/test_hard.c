@@ -7,7 +7,9 @@
  * and the doubles are not repaired (tetrec mesh --exact to a .node file); the validators
  * are exact either way. --paper meshes with the paper's algorithm only
  * (tr_options.recovery = 1), --no-facet-flips without the facet flips (2: missing facets
- * go to the cavity retriangulation right after Swap32). `test_hard --files DIR` writes every case with the
+ * go to the cavity retriangulation right after Swap32). --quality refines under R = 1.414
+ * with refine_partial and a small budget: the mesh is checked the same way whether the
+ * budget stopped it or not. `test_hard --files DIR` writes every case with the
  * generator's writer, reads it back and checks the doubles survive bit for bit. */
 #include <gmp.h>
 #include <stdio.h>
@@ -31,6 +33,11 @@ static unsigned run_flags;
 static uint64_t run_budget;
 static int run_recovery; /* tr_options.recovery (--paper: 1, --no-facet-flips: 2) */
 static int expect_cavity; /* --expect-cavity: some facet must be recovered by the cavity */
+/* --quality: refinement under R = 1.414 with the CLI's refine_partial and a budget of
+ * QUALITY_BUDGET points, so that the slabs, whose facets need points as close as they are
+ * thin, reach it in a second or two */
+static int run_quality;
+#define QUALITY_BUDGET 20000
 
 static void run_case(const hard_case *c)
 {
@@ -49,6 +56,11 @@ static void run_case(const hard_case *c)
   opt.allow_open = c->allow_open;
   opt.round_budget = run_budget;
   opt.recovery = run_recovery;
+  if (run_quality) {
+    opt.quality_ratio = 1.414;
+    opt.refine_partial = 1;
+    opt.refine_budget = QUALITY_BUDGET;
+  }
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
   tr_stats st = {.size = sizeof st};
@@ -108,6 +120,24 @@ static void run_case(const hard_case *c)
   if (c->steiner)
     EXPECT(added > 0, "%s: no Steiner point, but the case has no tetrahedralization without",
            c->name);
+  if (run_quality) {
+    /* a stop at the budget hands back the mesh made so far (validated above), to which
+     * sliver removal adds no point */
+    uint64_t q = st.points_added_for_quality;
+    EXPECT(q > 0 || st.tets_over_bounds == 0, "%s: no point added, %llu tets over the bound",
+           c->name, (unsigned long long)st.tets_over_bounds);
+    EXPECT(q <= QUALITY_BUDGET, "%s: %llu points, over the budget", c->name,
+           (unsigned long long)q);
+    if (st.refine_budget_reached)
+      EXPECT(q == QUALITY_BUDGET && st.points_added_for_sliver == 0,
+             "%s: stopped at the budget with %llu points, %llu more for slivers", c->name,
+             (unsigned long long)q, (unsigned long long)st.points_added_for_sliver);
+    fprintf(stderr, "%s (quality): %llu points (budget %s), %llu sliver points; %llu of %u "
+            "tets over the bound, min dihedral %.3f\n", c->name, (unsigned long long)q,
+            st.refine_budget_reached ? "reached" : "not reached",
+            (unsigned long long)st.points_added_for_sliver,
+            (unsigned long long)st.tets_over_bounds, nt, st.min_dihedral);
+  }
   /* the paper's algorithm has no cavity retriangulation */
   if (expect_cavity)
     EXPECT(st.facets_recovered_by_cavity > 0, "%s: no facet recovered by cavity "
@@ -178,6 +208,8 @@ int main(int argc, char **argv)
         run_recovery = 2;
       else if (!strcmp(argv[a], "--expect-cavity"))
         expect_cavity = 1;
+      else if (!strcmp(argv[a], "--quality"))
+        run_quality = 1;
       else if (!strcmp(argv[a], "--round-budget") && a + 2 < argc)
         run_budget = strtoull(argv[++a], NULL, 10);
       else
@@ -197,7 +229,7 @@ int main(int argc, char **argv)
     }
     EXPECT(found, "no case named %s", argv[argc - 1]);
   } else {
-    fprintf(stderr, "usage: test_hard [--exact] [--paper | --no-facet-flips] [--expect-cavity] "
+    fprintf(stderr, "usage: test_hard [--exact] [--paper | --no-facet-flips] [--expect-cavity] [--quality] "
                     "[--round-budget N] "
                     "CASE|all | "
                     "test_hard --files DIR\n");

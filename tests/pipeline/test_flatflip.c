@@ -103,7 +103,7 @@ static uint64_t run(struct tr_mesh *m, const tr_subfaces *sub)
   tr_plc *none = NULL;
   tr_plc_create(&none);
   uint64_t nflips = 99;
-  tr_status st = tr_round_flip_flat(m, sub, none, 0, &nflips);
+  tr_status st = tr_round_flip_flat(m, sub, none, 0, 1, &nflips);
   EXPECT(st == TR_OK, "tr_round_flip_flat: %s", tr_last_error());
   tr_plc_destroy(none);
   return nflips;

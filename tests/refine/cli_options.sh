@@ -3,11 +3,13 @@
 # target D is worked towards by sliver removal (out of (0, 70] or with -O 0: exit 1; a
 # warning when tets stay under it), bad bounds and the options on other
 # commands are usage errors (exit 1; --subface-quality under 1 too), --subface-quality and
-# --keep-edges without refinement are warned about, the point budget stops a run with exit 8 and a
-# message, and --stats carries the quality rows. Every mesh written is checked.
+# --keep-edges without refinement are warned about, the point budget stops a run with exit 8, a
+# message and the mesh made so far written, and --stats carries the quality rows. Every
+# mesh written is checked.
 # usage: cli_options.sh TETREC SURFACE WORKDIR
 set -u
 T=$1 S=$2 W=$3
+rm -rf "$W" # "no mesh written" below means by this run
 mkdir -p "$W"
 fails=0
 expect() { # expect CODE PATTERN -- ARGS...
@@ -41,9 +43,17 @@ expect 0 "warning: --keep-edges has no effect without quality refinement" -- mes
 expect 1 "positive volume" -- mesh "$S" -a -1 -o "$W/c.node"
 expect 1 "does not apply to 'delaunay'" -- delaunay "$S" --quality 1.414
 # a bound asking for more than 8 tets per budget point (1,000 tets, 50 points) is refused
-# before refinement; one within that (130 points) runs until the budget stops it
+# before refinement
 expect 8 "asks for at least 1e\+03 tets .* budget of 50 points" -- mesh "$S" -a 0.001 --refine-budget 50 -o "$W/c.node"
-expect 8 "point budget of 130 points" -- mesh "$S" -a 0.001 --refine-budget 130 -o "$W/c.node"
 expect 1 "whole number" -- mesh "$S" --refine-budget 0 -o "$W/c.node"
 [ ! -e "$W/c.node" ] || { echo "FAIL: a refused run wrote a mesh"; fails=$((fails + 1)); }
+# one within that (130 points) runs until the budget stops it: exit 8, the mesh made so
+# far written, conforming, and its tets over the bound counted in the message and --stats
+expect 8 "holds the mesh made so far, valid and conforming, with [1-9][0-9]* of its [0-9]* tets over the bounds" -- mesh "$S" -a 0.001 --refine-budget 130 -o "$W/p.node" --exact --stats "$W/p.json"
+grep -q "point budget of 130 points" "$W/out" || { echo "FAIL: the budget is not named"; fails=$((fails + 1)); }
+expect 0 "conforms exactly.*volume equals" -- check "$S" "$W/p.node"
+grep -q '"status": "TR_ERR_NOMEM"' "$W/p.json" && grep -q '"refine_budget_reached": 1' "$W/p.json" &&
+  grep -qE '"tets_over_bounds": [1-9]' "$W/p.json" &&
+  grep -q '"points_added_for_quality": 130,' "$W/p.json" &&
+  grep -q '"points_added_for_sliver": 0,' "$W/p.json" || { echo "FAIL: budget stats rows"; cat "$W/p.json"; fails=$((fails + 1)); }
 exit $((fails != 0))

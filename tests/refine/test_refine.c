@@ -564,49 +564,6 @@ static void max_volume(void)
   tr_plc_destroy(plc);
 }
 
-/* A volume bound the point budget cannot reach is refused before refinement starts, with
- * TR_ERR_NOMEM and a message naming the tets it asks for (-a 1e-300 on a cube once ran
- * towards a default budget of 4e9 points: hours, and all the memory); also for a region's
- * bound alone. The default budget stops at its ceiling, or 8 points per input point. */
-static void volume_bound_over_budget(void)
-{
-  const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
-  EXPECT(tr_refine_default_budget(8, 1, 1e-300) == (uint64_t)TR_REFINE_BUDGET_CEILING,
-         "default budget under -a 1e-300: %llu",
-         (unsigned long long)tr_refine_default_budget(8, 1, 1e-300));
-  EXPECT(tr_refine_default_budget(10000000, 1, 1e-300) == 80000000u,
-         "default budget of a large input: %llu",
-         (unsigned long long)tr_refine_default_budget(10000000, 1, 1e-300));
-  EXPECT(tr_refine_default_budget(8, 1, 0.01) == 102800u, "default budget under -a 0.01: %llu",
-         (unsigned long long)tr_refine_default_budget(8, 1, 0.01));
-  for (int region = 0; region <= 1; region++) {
-    tr_plc *plc = tm_box(lo, hi);
-    if (region)
-      EXPECT(tr_plc_add_region(plc, 0.5, 0.5, 0.5, 2, 1e-300) == TR_OK, "region: %s",
-             tr_last_error());
-    tr_options opt = refinement(1.414, region ? 0 : 1e-300);
-    tr_mesh *m = NULL;
-    tr_stats st;
-    tr_status s = tr_mesh_plc(plc, &opt, &m, &st);
-    EXPECT(s == TR_ERR_NOMEM && !m && strstr(tr_last_error(), "asks for at least 1e+300 tets"),
-           "%s: %s (%d)", region ? "region bound" : "-a", tr_last_error(), s);
-    /* a bound the budget reaches is not refused */
-    opt = refinement(1.414, region ? 0 : 0.01);
-    opt.refine_budget = 2000;
-    if (region) {
-      tr_plc_destroy(plc);
-      plc = tm_box(lo, hi);
-      tr_plc_add_region(plc, 0.5, 0.5, 0.5, 2, 0.01);
-    }
-    tm_run r;
-    m = tm_mesh(&r, region ? "region_bound_in_budget" : "bound_in_budget", plc, &opt,
-                TR_CHK_TOPOLOGY);
-    EXPECT(m != NULL, "a bound within the budget");
-    tm_free(&r);
-    tr_plc_destroy(plc);
-  }
-}
-
 /* -a V with --spacing-radii: the spacings' point cap (half the budget here: 2,500) ends
  * the radius-edge refinement, not the volume bound's (the stage once returned at the cap
  * with 26,634 of 53,987 tets of a cube over the bound, and no error). */
@@ -1052,7 +1009,6 @@ int main(int argc, char **argv)
       {"wedge_10_degrees", wedge_10_degrees, NULL},
       {"max_volume", max_volume, NULL},
       {"region_max_volume", region_max_volume, NULL},
-      {"volume_bound_over_budget", volume_bound_over_budget, NULL},
       {"max_volume_spacing_cap", max_volume_past_the_spacing_cap, NULL},
       {"shapes", NULL, shapes},
       {"volume_blocked", NULL, volume_blocked},
