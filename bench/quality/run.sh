@@ -3,10 +3,12 @@
 # sample surface (libcgal-dev's data.tar.gz, data/meshes/*.off, extracted into the build
 # dir), in the same run. Per model and in total: CPU time (user + system, /usr/bin/time),
 # tets, minimum dihedral angle, share of tets with a dihedral angle under 10 and under 5
-# degrees, and the largest radius-edge ratio. The shape figures of both outputs come from
-# one measure, `tetrec check MODEL OUT.node` (src/refine/quality.h, on the written
-# doubles), which also validates the output (links and exact orientation; for tetrec's
-# --exact output also exact conformity and volume); a row marked (invalid) failed that
+# degrees, the largest radius-edge ratio and the share of tets over R (the bound both were
+# given; TetGen's insertion rules meet it on more tets, README). The shape figures of both
+# outputs come from one measure, `tetrec check MODEL OUT.node --quality R`
+# (src/refine/quality.h, on the written doubles), which also validates the output (links
+# and exact orientation; for tetrec's --exact output also exact conformity and volume); a
+# row marked (invalid) failed that
 # check (its figures are shown and counted all the same), "fail" is a failed run or a
 # timeout (tetrec's: fail:rejected input, fail:budget, fail:timeout). Totals are over the
 # models both meshed.
@@ -109,6 +111,14 @@ quality() {
          print tets, dmin, p10, p5, r; found = 1 }
        END { if (!found) print "- - - - -" }' "$1"
 }
+# overr LOG: "N (x%)" of `tetrec check --quality R`'s bounds line: the tets over R, or "- -"
+overr() {
+  awk '/check: bounds:/ {
+         for (i = 1; i <= NF; i++)
+           if ($i == "over" && $(i + 1) == "radius-edge") { n = $(i - 2); p = $(i - 1) }
+         gsub(/[()%]/, "", p); found = 1 }
+       END { print found ? n " " p : "- -" }' "$1"
+}
 # under LOG: "N10 N5", the numbers of tets with a dihedral angle under 10 and under 5 degrees
 under() {
   awk '/check: quality:/ {
@@ -123,8 +133,8 @@ under() {
 table=$OUT/table.txt
 rows=$OUT/work/rows.txt
 : >"$rows"
-printf "%-28s | %-44s | %-44s | %-13s | %s\n" "model" "tetrec --quality $R: cpu tets mindih <10% <5% maxR" \
-  "tetgen ${TG_FLAGS}: cpu tets mindih <10% <5% maxR" "targets" "TetGen surface" | tee "$table"
+printf "%-28s | %-50s | %-50s | %-13s | %s\n" "model" "tetrec --quality $R: cpu tets mindih <10% <5% maxR >R%" \
+  "tetgen ${TG_FLAGS}: cpu tets mindih <10% <5% maxR >R%" "targets" "TetGen surface" | tee "$table"
 for model in "$DATA"/data/meshes/*.off; do
   name=$(basename "$model" .off)
   if [ -n "${ONLY:-}" ] && ! echo "$name" | grep -qE "$ONLY"; then continue; fi
@@ -144,10 +154,10 @@ for model in "$DATA"/data/meshes/*.off; do
     124) ra=fail why=timeout ;;
     *) ra=fail why=exit$rc ;;
   esac
-  a="- - - - - -"
+  a="- - - - - - -"
   if [ $ra = ok ]; then
-    "$TETREC" check "$model" "$w/tetrec.node" >"$w/tetrec.check" 2>&1 || ra=invalid
-    a="$(cpu "$w/tetrec.time") $(quality "$w/tetrec.check")"
+    "$TETREC" check "$model" "$w/tetrec.node" --quality "$R" >"$w/tetrec.check" 2>&1 || ra=invalid
+    a="$(cpu "$w/tetrec.time") $(quality "$w/tetrec.check") $(overr "$w/tetrec.check" | cut -d' ' -f2)"
   fi
   # tetgen
   cp "$model" "$w/tg/$name.off"
@@ -156,13 +166,13 @@ for model in "$DATA"/data/meshes/*.off; do
   if ! (cd "$w/tg" && timed ../tetgen.time "$TETGEN" $TG_FLAGS "$name.off" >../tetgen.log 2>&1); then
     rb=fail
   fi
-  b="- - - - - -"
+  b="- - - - - - -"
   surf=- edges=- dropped=- noncopl=- nonplanar=-
   if [ $rb = ok ] && [ -f "$w/tg/$name.1.node" ]; then
     # the validator may reject it (-p merges coplanar facets, dropping input edges): the
     # shape figures are printed all the same, and the row is marked
-    "$TETREC" check "$model" "$w/tg/$name.1.node" >"$w/tetgen.check" 2>&1 || rb=invalid
-    b="$(cpu "$w/tetgen.time") $(quality "$w/tetgen.check")"
+    "$TETREC" check "$model" "$w/tg/$name.1.node" --quality "$R" >"$w/tetgen.check" 2>&1 || rb=invalid
+    b="$(cpu "$w/tetgen.time") $(quality "$w/tetgen.check") $(overr "$w/tetgen.check" | cut -d' ' -f2)"
     if [ ! -f "$w/tg/$name.1.face" ]; then
       surf="- (no .face)"
     elif python3 "$ROOT/bench/quality/tg_surface.py" "$model" "$w/tg/$name.1" -v \
@@ -188,37 +198,39 @@ for model in "$DATA"/data/meshes/*.off; do
     read -r cb tb db _ _ xb _ <<<"${b% (invalid)}"
     read -r na na5 <<<"$(under "$w/tetrec.check")"
     read -r nb nb5 <<<"$(under "$w/tetgen.check")"
+    read -r ova _ <<<"$(overr "$w/tetrec.check")"
+    read -r ovb _ <<<"$(overr "$w/tetgen.check")"
     target=$(awk -v na="$na" -v ta="$ta" -v nb="$nb" -v tb="$tb" -v da="$da" -v db="$db" 'BEGIN {
       m = ""
       if (2 * na * tb > nb * ta) m = "<10"
       if (da + 0 < db + 0) m = m (m == "" ? "" : ",") "min"
       print m == "" ? "yes" : "no:" m }')
-    echo "$name $ca $ta $da $na $na5 $xa $cb $tb $db $nb $nb5 $xb $target $dropped $noncopl $nonplanar" >>"$rows"
+    echo "$name $ca $ta $da $na $na5 $xa $cb $tb $db $nb $nb5 $xb $target $dropped $noncopl $nonplanar $ova $ovb" >>"$rows"
   elif [ "$edges" != - ]; then
     # TetGen's surface is still counted on the models only TetGen meshed
     echo "$name - - - - - - - - - - - - - $dropped $noncopl $nonplanar" >>"$rows"
   fi
-  printf "%-28s | %-44s | %-44s | %-13s | %s\n" "$name" "$a" "$b" "$target" "$surf" | tee -a "$table"
+  printf "%-28s | %-50s | %-50s | %-13s | %s\n" "$name" "$a" "$b" "$target" "$surf" | tee -a "$table"
 done
 # totals: the first four lines as before the targets and surface columns came (others read them)
 # rows: name, tetrec's cpu tets min n10 n5 maxR, TetGen's the same, target, dropped,
-# non-coplanar, non-planar polygons
+# non-coplanar, non-planar polygons, tets over R of tetrec and of TetGen
 awk '
   function add(k) {
     n[k]++; A[k] += $2; TA[k] += $3; NA[k] += $5; NA5[k] += $6
-    B[k] += $8; TB[k] += $9; NB[k] += $11; NB5[k] += $12
+    B[k] += $8; TB[k] += $9; NB[k] += $11; NB5[k] += $12; RA[k] += $18; RB[k] += $19
     if (!(k in MA) || $4 + 0 < MA[k] + 0) MA[k] = $4
     if (!(k in XA) || $7 + 0 > XA[k] + 0) XA[k] = $7
     if (!(k in MB) || $10 + 0 < MB[k] + 0) MB[k] = $10
     if (!(k in XB) || $13 + 0 > XB[k] + 0) XB[k] = $13
     if ($14 == "yes") met[k]++
   }
-  function line(who, c, t, n10, n5, mn, mx) {
-    printf "  %s: cpu %.2f s, %d tets, min dihedral %s, <10 deg %.2f%%, <5 deg %.2f%%, max radius-edge %s\n", who, c, t, mn, t ? 100 * n10 / t : 0, t ? 100 * n5 / t : 0, mx
+  function line(who, c, t, n10, n5, mn, mx, nr) {
+    printf "  %s: cpu %.2f s, %d tets, min dihedral %s, <10 deg %.2f%%, <5 deg %.2f%%, max radius-edge %s, over R %.2f%%\n", who, c, t, mn, t ? 100 * n10 / t : 0, t ? 100 * n5 / t : 0, mx, t ? 100 * nr / t : 0
   }
   function totals(k) {
-    line("tetrec", A[k], TA[k], NA[k], NA5[k], k in MA ? MA[k] : 180, k in XA ? XA[k] : 0)
-    line("tetgen", B[k], TB[k], NB[k], NB5[k], k in MB ? MB[k] : 180, k in XB ? XB[k] : 0)
+    line("tetrec", A[k], TA[k], NA[k], NA5[k], k in MA ? MA[k] : 180, k in XA ? XA[k] : 0, RA[k])
+    line("tetgen", B[k], TB[k], NB[k], NB5[k], k in MB ? MB[k] : 180, k in XB ? XB[k] : 0, RB[k])
     if (B[k] > 0 && TB[k] > 0) printf "  ratios tetrec/tetgen: cpu %.2fx, tets %.2fx\n", A[k] / B[k], TA[k] / TB[k]
   }
   {

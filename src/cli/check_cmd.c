@@ -15,6 +15,7 @@
 #include "mesh/mesh.h"
 #include "output/deviation.h"
 #include "refine/quality.h"
+#include "refine/refine_stage.h"
 #include "smooth/smooth.h"
 
 typedef struct {
@@ -178,8 +179,39 @@ static tr_status constrained_distance(const struct tr_mesh *m, const struct tr_p
   return st;
 }
 
+/* The tets of m over the radius-edge and volume bounds and under the dihedral target of
+ * opt, one line (a benchmark compares tetrec's and a peer's meshes with it). */
+static tr_status print_bounds(const struct tr_mesh *m, const tr_options *opt)
+{
+  uint64_t over = 0;
+  uint32_t n = tr_mesh_num_tets(m);
+  fprintf(stderr, "tetrec: check: bounds: %u tets", n);
+  if (opt->quality_ratio > 0 || opt->max_volume > 0) {
+    tr_options one = *opt;
+    one.max_volume = 0; /* the ratio alone first, then the volume alone */
+    TR_CHECK(tr_refine_count_over(m, NULL, &one, &over));
+    if (opt->quality_ratio > 0)
+      fprintf(stderr, ", %llu (%.2f%%) over radius-edge %g", (unsigned long long)over,
+              n ? 100.0 * (double)over / n : 0.0, opt->quality_ratio);
+    one = *opt;
+    one.quality_ratio = 0;
+    TR_CHECK(tr_refine_count_over(m, NULL, &one, &over));
+    if (opt->max_volume > 0)
+      fprintf(stderr, ", %llu (%.2f%%) over volume %g", (unsigned long long)over,
+              n ? 100.0 * (double)over / n : 0.0, opt->max_volume);
+  }
+  if (opt->quality_min_dihedral > 0) {
+    uint64_t under = tr_quality_count_below(m, opt->quality_min_dihedral);
+    fprintf(stderr, ", %llu (%.2f%%) with a dihedral angle under %g degrees",
+            (unsigned long long)under, n ? 100.0 * (double)under / n : 0.0,
+            opt->quality_min_dihedral);
+  }
+  fputc('\n', stderr);
+  return TR_OK;
+}
+
 tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, tr_qpoint **exact,
-                       int exact_file, int allow_open, int verbose)
+                       int exact_file, int allow_open, int verbose, const tr_options *bounds)
 {
   struct tr_mesh *m = NULL;
   if (vol->ntets == 0)
@@ -239,6 +271,11 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
     tr_quality q;
     tr_quality_measure(m, &q);
     tr_quality_print(stderr, "tetrec: check: ", &q);
+    if (bounds && (bounds->quality_ratio > 0 || bounds->max_volume > 0 ||
+                   bounds->quality_min_dihedral > 0)) {
+      tr_status sb = print_bounds(m, bounds);
+      st = st == TR_OK ? sb : st;
+    }
   }
   mpq_clear(v6);
   tr_mesh_destroy(m);

@@ -14,9 +14,11 @@
  * exact point read from an --exact .node; the points are moved into the check (entries
  * set to NULL). exact_file: the .node was written with --exact, so its doubles are exact
  * too (without it, vertices beyond the surface's are Steiner points rounded to doubles,
- * whose conformity cannot be verified exactly). allow_open: the surface may be open. */
+ * whose conformity cannot be verified exactly). allow_open: the surface may be open.
+ * bounds (quality_ratio, quality_min_dihedral, max_volume; 0: none) adds a line of the
+ * tets over or under each bound given, on the file's doubles. */
 tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, tr_qpoint **exact,
-                       int exact_file, int allow_open, int verbose);
+                       int exact_file, int allow_open, int verbose, const tr_options *bounds);
 
 /* `check-surface`: prints every defect of the surface in to stdout (check_surface.c),
  * writes them to out (.vtk or .msh; may be NULL), and fails with the status of the worst

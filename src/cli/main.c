@@ -118,19 +118,22 @@ static const struct option {
     {"--round-budget", "N", C_MESH,
      "star checks the rounding repair may spend before it gives\n"
      "up (exit 9; default 2000000)"},
-    {"--quality", "R[/D]", C_MESH,
+    {"--quality", "R[/D]", C_MESH | C_CHECK,
      "constrained Delaunay refinement until every tet's radius-\n"
      "edge ratio is at most R (>= 1; 1.414 is TetGen's default);\n"
      "D (degrees, at most 70): a minimum dihedral angle that sliver\n"
      "removal works towards (tets under it get flips, moves and\n"
-     "points); a warning counts the tets left under it"},
+     "points); a warning counts the tets left under it. check:\n"
+     "count the tets over R (and under D)"},
     {"--subface-quality", "S", C_MESH,
      "with refinement: also split the boundary triangles whose\n"
      "radius-edge ratio is above S (>= 1), except where a small\n"
      "input angle forces it, and split an input-edge piece once\n"
      "under a boundary angle over 120 degrees (default: off)"},
-    {"--max-volume", "V", C_MESH, "refinement until every tet's volume is at most V"},
-    {"-a", "V", C_MESH, "the same as --max-volume (TetGen's switch)"},
+    {"--max-volume", "V", C_MESH | C_CHECK,
+     "refinement until every tet's volume is at most V (check:\n"
+     "count the tets over V)"},
+    {"-a", "V", C_MESH | C_CHECK, "the same as --max-volume (TetGen's switch)"},
     {"--refine-budget", "N", C_MESH,
      "points refinement may add; at N it stops, the mesh made so\n"
      "far (valid and conforming, the bounds not met everywhere)\n"
@@ -778,8 +781,11 @@ static int cmd_check(const args *a)
   }
   if (s == TR_OK)
     s = read_exact_node(a->in2, vol, &exact, &exact_file);
+  opt.quality_ratio = a->quality;
+  opt.quality_min_dihedral = a->quality_dih;
+  opt.max_volume = a->max_volume;
   if (s == TR_OK)
-    s = tr_cli_check(surf, vol, exact, exact_file, a->allow_open, !a->quiet);
+    s = tr_cli_check(surf, vol, exact, exact_file, a->allow_open, !a->quiet, &opt);
   for (uint32_t i = 0; exact && i < vol->npoints; i++)
     if (exact[i]) {
       tr_qpoint_clear(exact[i]);

@@ -16,7 +16,8 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
                           const tr_options *opt, int keep_hull, uint64_t *points,
                           uint64_t *merged, uint64_t *budget_reached);
 /* *count = m's tets whose radius-edge ratio is over opt->quality_ratio or whose volume is
- * over its bound (opt->max_volume, plc's region points'), both in doubles. */
+ * over its bound (opt->max_volume, plc's region points' unless plc is NULL), both in
+ * doubles. */
 tr_status tr_refine_count_over(const struct tr_mesh *m, const struct tr_plc *plc,
                                const tr_options *opt, uint64_t *count);
 /* The per-region volume bounds of plc's region points as tr_refine_params wants them

@@ -96,14 +96,19 @@ double tr_refine_region_volume_bound(const struct tr_plc *plc, double max_volume
   return b;
 }
 
-/* par's volume bounds: opt->max_volume and plc's region points' (*id and *bound, which
- * par points to, are the caller's to free); *least = the smallest of them (0: none). */
+/* par's volume bounds: opt->max_volume and plc's region points' (none when plc is NULL;
+ * *id and *bound, which par points to, are the caller's to free); *least = the smallest
+ * of them (0: none). */
 static tr_status volume_bounds(const struct tr_plc *plc, const tr_options *opt,
                                tr_refine_params *par, uint32_t **id, double **bound,
                                double *least)
 {
   par->max_volume = opt->max_volume;
   *least = opt->max_volume;
+  *id = NULL;
+  *bound = NULL;
+  if (!plc)
+    return TR_OK;
   uint32_t n;
   TR_CHECK(tr_refine_region_bounds(plc, id, bound, &n, least));
   par->region_id = *id;

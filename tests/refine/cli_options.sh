@@ -4,8 +4,8 @@
 # warning when tets stay under it), bad bounds and the options on other
 # commands are usage errors (exit 1; --subface-quality under 1 too), --subface-quality and
 # --keep-edges without refinement are warned about, the point budget stops a run with exit 8, a
-# message and the mesh made so far written, and --stats carries the quality rows. Every
-# mesh written is checked.
+# message and the mesh made so far written, and --stats carries the quality rows; `check
+# --quality R/D -a V` counts the tets over the bounds. Every mesh written is checked.
 # usage: cli_options.sh TETREC SURFACE WORKDIR
 set -u
 T=$1 S=$2 W=$3
@@ -25,10 +25,17 @@ expect 0 "" -- mesh --quality 1.414 "$S" -o "$W/a.node" --exact --stats "$W/a.js
 expect 0 "conforms exactly" -- check "$S" "$W/a.node"
 grep -q '"points_added_for_quality"' "$W/a.json" && grep -q '"min_dihedral"' "$W/a.json" &&
   grep -q '"radius_edge_histogram": \[' "$W/a.json" || { echo "FAIL: stats rows"; fails=$((fails + 1)); }
+# check --quality R counts the tets over R on the file's doubles: the mesh's own count
+expect 0 "bounds: [0-9]+ tets, [0-9]+ \([0-9.]+%\) over radius-edge 1.414$" -- check "$S" "$W/a.node" --quality 1.414
+over=$(sed -n 's/.*bounds: [0-9]* tets, \([0-9]*\) .*/\1/p' "$W/out")
+want=$(sed -n 's/.*"tets_over_bounds": \([0-9]*\).*/\1/p' "$W/a.json")
+[ -n "$over" ] && [ "$over" = "$want" ] || { echo "FAIL: check counts $over tets over 1.414, --stats $want"; fails=$((fails + 1)); }
 expect 0 "" -- mesh "$S" --quality 1.2 -a 0.05 -o "$W/b.node" --exact -q
 expect 0 "conforms exactly.*volume equals" -- check "$S" "$W/b.node"
 expect 0 "" -- mesh "$S" --quality 1.2/15 -a 0.05 -o "$W/d.node" --exact --stats "$W/d.json"
 expect 0 "conforms exactly" -- check "$S" "$W/d.node"
+expect 0 "over volume 0.05, [0-9]+ \([0-9.]+%\) with a dihedral angle under 15 degrees" -- check "$S" "$W/d.node" --quality 1.2/15 -a 0.05
+grep -q "bounds: .* 0 (0.00%) over volume 0.05" "$W/out" || { echo "FAIL: tets over -a 0.05 in a mesh refined under it"; cat "$W/out"; fails=$((fails + 1)); }
 expect 0 "keep a dihedral angle under the target 70 degrees" -- mesh "$S" --quality 1.2/70 -o "$W/e.node"
 expect 1 "in \(0, 70\] degrees" -- mesh "$S" --quality 1.2/75 -o "$W/c.node"
 expect 1 "which .-optimize 0 turns off" -- mesh "$S" --quality 1.2/15 -O 0 -o "$W/c.node"
