@@ -183,23 +183,17 @@ static tr_status constrained_distance(const struct tr_mesh *m, const struct tr_p
  * opt, one line (a benchmark compares tetrec's and a peer's meshes with it). */
 static tr_status print_bounds(const struct tr_mesh *m, const tr_options *opt)
 {
-  uint64_t over = 0;
+  tr_refine_over over = {0, 0, 0};
+  if (opt->quality_ratio > 0 || opt->max_volume > 0)
+    TR_CHECK(tr_refine_count_over(m, NULL, opt, &over));
   uint32_t n = tr_mesh_num_tets(m);
   fprintf(stderr, "tetrec: check: bounds: %u tets", n);
-  if (opt->quality_ratio > 0 || opt->max_volume > 0) {
-    tr_options one = *opt;
-    one.max_volume = 0; /* the ratio alone first, then the volume alone */
-    TR_CHECK(tr_refine_count_over(m, NULL, &one, &over));
-    if (opt->quality_ratio > 0)
-      fprintf(stderr, ", %llu (%.2f%%) over radius-edge %g", (unsigned long long)over,
-              n ? 100.0 * (double)over / n : 0.0, opt->quality_ratio);
-    one = *opt;
-    one.quality_ratio = 0;
-    TR_CHECK(tr_refine_count_over(m, NULL, &one, &over));
-    if (opt->max_volume > 0)
-      fprintf(stderr, ", %llu (%.2f%%) over volume %g", (unsigned long long)over,
-              n ? 100.0 * (double)over / n : 0.0, opt->max_volume);
-  }
+  if (opt->quality_ratio > 0)
+    fprintf(stderr, ", %llu (%.2f%%) over radius-edge %g", (unsigned long long)over.ratio,
+            n ? 100.0 * (double)over.ratio / n : 0.0, opt->quality_ratio);
+  if (opt->max_volume > 0)
+    fprintf(stderr, ", %llu (%.2f%%) over volume %g", (unsigned long long)over.volume,
+            n ? 100.0 * (double)over.volume / n : 0.0, opt->max_volume);
   if (opt->quality_min_dihedral > 0) {
     uint64_t under = tr_quality_count_below(m, opt->quality_min_dihedral);
     fprintf(stderr, ", %llu (%.2f%%) with a dihedral angle under %g degrees",

@@ -376,8 +376,9 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
               "target %g degrees (the smallest %.3g): sliver removal could not lift them\n",
               (unsigned long long)tr_quality_count_below(res, dt),
               (unsigned long long)stats->volume_elements, dt, stats->min_dihedral);
-    if (refined)
-      st = tr_refine_count_over(res, p, &opt, &stats->tets_over_bounds);
+    tr_refine_over over;
+    if (refined && (st = tr_refine_count_over(res, p, &opt, &over)) == TR_OK)
+      stats->tets_over_bounds = over.either;
     if (opt.verbose >= 2)
       fprintf(stderr, "tetrec: %u regions\n", nreg);
   }

@@ -15,11 +15,14 @@ tr_status tr_refine_check_options(const tr_options *opt);
 tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *sub,
                           const tr_options *opt, int keep_hull, uint64_t *points,
                           uint64_t *merged, uint64_t *budget_reached);
-/* *count = m's tets whose radius-edge ratio is over opt->quality_ratio or whose volume is
- * over its bound (opt->max_volume, plc's region points' unless plc is NULL), both in
- * doubles. */
+/* m's tets whose radius-edge ratio is over opt->quality_ratio (ratio), whose volume is over
+ * its bound (volume: opt->max_volume, plc's region points' unless plc is NULL), and either
+ * (either), all in doubles, in one pass. */
+typedef struct tr_refine_over {
+  uint64_t ratio, volume, either;
+} tr_refine_over;
 tr_status tr_refine_count_over(const struct tr_mesh *m, const struct tr_plc *plc,
-                               const tr_options *opt, uint64_t *count);
+                               const tr_options *opt, tr_refine_over *over);
 /* The per-region volume bounds of plc's region points as tr_refine_params wants them
  * (ids sorted, distinct, the smallest bound of a repeated id; malloc'ed); *least is lowered
  * to the smallest (it is the caller's global bound, or 0 for none). */

@@ -162,7 +162,8 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
     free(bound);
     char what[64];
     if (opt->max_volume > 0)
-      snprintf(what, sizeof what, "-a %g%s", opt->max_volume, par.nregion_bounds ? " with the regions' bounds" : "");
+      snprintf(what, sizeof what, "-a %g%s", opt->max_volume,
+               par.nregion_bounds ? " with the regions' bounds" : "");
     else
       snprintf(what, sizeof what, "the regions' volume bounds");
     return tr_error(TR_ERR_NOMEM, "%s asks for at least %.3g tets in a domain of volume %.6g, "
@@ -195,14 +196,14 @@ void tr_quality_stats(const struct tr_mesh *m, tr_stats *s)
 }
 
 tr_status tr_refine_count_over(const struct tr_mesh *m, const struct tr_plc *plc,
-                               const tr_options *opt, uint64_t *count)
+                               const tr_options *opt, tr_refine_over *over)
 {
   tr_refine_params par;
   memset(&par, 0, sizeof par);
   double least, *bound;
   uint32_t *id;
   TR_CHECK(volume_bounds(plc, opt, &par, &id, &bound, &least));
-  uint64_t c = 0;
+  tr_refine_over c = {0, 0, 0};
   for (uint32_t t = 0; t < m->nt; t++)
     if (tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER)) {
       const uint32_t *v = m->tv + 4 * (size_t)t;
@@ -210,10 +211,14 @@ tr_status tr_refine_count_over(const struct tr_mesh *m, const struct tr_plc *plc
       tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
                    m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &r, &w, NULL, NULL);
       double b = tr_refine_tet_bound(&par, m, t);
-      c += (opt->quality_ratio > 0 && r > opt->quality_ratio) || (b > 0 && w > b);
+      int bad_ratio = opt->quality_ratio > 0 && r > opt->quality_ratio;
+      int bad_volume = b > 0 && w > b;
+      c.ratio += (uint64_t)bad_ratio;
+      c.volume += (uint64_t)bad_volume;
+      c.either += (uint64_t)(bad_ratio || bad_volume);
     }
   free(id);
   free(bound);
-  *count = c;
+  *over = c;
   return TR_OK;
 }
