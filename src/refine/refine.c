@@ -153,7 +153,7 @@ static double dist2(const double *a, const double *b)
 }
 
 /* Would the point at p (doubles) lie closer to a vertex of the tets (the cavity) than
- * that vertex's insertion radius (its spacing while c->spacing_on, see after_insert)?
+ * that vertex's insertion radius (its spacing while c->spacing_on, see rf_after_insert)?
  * Such a point would make an edge shorter than the one its neighbour was inserted to
  * fix, and the next round of bad tets around it a finer one still: the cascade that ends
  * only at the budget (Shewchuk 1998, insertion radii; TetGen rejects such circumcentres
@@ -190,7 +190,7 @@ static int too_close(const rf_ctx *c, const uint32_t *tets, size_t n, const doub
  * is no proof of termination: merged_facet_notch.off splits facets to any budget with it
  * (and, once it has started, with the insertion radii too), so the stage ends at
  * spacing_cap points, its mesh valid and the bad tets left. */
-static tr_status after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own, double rad)
+tr_status rf_after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own, double rad)
 {
   TR_CHECK(rf_vertex_room(c, pid + 1));
   c->vkind[pid] = (uint8_t)kind;
@@ -220,144 +220,6 @@ static tr_status after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own, d
     TR_CHECK(push_tet(c, c->newtets.a[i]));
   }
   return TR_OK;
-}
-
-static tr_status split_segment(rf_ctx *c, uint32_t g)
-{
-  struct tr_mesh *m = c->m;
-  uint32_t u = c->ssv[2 * (size_t)g], w = c->ssv[2 * (size_t)g + 1], t;
-  TR_CHECK(tr_ball_find_domain(m, u, w, TR_NONE, &t));
-  if (t == TR_NONE)
-    return tr_error(TR_ERR_INTERNAL, "refinement: sub-segment %u-%u is not a mesh edge", u, w);
-  tr_qpoint *q = NULL;
-  TR_CHECK(rf_segment_split_point(c, g, &q));
-  tr_point p = tr_pt_q(q);
-  int ok = 0;
-  c->split_seg = g;
-  tr_status st = rf_cavity(c, t, &p, m->nv, 1, &ok);
-  uint32_t pid = TR_NONE;
-  if (st == TR_OK && ok) {
-    st = tr_mesh_add_constructed(m, q, &pid);
-    if (st == TR_OK) {
-      q = NULL;
-      st = rf_insert(c, pid, &ok);
-    } else if (st == TR_ERR_UNSUPPORTED) {
-      rf_cavity_release(c); /* past the bit-size guard: leave this piece as it is */
-      st = TR_OK;
-      ok = 0;
-    }
-  }
-  c->split_seg = TR_NONE;
-  if (q) {
-    tr_qpoint_clear(q);
-    free(q);
-  }
-  TR_CHECK(st);
-  if (!ok) {
-    c->ssnosplit[g] = 1;
-    return TR_OK;
-  }
-  c->st->on_segments++;
-  return after_insert(c, pid, RF_SEG, g, INFINITY);
-}
-
-static tr_status split_facet(rf_ctx *c, uint32_t f)
-{
-  struct tr_mesh *m = c->m;
-  tr_qpoint *q = NULL;
-  uint32_t where, encseg, t;
-  TR_CHECK(rf_facet_split_point(c, f, &q, &where, &encseg));
-  if (q && encseg != TR_NONE) {
-    /* the circumcentre lies beyond a sub-segment: split that one, unless it cannot be or
-     * is protected near a small angle (or, for a sub-face split for its shape, unless
-     * rf_subshape_may_split refuses it); then f is left as it is */
-    tr_point p = tr_pt_q(q), a = tr_mesh_point(m, c->ssv[2 * (size_t)encseg]),
-             b = tr_mesh_point(m, c->ssv[2 * (size_t)encseg + 1]);
-    int split = !c->ssnosplit[encseg] &&
-                ((rf_in_diametral(&a, &b, &p) &&
-                  !rf_protected_at(c, 1, encseg, RF_FACET, c->sftri[f], q->near)) ||
-                 (c->shape_on && rf_subface_shape_bad(c, f, c->shape_bound) &&
-                  rf_subshape_may_split(c, f, encseg)));
-    tr_qpoint_clear(q);
-    free(q);
-    if (split) {
-      TR_CHECK(tr_u32buf_push(&c->qseg, encseg));
-      return tr_u32buf_push(&c->qface, f);
-    }
-    c->sfnosplit[f] = 1;
-    return TR_OK;
-  }
-  if (!q) {
-    c->sfnosplit[f] = 1;
-    return TR_OK;
-  }
-  const uint32_t *S = c->sfv + 3 * (size_t)where;
-  tr_status st0 = tr_ball_find_domain(m, S[0], S[1], S[2], &t);
-  if (st0 == TR_OK && t == TR_NONE)
-    st0 = tr_error(TR_ERR_INTERNAL, "refinement: sub-face %u-%u-%u is not a mesh face", S[0],
-                   S[1], S[2]);
-  if (st0 != TR_OK) {
-    tr_qpoint_clear(q);
-    free(q);
-    return st0;
-  }
-  tr_point p = tr_pt_q(q);
-  int ok = 0;
-  tr_status st = rf_cavity(c, t, &p, m->nv, 1, &ok);
-  /* a split point inside a sub-segment's diametral sphere is not inserted: the
-   * sub-segment is split first (the sub-face stays queued) */
-  /* ... unless that sub-segment is protected (angles.c) or cannot be split: then the
-   * sub-face is left as it is, else its pieces would be split towards the sub-segment
-   * without end */
-  int pushed = 0, blocked = 0;
-  for (size_t i = 0; st == TR_OK && ok && i < c->cav.n && !blocked; i++) {
-    const uint32_t *v = m->tv + 4 * (size_t)c->cav.a[i];
-    for (int e = 0; e < 6 && st == TR_OK && !blocked; e++) {
-      uint32_t g = rf_subseg_of(c, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]]);
-      if (g == TR_NONE)
-        continue;
-      tr_point a = tr_mesh_point(m, c->ssv[2 * (size_t)g]), b = tr_mesh_point(m, c->ssv[2 * (size_t)g + 1]);
-      if (!rf_in_diametral(&a, &b, &p))
-        continue;
-      if (c->ssnosplit[g] || (rf_protected_at(c, 1, g, RF_FACET, c->sftri[f], p.d) &&
-                              !(c->shape_on && rf_subshape_may_split(c, f, g))))
-        blocked = 1;
-      else {
-        st = tr_u32buf_push(&c->qseg, g);
-        pushed = 1;
-      }
-    }
-  }
-  uint32_t pid = TR_NONE;
-  if (st == TR_OK && ok && blocked) {
-    rf_cavity_release(c);
-    ok = 0;
-  } else if (st == TR_OK && ok && pushed) {
-    rf_cavity_release(c);
-    st = tr_u32buf_push(&c->qface, f);
-    ok = -1;
-  } else if (st == TR_OK && ok) {
-    st = tr_mesh_add_constructed(m, q, &pid);
-    if (st == TR_OK) {
-      q = NULL;
-      st = rf_insert(c, pid, &ok);
-    } else if (st == TR_ERR_UNSUPPORTED) {
-      rf_cavity_release(c);
-      st = TR_OK;
-      ok = 0;
-    }
-  }
-  if (q) {
-    tr_qpoint_clear(q);
-    free(q);
-  }
-  TR_CHECK(st);
-  if (ok == 0)
-    c->sfnosplit[f] = 1;
-  if (ok != 1)
-    return TR_OK;
-  c->st->on_facets++;
-  return after_insert(c, pid, RF_FACET, c->sftri[f], INFINITY);
 }
 
 /* A tet whose shortest edge joins points on two constraints that meet at an input vertex
@@ -570,7 +432,7 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
     return TR_OK;
   }
   c->st->inside++;
-  TR_CHECK(after_insert(c, pid, RF_FREE, TR_NONE, sqrt(emin)));
+  TR_CHECK(rf_after_insert(c, pid, RF_FREE, TR_NONE, sqrt(emin)));
   /* a circumcentre beyond a sub-face from t, or dropped from its cavity by visibility,
    * leaves t whole: over the volume bound it goes back in the queue (next time its
    * circumcentre is a vertex and its centroid is taken; joint.off under -a 0.0002 once
@@ -641,7 +503,7 @@ static void compact_queue(tr_u32buf *q, size_t *head)
 }
 
 /* The points refinement may add with spacings (par.spacing_radii): 20 per input point
- * plus 10,000, at most half the budget. Reaching it ends the stage (see after_insert). */
+ * plus 10,000, at most half the budget. Reaching it ends the stage (see rf_after_insert). */
 static uint64_t spacing_cap(const rf_ctx *c)
 {
   uint64_t cap = 20 * (uint64_t)c->plc->npoints + 10000;
@@ -655,7 +517,7 @@ static tr_status run(rf_ctx *c)
   for (;;) {
     TR_CHECK(rf_subshape_scan(c));
     if (c->spacing_on && c->st->points >= spacing_cap(c)) {
-      c->spacing_on = 0; /* a cascade the spacings let through: see after_insert */
+      c->spacing_on = 0; /* a cascade the spacings let through: see rf_after_insert */
       c->st->spacing_stopped = 1;
       /* ratio refinement ends here; the volume bounds do not: their tets go on being
        * refined, with the insertion radii (it once stopped with half the tets of a cube
@@ -684,12 +546,12 @@ static tr_status run(rf_ctx *c)
       uint32_t g = c->qseg.a[c->hseg++];
       compact_queue(&c->qseg, &c->hseg);
       if (!c->ssdead[g] && !c->ssnosplit[g])
-        TR_CHECK(split_segment(c, g));
+        TR_CHECK(rf_split_segment(c, g));
     } else if (c->hface < c->qface.n) {
       uint32_t f = c->qface.a[c->hface++];
       compact_queue(&c->qface, &c->hface);
       if (!c->sfdead[f] && !c->sfnosplit[f])
-        TR_CHECK(split_facet(c, f));
+        TR_CHECK(rf_split_facet(c, f));
     } else if (c->htet < c->qtet.n) {
       uint32_t it[5];
       memcpy(it, c->qtet.a + c->htet, sizeof it);

@@ -2,7 +2,8 @@
  *   subs.c      the sub-face and sub-segment tables and the face map
  *   encroach.c  exact encroachment tests and the exact split points on constraints
  *   cavity.c    constrained Bowyer-Watson: locate, cavity, insertion
- *   refine.c    the queues and the main loop
+ *   refine.c    the queues, the main loop and the bad tets
+ *   split.c     splitting a queued sub-segment or sub-face
  *   longs.c     the long sub-segments near a point (a close circumcentre's shortcut)
  *   memo.c      what a caller's tr_refine_memo keeps from one set-up for the next */
 #ifndef TR_REFINE_IMPL_H
@@ -224,6 +225,19 @@ tr_status rf_cavity(rf_ctx *c, uint32_t t0, const tr_point *p, uint32_t pid, int
                     int *ok);
 /* Forgets the cavity of the last successful rf_cavity without inserting. */
 void rf_cavity_release(rf_ctx *c);
+
+/* ---- refine.c ---- */
+/* Bookkeeping after vertex pid (of kind RF_*, on constraint own) went in: its insertion
+ * radius (rad, or its distance to the nearest vertex of its new tets when smaller), and
+ * its new tets queued when bad. */
+tr_status rf_after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own, double rad);
+
+/* ---- split.c ---- */
+/* Splits sub-segment g (queued, live): inserted, or marked ssnosplit. */
+tr_status rf_split_segment(rf_ctx *c, uint32_t g);
+/* Splits sub-face f (queued, live): inserted, its encroached sub-segment queued first (f
+ * queued again), or marked sfnosplit. */
+tr_status rf_split_facet(rf_ctx *c, uint32_t f);
 
 /* ---- insert.c ---- */
 /* Replaces the cavity by the cone from vertex pid (already in the mesh), updates the

@@ -4,7 +4,7 @@
  * the points that would fix it must lie on the facet, where tet refinement puts them only
  * for encroachment. So, as in Shewchuk's (1998) and TetGen's (Si 2015) refinement, a
  * sub-face whose 2D radius-edge ratio (circumradius / shortest edge) exceeds the bound
- * is split at its circumcentre, through the facet split path of refine.c (the exact
+ * is split at its circumcentre, through the facet split path of split.c (the exact
  * dyadic barycentric point, the sub-segments that point encroaches split first), before
  * the bad tets.
  *

@@ -10,16 +10,6 @@
 #include "../pipeline/tmesh.h"
 #include "tvolume.h"
 
-/* Refinement under the bounds, sliver removal off unless a case turns it on. */
-static tr_options refinement(double ratio, double maxvol)
-{
-  tr_options opt = tm_options();
-  opt.quality_ratio = ratio;
-  opt.max_volume = maxvol;
-  opt.optimize = 0;
-  return opt;
-}
-
 /* A volume bound the point budget cannot reach is refused before refinement starts, with
  * TR_ERR_NOMEM and a message naming the tets it asks for (-a 1e-300 on a cube once ran
  * towards a default budget of 4e9 points: hours, and all the memory); also for a region's
@@ -40,14 +30,14 @@ static void volume_bound_over_budget(void)
     if (region)
       EXPECT(tr_plc_add_region(plc, 0.5, 0.5, 0.5, 2, 1e-300) == TR_OK, "region: %s",
              tr_last_error());
-    tr_options opt = refinement(1.414, region ? 0 : 1e-300);
+    tr_options opt = tm_refinement(1.414, region ? 0 : 1e-300);
     tr_mesh *m = NULL;
     tr_stats st;
     tr_status s = tr_mesh_plc(plc, &opt, &m, &st);
     EXPECT(s == TR_ERR_NOMEM && !m && strstr(tr_last_error(), "asks for at least 1e+300 tets"),
            "%s: %s (%d)", region ? "region bound" : "-a", tr_last_error(), s);
     /* a bound the budget reaches is not refused */
-    opt = refinement(1.414, region ? 0 : 0.01);
+    opt = tm_refinement(1.414, region ? 0 : 0.01);
     opt.refine_budget = 2000;
     if (region) {
       tr_plc_destroy(plc);
@@ -71,7 +61,7 @@ static void volume_bound_over_budget(void)
 
 static tr_options cube_options(void)
 {
-  tr_options opt = refinement(0, CUBE_BOUND);
+  tr_options opt = tm_refinement(0, CUBE_BOUND);
   opt.refine_budget = CUBE_BUDGET;
   opt.optimize = 3; /* the default: sliver removal would add points if it could */
   return opt;

@@ -26,18 +26,6 @@ static tr_plc *tet_surface(const double a[3], const double b[3], const double c[
   return tm_plc(x, 4, t, 4);
 }
 
-/* Refinement alone under the radius-edge bound ratio (0: none) and the volume bound
- * maxvol (0: none): sliver removal (tests/sliver) may trade a tet's radius-edge ratio above
- * the bound for larger dihedral angles, which the ratio properties here do not allow. */
-static tr_options refinement(double ratio, double maxvol)
-{
-  tr_options opt = tm_options();
-  opt.quality_ratio = ratio;
-  opt.max_volume = maxvol;
-  opt.optimize = 0;
-  return opt;
-}
-
 static double max_ratio(const tr_mesh *m)
 {
   tr_quality q;
@@ -64,14 +52,6 @@ static double share_under10(const tr_mesh *m)
   return q.ntets ? (double)q.below10 / (double)q.ntets : 0;
 }
 
-/* Exact coordinates of vertex v. */
-static void coords(const tr_mesh *m, uint32_t v, mpq_t c[3])
-{
-  tr_point p = tr_mesh_point(m, v);
-  for (int i = 0; i < 3; i++)
-    tr_point_get_q(&p, i, c[i]);
-}
-
 static int pow2_den(const mpq_t x)
 {
   return mpz_popcount(mpq_denref(x)) == 1;
@@ -84,13 +64,13 @@ static int edge_encroached(const tr_mesh *m, uint32_t u, uint32_t v)
   for (int i = 0; i < 3; i++)
     mpq_inits(a[i], b[i], p[i], NULL);
   mpq_inits(x, y, s, NULL);
-  coords(m, u, a);
-  coords(m, v, b);
+  tv_coords(m, u, a);
+  tv_coords(m, v, b);
   int enc = 0;
   for (uint32_t w = 0; w < m->nv && !enc; w++) {
     if (w == u || w == v || m->v2t[w] == TR_NONE)
       continue;
-    coords(m, w, p);
+    tv_coords(m, w, p);
     mpq_set_ui(s, 0, 1);
     for (int i = 0; i < 3; i++) {
       mpq_sub(x, p[i], a[i]);
@@ -113,7 +93,7 @@ static void encroached_segment(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {4, 0, 0}, C[3] = {2, 4, 0}, D[3] = {2, 1, 1};
   tr_plc *plc = tet_surface(A, B, C, D);
-  const tr_options opt = refinement(1.414, 0);
+  const tr_options opt = tm_refinement(1.414, 0);
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "encroached_segment", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
@@ -121,7 +101,7 @@ static void encroached_segment(void)
     mpq_inits(c[0], c[1], c[2], NULL);
     uint32_t n = 0;
     for (uint32_t v = 0; v < m->nv; v++) {
-      coords(m, v, c);
+      tv_coords(m, v, c);
       if (mpq_sgn(c[1]) == 0 && mpq_sgn(c[2]) == 0)
         n++;
       if (mpq_sgn(c[1]) || mpq_sgn(c[2]) || mpq_sgn(c[0]) <= 0 || mpq_cmp_ui(c[0], 4, 1) >= 0)
@@ -144,7 +124,7 @@ static void encroached_segment_of_a_good_tet_is_left(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {4, 0, 0}, C[3] = {2, 4, 0}, D[3] = {2, 1, 1};
   tr_plc *plc = tet_surface(A, B, C, D);
-  const tr_options opt = refinement(1000, 0);
+  const tr_options opt = tm_refinement(1000, 0);
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "encroached_segment_left", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
@@ -168,7 +148,7 @@ static void encroached_subface(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {8, 0, 0}, C[3] = {4, 6, 0}, D[3] = {4, 2.5, 0.25};
   tr_plc *plc = tet_surface(A, B, C, D);
-  const tr_options opt = refinement(1.414, 0);
+  const tr_options opt = tm_refinement(1.414, 0);
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "encroached_subface", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
@@ -176,7 +156,7 @@ static void encroached_subface(void)
     mpq_inits(c[0], c[1], c[2], w1, w2, t, NULL);
     int inside = 0;
     for (uint32_t v = 0; v < m->nv; v++) {
-      coords(m, v, c);
+      tv_coords(m, v, c);
       if (mpq_sgn(c[2]) != 0)
         continue;
       /* p = w1 B + w2 C: y = 6 w2, x = 8 w1 + 4 w2 */
@@ -236,7 +216,7 @@ static void small_angle(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {10, 0, 0}, C[3] = {10, 0.25, 0}, D[3] = {5, 0.125, 2};
   tr_plc *plc = tet_surface(A, B, C, D);
-  const tr_options opt = refinement(1.414, 0);
+  const tr_options opt = tm_refinement(1.414, 0);
   improves("small_angle", plc, &opt, TR_CHK_TOPOLOGY, 2);
   tr_plc_destroy(plc);
 }
@@ -255,7 +235,7 @@ static void thin_slab(void)
   /* every input edge kept: with the sides merged into planar facets, the skinny corners
    * of their triangles protect the long edges (angles.c) and the share stays (a known
    * limit, tests/refine/test_merge.c) */
-  tr_options opt = refinement(3, 0);
+  tr_options opt = tm_refinement(3, 0);
   opt.keep_edges = 1;
   improves("thin_slab", plc, &opt, TR_CHK_TOPOLOGY, 3);
   tr_plc_destroy(plc);
@@ -269,7 +249,7 @@ static void thin_slab_terminates(void)
 {
   const double lo[3] = {0, 0, 0}, hi[3] = {8, 8, 0.25};
   tr_plc *plc = tm_box(lo, hi);
-  tr_options opt = refinement(1.414, 0);
+  tr_options opt = tm_refinement(1.414, 0);
   opt.refine_budget = 5000;
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "thin_slab_1414", plc, &opt, TR_CHK_TOPOLOGY);
@@ -294,7 +274,7 @@ static void wedge_10_degrees(void)
   static const uint32_t t[24] = {0, 2, 1, 3, 4, 5, 0, 1, 4, 0, 4, 3,
                                  1, 2, 5, 1, 5, 4, 2, 0, 3, 2, 3, 5};
   tr_plc *plc = tm_plc(x, 6, t, 8);
-  tr_options opt = refinement(1.414, 0);
+  tr_options opt = tm_refinement(1.414, 0);
   opt.refine_budget = 5000;
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "wedge_10", plc, &opt, TR_CHK_TOPOLOGY);
@@ -308,251 +288,12 @@ static void wedge_10_degrees(void)
   tr_plc_destroy(plc);
 }
 
-/* 1 iff x lies on the closed segment a-b, exactly. */
-static int on_segment(const tr_mesh *m, uint32_t a, uint32_t b, uint32_t x)
-{
-  mpq_t A[3], B[3], X[3], u, w, t;
-  for (int i = 0; i < 3; i++)
-    mpq_inits(A[i], B[i], X[i], NULL);
-  mpq_inits(u, w, t, NULL);
-  coords(m, a, A);
-  coords(m, b, B);
-  coords(m, x, X);
-  int on = 1;
-  /* collinear: every 2x2 minor of (B - A, X - A) is zero; between: (X-A).(X-B) <= 0 */
-  for (int i = 0; i < 3 && on; i++) {
-    int j = (i + 1) % 3;
-    mpq_sub(u, B[i], A[i]);
-    mpq_sub(w, X[j], A[j]);
-    mpq_mul(t, u, w);
-    mpq_sub(u, B[j], A[j]);
-    mpq_sub(w, X[i], A[i]);
-    mpq_mul(u, u, w);
-    on = mpq_equal(t, u);
-  }
-  mpq_set_ui(t, 0, 1);
-  for (int i = 0; i < 3 && on; i++) {
-    mpq_sub(u, X[i], A[i]);
-    mpq_sub(w, X[i], B[i]);
-    mpq_mul(u, u, w);
-    mpq_add(t, t, u);
-  }
-  on = on && mpq_sgn(t) <= 0;
-  for (int i = 0; i < 3; i++)
-    mpq_clears(A[i], B[i], X[i], NULL);
-  mpq_clears(u, w, t, NULL);
-  return on;
-}
-
-/* Does boundary face (a, b, c) of m have its smallest angle at an input corner: vertex V
- * of an input triangle of plc, its two edges at V along that triangle's two edges at V?
- * Such an angle is the input's own (the exemption of src/refine/subshape.c). */
-static int input_corner(const tr_mesh *m, const tr_plc *plc, const uint32_t f[3], int at)
-{
-  uint32_t V = f[at], X = f[(at + 1) % 3], Y = f[(at + 2) % 3];
-  if (V >= plc->npoints)
-    return 0;
-  for (uint32_t t = 0; t < plc->ntris; t++) {
-    const uint32_t *T = plc->tris + 3 * (size_t)t;
-    for (int k = 0; k < 3; k++) {
-      if (T[k] != V)
-        continue;
-      uint32_t P = T[(k + 1) % 3], Q = T[(k + 2) % 3];
-      if ((on_segment(m, V, P, X) && on_segment(m, V, Q, Y)) ||
-          (on_segment(m, V, Q, X) && on_segment(m, V, P, Y)))
-        return 1;
-    }
-  }
-  return 0;
-}
-
-/* Does the edge x-y of m span a wedge: x and y on two input edges (exactly) that meet at
- * an input vertex V under less than 60 degrees? Sub-faces across such a wedge are left
- * (src/refine/subshape.c): they can be no rounder than the wedge is wide there. */
-static int spans_wedge(const tr_mesh *m, const tr_plc *plc, uint32_t x, uint32_t y)
-{
-  for (uint32_t t = 0; t < plc->ntris; t++) {
-    const uint32_t *T = plc->tris + 3 * (size_t)t;
-    for (int k = 0; k < 3; k++) {
-      uint32_t V = T[k], P = T[(k + 1) % 3], Q = T[(k + 2) % 3];
-      if (!((on_segment(m, V, P, x) && on_segment(m, V, Q, y)) ||
-            (on_segment(m, V, Q, x) && on_segment(m, V, P, y))))
-        continue;
-      const double *v = plc->xyz + 3 * (size_t)V, *p = plc->xyz + 3 * (size_t)P,
-                   *q = plc->xyz + 3 * (size_t)Q;
-      double u[3], w[3], uw = 0, uu = 0, ww = 0;
-      for (int i = 0; i < 3; i++) {
-        u[i] = p[i] - v[i];
-        w[i] = q[i] - v[i];
-        uw += u[i] * w[i];
-        uu += u[i] * u[i];
-        ww += w[i] * w[i];
-      }
-      if (uw > 0.5 * sqrt(uu * ww))
-        return 1;
-    }
-  }
-  return 0;
-}
-
-/* Does boundary face f of m have an edge on an input edge of plc (exactly) that is shorter
- * than half that edge? A protected piece that short is not split for a sub-face's shape
- * (the lineage bound of src/refine/subshape.c), so the face beside it may stay thin. */
-static int beside_short_piece(const tr_mesh *m, const tr_plc *plc, const uint32_t f[3])
-{
-  for (int i = 0; i < 3; i++) {
-    uint32_t x = f[i], y = f[(i + 1) % 3];
-    const double *px = m->xyz + 3 * (size_t)x, *py = m->xyz + 3 * (size_t)y;
-    for (uint32_t t = 0; t < plc->ntris; t++)
-      for (int k = 0; k < 3; k++) {
-        uint32_t P = plc->tris[3 * (size_t)t + k], Q = plc->tris[3 * (size_t)t + (k + 1) % 3];
-        if (!on_segment(m, P, Q, x) || !on_segment(m, P, Q, y))
-          continue;
-        const double *pp = plc->xyz + 3 * (size_t)P, *pq = plc->xyz + 3 * (size_t)Q;
-        double e = 0, g = 0;
-        for (int j = 0; j < 3; j++) {
-          e += (px[j] - py[j]) * (px[j] - py[j]);
-          g += (pp[j] - pq[j]) * (pp[j] - pq[j]);
-        }
-        if (4 * e < g)
-          return 1;
-      }
-  }
-  return 0;
-}
-
-/* The boundary faces of m (faces of live tets with no live neighbour) whose radius-edge
- * ratio (circumradius / shortest edge, doubles) is above R; *corners of them have their
- * smallest angle at an input corner, *wedges of the others span a wedge (spans_wedge),
- * *pieces of the others lie beside a short piece of an input edge (beside_short_piece);
- * *nb = boundary faces. */
-static uint32_t bad_boundary_faces(const tr_mesh *m, const tr_plc *plc, double R,
-                                   uint32_t *corners, uint32_t *wedges, uint32_t *pieces,
-                                   uint32_t *nb, double *worst)
-{
-  uint32_t bad = 0;
-  *corners = *wedges = *pieces = *nb = 0;
-  *worst = 0;
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t) || (m->flags[t] & TR_TF_OUTER))
-      continue;
-    for (int k = 0; k < 4; k++) {
-      uint32_t n = TR_NEIG(m, t, k);
-      if (n != TR_NONE && tr_tet_is_real(m, n) && !(m->flags[n] & TR_TF_OUTER))
-        continue;
-      uint32_t f[3];
-      const double *x[3];
-      for (int i = 0; i < 3; i++) {
-        f[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
-        x[i] = m->xyz + 3 * (size_t)f[i];
-      }
-      double l[3], u[3], w[3];
-      for (int i = 0; i < 3; i++) {
-        const double *p = x[(i + 1) % 3], *q = x[(i + 2) % 3];
-        l[i] = sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                    (p[2] - q[2]) * (p[2] - q[2]));
-        u[i] = x[1][i] - x[0][i];
-        w[i] = x[2][i] - x[0][i];
-      }
-      double cx = u[1] * w[2] - u[2] * w[1], cy = u[2] * w[0] - u[0] * w[2],
-             cz = u[0] * w[1] - u[1] * w[0];
-      double area2 = sqrt(cx * cx + cy * cy + cz * cz); /* twice the area */
-      int s = l[1] < l[0] ? 1 : 0;
-      s = l[2] < l[s] ? 2 : s;
-      double ratio = l[0] * l[1] * l[2] / (2 * area2) / l[s];
-      (*nb)++;
-      *worst = fmax(*worst, ratio);
-      if (!(ratio > R * (1 + 1e-9)))
-        continue;
-      bad++;
-      if (input_corner(m, plc, f, s))
-        (*corners)++;
-      else if (spans_wedge(m, plc, f[(s + 1) % 3], f[(s + 2) % 3]))
-        (*wedges)++;
-      else if (beside_short_piece(m, plc, f))
-        (*pieces)++;
-    }
-  }
-  return bad;
-}
-
-/* The prism over the triangle (0,0), (10,0), (cx,cy), from z = 0 to z = h, refined under
- * R = 1.414 with the sub-faces' bound S = 1.414 (subshape.c), every input edge kept
- * (--keep-edges), within `budget` points: every
- * boundary face of the output meets S except those a small input angle forces (their
- * smallest angle is an input corner, or their shortest edge spans the wedge of a corner
- * under 60 degrees, or they lie beside a piece of an input edge shorter than half of it,
- * which the lineage bound leaves), the budget is not reached, and the mesh validates
- * exactly. With
- * `needed` 1, the same prism refined without S keeps a boundary face over S that no input
- * angle forces (the property depends on the shape splits); with 2, it meets the property
- * without S as well. */
-static void prism_subfaces(const char *name, double cx, double cy, double h, uint64_t budget,
-                           int needed)
-{
-  const double x[18] = {0, 0, 0, 10, 0, 0, cx, cy, 0, 0, 0, h, 10, 0, h, cx, cy, h};
-  static const uint32_t t[24] = {0, 2, 1, 3, 4, 5, 0, 1, 4, 0, 4, 3,
-                                 1, 2, 5, 1, 5, 4, 2, 0, 3, 2, 3, 5};
-  tr_plc *plc = tm_plc(x, 6, t, 8);
-  for (int on = needed ? 0 : 1; on <= 1; on++) {
-    tr_options opt = refinement(1.414, 0);
-    opt.refine_budget = budget;
-    opt.quality_subface_ratio = on ? 1.414 : 0;
-    opt.keep_edges = 1; /* the side rectangles keep their diagonals: the forced faces are
-                           classified by the input triangles' corners and edges */
-    tm_run r;
-    tr_mesh *m = tm_mesh(&r, name, plc, &opt, TR_CHK_TOPOLOGY);
-    if (m) {
-      uint32_t corners, wedges, pieces, nb;
-      double worst;
-      uint32_t bad = bad_boundary_faces(m, r.used, 1.414, &corners, &wedges, &pieces, &nb, &worst);
-      if (on || needed == 2)
-        EXPECT(bad == corners + wedges + pieces, "%s: %u boundary faces over the bound, %u of "
-               "them at an input corner, %u across a wedge, %u beside a short input edge "
-               "piece", name, bad, corners, wedges, pieces);
-      else
-        EXPECT(bad > corners + wedges, "%s without the shape splits: every face over the "
-               "bound is forced by an angle (%u, %u corners, %u wedges): the test shows "
-               "nothing", name, bad, corners, wedges);
-      EXPECT(r.st.points_added_for_quality > 0 && r.st.points_added_for_quality < budget,
-             "%s: %llu points", name, (unsigned long long)r.st.points_added_for_quality);
-      fprintf(stderr, "%s%s: %u boundary faces, %u over the bound (%u at input corners, %u "
-              "across wedges, %u beside short pieces), worst %.3g, %llu points, %u tets\n",
-              name, on ? "" : " (no shape splits)", nb, bad, corners, wedges, pieces, worst,
-              (unsigned long long)r.st.points_added_for_quality, tr_mesh_num_tets(m));
-    }
-    tm_free(&r);
-  }
-  tr_plc_destroy(plc);
-}
-
-/* A flat prism whose two end facets are single thin triangles (angles 9, 9 and 162
- * degrees, 10 long, 0.8 high; the prism 0.5 thick). Without S it kept 2 boundary faces
- * over the bound beside short input-edge pieces while a circumcentre too close to a new
- * vertex was refused before the long sub-segment it encroaches was split (40 faces over
- * the bound, worst ratio 40); now that sub-segment is split (refine.c, refine_tet), and
- * both runs meet the property (44 over the bound, all at corners or across wedges, worst
- * 15). */
-static void thin_subfaces_split_for_shape(void)
-{
-  prism_subfaces("thin_subfaces", 5, 0.8, 0.5, 20000, 2);
-}
-
-/* A prism whose two end facets are single triangles with a 5-degree corner (cross-section
- * (0,0), (10,0), (10, 0.875), 2 high): the sub-faces across that wedge are left as they
- * are, so the refinement does not follow the wedge down to its corner: it ends well
- * inside a budget of 5,000 points. */
-static void wedge_5_degrees_in_a_facet(void)
-{
-  prism_subfaces("wedge_5_facet", 10, 0.875, 2, 5000, 0);
-}
-
 /* -a V: the exact volume of every tet is at most V. */
 static void max_volume(void)
 {
   const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, V = 0.01;
   tr_plc *plc = tm_box(lo, hi);
-  const tr_options opt = refinement(0, V);
+  const tr_options opt = tm_refinement(0, V);
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "max_volume", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
@@ -571,7 +312,7 @@ static void max_volume_past_the_spacing_cap(void)
 {
   const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, V = 1e-4;
   tr_plc *plc = tm_box(lo, hi);
-  tr_options opt = refinement(1.414, V);
+  tr_options opt = tm_refinement(1.414, V);
   opt.refine_spacing_radii = 1;
   opt.refine_budget = 5000;
   tm_run r;
@@ -607,7 +348,7 @@ static void region_max_volume(void)
              tr_plc_add_region(plc, 0.5, 0.5, 0.5, 5, V) == TR_OK &&
              tr_plc_add_region(plc, 0.1, 0.1, 0.1, 3, 0) == TR_OK,
          "region_max_volume: building the input: %s", tr_last_error());
-  const tr_options opt = refinement(0, 0);
+  const tr_options opt = tm_refinement(0, 0);
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "region_max_volume", plc, &opt, TR_CHK_TOPOLOGY);
   if (m) {
@@ -644,7 +385,7 @@ static void shapes(const char *dir)
      * and the outer box, circumcentres closer to a vertex than its insertion radius are
      * not inserted (src/refine/refine.c), so a worse tet than the recovery's can remain
      * there: the share of bad tets is what drops */
-    const tr_options opt = refinement(1.414, 0);
+    const tr_options opt = tm_refinement(1.414, 0);
     improves(files[i], p, &opt, i == 1 ? TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T : TR_CHK_TOPOLOGY,
              i == 0);
     tr_plc_destroy(p);
@@ -655,7 +396,7 @@ static void determinism(void)
 {
   const double A[3] = {0, 0, 0}, B[3] = {4, 0, 0}, C[3] = {2, 3, 0}, D[3] = {2, 0.75, 2};
   tr_plc *plc = tet_surface(A, B, C, D);
-  const tr_options opt = refinement(1.2, 0.05);
+  const tr_options opt = tm_refinement(1.2, 0.05);
   tm_run a, b;
   tr_mesh *m0 = tm_mesh(&a, "determinism", plc, &opt, TR_CHK_TOPOLOGY);
   tr_mesh *m1 = tm_mesh(&b, "determinism", plc, &opt, TR_CHK_TOPOLOGY);
@@ -861,7 +602,7 @@ static void each_bound(const char *what, const char *path, double V)
   const double R[3] = {1.414, 2.0, 3.0};
   for (int i = 0; i < 3; i++)
     for (int o = 0; o <= 3; o += 3) {
-      tr_options opt = refinement(R[i], V);
+      tr_options opt = tm_refinement(R[i], V);
       opt.optimize = o;
       char name[80];
       snprintf(name, sizeof name, "%s R %g O %d", what, R[i], o);
@@ -946,7 +687,7 @@ static void bounded_run(const char *path, tr_options opt, double div, tr_stats *
 static void volume_bound_kept(const char *path)
 {
   tr_stats st;
-  bounded_run(path, refinement(0, 0), 1000, &st);
+  bounded_run(path, tm_refinement(0, 0), 1000, &st);
 }
 
 /* tests/data/thin_boxes_1e-6.off (found by fuzz_pipeline_quality as a slow unit: 20 s a
@@ -959,7 +700,7 @@ static void volume_bound_kept(const char *path)
  * stage still adds points. */
 static void thin_boxes_all_options(const char *path)
 {
-  tr_options opt = refinement(1.414, 0);
+  tr_options opt = tm_refinement(1.414, 0);
   opt.optimize = 3;
   opt.refine_spacing_radii = 1;
   opt.keep_edges = 1;
@@ -979,7 +720,7 @@ static void thin_boxes_all_options(const char *path)
 static void regions_inner_box(const char *path)
 {
   tr_plc *p = tm_read(path);
-  tr_options opt = refinement(1.414, 0);
+  tr_options opt = tm_refinement(1.414, 0);
   opt.keep_edges = 1;
   tm_run r;
   tr_mesh *m = tm_mesh(&r, "regions_inner_box", p, &opt, TR_CHK_TOPOLOGY);
@@ -1004,8 +745,6 @@ int main(int argc, char **argv)
       {"small_angle", small_angle, NULL},
       {"thin_slab", thin_slab, NULL},
       {"thin_slab_terminates", thin_slab_terminates, NULL},
-      {"thin_subfaces", thin_subfaces_split_for_shape, NULL},
-      {"wedge_5_facet", wedge_5_degrees_in_a_facet, NULL},
       {"wedge_10_degrees", wedge_10_degrees, NULL},
       {"max_volume", max_volume, NULL},
       {"region_max_volume", region_max_volume, NULL},

@@ -7,7 +7,7 @@
 
 #include "mesh/mesh.h"
 
-static void tv_coords(const tr_mesh *m, uint32_t v, mpq_t c[3])
+static inline void tv_coords(const tr_mesh *m, uint32_t v, mpq_t c[3])
 {
   tr_point p = tr_mesh_point(m, v);
   for (int i = 0; i < 3; i++)
@@ -16,7 +16,7 @@ static void tv_coords(const tr_mesh *m, uint32_t v, mpq_t c[3])
 
 /* The tets of m (of region `region`, or all when it is UINT32_MAX) whose exact volume is
  * above V; *counted = the tets looked at. */
-static uint32_t tv_count_over(const tr_mesh *m, double V, uint32_t region, uint32_t *counted)
+static inline uint32_t tv_count_over(const tr_mesh *m, double V, uint32_t region, uint32_t *counted)
 {
   mpq_t v6, lim, x;
   mpq_inits(v6, lim, x, NULL);
