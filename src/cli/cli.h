@@ -2,11 +2,34 @@
 #ifndef TR_CLI_H
 #define TR_CLI_H
 
+#include <stdint.h>
 #include <stdio.h>
 
 #include "core/plc.h"
 #include "core/status.h"
 #include "qpoint.h"
+
+/* The commands, as bits of an option's set of commands. */
+enum { C_MESH = 1, C_DELAUNAY = 2, C_CHECK = 4, C_CONVERT = 8, C_CHECK_SURFACE = 16, C_ALL = 31 };
+
+/* What the command line asked for (args.c). */
+typedef struct {
+  const char *cmd, *in, *in2, *out, *stats;
+  unsigned cmd_bit;
+  int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
+  int keep_surface, keep_steiner, progress, keep_edges, spacing_radii;
+  int threads; /* 0: every core */
+  int msh_version; /* 41 or 22 */
+  int optimize; /* sliver removal level + 1, 0: the default */
+  double quality, quality_dih, max_volume, subface_quality; /* 0: off */
+  uint64_t refine_budget;                  /* 0: the default */
+  uint64_t round_budget; /* 0: the default */
+  int recovery;          /* tr_options.recovery */
+} tr_cli_args;
+
+/* Parses argv into *a: TR_ERR_USAGE with a message for an unknown or misplaced option, a
+ * bad value or a wrong number of files; --help and --version print and exit 0. */
+tr_status tr_cli_parse_args(int argc, char **argv, tr_cli_args *a);
 
 /* `check`: the validator on the tets of vol, and, when every vertex is known exactly,
  * the exact conformity validator and the exact volume against surface (validated).

@@ -1,7 +1,6 @@
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, isatty */
 /* The tetrec command. Exit status = the tr_status of the first failure (0 on success),
  * so scripts can tell a bad file from a bad surface from a bug. */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,173 +13,6 @@
 #include "pipeline/pipeline.h"
 #include "refine/refine_stage.h"
 #include "tetrec.h"
-
-static const char usage[] =
-    "usage: tetrec COMMAND [options] FILES   (tetrec COMMAND --help: that command's options)\n"
-    "\n"
-    "commands:\n"
-    "  mesh IN [-o OUT]        tetrahedralize the volume bounded by the surface IN\n"
-    "  delaunay IN [-o OUT]    Delaunay tetrahedralization of the points of IN\n"
-    "  check IN MESH           validate MESH (.mesh, .msh, or .ele/.node) against IN\n"
-    "  check-surface IN [-o F] list every defect of the surface IN\n"
-    "  convert IN OUT          convert a surface or mesh between formats\n"
-    "\n"
-    "input formats (by extension): .off .stl .obj .ply .mesh .msh .node .poly .smesh\n"
-    "output: .mesh (Medit), .vtu (VTK XML), .vtk (legacy VTK), .msh (Gmsh),\n"
-    "  .node/.ele/.face or a TetGen base name (a name whose extension has no letter,\n"
-    "  like out or cube.1); any other extension is an error. Without -o, IN's name with\n"
-    "  '.1' (cube.off -> cube.1.node/.ele/.face), like TetGen\n"
-    "\n"
-    "exit status (= tr_status):\n"
-    "  0 ok, 1 usage, 2 I/O error, 3 parse error, 4 invalid input (NaN, bad index,\n"
-    "  zero-area triangle, ...), 5 degenerate point set, 6 open or non-manifold surface,\n"
-    "  7 self-intersecting input, 8 out of memory or a size limit (--refine-budget:\n"
-    "  the mesh made so far is written), 9 invalid mesh, 10 internal error,\n"
-    "  11 not implemented\n";
-
-enum { C_MESH = 1, C_DELAUNAY = 2, C_CHECK = 4, C_CONVERT = 8, C_CHECK_SURFACE = 16, C_ALL = 31 };
-
-static const struct command {
-  const char *name;
-  unsigned bit;
-  int nfiles;
-  const char *synopsis, *help;
-} commands[] = {
-    {"mesh", C_MESH, 1, "mesh IN [-o OUT] [options]",
-     "Tetrahedralize the volume bounded by the closed surface IN: a mesh that contains\n"
-     "every input vertex, edge and facet, every geometric decision exact. OUT's\n"
-     "extension picks the format; every output path is checked writable before meshing.\n"},
-    {"delaunay", C_DELAUNAY, 1, "delaunay IN [-o OUT] [options]",
-     "Delaunay tetrahedralization of the points of IN (its triangles are ignored).\n"},
-    {"check", C_CHECK, 2, "check IN MESH [options]",
-     "Validate the tetrahedral mesh MESH (.mesh, .msh or .node/.ele) against the surface\n"
-     "IN: links, exact orientation, and, when every vertex is known exactly\n"
-     "(an --exact .node, or no Steiner points), exact conformity and volume; also the\n"
-     "largest distance of a rounded Steiner point from the input surface.\n"},
-    {"check-surface", C_CHECK_SURFACE, 1, "check-surface IN [-o FILE] [options]",
-     "List every self-intersecting pair of triangles, every open or non-manifold edge and\n"
-     "every non-planar input polygon (with its deviation) of the surface IN; exit non-zero\n"
-     "when there is any (also zero-area and duplicate triangles). -o FILE (.vtk or .msh)\n"
-     "writes the offending triangles and edges, with cell data / physical tag 1\n"
-     "intersecting triangle, 2 open edge, 3 non-manifold edge, 4 triangle of a non-planar\n"
-     "polygon, 5 zero-area, 6 duplicate triangle, for ParaView or Gmsh.\n"},
-    {"convert", C_CONVERT, 2, "convert IN OUT [options]",
-     "Convert a surface or mesh between formats (OUT: .off .mesh .vtu .vtk .msh or TetGen).\n"},
-};
-
-static const struct option {
-  const char *name, *arg;
-  unsigned cmds;
-  const char *help;
-} options[] = {
-    {"-o", "OUT", C_MESH | C_DELAUNAY | C_CHECK_SURFACE, "output file or TetGen base name"},
-    {"-q", NULL, C_ALL, "quiet: errors only"},
-    {"-v", NULL, C_ALL, "verbose"},
-    {"--stats", "FILE", C_MESH | C_DELAUNAY,
-     "write statistics as JSON, also when the run fails (with\n"
-     "\"status\" and \"message\")"},
-    {"--exact", NULL, C_MESH | C_DELAUNAY,
-     "write Steiner points as exact rationals num/den in the\n"
-     "TetGen .node (exactly on their edges and facets). Without it\n"
-     "every output coordinate is a double: a Steiner point is its\n"
-     "nearest double, moved by a few ulps where that is needed to\n"
-     "keep every tet strictly positive, so it may lie a hair off\n"
-     "its facet (see --strict-doubles)"},
-    {"--msh-version", "V", C_MESH | C_DELAUNAY | C_CONVERT | C_CHECK_SURFACE,
-     ".msh output format: 4.1 (default) or 2.2"},
-    {"--allow-open", NULL, C_MESH | C_CHECK, "accept open or non-manifold surfaces"},
-    {"--check-only", NULL, C_MESH, "only read and validate the input"},
-    {"--no-smooth", NULL, C_MESH, "no surface diagonal swaps before recovery"},
-    {"--keep-surface", NULL, C_MESH,
-     "no Steiner point on the surface: the boundary faces of the\n"
-     "output are exactly the input triangles (no smoothing either);\n"
-     "fails naming the point where this cannot be done; --quality\n"
-     "and --max-volume then add interior points only"},
-    {"-Y", NULL, C_MESH, "the same as --keep-surface (TetGen's switch)"},
-    {"--keep-edges", NULL, C_MESH,
-     "under refinement, keep every input edge a chain of mesh\n"
-     "edges (by default edges between exactly coplanar input\n"
-     "triangles with the same marker are merged away)"},
-    {"--spacing-radii", NULL, C_MESH,
-     "under refinement, refuse a circumcentre only within a new\n"
-     "vertex's current spacing, not its insertion radius (more\n"
-     "points, fewer slivers where long edges were split early)"},
-    {"--keep-steiner", NULL, C_MESH,
-     "leave the recovery's Steiner points where they are (by\n"
-     "default the ones on the surface are removed or moved inside\n"
-     "where that can be done exactly)"},
-    {"--recovery", "MODE", C_MESH,
-     "default: every recovery step; paper: the published\n"
-     "algorithm only (Swap23/Swap44 and pipels for edges, Swap32\n"
-     "and clusterels for facets), to reproduce the paper's Table\n"
-     "14; no-facet-flips: the default without the general flips\n"
-     "for facets (cavity retriangulation right after Swap32)"},
-    {"--round-budget", "N", C_MESH,
-     "star checks the rounding repair may spend before it gives\n"
-     "up (exit 9; default 2000000)"},
-    {"--quality", "R[/D]", C_MESH | C_CHECK,
-     "constrained Delaunay refinement until every tet's radius-\n"
-     "edge ratio is at most R (>= 1; 1.414 is TetGen's default);\n"
-     "D (degrees, at most 70): a minimum dihedral angle that sliver\n"
-     "removal works towards (tets under it get flips, moves and\n"
-     "points); a warning counts the tets left under it. check:\n"
-     "count the tets over R (and under D)"},
-    {"--subface-quality", "S", C_MESH,
-     "with refinement: also split the boundary triangles whose\n"
-     "radius-edge ratio is above S (>= 1), except where a small\n"
-     "input angle forces it, and split an input-edge piece once\n"
-     "under a boundary angle over 120 degrees (default: off)"},
-    {"--max-volume", "V", C_MESH | C_CHECK,
-     "refinement until every tet's volume is at most V (check:\n"
-     "count the tets over V)"},
-    {"-a", "V", C_MESH | C_CHECK, "the same as --max-volume (TetGen's switch)"},
-    {"--refine-budget", "N", C_MESH,
-     "points refinement may add; at N it stops, the mesh made so\n"
-     "far (valid and conforming, the bounds not met everywhere)\n"
-     "is written and tetrec exits 8\n"
-     "(default: 100 per input point + 100,000, + 20 per V of the\n"
-     "domain's volume with --max-volume, at most 2^24 or 8 per\n"
-     "input point); a volume bound asking for over 8 tets per\n"
-     "budget point is refused (exit 8) before refinement starts"},
-    {"--optimize", "N", C_MESH,
-     "sliver removal after quality refinement (runs only with\n"
-     "--quality or --max-volume): 0 off, 1 flips that raise the\n"
-     "smallest dihedral angle, 2 those flips and smoothing of\n"
-     "interior points, 3 (default) also new points at slivers:\n"
-     "interior ones, and exact ones on the input edges and\n"
-     "facets under the worst tets; no point is moved off an\n"
-     "input edge or facet"},
-    {"-O", "N", C_MESH, "the same as --optimize (TetGen's switch)"},
-    {"--progress", NULL, C_MESH,
-     "a progress line (stage, share of stages done) on stderr from\n"
-     "the start; without it the line shows when stderr is a\n"
-     "terminal and the run takes over a second"},
-    {"--threads", "N", C_MESH | C_DELAUNAY,
-     "threads for the Delaunay tetrahedralization (default 0:\n"
-     "every core); the output is the same for any N, byte for\n"
-     "byte"},
-    {"-j", "N", C_MESH | C_DELAUNAY, "the same as --threads"},
-    {"--strict-doubles", NULL, C_MESH,
-     "fail (exit 9) when a written double lies farther than\n"
-     "2^-40 of the bounding box diagonal from the edge or facet\n"
-     "its exact point lies on (a warning otherwise)"},
-};
-#define NOPTIONS (sizeof options / sizeof options[0])
-#define NCOMMANDS (sizeof commands / sizeof commands[0])
-
-typedef struct {
-  const char *cmd, *in, *in2, *out, *stats;
-  unsigned cmd_bit;
-  int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
-  int keep_surface, keep_steiner, progress, keep_edges, spacing_radii;
-  int threads; /* 0: every core */
-  int msh_version; /* 41 or 22 */
-  int optimize; /* sliver removal level + 1, 0: the default */
-  double quality, quality_dih, max_volume, subface_quality; /* 0: off */
-  uint64_t refine_budget;                  /* 0: the default */
-  uint64_t round_budget; /* 0: the default */
-  int recovery;          /* tr_options.recovery */
-} args;
 
 static int fail(tr_status s)
 {
@@ -244,207 +76,7 @@ static char *default_out(const char *in)
   return s;
 }
 
-static void print_help(const struct command *c)
-{
-  if (!c) {
-    fputs(usage, stdout);
-    printf("\noptions (each command's --help says which apply):\n");
-  } else
-    printf("usage: tetrec %s\n\n%s\noptions:\n", c->synopsis, c->help);
-  for (size_t i = 0; i < NOPTIONS; i++) {
-    if (c && !(options[i].cmds & c->bit))
-      continue;
-    char head[40];
-    snprintf(head, sizeof head, "%s%s%s", options[i].name, options[i].arg ? " " : "",
-             options[i].arg ? options[i].arg : "");
-    /* a head wider than the column gets a line of its own */
-    if (strlen(head) >= 18)
-      printf("  %s\n  %-18s", head, "");
-    else
-      printf("  %-18s", head);
-    for (const char *h = options[i].help; *h;) {
-      const char *nl = strchr(h, '\n');
-      int n = nl ? (int)(nl - h) : (int)strlen(h);
-      printf("%.*s\n", n, h);
-      h += n + (nl ? 1 : 0);
-      if (*h)
-        printf("  %-18s", "");
-    }
-  }
-  printf("  --help, --version\n");
-}
-
-/* One option with its value (NULL for flags); the table above already checked that it
- * applies to the command. */
-static tr_status set_option(args *a, const char *name, const char *v)
-{
-  if (!strcmp(name, "-o"))
-    a->out = v;
-  else if (!strcmp(name, "--stats"))
-    a->stats = v;
-  else if (!strcmp(name, "-q"))
-    a->quiet = 1;
-  else if (!strcmp(name, "-v"))
-    a->verbose = 1;
-  else if (!strcmp(name, "--exact"))
-    a->exact = 1;
-  else if (!strcmp(name, "--allow-open"))
-    a->allow_open = 1;
-  else if (!strcmp(name, "--check-only"))
-    a->check_only = 1;
-  else if (!strcmp(name, "--no-smooth"))
-    a->no_smooth = 1;
-  else if (!strcmp(name, "--strict-doubles"))
-    a->strict_doubles = 1;
-  else if (!strcmp(name, "--progress"))
-    a->progress = 1;
-  else if (!strcmp(name, "--quality")) {
-    /* "R" or "R/D", finite numbers and nothing else */
-    char *end;
-    int ok = (v[0] == '.' || (v[0] >= '0' && v[0] <= '9'));
-    double r = ok ? strtod(v, &end) : 0, d = 0;
-    if (ok && *end == '/') {
-      const char *w = end + 1;
-      ok = *w == '.' || (*w >= '0' && *w <= '9');
-      d = ok ? strtod(w, &end) : 0;
-    }
-    if (!ok || *end || !isfinite(r) || !isfinite(d))
-      return tr_error(TR_ERR_USAGE, "--quality reads R or R/D (numbers), not '%s'", v);
-    a->quality = r;
-    a->quality_dih = d;
-  } else if (!strcmp(name, "--subface-quality")) {
-    char *end;
-    double x = strtod(v, &end);
-    if (!*v || *end || !(x >= 1) || !isfinite(x))
-      return tr_error(TR_ERR_USAGE, "%s needs a ratio of at least 1, not '%s'", name, v);
-    a->subface_quality = x;
-  } else if (!strcmp(name, "--max-volume") || !strcmp(name, "-a")) {
-    char *end;
-    double x = strtod(v, &end);
-    if (!*v || *end || !(x > 0) || !isfinite(x))
-      return tr_error(TR_ERR_USAGE, "%s needs a positive volume, not '%s'", name, v);
-    a->max_volume = x;
-  }
-  else if (!strcmp(name, "--optimize") || !strcmp(name, "-O")) {
-    if (strlen(v) != 1 || v[0] < '0' || v[0] > '3')
-      return tr_error(TR_ERR_USAGE, "%s needs a level 0, 1, 2 or 3, not '%s'", name, v);
-    a->optimize = v[0] - '0' + 1;
-  }
-  else if (!strcmp(name, "--keep-surface") || !strcmp(name, "-Y"))
-    a->keep_surface = 1;
-  else if (!strcmp(name, "--keep-edges"))
-    a->keep_edges = 1;
-  else if (!strcmp(name, "--spacing-radii"))
-    a->spacing_radii = 1;
-  else if (!strcmp(name, "--keep-steiner"))
-    a->keep_steiner = 1;
-  else if (!strcmp(name, "--recovery")) {
-    if (!strcmp(v, "paper"))
-      a->recovery = 1;
-    else if (!strcmp(v, "default"))
-      a->recovery = 0;
-    else if (!strcmp(v, "no-facet-flips"))
-      a->recovery = 2;
-    else
-      return tr_error(TR_ERR_USAGE, "--recovery needs 'default', 'paper' or "
-                      "'no-facet-flips', not '%s'", v);
-  }
-  else if (!strcmp(name, "--msh-version")) {
-    if (!strcmp(v, "4.1") || !strcmp(v, "4"))
-      a->msh_version = 41;
-    else if (!strcmp(v, "2.2") || !strcmp(v, "2"))
-      a->msh_version = 22;
-    else
-      return tr_error(TR_ERR_USAGE, "--msh-version is 4.1 or 2.2, not '%s'", v);
-  } else if (!strcmp(name, "--round-budget") || !strcmp(name, "--refine-budget")) {
-    /* digits only, 1 .. 10^15: strtoull alone would take "-1", "+5" and " 7" */
-    size_t len = strlen(v);
-    int ok = len > 0 && len <= 16 && strspn(v, "0123456789") == len;
-    unsigned long long n = ok ? strtoull(v, NULL, 10) : 0;
-    if (!ok || n == 0 || n > 1000000000000000ull)
-      return tr_error(TR_ERR_USAGE, "%s needs a whole number from 1 to 10^15, not '%s'", name,
-                      v);
-    if (!strcmp(name, "--round-budget"))
-      a->round_budget = n;
-    else
-      a->refine_budget = n;
-  } else if (!strcmp(name, "--threads") || !strcmp(name, "-j")) {
-    size_t len = strlen(v);
-    int ok = len > 0 && len <= 4 && strspn(v, "0123456789") == len;
-    long n = ok ? strtol(v, NULL, 10) : -1;
-    if (!ok || n > 1024)
-      return tr_error(TR_ERR_USAGE, "%s needs a whole number from 0 (every core) to 1024, "
-                      "not '%s'", name, v);
-    a->threads = (int)n;
-  } else
-    return tr_error(TR_ERR_INTERNAL, "option %s in the table but not handled", name);
-  return TR_OK;
-}
-
-static int parse_args(int argc, char **argv, args *a)
-{
-  memset(a, 0, sizeof *a);
-  a->msh_version = 41;
-  const char *pos[3] = {0};
-  int npos = 0, help = 0;
-  unsigned char given[NOPTIONS] = {0};
-  for (int i = 1; i < argc; i++) {
-    const char *s = argv[i];
-    if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
-      help = 1;
-      continue;
-    }
-    if (!strcmp(s, "--version")) {
-      printf("tetrec %s\n", TETREC_VERSION_STRING);
-      exit(0);
-    }
-    if (!(s[0] == '-' && s[1])) {
-      if (npos == 3)
-        return tr_error(TR_ERR_USAGE, "too many arguments (see tetrec --help)");
-      pos[npos++] = s;
-      continue;
-    }
-    size_t k = 0;
-    while (k < NOPTIONS && strcmp(s, options[k].name))
-      k++;
-    if (k == NOPTIONS)
-      return tr_error(TR_ERR_USAGE, "unknown option '%s' (see tetrec --help)", s);
-    const char *v = NULL;
-    if (options[k].arg) {
-      if (i + 1 >= argc)
-        return tr_error(TR_ERR_USAGE, "%s needs an argument", s);
-      v = argv[++i];
-    }
-    given[k] = 1;
-    TR_CHECK(set_option(a, s, v));
-  }
-  const struct command *c = NULL;
-  for (size_t k = 0; npos && k < NCOMMANDS; k++)
-    if (!strcmp(pos[0], commands[k].name))
-      c = &commands[k];
-  for (size_t k = 0; c && k < NOPTIONS; k++)
-    if (given[k] && !(options[k].cmds & c->bit))
-      return tr_error(TR_ERR_USAGE, "option %s does not apply to '%s' (see tetrec %s --help)",
-                      options[k].name, c->name, c->name);
-  if (help) {
-    print_help(c);
-    exit(0);
-  }
-  if (npos == 0)
-    return tr_error(TR_ERR_USAGE, "no command (see tetrec --help)");
-  if (!c)
-    return tr_error(TR_ERR_USAGE, "unknown command '%s' (see tetrec --help)", pos[0]);
-  a->cmd = c->name;
-  a->cmd_bit = c->bit;
-  a->in = pos[1];
-  a->in2 = pos[2];
-  if (npos != c->nfiles + 1)
-    return tr_error(TR_ERR_USAGE, "'%s' takes %d file argument%s (see tetrec %s --help)",
-                    c->name, c->nfiles, c->nfiles > 1 ? "s" : "", c->name);
-  return TR_OK;
-}
-
-static void print_report(const args *a, const tr_plc *plc)
+static void print_report(const tr_cli_args *a, const tr_plc *plc)
 {
   const char *r = tr_plc_report(plc);
   if (a->quiet || !*r)
@@ -460,7 +92,7 @@ static void print_report(const args *a, const tr_plc *plc)
 
 /* The end of mesh and delaunay: the error (if any) on stderr, and the statistics, written
  * on failure too with the status and its message. */
-static int finish(const args *a, tr_stats *st, double t0, tr_status s)
+static int finish(const tr_cli_args *a, tr_stats *st, double t0, tr_status s)
 {
   st->total_seconds = now() - t0;
   char *msg = NULL;
@@ -483,7 +115,7 @@ static int finish(const args *a, tr_stats *st, double t0, tr_status s)
 
 /* What the output names say before any work: the format, and that --exact has a .node to
  * go to. */
-static tr_status check_names(const args *a, const char *path)
+static tr_status check_names(const tr_cli_args *a, const char *path)
 {
   TR_CHECK(tr_io_check_out_name(path, 0));
   if (a->exact && tr_io_out_format(path) != TR_OUT_TETGEN)
@@ -494,7 +126,7 @@ static tr_status check_names(const args *a, const char *path)
 
 /* Every output file can be created: checked once the input is read (a missing input is the
  * better message), before the work that takes time. */
-static tr_status check_writable(const args *a, const char *path)
+static tr_status check_writable(const tr_cli_args *a, const char *path)
 {
   if (a->stats)
     TR_CHECK(tr_io_check_file_writable(a->stats));
@@ -506,7 +138,7 @@ static tr_status check_writable(const args *a, const char *path)
  * the other messages. None goes unsaid: the summary gives their number and the largest
  * relative deviation. */
 #define TR_NONPLANAR_LIST 10
-static void warn_nonplanar(const args *a, const tr_plc *plc)
+static void warn_nonplanar(const tr_cli_args *a, const tr_plc *plc)
 {
   tr_nonplanar *np = NULL;
   uint32_t n = 0;
@@ -530,7 +162,7 @@ static void warn_nonplanar(const args *a, const tr_plc *plc)
   free(np);
 }
 
-static int cmd_mesh(const args *a)
+static int cmd_mesh(const tr_cli_args *a)
 {
   tr_options opt;
   tr_options_default(&opt);
@@ -670,7 +302,7 @@ static int cmd_mesh(const args *a)
   return finish(a, &stats, t0, s);
 }
 
-static int cmd_delaunay(const args *a)
+static int cmd_delaunay(const tr_cli_args *a)
 {
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
@@ -750,7 +382,7 @@ static tr_status read_exact_node(const char *mesh, const tr_plc *vol, tr_qpoint 
   return s;
 }
 
-static int cmd_check(const args *a)
+static int cmd_check(const tr_cli_args *a)
 {
   tr_plc *surf = NULL, *vol = NULL;
   tr_qpoint **exact = NULL;
@@ -797,7 +429,7 @@ static int cmd_check(const args *a)
   return s == TR_OK ? 0 : fail(s);
 }
 
-static int cmd_convert(const args *a)
+static int cmd_convert(const tr_cli_args *a)
 {
   tr_plc *plc = NULL;
   tr_status s = tr_io_check_out_name(a->in2, 1);
@@ -819,8 +451,8 @@ static int cmd_convert(const args *a)
 int main(int argc, char **argv)
 {
   tr_cli_heap_setup();
-  args a;
-  tr_status s = parse_args(argc, argv, &a);
+  tr_cli_args a;
+  tr_status s = tr_cli_parse_args(argc, argv, &a);
   if (s != TR_OK) {
     fail(s);
     return (int)s;
