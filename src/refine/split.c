@@ -9,6 +9,24 @@
 
 #include "refine/refine_impl.h"
 
+/* The split point *q, its cavity built, into the mesh (which then owns it: *q = NULL) and
+ * inserted (*ok from rf_insert). Past the bit-size guard of tr_mesh_add_constructed
+ * (TR_ERR_UNSUPPORTED) the cavity is released and *ok = 0: the piece is left as it is. */
+static tr_status insert_split_point(rf_ctx *c, tr_qpoint **q, uint32_t *pid, int *ok)
+{
+  tr_status st = tr_mesh_add_constructed(c->m, *q, pid);
+  if (st == TR_OK) {
+    *q = NULL;
+    return rf_insert(c, *pid, ok);
+  }
+  if (st == TR_ERR_UNSUPPORTED) {
+    rf_cavity_release(c);
+    *ok = 0;
+    return TR_OK;
+  }
+  return st;
+}
+
 tr_status rf_split_segment(rf_ctx *c, uint32_t g)
 {
   struct tr_mesh *m = c->m;
@@ -23,17 +41,8 @@ tr_status rf_split_segment(rf_ctx *c, uint32_t g)
   c->split_seg = g;
   tr_status st = rf_cavity(c, t, &p, m->nv, 1, &ok);
   uint32_t pid = TR_NONE;
-  if (st == TR_OK && ok) {
-    st = tr_mesh_add_constructed(m, q, &pid);
-    if (st == TR_OK) {
-      q = NULL;
-      st = rf_insert(c, pid, &ok);
-    } else if (st == TR_ERR_UNSUPPORTED) {
-      rf_cavity_release(c); /* past the bit-size guard: leave this piece as it is */
-      st = TR_OK;
-      ok = 0;
-    }
-  }
+  if (st == TR_OK && ok)
+    st = insert_split_point(c, &q, &pid, &ok);
   c->split_seg = TR_NONE;
   if (q) {
     tr_qpoint_clear(q);
@@ -123,17 +132,8 @@ tr_status rf_split_facet(rf_ctx *c, uint32_t f)
     rf_cavity_release(c);
     st = tr_u32buf_push(&c->qface, f);
     ok = -1;
-  } else if (st == TR_OK && ok) {
-    st = tr_mesh_add_constructed(m, q, &pid);
-    if (st == TR_OK) {
-      q = NULL;
-      st = rf_insert(c, pid, &ok);
-    } else if (st == TR_ERR_UNSUPPORTED) {
-      rf_cavity_release(c);
-      st = TR_OK;
-      ok = 0;
-    }
-  }
+  } else if (st == TR_OK && ok)
+    st = insert_split_point(c, &q, &pid, &ok);
   if (q) {
     tr_qpoint_clear(q);
     free(q);
