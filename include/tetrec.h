@@ -307,6 +307,12 @@ typedef struct tr_stats {
    * over quality_ratio or whose volume is over its bound (max_volume, its region's), in
    * doubles, those a small input angle exempts included; both 0 without refinement */
   uint64_t refine_budget_reached, tets_over_bounds;
+  /* of tets_dihedral_below_10, those standing on a thin input triangle (one of their edges
+   * on a boundary face inside an input triangle with a corner under 10 degrees, not merged
+   * into a planar facet): every boundary face in such a triangle is thin too, and
+   * refinement leaves the tets on them (src/refine/thin.c); and the number of those
+   * triangles */
+  uint64_t tets_dihedral_below_10_on_thin_input, thin_input_triangles;
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

@@ -13,7 +13,7 @@
 # timeout (tetrec's: fail:rejected input, fail:budget, fail:timeout). Totals are over the
 # models both meshed.
 #
-# Two more columns per model:
+# Three more columns per model:
 # - "targets": issue 17's per-model targets, on the models both meshed: tetrec's share of
 #   tets under 10 degrees at most half of TetGen's (compared on the tet counts) and its
 #   minimum dihedral angle at least TetGen's (as printed, 3 decimals); "yes", or "no:"
@@ -31,6 +31,12 @@
 #   one facet and picks its own. The models both meshed where M = 0 and P = 0 (TetGen
 #   keeps the input surface, up to exactly flat merges) are totalled again as the
 #   like-for-like comparison.
+# - "tetrec <10 on thin input": of tetrec's tets under 10 degrees, those that stand on an
+#   input triangle with a corner under 10 degrees (an edge on a boundary face inside one,
+#   `--stats` tets_dihedral_below_10_on_thin_input, src/refine/thin.c), "N on T
+#   triangles": tetrec keeps every input triangle, and the boundary faces inside a thin
+#   one are thin too. The total says how many of the tets under 10 degrees of the models
+#   that miss the targets stand so.
 #
 # usage: TETGEN=/path/to/tetgen-1.6 bench/quality/run.sh [BUILD_DIR]
 #   BUILD_DIR  a build of tetrec (default build; set up with meson if missing)
@@ -119,6 +125,14 @@ overr() {
          gsub(/[()%]/, "", p); found = 1 }
        END { print found ? n " " p : "- -" }' "$1"
 }
+# thin JSON: "N T" of tetrec's --stats: its tets under 10 degrees that stand on input
+# triangles with a corner under 10 degrees (src/refine/thin.c), and those triangles
+thin() {
+  python3 -c 'import json, sys
+d = json.load(open(sys.argv[1]))
+print(d.get("tets_dihedral_below_10_on_thin_input", "-"), d.get("thin_input_triangles", "-"))' "$1" \
+    2>/dev/null || echo "- -"
+}
 # under LOG: "N10 N5", the numbers of tets with a dihedral angle under 10 and under 5 degrees
 under() {
   awk '/check: quality:/ {
@@ -133,8 +147,9 @@ under() {
 table=$OUT/table.txt
 rows=$OUT/work/rows.txt
 : >"$rows"
-printf "%-28s | %-50s | %-50s | %-13s | %s\n" "model" "tetrec --quality $R: cpu tets mindih <10% <5% maxR >R%" \
-  "tetgen ${TG_FLAGS}: cpu tets mindih <10% <5% maxR >R%" "targets" "TetGen surface" | tee "$table"
+printf "%-28s | %-50s | %-50s | %-13s | %-36s | %s\n" "model" "tetrec --quality $R: cpu tets mindih <10% <5% maxR >R%" \
+  "tetgen ${TG_FLAGS}: cpu tets mindih <10% <5% maxR >R%" "targets" "TetGen surface" \
+  "tetrec <10 on thin input" | tee "$table"
 for model in "$DATA"/data/meshes/*.off; do
   name=$(basename "$model" .off)
   if [ -n "${ONLY:-}" ] && ! echo "$name" | grep -qE "$ONLY"; then continue; fi
@@ -146,7 +161,8 @@ for model in "$DATA"/data/meshes/*.off; do
   rc=0
   # shellcheck disable=SC2086
   timed "$w/tetrec.time" \
-    "$TETREC" mesh "$model" --quality "$R" ${TETREC_OPTS:-} -o "$w/tetrec.node" --exact -q >"$w/tetrec.log" 2>&1 || rc=$?
+    "$TETREC" mesh "$model" --quality "$R" ${TETREC_OPTS:-} -o "$w/tetrec.node" --exact -q \
+      --stats "$w/tetrec.json" >"$w/tetrec.log" 2>&1 || rc=$?
   case $rc in
     0) ;;
     2|3|4|5|6|7) ra=fail why=rejected ;; # the input (self-intersecting, open, ...)
@@ -155,7 +171,9 @@ for model in "$DATA"/data/meshes/*.off; do
     *) ra=fail why=exit$rc ;;
   esac
   a="- - - - - - -"
+  thin="- -"
   if [ $ra = ok ]; then
+    thin=$(thin "$w/tetrec.json")
     "$TETREC" check "$model" "$w/tetrec.node" --quality "$R" >"$w/tetrec.check" 2>&1 || ra=invalid
     a="$(cpu "$w/tetrec.time") $(quality "$w/tetrec.check") $(overr "$w/tetrec.check" | cut -d' ' -f2)"
   fi
@@ -205,12 +223,16 @@ for model in "$DATA"/data/meshes/*.off; do
       if (2 * na * tb > nb * ta) m = "<10"
       if (da + 0 < db + 0) m = m (m == "" ? "" : ",") "min"
       print m == "" ? "yes" : "no:" m }')
-    echo "$name $ca $ta $da $na $na5 $xa $cb $tb $db $nb $nb5 $xb $target $dropped $noncopl $nonplanar $ova $ovb" >>"$rows"
+    echo "$name $ca $ta $da $na $na5 $xa $cb $tb $db $nb $nb5 $xb $target $dropped $noncopl $nonplanar $ova $ovb $thin" >>"$rows"
   elif [ "$edges" != - ]; then
     # TetGen's surface is still counted on the models only TetGen meshed
     echo "$name - - - - - - - - - - - - - $dropped $noncopl $nonplanar" >>"$rows"
   fi
-  printf "%-28s | %-50s | %-50s | %-13s | %s\n" "$name" "$a" "$b" "$target" "$surf" | tee -a "$table"
+  read -r thin_n thin_t <<<"$thin"
+  thin_col=-
+  [ "$thin_n" = - ] || thin_col="$thin_n on $thin_t triangles"
+  printf "%-28s | %-50s | %-50s | %-13s | %-36s | %s\n" "$name" "$a" "$b" "$target" "$surf" \
+    "$thin_col" | tee -a "$table"
 done
 # totals: the first four lines as before the targets and surface columns came (others read them)
 # rows: name, tetrec's cpu tets min n10 n5 maxR, TetGen's the same, target, dropped,
@@ -224,6 +246,8 @@ awk '
     if (!(k in MB) || $10 + 0 < MB[k] + 0) MB[k] = $10
     if (!(k in XB) || $13 + 0 > XB[k] + 0) XB[k] = $13
     if ($14 == "yes") met[k]++
+    if ($20 != "" && $20 != "-") { TH[k] += $20; if ($14 != "yes") THM[k] += $20 }
+    if ($14 != "yes") { miss[k]++; NAM[k] += $5 }
   }
   function line(who, c, t, n10, n5, mn, mx, nr) {
     printf "  %s: cpu %.2f s, %d tets, min dihedral %s, <10 deg %.2f%%, <5 deg %.2f%%, max radius-edge %s, over R %.2f%%\n", who, c, t, mn, t ? 100 * n10 / t : 0, t ? 100 * n5 / t : 0, mx, t ? 100 * nr / t : 0
@@ -248,7 +272,8 @@ awk '
     totals("all")
     printf "  issue 17 targets (per model: share under 10 deg at most half of TetGen'"'"'s, min dihedral at least TetGen'"'"'s): met on %d of %d models", met["all"], n["all"]
     if (B["all"] > 0 && TB["all"] > 0) printf "; cpu %.2fx (target <= 1), tets %.2fx (target <= 1.2)", A["all"] / B["all"], TA["all"] / TB["all"]
-    printf "\n\nTetGen'"'"'s surface (%d models TetGen meshed): it drops input edges on %d, edges between non-coplanar faces on %d; %d have non-planar polygons; it keeps the input surface (drops no edge between non-coplanar faces, no non-planar polygon) on %d\n", tg, tgd, tgn + 0, tgp + 0, tgk
+    printf "\n  tetrec'"'"'s tets under 10 deg standing on input triangles with a corner under 10 deg (an edge on a boundary face inside one; src/refine/thin.c): %d of %d; on the %d models that miss the targets, %d of %d\n", TH["all"], NA["all"], miss["all"], THM["all"], NAM["all"]
+    printf "\nTetGen'"'"'s surface (%d models TetGen meshed): it drops input edges on %d, edges between non-coplanar faces on %d; %d have non-planar polygons; it keeps the input surface (drops no edge between non-coplanar faces, no non-planar polygon) on %d\n", tg, tgd, tgn + 0, tgp + 0, tgk
     printf "  over the %d models both meshed: %d input edges dropped, %d of them between non-coplanar faces\n", n["all"], ed, em
     printf "like-for-like: the %d models both meshed where TetGen keeps the input surface:\n", n["lfl"]
     totals("lfl")

@@ -164,6 +164,19 @@ def test_refine_partial_returns_the_mesh_made_at_the_budget():
         tetrec.tetrahedralize(points, tris, quality=1.414, refine_partial="yes")
 
 
+def test_stats_count_the_tets_under_10_degrees_on_thin_input_triangles():
+    # a prism over a triangle with a 5-degree corner: its two ends are thin input
+    # triangles, and refinement without sliver removal leaves tets under 10 degrees there
+    points = [[0, 0, 0], [10, 0, 0], [10, 0.875, 0], [0, 0, 2], [10, 0, 2], [10, 0.875, 2]]
+    tris = [[0, 2, 1], [3, 4, 5], [0, 1, 4], [0, 4, 3], [1, 2, 5], [1, 5, 4], [2, 0, 3],
+            [2, 3, 5]]
+    mesh = tetrec.tetrahedralize(points, tris, quality=1.414, optimize=0)
+    check_mesh(mesh, points, tris)
+    assert mesh.stats["thin_input_triangles"] == 2
+    assert 0 < mesh.stats["tets_dihedral_below_10_on_thin_input"] \
+        <= mesh.stats["tets_dihedral_below_10"]
+
+
 def test_refinement_options_without_refinement_warn(unit_cube):
     for kw in ({"optimize": 2}, {"subface_quality": 1.5}, {"refine_budget": 5},
                {"keep_edges": True}, {"spacing_radii": True}):

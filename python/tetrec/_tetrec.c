@@ -350,7 +350,9 @@ static PyObject *stats_dict(const tr_stats *s)
                 {"sliver_points_smoothed", s->sliver_points_smoothed},
                 {"input_edges_merged", s->input_edges_merged},
                 {"refine_budget_reached", s->refine_budget_reached},
-                {"tets_over_bounds", s->tets_over_bounds}};
+                {"tets_over_bounds", s->tets_over_bounds},
+                {"tets_dihedral_below_10_on_thin_input", s->tets_dihedral_below_10_on_thin_input},
+                {"thin_input_triangles", s->thin_input_triangles}};
   const struct {
     const char *name;
     double value;

@@ -27,7 +27,8 @@ static const field counts[] = {
     FIELD(steiner_removed), FIELD(steiner_relocated), FIELD(peak_memory_bytes),
     FIELD(points_added_for_quality), FIELD(tets_dihedral_below_5), FIELD(tets_dihedral_below_10),
     FIELD(points_added_for_sliver), FIELD(sliver_flips), FIELD(sliver_points_smoothed),
-    FIELD(input_edges_merged), FIELD(refine_budget_reached), FIELD(tets_over_bounds)};
+    FIELD(input_edges_merged), FIELD(refine_budget_reached), FIELD(tets_over_bounds),
+    FIELD(tets_dihedral_below_10_on_thin_input), FIELD(thin_input_triangles)};
 /* double fields */
 static const field reals[] = {FIELD(total_seconds), FIELD(recovery_seconds),
                               FIELD(double_deviation), FIELD(min_dihedral),

@@ -379,6 +379,24 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     tr_refine_over over;
     if (refined && (st = tr_refine_count_over(res, p, &opt, &over)) == TR_OK)
       stats->tets_over_bounds = over.either;
+    /* the tets that input triangles with a small corner leave thin, and where: what the
+     * user can change (refinement keeps every input triangle) */
+    tr_quality_thin thin;
+    if (st == TR_OK && stats->tets_dihedral_below_10 &&
+        (st = tr_quality_thin_input(res, p, opt.keep_edges || opt.keep_surface, 10, 10,
+                                    &thin)) == TR_OK) {
+      stats->tets_dihedral_below_10_on_thin_input = thin.below_on_thin;
+      stats->thin_input_triangles = thin.triangles;
+      if (refined && thin.below_on_thin && opt.verbose >= 1)
+        fprintf(stderr, "tetrec: note: %llu of the %llu tets under 10 degrees stand on input "
+                "triangles with a corner under 10 degrees (%llu such triangles; the thinnest, "
+                "input face %u, has %.3g degrees at vertex %u): tetrec keeps every input "
+                "triangle, and the boundary faces inside such a triangle are thin too; a "
+                "surface without such triangles gives better tets\n",
+                (unsigned long long)thin.below_on_thin, (unsigned long long)thin.below,
+                (unsigned long long)thin.triangles, thin.thinnest, thin.thinnest_angle,
+                thin.thinnest_vertex);
+    }
     if (opt.verbose >= 2)
       fprintf(stderr, "tetrec: %u regions\n", nreg);
   }

@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "core/plc.h"
 #include "mesh/mesh.h"
 
 /* ratio = circumradius / shortest edge (inf for a flat tet), volume = signed volume
@@ -46,6 +47,22 @@ typedef struct tr_quality {
 void tr_quality_measure(const struct tr_mesh *m, tr_quality *q);
 /* The tets of tr_quality_measure with a dihedral angle under `degrees`. */
 uint64_t tr_quality_count_below(const struct tr_mesh *m, double degrees);
+/* Tets under `degrees` standing on thin input triangles (thin.c): an input triangle is
+ * thin when its smallest corner is under `corner` degrees and it is a facet of its own
+ * (keep_edges: as refinement groups them, facets.h); a tet stands on it when one of its
+ * edges is an edge of a boundary face lying in it (m: an output mesh, whose attrs give
+ * the boundary faces and their input triangles; m->xyz: the doubles written). */
+typedef struct tr_quality_thin {
+  uint64_t triangles;      /* thin input triangles */
+  uint32_t thinnest;       /* the one with the smallest corner, as the input numbers it
+                              (tri_source), TR_NONE if none */
+  uint32_t thinnest_vertex; /* that corner's input vertex */
+  double thinnest_angle;   /* that corner, degrees */
+  uint64_t below, below_on_thin; /* tets under `degrees`; of them, on a thin triangle */
+} tr_quality_thin;
+tr_status tr_quality_thin_input(const struct tr_mesh *m, const struct tr_plc *plc,
+                                int keep_edges, double corner, double degrees,
+                                tr_quality_thin *out);
 /* A short human-readable summary: three lines, each starting with prefix. */
 void tr_quality_print(FILE *f, const char *prefix, const tr_quality *q);
 

@@ -1,0 +1,157 @@
+/* The tets under 10 degrees that stand on thin input triangles (src/refine/thin.c,
+ * tr_stats.tets_dihedral_below_10_on_thin_input and thin_input_triangles), against a
+ * count by definition: the input triangles' corners by arccosine, every boundary face of
+ * the output scanned for each edge of each tet under 10 degrees. Every mesh goes through
+ * the mesh validator and the exact conformity validator (tmesh.h). */
+#include <math.h>
+
+#include "refine/quality.h"
+#include "../pipeline/tmesh.h"
+
+/* The smallest corner of input triangle t of plc, degrees, by arccosine. */
+static double corner_by_acos(const tr_plc *plc, uint32_t t)
+{
+  double lo = 180;
+  for (int k = 0; k < 3; k++) {
+    const double *o = plc->xyz + 3 * (size_t)plc->tris[3 * (size_t)t + (size_t)k],
+                 *p = plc->xyz + 3 * (size_t)plc->tris[3 * (size_t)t + (size_t)(k + 1) % 3],
+                 *q = plc->xyz + 3 * (size_t)plc->tris[3 * (size_t)t + (size_t)(k + 2) % 3];
+    double dot = 0, a = 0, b = 0;
+    for (int i = 0; i < 3; i++) {
+      dot += (p[i] - o[i]) * (q[i] - o[i]);
+      a += (p[i] - o[i]) * (p[i] - o[i]);
+      b += (q[i] - o[i]) * (q[i] - o[i]);
+    }
+    lo = fmin(lo, acos(dot / sqrt(a * b)) * (180 / 3.14159265358979323846));
+  }
+  return lo;
+}
+
+/* Does edge (u, v) belong to boundary face f? */
+static int face_has_edge(const uint32_t *f, uint32_t u, uint32_t v)
+{
+  int n = 0;
+  for (int i = 0; i < 3; i++)
+    n += f[i] == u || f[i] == v;
+  return n == 2;
+}
+
+/* Meshes plc under opt and compares the stats with the count by definition; `merged`:
+ * the triangles in merged facets (no thin one counts there). Returns the number of tets
+ * under 10 degrees on thin triangles. */
+static uint64_t check_counts(const char *name, const tr_plc *plc, const tr_options *opt,
+                             const uint8_t *merged)
+{
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, name, plc, opt, TR_CHK_TOPOLOGY);
+  uint64_t on = 0;
+  if (!m) {
+    tm_free(&r);
+    return 0;
+  }
+  const struct tr_mesh_attrs *a = m->attrs;
+  uint64_t thin = 0, below = 0;
+  uint8_t is_thin[64] = {0};
+  EXPECT(r.used->ntris <= 64, "%s: test too large", name);
+  for (uint32_t t = 0; t < r.used->ntris && t < 64; t++) {
+    is_thin[t] = !(merged && merged[t]) && corner_by_acos(r.used, t) < 10;
+    thin += is_thin[t];
+  }
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t) || (m->flags[t] & TR_TF_OUTER))
+      continue;
+    const uint32_t *v = m->tv + 4 * (size_t)t;
+    double ratio, vol;
+    if (!(tr_tet_min_dihedral(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
+                              m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &ratio,
+                              &vol) < 10))
+      continue;
+    below++;
+    int found = 0;
+    for (int e = 0; e < 6 && !found; e++)
+      for (uint32_t f = 0; f < a->nfaces && !found; f++)
+        found = is_thin[a->face_tri[f]] &&
+                face_has_edge(a->faces + 3 * (size_t)f, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]]);
+    on += (uint64_t)found;
+  }
+  EXPECT(r.st.tets_dihedral_below_10 == below, "%s: %llu tets under 10 degrees, %llu by "
+         "definition", name, (unsigned long long)r.st.tets_dihedral_below_10,
+         (unsigned long long)below);
+  /* the stats skip the count when no tet is under 10 degrees */
+  EXPECT(r.st.thin_input_triangles == (below ? thin : 0), "%s: %llu thin input triangles, %llu "
+         "by definition", name, (unsigned long long)r.st.thin_input_triangles,
+         (unsigned long long)thin);
+  EXPECT(r.st.tets_dihedral_below_10_on_thin_input == on, "%s: %llu tets under 10 degrees on "
+         "thin triangles, %llu by definition", name,
+         (unsigned long long)r.st.tets_dihedral_below_10_on_thin_input, (unsigned long long)on);
+  fprintf(stderr, "%s: %u tets, %llu under 10 degrees, %llu of them on the %llu thin "
+          "triangles\n", name, tr_mesh_num_tets(m), (unsigned long long)below,
+          (unsigned long long)on, (unsigned long long)thin);
+  tm_free(&r);
+  return on;
+}
+
+/* The prism over the triangle (0,0), (10,0), (10,0.875) (a 5-degree corner), 2 high: its
+ * two end facets are single thin triangles, its sides exactly planar rectangles (merged).
+ * Refined without sliver removal, tets under 10 degrees are left on the ends, and each is
+ * counted as the definition counts it. */
+static void prism_with_thin_ends(void)
+{
+  const double x[18] = {0, 0, 0, 10, 0, 0, 10, 0.875, 0, 0, 0, 2, 10, 0, 2, 10, 0.875, 2};
+  static const uint32_t t[24] = {0, 2, 1, 3, 4, 5, 0, 1, 4, 0, 4, 3,
+                                 1, 2, 5, 1, 5, 4, 2, 0, 3, 2, 3, 5};
+  static const uint8_t merged[8] = {0, 0, 1, 1, 1, 1, 1, 1};
+  tr_plc *plc = tm_plc(x, 6, t, 8);
+  tr_options opt = tm_refinement(1.414, 0);
+  uint64_t on = check_counts("thin_prism", plc, &opt, merged);
+  EXPECT(on > 0, "thin_prism: no tet under 10 degrees on the thin ends: the case shows "
+         "nothing");
+  opt.optimize = 2; /* and after sliver removal (the default) */
+  check_counts("thin_prism_O2", plc, &opt, merged);
+  tr_plc_destroy(plc);
+}
+
+/* A box split into 1 x 1 x 20 (its long sides' triangles have a corner of 2.9 degrees).
+ * Exactly planar sides merge by default: no triangle is thin there. With every input edge
+ * kept, the long sides' 8 triangles are thin, and the count follows the definition. */
+static void merged_thin_triangles_do_not_count(void)
+{
+  const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 20};
+  tr_plc *plc = tm_box(lo, hi);
+  tr_options opt = tm_refinement(1.414, 0);
+  uint8_t all[12];
+  memset(all, 1, sizeof all);
+  tm_run r;
+  tr_mesh *m = tm_mesh(&r, "long_box", plc, &opt, TR_CHK_TOPOLOGY);
+  if (m)
+    EXPECT(r.st.thin_input_triangles == 0 && r.st.tets_dihedral_below_10_on_thin_input == 0,
+           "long_box: %llu thin triangles, %llu tets on them, merged facets have none",
+           (unsigned long long)r.st.thin_input_triangles,
+           (unsigned long long)r.st.tets_dihedral_below_10_on_thin_input);
+  tm_free(&r);
+  check_counts("long_box_merged", plc, &opt, all);
+  opt.keep_edges = 1;
+  check_counts("long_box_keep_edges", plc, &opt, NULL);
+  tr_plc_destroy(plc);
+}
+
+/* A unit cube has no thin triangle: nothing is counted. */
+static void cube_has_no_thin_triangle(void)
+{
+  const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  tr_plc *plc = tm_box(lo, hi);
+  tr_options opt = tm_refinement(1.414, 0);
+  opt.keep_edges = 1;
+  EXPECT(check_counts("cube", plc, &opt, NULL) == 0, "cube: tets counted on thin triangles");
+  tr_plc_destroy(plc);
+}
+
+int main(int argc, char **argv)
+{
+  static const texpect_case cases[] = {
+      {"thin_prism", prism_with_thin_ends, NULL},
+      {"merged", merged_thin_triangles_do_not_count, NULL},
+      {"cube", cube_has_no_thin_triangle, NULL},
+  };
+  return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
+}
