@@ -7,7 +7,9 @@
  * as internal facets between regions, listed because they are often a modelling slip),
  * every self-intersecting pair (selfint.c, collect-all variant), every non-planar input
  * polygon (polytri.c). Numbers are those of IN: triangles after polygon triangulation, the
- * input face each came from, vertices 0-based. */
+ * input face each came from, vertices 0-based. A surface without defects gets a note when
+ * triangles of it have a corner under 10 degrees: valid, but the tets refinement puts on
+ * them stay thin (src/refine/thin.c). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +20,7 @@
 #include "input/validate.h"
 #include "io/io.h"
 #include "predicates.h"
+#include "refine/quality.h"
 
 enum { ISSUE_SELFINT = 1, ISSUE_OPEN = 2, ISSUE_NONMANIFOLD = 3, ISSUE_NONPLANAR = 4,
        ISSUE_ZERO_AREA = 5, ISSUE_DUPLICATE = 6 };
@@ -247,6 +250,17 @@ tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version,
     if (!quiet && !any)
       fprintf(stderr, "tetrec: %s: %u vertices, %u triangles: no defect found\n", in,
               plc->npoints, plc->ntris);
+    /* not a defect, but what refinement cannot mend (src/refine/thin.c): said once */
+    tr_quality_thin thin;
+    if (!quiet && !any && (st = tr_plc_thin_triangles(plc, 0, 10, NULL, &thin)) == TR_OK &&
+        thin.triangles)
+      fprintf(stderr, "tetrec: note: %llu triangles have a corner under 10 degrees (the "
+              "thinnest, triangle %u of input face %u, has %.3g degrees at vertex %u): valid, "
+              "but tetrec keeps every input triangle, so under --quality the tets on them "
+              "stay thin (--stats: tets_dihedral_below_10_on_thin_input)\n",
+              (unsigned long long)thin.triangles, thin.thinnest,
+              plc->tri_source ? plc->tri_source[thin.thinnest] : thin.thinnest,
+              thin.thinnest_angle, thin.thinnest_vertex);
     if (any)
       st = tr_error(c.selfint ? TR_ERR_SELF_INTERSECT
                     : c.open || c.nonmanifold ? TR_ERR_OPEN : TR_ERR_INPUT,

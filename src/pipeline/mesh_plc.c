@@ -390,11 +390,12 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       if (refined && thin.below_on_thin && opt.verbose >= 1)
         fprintf(stderr, "tetrec: note: %llu of the %llu tets under 10 degrees stand on input "
                 "triangles with a corner under 10 degrees (%llu such triangles; the thinnest, "
-                "input face %u, has %.3g degrees at vertex %u): tetrec keeps every input "
+                "triangle %u of input face %u, has %.3g degrees at vertex %u): tetrec keeps every input "
                 "triangle, and the boundary faces inside such a triangle are thin too; a "
                 "surface without such triangles gives better tets\n",
                 (unsigned long long)thin.below_on_thin, (unsigned long long)thin.below,
-                (unsigned long long)thin.triangles, thin.thinnest, thin.thinnest_angle,
+                (unsigned long long)thin.triangles, thin.thinnest,
+                p->tri_source ? p->tri_source[thin.thinnest] : thin.thinnest, thin.thinnest_angle,
                 thin.thinnest_vertex);
     }
     if (opt.verbose >= 2)

@@ -54,8 +54,8 @@ uint64_t tr_quality_count_below(const struct tr_mesh *m, double degrees);
  * the boundary faces and their input triangles; m->xyz: the doubles written). */
 typedef struct tr_quality_thin {
   uint64_t triangles;      /* thin input triangles */
-  uint32_t thinnest;       /* the one with the smallest corner, as the input numbers it
-                              (tri_source), TR_NONE if none */
+  uint32_t thinnest;       /* the one with the smallest corner (a triangle of the PLC; the
+                              input face it came from is tri_source's), TR_NONE if none */
   uint32_t thinnest_vertex; /* that corner's input vertex */
   double thinnest_angle;   /* that corner, degrees */
   uint64_t below, below_on_thin; /* tets under `degrees`; of them, on a thin triangle */
@@ -63,6 +63,10 @@ typedef struct tr_quality_thin {
 tr_status tr_quality_thin_input(const struct tr_mesh *m, const struct tr_plc *plc,
                                 int keep_edges, double corner, double degrees,
                                 tr_quality_thin *out);
+/* The thin triangles alone (out's tet counts 0); thin (NULL, or plc->ntris flags): 1 for
+ * each. */
+tr_status tr_plc_thin_triangles(const struct tr_plc *plc, int keep_edges, double corner,
+                                uint8_t *thin, tr_quality_thin *out);
 /* A short human-readable summary: three lines, each starting with prefix. */
 void tr_quality_print(FILE *f, const char *prefix, const tr_quality *q);
 

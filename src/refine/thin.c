@@ -48,41 +48,53 @@ static double smallest_corner(const struct tr_plc *plc, uint32_t t, uint32_t *at
   return lo;
 }
 
-tr_status tr_quality_thin_input(const struct tr_mesh *m, const struct tr_plc *plc,
-                                int keep_edges, double corner, double degrees,
-                                tr_quality_thin *out)
+tr_status tr_plc_thin_triangles(const struct tr_plc *plc, int keep_edges, double corner,
+                                uint8_t *thin, tr_quality_thin *out)
 {
   out->triangles = 0;
   out->below = out->below_on_thin = 0;
   out->thinnest = out->thinnest_vertex = TR_NONE;
   out->thinnest_angle = 180;
-  const struct tr_mesh_attrs *a = m->attrs;
-  if (!a || !a->nfaces || !plc->ntris)
+  if (!plc->ntris)
     return TR_OK;
   /* a triangle merged into a planar facet is no constraint: its corners bound nothing */
   tr_facets fc;
   TR_CHECK(tr_facets_build(plc, keep_edges, &fc));
-  uint8_t *thin = calloc(plc->ntris, 1);
-  if (!thin) {
-    tr_facets_free(&fc);
-    return tr_error(TR_ERR_NOMEM, "out of memory for %u triangle flags", plc->ntris);
-  }
   for (uint32_t t = 0; t < plc->ntris; t++) {
+    if (thin)
+      thin[t] = 0;
     if (tr_facets_size(&fc, fc.group[t]) != 1)
       continue;
     uint32_t at;
     double lo = smallest_corner(plc, t, &at);
     if (!(lo < corner))
       continue;
-    thin[t] = 1;
+    if (thin)
+      thin[t] = 1;
     out->triangles++;
     if (lo < out->thinnest_angle) {
       out->thinnest_angle = lo;
-      out->thinnest = plc->tri_source ? plc->tri_source[t] : t;
+      out->thinnest = t;
       out->thinnest_vertex = at;
     }
   }
   tr_facets_free(&fc);
+  return TR_OK;
+}
+
+tr_status tr_quality_thin_input(const struct tr_mesh *m, const struct tr_plc *plc,
+                                int keep_edges, double corner, double degrees,
+                                tr_quality_thin *out)
+{
+  const struct tr_mesh_attrs *a = m->attrs;
+  uint8_t *thin = malloc(plc->ntris ? plc->ntris : 1);
+  if (!thin)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u triangle flags", plc->ntris);
+  tr_status st0 = tr_plc_thin_triangles(plc, keep_edges, corner, thin, out);
+  if (st0 != TR_OK || !a || !a->nfaces) {
+    free(thin);
+    return st0;
+  }
   /* the edges of the boundary faces that lie in a thin triangle */
   tr_vtmap edges = {0};
   tr_status st = out->triangles ? tr_vtmap_reserve(&edges, 2, 3 * a->nfaces / 4 + 1) : TR_OK;

@@ -194,6 +194,16 @@ with tempfile.TemporaryDirectory() as d:
            f"a duplicate triangle is listed as such, not as non-manifold edges: {rc} {out}")
     rc, out, err = run(["check-surface", "c.off"], d)
     expect(rc == 0 and out == "" and "no defect" in err, f"check-surface of a valid surface: {rc} {err}")
+    expect("corner under 10 degrees" not in err, f"a cube has no thin triangle: {err}")
+    # a prism whose two ends are triangles with a 5-degree corner: valid, and said to be thin
+    write_off(os.path.join(d, "thin.off"),
+              [(0, 0, 0), (10, 0, 0), (10, 0.875, 0), (0, 0, 2), (10, 0, 2), (10, 0.875, 2)],
+              [(0, 2, 1), (3, 4, 5), (0, 1, 4), (0, 4, 3), (1, 2, 5), (1, 5, 4), (2, 0, 3),
+               (2, 3, 5)])
+    rc, out, err = run(["check-surface", "thin.off"], d)
+    expect(rc == 0 and out == "" and "no defect" in err and
+           "2 triangles have a corner under 10 degrees" in err and "has 5 degrees at vertex 0" in err,
+           f"check-surface notes the thin triangles of a valid surface: {rc} {err}")
     rc, _, err = run(["mesh", "-q", "bad.off", "--check-only"], d)
     rc, _, err = run(["convert", "bad.off", "conv.off"], d)
     expect("warning" in err and "not planar" in err, f"non-planar polygon warning: {err}")
