@@ -393,7 +393,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
                 "triangle %u of input face %u, has %.3g degrees at vertex %u): tetrec keeps every input "
                 "triangle, and the boundary faces inside such a triangle are thin too; a "
                 "surface without such triangles gives better tets\n",
-                (unsigned long long)thin.below_on_thin, (unsigned long long)thin.below,
+                (unsigned long long)thin.below_on_thin,
+                (unsigned long long)stats->tets_dihedral_below_10,
                 (unsigned long long)thin.triangles, thin.thinnest,
                 p->tri_source ? p->tri_source[thin.thinnest] : thin.thinnest, thin.thinnest_angle,
                 thin.thinnest_vertex);

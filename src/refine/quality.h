@@ -58,12 +58,12 @@ typedef struct tr_quality_thin {
                               input face it came from is tri_source's), TR_NONE if none */
   uint32_t thinnest_vertex; /* that corner's input vertex */
   double thinnest_angle;   /* that corner, degrees */
-  uint64_t below, below_on_thin; /* tets under `degrees`; of them, on a thin triangle */
+  uint64_t below_on_thin;  /* tets under `degrees` on a thin triangle */
 } tr_quality_thin;
 tr_status tr_quality_thin_input(const struct tr_mesh *m, const struct tr_plc *plc,
                                 int keep_edges, double corner, double degrees,
                                 tr_quality_thin *out);
-/* The thin triangles alone (out's tet counts 0); thin (NULL, or plc->ntris flags): 1 for
+/* The thin triangles alone (out->below_on_thin 0); thin (NULL, or plc->ntris flags): 1 for
  * each. */
 tr_status tr_plc_thin_triangles(const struct tr_plc *plc, int keep_edges, double corner,
                                 uint8_t *thin, tr_quality_thin *out);

@@ -19,40 +19,31 @@
 #include "core/facets.h"
 #include "core/vtmap.h"
 #include "refine/quality.h"
+#include "refine/refine_impl.h" /* rf_cos_angle */
 
-/* The smallest corner of input triangle t, in degrees, and the corner's vertex. */
+/* The smallest corner of input triangle t, in degrees, and the corner's vertex (the
+ * angle measure of angles.c). */
 static double smallest_corner(const struct tr_plc *plc, uint32_t t, uint32_t *at)
 {
   const uint32_t *T = plc->tris + 3 * (size_t)t;
-  double lo = 180;
+  double hi = -1; /* the largest cosine: the smallest corner */
   *at = T[0];
   for (int k = 0; k < 3; k++) {
-    const double *o = plc->xyz + 3 * (size_t)T[k], *p = plc->xyz + 3 * (size_t)T[(k + 1) % 3],
-                 *q = plc->xyz + 3 * (size_t)T[(k + 2) % 3];
-    double a[3], b[3], c[3];
-    for (int i = 0; i < 3; i++) {
-      a[i] = p[i] - o[i];
-      b[i] = q[i] - o[i];
-    }
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-    /* atan2 of |a x b| and a.b: accurate for the small angles this is about */
-    double deg = atan2(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]),
-                       a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) * (180 / 3.14159265358979323846);
-    if (deg < lo) {
-      lo = deg;
+    double c = rf_cos_angle(plc->xyz + 3 * (size_t)T[k], plc->xyz + 3 * (size_t)T[(k + 1) % 3],
+                            plc->xyz + 3 * (size_t)T[(k + 2) % 3]);
+    if (c > hi) {
+      hi = c;
       *at = T[k];
     }
   }
-  return lo;
+  return acos(fmin(hi, 1)) * (180 / 3.14159265358979323846);
 }
 
 tr_status tr_plc_thin_triangles(const struct tr_plc *plc, int keep_edges, double corner,
                                 uint8_t *thin, tr_quality_thin *out)
 {
   out->triangles = 0;
-  out->below = out->below_on_thin = 0;
+  out->below_on_thin = 0;
   out->thinnest = out->thinnest_vertex = TR_NONE;
   out->thinnest_angle = 180;
   if (!plc->ntris)
@@ -97,7 +88,12 @@ tr_status tr_quality_thin_input(const struct tr_mesh *m, const struct tr_plc *pl
   }
   /* the edges of the boundary faces that lie in a thin triangle */
   tr_vtmap edges = {0};
-  tr_status st = out->triangles ? tr_vtmap_reserve(&edges, 2, 3 * a->nfaces / 4 + 1) : TR_OK;
+  tr_status st = TR_OK;
+  if (out->triangles) {
+    st = tr_vtmap_reserve(&edges, 2, 3 * a->nfaces / 4 + 1);
+    if (st == TR_OK) /* probed for the six edges of every tet: mostly absent */
+      st = tr_vtmap_filter(&edges);
+  }
   for (uint32_t f = 0; st == TR_OK && out->triangles && f < a->nfaces; f++) {
     if (a->face_tri[f] >= plc->ntris || !thin[a->face_tri[f]])
       continue;
@@ -109,24 +105,23 @@ tr_status tr_quality_thin_input(const struct tr_mesh *m, const struct tr_plc *pl
     }
   }
   free(thin);
-  for (uint32_t t = 0; st == TR_OK && t < m->nt; t++) {
+  /* the few tets on such an edge take their angle; the count of all tets under `degrees`
+   * is tr_quality_measure's */
+  for (uint32_t t = 0; st == TR_OK && out->triangles && t < m->nt; t++) {
     if (!tr_tet_is_real(m, t) || (m->flags[t] & TR_TF_OUTER))
       continue;
     const uint32_t *v = m->tv + 4 * (size_t)t;
-    double ratio, vol;
-    if (!(tr_tet_min_dihedral(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
-                              m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &ratio,
-                              &vol) < degrees))
-      continue;
-    out->below++;
-    for (int e = 0; e < 6 && out->triangles; e++) {
+    int on = 0;
+    for (int e = 0; e < 6 && !on; e++) {
       uint32_t k[2];
       tr_vtkey_edge(v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]], k);
-      if (tr_vtmap_get(&edges, 2, k) != TR_VTMAP_NONE) {
-        out->below_on_thin++;
-        break;
-      }
+      on = tr_vtmap_get(&edges, 2, k) != TR_VTMAP_NONE;
     }
+    double ratio, vol;
+    out->below_on_thin +=
+        on && tr_tet_min_dihedral(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
+                                  m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &ratio,
+                                  &vol) < degrees;
   }
   tr_vtmap_free(&edges);
   return st;
