@@ -250,11 +250,12 @@ typedef struct tr_options {
                      into one planar facet, whose inner edges are no constraints: sub-faces
                      may cross them (they need not be chains of mesh edges; the facet is
                      covered exactly). 1: every input edge stays a chain of mesh edges */
-  int refine_spacing_radii; /* refinement: 1 refuses a circumcentre only within a vertex's
-                               current spacing (its insertion radius, shrunk by the points
-                               put next to it since), not its insertion radius; finer meshes
-                               with fewer slivers on long thin parts, more points and CPU
-                               (src/refine/refine.h). 0 (default): off */
+  int refine_spacing_radii; /* refinement: 1 (default) refuses a circumcentre only within a
+                               vertex's current spacing (its insertion radius, shrunk by the
+                               points put next to it since); 0 within its insertion radius,
+                               which leaves more tets over the ratio bound and more slivers
+                               on long thin parts, for fewer points and less CPU
+                               (src/refine/refine.c) */
   int refine_partial; /* what reaching refine_budget does. 0 (default): tr_mesh_plc fails
                          with TR_ERR_NOMEM and no mesh. 1: refinement stops there and the
                          rest of the pipeline (sliver removal, rounding) runs on the mesh

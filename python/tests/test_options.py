@@ -179,7 +179,7 @@ def test_stats_count_the_tets_under_10_degrees_on_thin_input_triangles():
 
 def test_refinement_options_without_refinement_warn(unit_cube):
     for kw in ({"optimize": 2}, {"subface_quality": 1.5}, {"refine_budget": 5},
-               {"keep_edges": True}, {"spacing_radii": True}):
+               {"keep_edges": True}, {"spacing_radii": False}):
         with pytest.warns(UserWarning, match="no effect without quality refinement"):
             mesh = tetrec.tetrahedralize(*unit_cube, **kw)
         check_mesh(mesh, *unit_cube)
@@ -187,14 +187,18 @@ def test_refinement_options_without_refinement_warn(unit_cube):
 
 def test_spacing_radii_meets_the_ratio_bound_where_insertion_radii_refuse():
     # the box [0,1] x [0,0.1] x [0,0.1]: the points split into its long edges keep an
-    # insertion radius of 0.5, so later circumcentres near them are refused as too close
-    # and tets over the bound stay; with spacing_radii the rule takes their current
-    # spacing (tests/refine/test_merge.c has the same case in C)
+    # insertion radius of 0.5, so with spacing_radii=False later circumcentres near them
+    # are refused as too close and tets over the bound stay; by default the rule takes
+    # their current spacing (tests/refine/test_merge.c has the same case in C)
     p, tris = cube()
     points = p * np.array([1.0, 0.1, 0.1])
-    radii = tetrec.tetrahedralize(points, tris, quality=1.414, optimize=0)
-    spacing = tetrec.tetrahedralize(points, tris, quality=1.414, optimize=0,
-                                    spacing_radii=True)
+    radii = tetrec.tetrahedralize(points, tris, quality=1.414, optimize=0,
+                                  spacing_radii=False)
+    spacing = tetrec.tetrahedralize(points, tris, quality=1.414, optimize=0)
+    explicit = tetrec.tetrahedralize(points, tris, quality=1.414, optimize=0,
+                                     spacing_radii=True)
+    assert np.array_equal(spacing.points, explicit.points)  # True is the default
+    assert np.array_equal(spacing.tets, explicit.tets)
     for mesh in (radii, spacing):
         check_mesh(mesh, points, tris)
     assert radii.stats["max_radius_edge"] > 1.414

@@ -181,7 +181,7 @@ def validate(points, triangles=None, *, markers=None):
 def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=None,
                    keep_surface=False, keep_steiner=False, quality=None, max_volume=None,
                    optimize=None, keep_edges=False, subface_quality=None,
-                   refine_budget=None, refine_partial=False, spacing_radii=False, exact=False,
+                   refine_budget=None, refine_partial=False, spacing_radii=True, exact=False,
                    smooth=True, round_budget=None, verbose=0, progress=None, threads=0):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
@@ -208,10 +208,11 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     subface_quality: S >= 1, refinement also splits the boundary triangles whose
     radius-edge ratio is above S, except where a small input angle forces it, and
     splits an input-edge piece once under a boundary angle over 120 degrees.
-    spacing_radii: refinement refuses a circumcentre only within a new vertex's current
-    spacing, not its insertion radius: fewer slivers on long thin parts, more points and
-    CPU; no termination proof, so the radius-edge refinement stops (valid mesh, bad
-    tets left) at 20 points per input point + 10,000; max_volume still holds.
+    spacing_radii: True (default), refinement refuses a circumcentre only within a
+    vertex's current spacing; no termination proof, so the radius-edge refinement stops
+    (valid mesh, bad tets left) at 20 points per input point + 10,000; max_volume still
+    holds. False: within its insertion radius, fewer points and less CPU, more tets over
+    the ratio bound and more slivers on long thin parts.
     refine_budget: the points refinement may add before it stops (tetrec.Error,
     TR_ERR_NOMEM); by default 100 per input point + 100,000, + 20 per max_volume in
     the domain's volume, at most 2^24 or 8 per input point. A volume bound asking for
@@ -250,12 +251,13 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     if keep_steiner:
         options["keep_steiner"] = keep_steiner
     # flags, not truth values: keep_edges="no" must not turn it on
-    for name, flag in (("keep_edges", keep_edges), ("spacing_radii", spacing_radii),
-                       ("refine_partial", refine_partial)):
+    for name, flag, default in (("keep_edges", keep_edges, False),
+                                ("spacing_radii", spacing_radii, True),
+                                ("refine_partial", refine_partial, False)):
         if not isinstance(flag, (bool, np.bool_)):
             raise TypeError(f"{name} must be True or False, not {type(flag).__name__}")
-        if flag:
-            options[name] = True
+        if bool(flag) != default:
+            options[name] = bool(flag)
     if not smooth:
         options["smooth"] = 0
     if verbose:

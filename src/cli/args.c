@@ -95,9 +95,13 @@ static const struct option {
      "edges (by default edges between exactly coplanar input\n"
      "triangles with the same marker are merged away)"},
     {"--spacing-radii", NULL, C_MESH,
-     "under refinement, refuse a circumcentre only within a new\n"
-     "vertex's current spacing, not its insertion radius (more\n"
-     "points, fewer slivers where long edges were split early)"},
+     "under refinement, refuse a circumcentre only within a\n"
+     "vertex's current spacing (the default)"},
+    {"--insertion-radii", NULL, C_MESH,
+     "under refinement, refuse a circumcentre within a vertex's\n"
+     "insertion radius, not its current spacing (fewer points\n"
+     "and less CPU; more tets over the ratio bound, more slivers\n"
+     "where long edges were split early)"},
     {"--keep-steiner", NULL, C_MESH,
      "leave the recovery's Steiner points where they are (by\n"
      "default the ones on the surface are removed or moved inside\n"
@@ -253,6 +257,8 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
   else if (!strcmp(name, "--keep-edges"))
     a->keep_edges = 1;
   else if (!strcmp(name, "--spacing-radii"))
+    a->spacing_radii = 2;
+  else if (!strcmp(name, "--insertion-radii"))
     a->spacing_radii = 1;
   else if (!strcmp(name, "--keep-steiner"))
     a->keep_steiner = 1;

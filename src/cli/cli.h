@@ -17,7 +17,8 @@ typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
   unsigned cmd_bit;
   int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
-  int keep_surface, keep_steiner, progress, keep_edges, spacing_radii;
+  int keep_surface, keep_steiner, progress, keep_edges;
+  int spacing_radii; /* 0: the default, 1: --insertion-radii, 2: --spacing-radii */
   int threads; /* 0: every core */
   int msh_version; /* 41 or 22 */
   int optimize; /* sliver removal level + 1, 0: the default */

@@ -174,7 +174,8 @@ static int cmd_mesh(const tr_cli_args *a)
   opt.recovery = a->recovery;
   opt.keep_surface = a->keep_surface;
   opt.keep_edges = a->keep_edges;
-  opt.refine_spacing_radii = a->spacing_radii;
+  if (a->spacing_radii)
+    opt.refine_spacing_radii = a->spacing_radii - 1;
   opt.quality_ratio = a->quality;
   opt.quality_min_dihedral = a->quality_dih;
   opt.quality_subface_ratio = a->subface_quality;
@@ -245,8 +246,9 @@ static int cmd_mesh(const tr_cli_args *a)
     fprintf(stderr, "tetrec: warning: --subface-quality has no effect without quality "
             "refinement (--quality, --max-volume or a region's maximum volume)\n");
   if (a->spacing_radii && !bounded && !a->quiet)
-    fprintf(stderr, "tetrec: warning: --spacing-radii has no effect without quality "
-            "refinement (--quality, --max-volume or a region's maximum volume)\n");
+    fprintf(stderr, "tetrec: warning: --%s-radii has no effect without quality "
+            "refinement (--quality, --max-volume or a region's maximum volume)\n",
+            a->spacing_radii == 2 ? "spacing" : "insertion");
   if (a->keep_edges && !bounded && !a->quiet)
     fprintf(stderr, "tetrec: warning: --keep-edges has no effect without quality refinement: "
             "every input edge is kept anyway\n");

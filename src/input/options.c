@@ -11,4 +11,5 @@ void tr_options_default(tr_options *opt)
   opt->allow_open = 0;
   opt->verbose = 1;
   opt->optimize = 3;
+  opt->refine_spacing_radii = 1;
 }

@@ -31,6 +31,8 @@
  * candidates 100 edges away or more, each with a cavity of near-degenerate spheres
  * (tests/data/thin_boxes_1e-6.off: 1.51 -> 0.73 s, the same mesh). */
 #define SL_FAR 20.0
+/* a prime step through the slots of an insertion pass (visit_step) */
+#define SL_VISIT_STEP 1000003u
 
 /* Membership of a cavity's tets and of its cone's vertices: every face of every cavity tet
  * asks whether its neighbour is in, and the shrink loop asks again after each removal, so
@@ -701,6 +703,31 @@ void *tr_sliver_insert_scratch(void)
   return z;
 }
 
+static uint64_t gcd(uint64_t a, uint64_t b)
+{
+  while (b) {
+    uint64_t r = a % b;
+    a = b;
+    b = r;
+  }
+  return a;
+}
+
+/* The pass visits slot i * step mod n at its i-th step: every slot once (step and n
+ * coprime), far from the last one. The store is in Hilbert order (order.c), and slivers
+ * worked on one after the other in it, each next to the last one's new point, ended worse
+ * than in the order refinement made them: on the quality bench 1.19% of tets under 10
+ * degrees in store order against 1.11% before the sort (rotor_small 1.65% against 1.28%);
+ * 1.13% in this order. The cache gain of the sort is in the cavities' walks, which this
+ * order keeps. */
+static uint64_t visit_step(uint32_t n)
+{
+  uint64_t step = SL_VISIT_STEP;
+  while (n > 1 && gcd(step, n) != 1)
+    step += 2;
+  return step;
+}
+
 tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
 {
   struct tr_mesh *m = c->m;
@@ -709,8 +736,11 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
   if (!z)
     return tr_error(TR_ERR_NOMEM, "out of memory for the sliver insertion");
   uint32_t nt = m->nt; /* new tets in slots past nt wait for the next pass (freed slots
-                          below it are reused and visited: slot order, deterministic) */
-  for (uint32_t t = 0; t < nt && s == TR_OK && st->points < c->point_budget; t++) {
+                          below it are reused and visited when their turn is still to
+                          come: deterministic) */
+  const uint64_t step = visit_step(nt);
+  for (uint32_t i = 0; i < nt && s == TR_OK && st->points < c->point_budget; i++) {
+    const uint32_t t = (uint32_t)((uint64_t)i * step % nt);
     if (!tr_tet_is_real(m, t) || !(tr_sliver_tet_min(c, t, NULL) < c->insert_bound))
       continue;
     int done;

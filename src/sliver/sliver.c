@@ -320,6 +320,7 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   memset(st, 0, sizeof *st);
   if (par->level <= TR_SLIVER_OFF)
     return TR_OK;
+  TR_CHECK(tr_sliver_sort_tets(m)); /* order.c: walks stay in cache */
   tr_sliver_ctx c;
   tr_status s = tr_sliver_ctx_init(&c, m, sub, vkind, npoints, par->bound);
   if (par->insert_bound > 0)

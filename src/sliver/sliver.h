@@ -240,6 +240,10 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
 tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *vkind,
                            uint32_t npoints, const tr_sliver_params *par, tr_sliver_stats *st);
 
+/* The live tets renumbered along a Hilbert curve of their centroids, free slots dropped
+ * (order.c): tr_sliver_remove's first step. */
+tr_status tr_sliver_sort_tets(struct tr_mesh *m);
+
 /* A tet's vertex ids sorted: its key whatever its rotation (the polish and its cap
  * trials match tets across a rebuild by it). */
 static inline void tr_sliver_tet_key(const uint32_t *v, uint32_t key[4])

@@ -41,4 +41,14 @@ expect 1 "level 0, 1, 2 or 3" -- mesh "$S" --quality 1.414 --optimize x -o "$W/c
 expect 1 "does not apply to 'delaunay'" -- delaunay "$S" -O 1
 expect 0 "no effect without quality refinement" -- mesh "$S" -O 2 -o "$W/e.node"
 [ ! -e "$W/c.node" ] || { echo "FAIL: a refused run wrote a mesh"; fails=$((fails + 1)); }
+# the too-close rule: spacings by default, --insertion-radii the rule of insertion radii
+expect 0 "" -- mesh "$S" --quality 1.414 --spacing-radii -o "$W/sp.node" --exact
+expect 0 "" -- mesh "$S" --quality 1.414 --insertion-radii -o "$W/ir.node" --exact --stats "$W/ir.json"
+expect 0 "conforms exactly" -- check "$S" "$W/ir.node"
+cmp -s "$W/sp.ele" "$W/d.ele" && cmp -s "$W/sp.node" "$W/d.node" ||
+  { echo "FAIL: the default is not --spacing-radii"; fails=$((fails + 1)); }
+cmp -s "$W/ir.ele" "$W/d.ele" &&
+  { echo "FAIL: --insertion-radii changed nothing"; fails=$((fails + 1)); }
+expect 0 "insertion-radii has no effect without quality refinement" -- mesh "$S" --insertion-radii -o "$W/e.node"
+expect 0 "spacing-radii has no effect without quality refinement" -- mesh "$S" --spacing-radii -o "$W/e.node"
 exit $((fails != 0))

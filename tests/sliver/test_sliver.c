@@ -478,14 +478,16 @@ static void a_beam_on_thin_side_triangles_is_no_longer_pinned_and_rises_over_tet
  * edges, so a split of its own edges makes a congruent tet again), a split of another
  * input edge at that corner opens it: star_steiner_cluster_s3_1477.off rises from 0.036
  * degrees (the worst tet's own pieces only) over 0.5, star_rounding_budget.off from 3.81
- * over 4.2, every mesh through the mesh and exact conformity validators (tmesh.h). */
+ * over 4.0 (over 4.2 before the tet sort of order.c and the spacing radii of refine.c,
+ * which give 4.036), every mesh through the mesh and exact conformity validators
+ * (tmesh.h). */
 static void a_corner_tet_rises_with_a_split_of_another_input_edge_at_its_corner(const char *dir)
 {
   static const struct {
     const char *file;
     double above;
   } cases[] = {{"regressions/star_steiner_cluster_s3_1477.off", 0.5},
-               {"star_rounding_budget.off", 4.2}};
+               {"star_rounding_budget.off", 4.0}};
   for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", dir, cases[i].file);
