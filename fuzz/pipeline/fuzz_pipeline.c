@@ -31,8 +31,9 @@
  * Built with TR_FUZZ_QUALITY (the target fuzz_pipeline_quality, issue 17), the first byte
  * switches quality refinement on (the rest of the bytes are read as above): the radius-
  * edge bound R in {1.414, 1.6, 2, 3} and sliver removal -O 0..3 (bits 0-3), with bit 4 a
- * volume bound of 1/40 of the bounding box, bit 5 --spacing-radii, bit 6 --subface-quality
- * 1.414 (with its flat splits) and bit 7 --keep-edges; the same validators run on the
+ * volume bound of 1/40 of the bounding box, bit 5 --spacing-radii (clear:
+ * --insertion-radii), bit 6 --subface-quality 1.414 (with its flat splits) and bit 7
+ * --keep-edges; the same validators run on the
  * refined mesh, and with the volume bound every tet's exact volume must be at most it.
  * Bit 0 of the second byte adds --keep-surface (without --subface-quality, which it
  * refuses): the boundary must then be the input triangles with no point on them
