@@ -3,9 +3,10 @@
  * Refinement makes tets in the order of its queues, so after it neighbouring tets sit
  * far apart in the store and every walk across a face misses the cache (the sliver
  * stage's cavities spent about a fifth of their time loading a neighbour's vertices).
- * Sorted, the tets around a point share cache lines. The stage visits tets in slot order,
- * so this order is also the order slivers are worked on: a function of the coordinates
- * and, among equal keys, of the old slots (same input, same mesh). */
+ * Sorted, the tets around a point share cache lines. The flip and smoothing passes visit
+ * tets in this order, the insertion passes in a scattered one (insert.c, visit_step). It
+ * is a function of the coordinates and, among equal keys, of the old slots (same input,
+ * same mesh). */
 #include "sliver.h"
 #include "delaunay/delaunay.h"
 
