@@ -126,7 +126,9 @@ static const struct option {
      "with refinement: also split the boundary triangles whose\n"
      "radius-edge ratio is above S (>= 1), except where a small\n"
      "input angle forces it, and split an input-edge piece once\n"
-     "under a boundary angle over 120 degrees (default: off)"},
+     "under a boundary angle over 120 degrees also after the\n"
+     "sliver stage's splits (refinement always does so once;\n"
+     "default: off)"},
     {"--max-volume", "V", C_MESH | C_CHECK,
      "refinement until every tet's volume is at most V (check:\n"
      "count the tets over V)"},

@@ -276,3 +276,21 @@ tr_status tr_mesh_export_tets(const struct tr_mesh *m, uint32_t **tets, uint32_t
   *ntets = n;
   return TR_OK;
 }
+
+void tr_mesh_centroid_q(const struct tr_mesh *m, const uint32_t v[3], tr_qpoint *q)
+{
+  mpq_t x;
+  mpq_init(x);
+  for (int i = 0; i < 3; i++) {
+    mpq_set_ui(q->c[i], 0, 1);
+    for (int j = 0; j < 3; j++) {
+      tr_point p = tr_mesh_point(m, v[j]);
+      tr_point_get_q(&p, i, x);
+      mpq_add(q->c[i], q->c[i], x);
+    }
+    mpq_set_ui(x, 3, 1);
+    mpq_div(q->c[i], q->c[i], x);
+  }
+  mpq_clear(x);
+  tr_qpoint_update(q);
+}

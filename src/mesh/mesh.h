@@ -145,6 +145,11 @@ static inline tr_point tr_mesh_point(const struct tr_mesh *m, uint32_t v)
   return tr_pt_d(m->xyz + 3 * (size_t)v);
 }
 
+/* q (initialised by the caller) = the exact centroid of vertices v[0..2]: which input
+ * triangle of a merged facet holds a sub-face is asked of it (refine/subs.c,
+ * sliver/facetflip.c). */
+void tr_mesh_centroid_q(const struct tr_mesh *m, const uint32_t v[3], tr_qpoint *q);
+
 /* ---- tets ---- */
 static inline int tr_tet_is_free(const struct tr_mesh *m, uint32_t t)
 {
@@ -288,6 +293,12 @@ tr_status tr_shell(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0, tr_u3
  * the slots of the new tets. */
 tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
                           const uint32_t *newv, uint32_t nnew, uint32_t *new_ids);
+/* The same where the region meets the mesh's boundary: a face of the old region with no
+ * neighbour may be gone from the new tets, and a new face matched by none is left with
+ * no neighbour (a flip of two boundary faces: sliver/facetflip.c). The caller vouches
+ * that the new tets fill the old region; faces with a neighbour must match as above. */
+tr_status tr_mesh_replace_open(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
+                               const uint32_t *newv, uint32_t nnew, uint32_t *new_ids);
 
 /* ---- export ---- */
 /* Number of live non-ghost tets (O(slots)). */

@@ -20,7 +20,7 @@ typedef struct face_rec {
  * does not depend on the order in which pairs are found, so this needs no sort (flips
  * list a few dozen records; sorting them was a tenth of the time of a flip search). */
 static size_t pair_recs(const face_rec *r, size_t n, uint32_t *slot, size_t cap,
-                        uint32_t *mate)
+                        uint32_t *mate, int open)
 {
   for (size_t i = 0; i < cap; i++)
     slot[i] = TR_NONE;
@@ -42,7 +42,7 @@ static size_t pair_recs(const face_rec *r, size_t n, uint32_t *slot, size_t cap,
     mate[i] = (uint32_t)j;
   }
   for (size_t i = 0; i < n; i++)
-    if (mate[i] == TR_NONE)
+    if (mate[i] == TR_NONE && !(open && (r[i].who != TR_NONE || r[i].code == TR_NONE)))
       return i;
   return SIZE_MAX;
 }
@@ -55,8 +55,8 @@ static void face_sorted(const uint32_t *tv, int k, uint32_t out[3])
   tr_sort3(out);
 }
 
-tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
-                          const uint32_t *newv, uint32_t nnew, uint32_t *new_ids)
+static tr_status replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
+                         const uint32_t *newv, uint32_t nnew, uint32_t *new_ids, int open)
 {
   for (uint32_t i = 0; i < nold; i++)
     if (old[i] >= m->nt || tr_tet_is_free(m, old[i]) || (m->flags[old[i]] & TR_TF_MARK)) {
@@ -102,7 +102,7 @@ tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
       r->code = (uint32_t)k;
     }
   /* Every face must be listed exactly twice, by at least one new tet. */
-  size_t bad = pair_recs(rec, nrec, slot, cap, mate);
+  size_t bad = pair_recs(rec, nrec, slot, cap, mate, open);
   if (bad != SIZE_MAX) {
     s = tr_error(TR_ERR_INTERNAL,
                  "replace: face (%u,%u,%u) is not shared by exactly one old-boundary or new "
@@ -145,6 +145,11 @@ tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
     }
   }
   for (size_t i = 0; i < nrec; i++) {
+    if (mate[i] == TR_NONE) { /* open: a new face on the boundary, or an old one gone */
+      if (rec[i].who != TR_NONE)
+        m->tn[4 * (size_t)ids[rec[i].who] + rec[i].code] = TR_NONE;
+      continue;
+    }
     if (mate[i] < i)
       continue; /* glued from its mate */
     const face_rec *a = &rec[i], *b = &rec[mate[i]];
@@ -178,4 +183,16 @@ done:
   if (slot != lslot)
     free(slot);
   return s;
+}
+
+tr_status tr_mesh_replace(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
+                          const uint32_t *newv, uint32_t nnew, uint32_t *new_ids)
+{
+  return replace(m, old, nold, newv, nnew, new_ids, 0);
+}
+
+tr_status tr_mesh_replace_open(struct tr_mesh *m, const uint32_t *old, uint32_t nold,
+                               const uint32_t *newv, uint32_t nnew, uint32_t *new_ids)
+{
+  return replace(m, old, nold, newv, nnew, new_ids, 1);
 }

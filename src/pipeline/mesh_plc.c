@@ -291,7 +291,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
                           pinned tets */
         st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv1, &vkind, &vindex);
       stats->points_added_for_sliver = ss.points;
-      stats->sliver_flips = ss.flips23 + ss.flips32 + ss.flips44 + ss.flipsn;
+      stats->sliver_flips = ss.flips23 + ss.flips32 + ss.flips44 + ss.flipsn + ss.facet_flips;
       stats->sliver_points_smoothed = ss.smoothed;
       if (st == TR_OK && opt.verbose >= 2)
         fprintf(stderr, "tetrec: sliver removal: %llu flips (2-3 %llu, 3-2 %llu, 4-4 %llu, "

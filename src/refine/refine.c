@@ -592,9 +592,13 @@ static void ctx_setup(rf_ctx *c, struct tr_mesh *m, const struct tr_plc *plc,
 }
 
 /* Flat sub-faces (flat.c): one scan of what the loop left, then the loop again for the
- * splits it queued and the tets they make. */
+ * splits it queued and the tets they make; none once the loop stopped at its point cap
+ * (the loop would go on with the insertion radii, and merged_facet_notch.off's facet
+ * splits then ran to the budget). */
 static tr_status flat_pass(rf_ctx *c)
 {
+  if (c->st->spacing_stopped)
+    return TR_OK;
   int pushed;
   TR_CHECK(rf_flat_scan(c, &pushed));
   return pushed ? run(c) : TR_OK;

@@ -73,7 +73,8 @@ typedef struct tr_refine_params {
                           bad tet whose circumcentre encroaches a piece is left (tr_refine
                           only; the hooks below are not called under it) */
   int flat_splits;     /* 1: a sub-segment opposite an angle over 120 degrees of a sub-face
-                          is split at that vertex's foot, once (flat.c); 0: off */
+                          is split at that vertex's foot, once (flat.c); 0: off.
+                          tr_refine_stage sets it */
   int spacing_radii;   /* the circumcentre rule takes a vertex's current spacing (refine.c,
                           after_insert) instead of its insertion radius; the radius-edge
                           refinement ends (no error, bad tets left) at 20 points per input

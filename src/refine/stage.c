@@ -133,7 +133,8 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   /* under --keep-surface no facet is merged either: its input edges are boundary edges */
   par.keep_edges = opt->keep_edges || opt->keep_surface;
   par.keep_surface = opt->keep_surface;
-  par.flat_splits = opt->quality_subface_ratio > 0; /* flat.c: part of the option */
+  par.flat_splits = 1; /* flat.c, which weighs its cost; after the pinned splits too under
+                          --subface-quality (tr_sliver_bounds) */
   par.spacing_radii = opt->refine_spacing_radii;
   par.partial = opt->refine_partial;
   /* the smallest of all bounds sizes the default budget */

@@ -379,20 +379,7 @@ static tr_status locate_triangle(const rf_ctx *c, uint32_t f, uint32_t *tri)
     return TR_OK;
   tr_qpoint q;
   tr_qpoint_init(&q);
-  mpq_t x;
-  mpq_init(x);
-  for (int i = 0; i < 3; i++) {
-    mpq_set_ui(q.c[i], 0, 1);
-    for (int j = 0; j < 3; j++) {
-      tr_point p = tr_mesh_point(c->m, c->sfv[3 * (size_t)f + j]);
-      tr_point_get_q(&p, i, x);
-      mpq_add(q.c[i], q.c[i], x);
-    }
-    mpq_set_ui(x, 3, 1);
-    mpq_div(q.c[i], q.c[i], x);
-  }
-  mpq_clear(x);
-  tr_qpoint_update(&q);
+  tr_mesh_centroid_q(c->m, c->sfv + 3 * (size_t)f, &q);
   tr_point p = tr_pt_q(&q);
   *tri = rf_facet_triangle_of(c, g, &p, TR_NONE);
   tr_qpoint_clear(&q);

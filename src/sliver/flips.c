@@ -6,6 +6,7 @@
 
 #include "refine/quality.h"
 #include "sliver/sliver.h"
+#include "sliver/ring.h"
 
 #define SL_MAX_NEW (2 * SL_MAX_RING - 4)
 
@@ -96,20 +97,7 @@ static int face_cand(const tr_sliver_ctx *c, uint32_t t, int k, double floor, ca
   return 1;
 }
 
-/* The ring polygon around the removed edge and its best triangulation. */
-typedef struct ring {
-  const tr_sliver_ctx *c;
-  const struct tr_mesh *m;
-  uint32_t region;
-  double was; /* the largest ratio of the shell's tets */
-  double floor; /* what the triangulation must beat: no sub-polygon at or under it helps */
-  uint32_t A, B, r[SL_MAX_RING];
-  int n;
-  double val[SL_MAX_RING][SL_MAX_RING]; /* best smallest angle of r[i..j], -1: none */
-  int8_t cut[SL_MAX_RING][SL_MAX_RING];
-} ring;
-
-static void ring_dp(ring *R)
+void tr_sliver_ring_dp(tr_sliver_ring *R)
 {
   int n = R->n;
   for (int i = 0; i + 1 < n; i++)
@@ -155,17 +143,17 @@ static void ring_dp(ring *R)
     }
 }
 
-static void ring_emit(const ring *R, int i, int j, cand *x)
+void tr_sliver_ring_emit(const tr_sliver_ring *R, int i, int j, uint32_t *newv, uint32_t *nnew)
 {
   if (j - i < 2)
     return;
   int k = R->cut[i][j];
-  uint32_t *p = x->newv + 4 * (size_t)x->nnew;
+  uint32_t *p = newv + 4 * (size_t)*nnew;
   p[0] = R->A, p[1] = R->r[i], p[2] = R->r[k], p[3] = R->r[j];
   p[4] = R->B, p[5] = R->r[j], p[6] = R->r[k], p[7] = R->r[i];
-  x->nnew += 2;
-  ring_emit(R, i, k, x);
-  ring_emit(R, k, j, x);
+  *nnew += 2;
+  tr_sliver_ring_emit(R, i, k, newv, nnew);
+  tr_sliver_ring_emit(R, k, j, newv, nnew);
 }
 
 /* Removal of edge ab of t: its shell (closed, real, 3..SL_MAX_RING tets, no protected
@@ -183,7 +171,7 @@ static tr_status edge_cand(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint3
   int n = (int)sh->n;
   if (!closed || n < 3 || n > SL_MAX_RING)
     return TR_OK;
-  ring R;
+  tr_sliver_ring R;
   R.c = c;
   R.m = m;
   R.n = n;
@@ -220,11 +208,11 @@ static tr_status edge_cand(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint3
   R.A = even ? a : b;
   R.B = even ? b : a;
   R.floor = fmax(floor, x->oldmin);
-  ring_dp(&R);
+  tr_sliver_ring_dp(&R);
   if (!(R.val[0][n - 1] > x->oldmin))
     return TR_OK;
   x->nnew = 0;
-  ring_emit(&R, 0, n - 1, x);
+  tr_sliver_ring_emit(&R, 0, n - 1, x->newv, &x->nnew);
   x->newmin = R.val[0][n - 1];
   *ok = 1;
   return TR_OK;
@@ -286,6 +274,8 @@ tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
       continue;
     int done;
     s = tr_sliver_flip_tet(c, t, &sh, st, &done);
+    if (s == TR_OK && !done)
+      s = tr_sliver_facet_flip_tet(c, t, st, &done);
   }
   tr_u32buf_free(&sh);
   return s;

@@ -562,8 +562,10 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, int last, trial *best, 
   for (int i = 0; i < 4; i++)
     q[i] = m->xyz + 3 * (size_t)tv[i];
   double r, w, d[6], cc[3], g[3];
-  if (!tr_tet_shape(q[0], q[1], q[2], q[3], &r, &w, d, cc))
-    return TR_OK;
+  /* a tet flat in doubles has no circumcentre there, but the points above its sub-faces
+   * and off its plane still open it (pinion: a cap over a crease 1e-16 off flat, left at
+   * 0 degrees when this returned) */
+  const int has_cc = tr_tet_shape(q[0], q[1], q[2], q[3], &r, &w, d, cc);
   for (int j = 0; j < 3; j++)
     g[j] = 0.25 * (q[0][j] + q[1][j] + q[2][j] + q[3][j]);
   /* the candidates: the circumcentre and points between it and the centroid; above each
@@ -576,7 +578,7 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, int last, trial *best, 
   double emax = 0;
   for (int e = 0; e < 6; e++)
     emax = fmax(emax, dist3(q[tr_edge_vtx[e][0]], q[tr_edge_vtx[e][1]]));
-  for (int f = 0; f < 4; f++) {
+  for (int f = 0; f < 4 && has_cc; f++) {
     for (int j = 0; j < 3; j++)
       cand[nc][j] = g[j] + frac[f] * (cc[j] - g[j]);
     /* a point far off a flat tet (its circumcentre, out of a thin slab): SL_FAR */

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/facets.h"
 #include "refine/quality.h"
 #include "refine/refine_impl.h" /* rf_volume_above: the bound decided as refinement does */
 #include "refine/refine_stage.h"
@@ -301,6 +302,8 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
   c->point_budget = st->points + rs.points;
   c->keep = keep.keep;
   c->memo = keep.memo;
+  c->sub = keep.sub;
+  c->facets = keep.facets;
   return s;
 }
 
@@ -326,6 +329,14 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   if (par->insert_bound > 0)
     c.insert_bound = par->insert_bound;
   c.keep = par->keep;
+  /* the facet flips rewrite sub-faces: not under --keep-surface, where each input
+   * triangle is one */
+  tr_facets facets = {0};
+  if (s == TR_OK && !par->keep.keep_surface && par->keep.plc) {
+    s = tr_facets_build(par->keep.plc, par->keep.keep_edges, &facets);
+    c.sub = sub;
+    c.facets = &facets;
+  }
   tr_refine_memo memo = {0};
   c.memo = &memo;
   uint64_t added = 0;
@@ -365,5 +376,6 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
     s = tr_sliver_polish(&c, sub, par->level, st);
   tr_sliver_ctx_free(&c);
   tr_refine_memo_free(&memo);
+  tr_facets_free(&facets);
   return s;
 }

@@ -80,6 +80,7 @@ enum { TR_SLIVER_OFF = 0, TR_SLIVER_FLIPS = 1, TR_SLIVER_SMOOTH = 2, TR_SLIVER_I
 #define SL_PINNED_BOUND 10.0 /* degrees: the pinned tets that get points on constraints */
 
 #define SL_MAX_RING 7 /* largest edge shell the flips remove (7 tets -> 10) */
+#define SL_FACET_FAN 2 /* most tets on one side of a facet flip's edge (facetflip.c) */
 
 /* The refinement's bounds hold after the stage: a new tet's volume is at most its region's
  * bound (exactly, as refinement decides it), and its radius-edge ratio at most the ratio
@@ -105,6 +106,7 @@ typedef struct tr_sliver_params {
 
 typedef struct tr_sliver_stats {
   uint64_t flips23, flips32, flips44, flipsn; /* n: edge removal with a shell of 5+ */
+  uint64_t facet_flips;                       /* edges inside input triangles (facetflip.c) */
   uint64_t smoothed;                          /* accepted vertex moves */
   uint64_t points;                            /* points added, all kinds */
   uint64_t on_constraints; /* of them on input edges and triangles (pinned tets) */
@@ -128,6 +130,12 @@ typedef struct tr_sliver_ctx {
   /* the refinement set-ups' memo (refine.h), tr_sliver_remove's, shared by the contexts
    * it rebuilds and by the trials' (not owned; NULL: none) */
   struct tr_refine_memo *memo;
+  /* the sub-faces, which the facet flips rewrite (tr_sliver_remove's; NULL: no facet
+     flips), and the input's facets: only a sub-face of a triangle that is a facet of its
+     own flips (a merged facet's sub-face is labelled with the triangle that holds its
+     centroid, which a flip may move; NULL: every triangle is) */
+  tr_subfaces *sub;
+  const struct tr_facets *facets;
 } tr_sliver_ctx;
 
 /* The context of one mesh: c->m = m, the constraint sets of sub, the movable vertices
@@ -190,6 +198,10 @@ tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
  * tets it deletes, done (*done = 1) if there is one; sh: scratch for the edge shells. */
 tr_status tr_sliver_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_u32buf *sh, tr_sliver_stats *st,
                              int *done);
+/* The best flip of an edge inside an input triangle at a sub-face of t (facetflip.c):
+ * done (*done = 1) when its new tets' smallest angle beats the old ones' and they keep
+ * the bounds; c->sub and the constraint sets follow. */
+tr_status tr_sliver_facet_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_sliver_stats *st, int *done);
 /* One smoothing pass over the movable vertices in index order (smooth.c). */
 tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
 /* Up to SL_MOVES moves of vertex v (if movable) while its star's smallest angle is under

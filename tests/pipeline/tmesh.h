@@ -85,4 +85,19 @@ static inline void tm_free(tm_run *r)
   memset(r, 0, sizeof *r);
 }
 
+/* The live tet with exactly the vertices v (any order), TR_NONE if none. */
+static inline uint32_t tm_find_tet(const tr_mesh *m, const uint32_t v[4])
+{
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    int n = 0;
+    for (int i = 0; i < 4; i++)
+      n += tr_ncode(m, t, v[i]) >= 0;
+    if (n == 4)
+      return t;
+  }
+  return TR_NONE;
+}
+
 #endif

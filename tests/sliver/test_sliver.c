@@ -34,25 +34,10 @@ static tr_mesh *sliver_box(double e)
   return m;
 }
 
-/* The live tet with exactly the vertices v, TR_NONE if none. */
-static uint32_t find_tet(const tr_mesh *m, const uint32_t v[4])
-{
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t))
-      continue;
-    int n = 0;
-    for (int i = 0; i < 4; i++)
-      n += tr_ncode(m, t, v[i]) >= 0;
-    if (n == 4)
-      return t;
-  }
-  return TR_NONE;
-}
-
 /* 1 iff some live tet has exactly the vertices v (any order). */
 static int has_tet(const tr_mesh *m, const uint32_t v[4])
 {
-  return find_tet(m, v) != TR_NONE;
+  return tm_find_tet(m, v) != TR_NONE;
 }
 
 static double min_dihedral(const tr_mesh *m)
@@ -682,7 +667,7 @@ static tr_status cap_under_a_point(tr_sliver_ctx *c, tr_sliver_stats *st)
   void *z = tr_sliver_insert_scratch();
   if (!z)
     return tr_error(TR_ERR_NOMEM, "scratch");
-  uint32_t t = find_tet(c->m, cap);
+  uint32_t t = tm_find_tet(c->m, cap);
   tr_status s = tr_sliver_insert_tet(c, t, z, &last_ordinary);
   if (s == TR_OK && !last_ordinary)
     s = tr_sliver_insert_last(c, t, z, &last_resort);
@@ -704,8 +689,8 @@ static void a_pinned_cap_under_a_free_point_is_opened_by_the_last_resort(void)
   if (!m)
     return;
   const uint32_t cap[4] = {0, 1, 2, 3}, above[4] = {4, 0, 2, 3};
-  uint32_t ta = find_tet(m, above), w;
-  EXPECT(find_tet(m, cap) != TR_NONE && ta != TR_NONE, "cap under w: not the cap's mesh");
+  uint32_t ta = tm_find_tet(m, above), w;
+  EXPECT(tm_find_tet(m, cap) != TR_NONE && ta != TR_NONE, "cap under w: not the cap's mesh");
   if (ta == TR_NONE) {
     tr_mesh_destroy(m);
     return;
