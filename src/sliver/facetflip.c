@@ -1,5 +1,6 @@
-/* Flips of an edge inside an input triangle (sliver.h): two sub-faces a b c and a b d of
- * one input triangle become a c d and b c d, the other diagonal of their quadrilateral.
+/* Flips of an edge inside a facet (sliver.h): two sub-faces a b c and a b d of one input
+ * triangle, or of one merged facet, become a c d and b c d, the other diagonal of their
+ * quadrilateral.
  *
  * Why: refinement and the sliver stage put points on facets through 3D cavities, so a
  * facet's sub-faces need not be a good 2D triangulation: a point placed near the
@@ -85,9 +86,9 @@ static int same_facet(const tr_sliver_ctx *c, uint32_t t, uint32_t u)
 }
 
 /* One side of the facet at edge ab: the fan of tets from t (which has sub-face a b c0) to
- * the one with a sub-face a b d of the same input triangle, into x->old, and its ring
- * c0 ... d into R; *g = that sub-face. 0 when another constraint face or the mesh's
- * boundary comes first, or the fan is longer than a ring may be. */
+ * the one with a sub-face a b d of the same facet, into x->old, and its ring c0 ... d into
+ * R; *g = that sub-face. 0 when a sub-face of another facet or the mesh's boundary comes
+ * first, or the fan has more than SL_FACET_FAN tets. */
 static int fan(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint32_t b, uint32_t c0,
                uint32_t tri, uint32_t *g, fcand *x, tr_sliver_ring *R)
 {

@@ -106,7 +106,7 @@ typedef struct tr_sliver_params {
 
 typedef struct tr_sliver_stats {
   uint64_t flips23, flips32, flips44, flipsn; /* n: edge removal with a shell of 5+ */
-  uint64_t facet_flips;                       /* edges inside input triangles (facetflip.c) */
+  uint64_t facet_flips;                       /* edges inside facets (facetflip.c) */
   uint64_t smoothed;                          /* accepted vertex moves */
   uint64_t points;                            /* points added, all kinds */
   uint64_t on_constraints; /* of them on input edges and triangles (pinned tets) */
@@ -198,7 +198,7 @@ tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
  * tets it deletes, done (*done = 1) if there is one; sh: scratch for the edge shells. */
 tr_status tr_sliver_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_u32buf *sh, tr_sliver_stats *st,
                              int *done);
-/* The best flip of an edge inside an input triangle at a sub-face of t (facetflip.c):
+/* The best flip of an edge inside a facet at a sub-face of t (facetflip.c):
  * done (*done = 1) when its new tets' smallest angle beats the old ones' and they keep
  * the bounds; c->sub and the constraint sets follow. */
 tr_status tr_sliver_facet_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_sliver_stats *st, int *done);
