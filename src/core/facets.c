@@ -1,11 +1,15 @@
 /* Planar facets of the input (facets.h): union-find over the triangles, each pair tested
  * with exact predicates on the input doubles. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/edgesort.h"
 #include "core/facets.h"
 #include "predicates.h"
+#include "qpoint.h"
+
+#define NONE UINT32_MAX /* TR_NONE, which is mesh.h's */
 
 static uint32_t find(uint32_t *par, uint32_t x)
 {
@@ -29,6 +33,46 @@ int tr_plc_tri_axis(const struct tr_plc *plc, uint32_t t)
         0)
       return k;
   return -1;
+}
+
+/* p in the closed input triangle t, projected along k. */
+static int in_tri_2d(const struct tr_plc *plc, uint32_t t, int k, const tr_point *p)
+{
+  const uint32_t *T = plc->tris + 3 * (size_t)t;
+  tr_point a = tr_pt_d(plc->xyz + 3 * (size_t)T[0]), b = tr_pt_d(plc->xyz + 3 * (size_t)T[1]),
+           d = tr_pt_d(plc->xyz + 3 * (size_t)T[2]);
+  int s = tr_orient2d_proj_p(&a, &b, &d, k);
+  return s * tr_orient2d_proj_p(&a, &b, p, k) >= 0 && s * tr_orient2d_proj_p(&b, &d, p, k) >= 0 &&
+         s * tr_orient2d_proj_p(&d, &a, p, k) >= 0;
+}
+
+uint32_t tr_facets_triangle_of(const tr_facets *F, const struct tr_plc *plc, uint32_t g, int k,
+                               const tr_point *p, uint32_t hint)
+{
+  if (hint != NONE && (F->group[hint] != g || !in_tri_2d(plc, hint, k, p)))
+    hint = NONE;
+  /* members are increasing, so the first that holds p is the smallest; the box test in
+   * doubles only skips triangles that p's exact coordinates lie outside of */
+  const double *lo = p->q ? p->q->lo : p->d, *hi = p->q ? p->q->hi : p->d;
+  for (uint32_t i = F->start[g]; i < F->start[g + 1]; i++) {
+    uint32_t t = F->member[i];
+    if (hint != NONE && t >= hint)
+      return hint;
+    const uint32_t *U = plc->tris + 3 * (size_t)t;
+    int out = 0;
+    for (int j = 0; j < 3 && !out; j++) {
+      double mn = INFINITY, mx = -INFINITY;
+      for (int v = 0; v < 3; v++) {
+        double x = plc->xyz[3 * (size_t)U[v] + j];
+        mn = x < mn ? x : mn;
+        mx = x > mx ? x : mx;
+      }
+      out = hi[j] < mn || lo[j] > mx;
+    }
+    if (!out && in_tri_2d(plc, t, k, p))
+      return t;
+  }
+  return hint;
 }
 
 /* Triangles s and t on edge slots 3s+i and 3t+j (the same undirected edge) merge? */

@@ -34,6 +34,15 @@ tr_status tr_facets_copy(tr_facets *dst, const tr_facets *src);
  * validator compute 2D orientations and areas in. */
 int tr_plc_tri_axis(const struct tr_plc *plc, uint32_t t);
 
+struct tr_point;
+/* The smallest triangle of facet g (a group id) whose closed triangle holds p, a point in
+ * g's plane, tested in the projection along axis k (non-degenerate for g, so for every
+ * member); UINT32_MAX (TR_NONE) if none. hint, if not UINT32_MAX, is a member known or guessed to hold p:
+ * it is checked once and ends the scan early. Exact. The one rule that labels a facet's
+ * sub-faces, shared by refinement and the sliver stage's facet flips. */
+uint32_t tr_facets_triangle_of(const tr_facets *F, const struct tr_plc *plc, uint32_t g, int k,
+                               const struct tr_point *p, uint32_t hint);
+
 static inline uint32_t tr_facets_size(const tr_facets *f, uint32_t g)
 {
   return f->start[g + 1] - f->start[g];

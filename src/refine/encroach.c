@@ -232,52 +232,17 @@ int rf_in_input_triangle(const rf_ctx *c, uint32_t tri, const tr_point *p)
          s * tr_orient2d_proj_p(&d, &a, p, k) >= 0;
 }
 
-/* p (in T's plane) in the closed triangle T, projected along k (exact). */
-static int in_tri_2d(const rf_ctx *c, const uint32_t *T, int k, const tr_point *p)
-{
-  tr_point a = tr_mesh_point(c->m, T[0]), b = tr_mesh_point(c->m, T[1]),
-           d = tr_mesh_point(c->m, T[2]);
-  int s = tr_orient2d_proj_p(&a, &b, &d, k);
-  return s * tr_orient2d_proj_p(&a, &b, p, k) >= 0 && s * tr_orient2d_proj_p(&b, &d, p, k) >= 0 &&
-         s * tr_orient2d_proj_p(&d, &a, p, k) >= 0;
-}
-
 uint32_t rf_facet_triangle_of(const rf_ctx *c, uint32_t g, const tr_point *p, uint32_t hint)
 {
-  const tr_facets *F = &c->fc;
-  if (tr_facets_size(F, g) == 1)
+  if (tr_facets_size(&c->fc, g) == 1)
     return rf_in_input_triangle(c, g, p) ? g : TR_NONE;
   const uint32_t *T = c->plc->tris + 3 * (size_t)g;
   tr_point a = tr_mesh_point(c->m, T[0]), b = tr_mesh_point(c->m, T[1]),
            d = tr_mesh_point(c->m, T[2]);
   if (tr_orient3d_p(&a, &b, &d, p) != 0)
     return TR_NONE;
-  int k = tri_drop(c, g); /* every triangle of the facet spans its plane */
-  if (hint != TR_NONE && F->group[hint] == g &&
-      !in_tri_2d(c, c->plc->tris + 3 * (size_t)hint, k, p))
-    hint = TR_NONE;
-  /* the smallest holding triangle: members are increasing; a box test in doubles that
-   * only skips triangles p's exact coordinates lie outside of */
-  const double *lo = p->q ? p->q->lo : p->d, *hi = p->q ? p->q->hi : p->d;
-  for (uint32_t i = F->start[g]; i < F->start[g + 1]; i++) {
-    uint32_t t = F->member[i];
-    if (hint != TR_NONE && t >= hint)
-      return hint;
-    const uint32_t *U = c->plc->tris + 3 * (size_t)t;
-    int out = 0;
-    for (int j = 0; j < 3 && !out; j++) {
-      double mn = INFINITY, mx = -INFINITY;
-      for (int v = 0; v < 3; v++) {
-        double x = c->plc->xyz[3 * (size_t)U[v] + j];
-        mn = x < mn ? x : mn;
-        mx = x > mx ? x : mx;
-      }
-      out = hi[j] < mn || lo[j] > mx;
-    }
-    if (!out && in_tri_2d(c, U, k, p))
-      return t;
-  }
-  return hint;
+  /* every triangle of the facet spans its plane, so g's axis serves them all */
+  return tr_facets_triangle_of(&c->fc, c->plc, g, tri_drop(c, g), p, hint);
 }
 
 /* Parameter of point x (on the line AB) along A -> B, exactly, on the axis where AB is

@@ -56,26 +56,19 @@ static uint32_t label(const tr_sliver_ctx *c, const uint32_t S[3], uint32_t tri)
   tr_qpoint_init(&q);
   tr_mesh_centroid_q(c->m, S, &q);
   tr_point p = tr_pt_q(&q);
-  uint32_t out = TR_NONE;
-  for (uint32_t i = F->start[G]; i < F->start[G + 1] && out == TR_NONE; i++) {
-    const uint32_t *U = plc->tris + 3 * (size_t)F->member[i];
-    tr_point a = tr_mesh_point(c->m, U[0]), b = tr_mesh_point(c->m, U[1]),
-             d = tr_mesh_point(c->m, U[2]);
-    int o = tr_orient2d_proj_p(&a, &b, &d, k);
-    if (o * tr_orient2d_proj_p(&a, &b, &p, k) >= 0 && o * tr_orient2d_proj_p(&b, &d, &p, k) >= 0 &&
-        o * tr_orient2d_proj_p(&d, &a, &p, k) >= 0)
-      out = F->member[i];
-  }
+  uint32_t out = tr_facets_triangle_of(F, plc, G, k, &p, TR_NONE);
   tr_qpoint_clear(&q);
   return out;
 }
 
-/* One flip under consideration: the old tets of both sides, the new ones. */
+/* One flip under consideration: the old tets of both sides, the new ones. A side's fan
+ * of n <= SL_FACET_FAN tets has a ring of n + 1 vertices, whose n - 1 triangles give
+ * 2 (n - 1) new tets. */
+_Static_assert(SL_FACET_FAN + 1 <= SL_MAX_RING, "a fan's ring fits tr_sliver_ring");
 typedef struct fcand {
-  uint32_t old[2 * SL_MAX_RING], nold;
-  uint32_t newv[4 * 4 * SL_MAX_RING], nnew, region[4 * SL_MAX_RING];
+  uint32_t old[2 * SL_FACET_FAN], nold;
+  uint32_t newv[4 * 4 * SL_FACET_FAN], nnew, region[4 * SL_FACET_FAN];
   uint32_t f, g, a, b, c0, d0; /* sub-faces a b c0 and a b d0 */
-  uint32_t lf, lg;              /* their labels after the flip (label) */
   int sides;                    /* 1: the facet is on the mesh's boundary */
   double newmin;
 } fcand;
@@ -176,26 +169,28 @@ static int edge_flip(const tr_sliver_ctx *c, uint32_t t, int k, uint32_t f, uint
     for (uint32_t i = from; i < x->nnew; i++)
       x->region[i] = R[s].region;
   }
-  /* f loses b to d0, g loses a to c0 (apply) */
-  uint32_t Sf[3], Sg[3];
-  for (int i = 0; i < 3; i++) {
-    uint32_t u = c->sub->v[3 * (size_t)f + i], w = c->sub->v[3 * (size_t)g[0] + i];
-    Sf[i] = u == b ? d0 : u;
-    Sg[i] = w == a ? c0 : w;
-  }
-  x->lf = label(c, Sf, tri);
-  x->lg = label(c, Sg, tri);
-  if (x->lf == TR_NONE || x->lg == TR_NONE)
-    return 0;
   x->f = f, x->g = g[0], x->a = a, x->b = b, x->c0 = c0, x->d0 = d0;
   return 1;
 }
 
-static tr_status apply(tr_sliver_ctx *c, const fcand *x)
+/* Carries out x unless a new sub-face has no label (*done = 0), which a valid mesh never
+ * gives: the new sub-faces tile the old ones, which lie in the facet. */
+static tr_status apply(tr_sliver_ctx *c, const fcand *x, int *done)
 {
   struct tr_mesh *m = c->m;
   tr_subfaces *sub = c->sub;
-  uint32_t ids[4 * SL_MAX_RING];
+  uint32_t *F = sub->v + 3 * (size_t)x->f, *G = sub->v + 3 * (size_t)x->g, k[3];
+  /* f loses b to d0, g loses a to c0; the sub-faces keep their slots and orientation */
+  uint32_t Sf[3], Sg[3];
+  for (int i = 0; i < 3; i++) {
+    Sf[i] = F[i] == x->b ? x->d0 : F[i];
+    Sg[i] = G[i] == x->a ? x->c0 : G[i];
+  }
+  const uint32_t lf = label(c, Sf, sub->tri[x->f]), lg = label(c, Sg, sub->tri[x->f]);
+  *done = lf != TR_NONE && lg != TR_NONE;
+  if (!*done)
+    return TR_OK;
+  uint32_t ids[4 * SL_FACET_FAN];
   /* one side: the facet is on the mesh's boundary, where its new faces have no neighbour */
   if (x->sides == 2)
     TR_CHECK(tr_mesh_replace(m, x->old, x->nold, x->newv, x->nnew, ids));
@@ -203,18 +198,14 @@ static tr_status apply(tr_sliver_ctx *c, const fcand *x)
     TR_CHECK(tr_mesh_replace_open(m, x->old, x->nold, x->newv, x->nnew, ids));
   for (uint32_t i = 0; m->region && i < x->nnew; i++)
     m->region[ids[i]] = x->region[i];
-  /* the sub-faces keep their slots and orientation: f loses b to d0, g loses a to c0 */
-  uint32_t *F = sub->v + 3 * (size_t)x->f, *G = sub->v + 3 * (size_t)x->g, k[3];
   tr_vtkey_face(F[0], F[1], F[2], k);
   TR_CHECK(tr_vtmap_set(&c->faces, 3, k, TR_VTMAP_NONE));
   tr_vtkey_face(G[0], G[1], G[2], k);
   TR_CHECK(tr_vtmap_set(&c->faces, 3, k, TR_VTMAP_NONE));
-  for (int i = 0; i < 3; i++) {
-    F[i] = F[i] == x->b ? x->d0 : F[i];
-    G[i] = G[i] == x->a ? x->c0 : G[i];
-  }
-  sub->tri[x->f] = x->lf;
-  sub->tri[x->g] = x->lg;
+  memcpy(F, Sf, sizeof Sf);
+  memcpy(G, Sg, sizeof Sg);
+  sub->tri[x->f] = lf;
+  sub->tri[x->g] = lg;
   tr_vtkey_face(F[0], F[1], F[2], k);
   TR_CHECK(tr_vtmap_set(&c->faces, 3, k, x->f));
   tr_vtkey_face(G[0], G[1], G[2], k);
@@ -250,8 +241,7 @@ tr_status tr_sliver_facet_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_sliver_stats
   }
   if (!have)
     return TR_OK;
-  TR_CHECK(apply(c, &best));
-  st->facet_flips++;
-  *done = 1;
+  TR_CHECK(apply(c, &best, done));
+  st->facet_flips += (uint64_t)*done;
   return TR_OK;
 }
