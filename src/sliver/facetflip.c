@@ -18,10 +18,12 @@
  * beats the old ones' and they keep the bounds, as every flip.
  *
  * Fans of at most SL_FACET_FAN tets per side (sliver.h): with two, the flip is the 2-2
- * (4-4) one. bench/quality, one run each on a noisy machine: at most 2 tets, 61 of 74
- * models meet issue 17's targets, 72.4 s of CPU against TetGen's 72.5; at most 3, 61
- * (joint met, femur's smallest angle lost), 78.8 s against 74.9; at most 6, 61, 80.6 s
- * against 75.0 (pinion 3.7 -> 4.5 s back to back). A sub-face of a merged facet is
+ * (4-4) one; of SL_FACET_FAN_LONG where a tet has no such flip, outside thin triangles.
+ * bench/quality, one run each on a noisy machine: at most 2 tets everywhere, 61 of 74
+ * models meet issue 17's targets, 72.4 s of CPU against TetGen's 72.5; at most 3
+ * everywhere, 61 (joint met, femur's smallest angle lost), 78.8 s against 74.9; at most
+ * 6, 61, 80.6 s against 75.0 (pinion 3.7 -> 4.5 s back to back); 2, then 3 as above,
+ * 62 (joint met, femur kept), 71.2 s against 73.9. A sub-face of a merged facet is
  * labelled again after the flip (label), as refinement expects (hard/chazelle_g2 failed
  * its debug check when the labels were kept). */
 #include <math.h>
@@ -62,12 +64,12 @@ static uint32_t label(const tr_sliver_ctx *c, const uint32_t S[3], uint32_t tri)
 }
 
 /* One flip under consideration: the old tets of both sides, the new ones. A side's fan
- * of n <= SL_FACET_FAN tets has a ring of n + 1 vertices, whose n - 1 triangles give
+ * of n <= SL_FACET_FAN_LONG tets has a ring of n + 1 vertices, whose n - 1 triangles give
  * 2 (n - 1) new tets. */
-_Static_assert(SL_FACET_FAN + 1 <= SL_MAX_RING, "a fan's ring fits tr_sliver_ring");
+_Static_assert(SL_FACET_FAN_LONG + 1 <= SL_MAX_RING, "a fan's ring fits tr_sliver_ring");
 typedef struct fcand {
-  uint32_t old[2 * SL_FACET_FAN], nold;
-  uint32_t newv[4 * 4 * SL_FACET_FAN], nnew, region[4 * SL_FACET_FAN];
+  uint32_t old[2 * SL_FACET_FAN_LONG], nold;
+  uint32_t newv[4 * 4 * SL_FACET_FAN_LONG], nnew, region[4 * SL_FACET_FAN_LONG];
   uint32_t f, g, a, b, c0, d0; /* sub-faces a b c0 and a b d0 */
   int sides;                    /* 1: the facet is on the mesh's boundary */
   double newmin;
@@ -81,16 +83,16 @@ static int same_facet(const tr_sliver_ctx *c, uint32_t t, uint32_t u)
 /* One side of the facet at edge ab: the fan of tets from t (which has sub-face a b c0) to
  * the one with a sub-face a b d of the same facet, into x->old, and its ring c0 ... d into
  * R; *g = that sub-face. 0 when a sub-face of another facet or the mesh's boundary comes
- * first, or the fan has more than SL_FACET_FAN tets. */
+ * first, or the fan has more than maxfan tets. */
 static int fan(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint32_t b, uint32_t c0,
-               uint32_t tri, uint32_t *g, fcand *x, tr_sliver_ring *R)
+               uint32_t tri, int maxfan, uint32_t *g, fcand *x, tr_sliver_ring *R)
 {
   const struct tr_mesh *m = c->m;
   uint32_t u = t, p = c0, first = x->nold;
   int n = 0;
   R->r[n++] = c0;
   for (;;) {
-    if (u == TR_NONE || !tr_tet_is_real(m, u) || n > SL_FACET_FAN)
+    if (u == TR_NONE || !tr_tet_is_real(m, u) || n > maxfan)
       return 0;
     x->old[x->nold++] = u;
     const uint32_t *v = m->tv + 4 * (size_t)u;
@@ -129,18 +131,19 @@ static int fan(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint32_t b, uint3
  * d0 joined (the new sub-faces a c0 d0, b c0 d0), if both sides' beat `floor` and the old
  * tets; *x filled, 1 returned. */
 static int edge_flip(const tr_sliver_ctx *c, uint32_t t, int k, uint32_t f, uint32_t a,
-                     uint32_t b, uint32_t c0, double floor, fcand *x, tr_sliver_ring R[2])
+                     uint32_t b, uint32_t c0, int maxfan, double floor, fcand *x,
+                     tr_sliver_ring R[2])
 {
   const struct tr_mesh *m = c->m;
   const uint32_t tri = c->sub->tri[f];
   uint32_t g[2] = {TR_NONE, TR_NONE};
   x->nold = 0;
-  if (!fan(c, t, a, b, c0, tri, &g[0], x, &R[0]))
+  if (!fan(c, t, a, b, c0, tri, maxfan, &g[0], x, &R[0]))
     return 0;
   int sides = 1;
   uint32_t t3 = TR_NEIG(m, t, k); /* the other side of f, if any */
   if (t3 != TR_NONE) {
-    if (!fan(c, t3, a, b, c0, tri, &g[1], x, &R[1]) || g[1] != g[0])
+    if (!fan(c, t3, a, b, c0, tri, maxfan, &g[1], x, &R[1]) || g[1] != g[0])
       return 0;
     sides = 2;
   }
@@ -190,7 +193,7 @@ static tr_status apply(tr_sliver_ctx *c, const fcand *x, int *done)
   *done = lf != TR_NONE && lg != TR_NONE;
   if (!*done)
     return TR_OK;
-  uint32_t ids[4 * SL_FACET_FAN];
+  uint32_t ids[4 * SL_FACET_FAN_LONG];
   /* one side: the facet is on the mesh's boundary, where its new faces have no neighbour */
   if (x->sides == 2)
     TR_CHECK(tr_mesh_replace(m, x->old, x->nold, x->newv, x->nnew, ids));
@@ -226,19 +229,24 @@ tr_status tr_sliver_facet_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_sliver_stats
   tr_sliver_ring R[2];
   best.newmin = -1;
   int have = 0;
-  for (int k = 0; k < 4; k++) {
-    const uint32_t *tv = m->tv + 4 * (size_t)t;
-    uint32_t fv[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
-    if (!tr_sliver_protected(c, fv, 3))
-      continue;
-    uint32_t f = subface_of(c, fv[0], fv[1], fv[2]);
-    if (f == TR_VTMAP_NONE)
-      continue;
-    for (int j = 0; j < 3; j++)
-      if (edge_flip(c, t, k, f, fv[j], fv[(j + 1) % 3], fv[(j + 2) % 3], best.newmin, &x, R) &&
-          x.newmin > best.newmin)
-        best = x, have = 1;
-  }
+  /* the longer fans only where the short ones give nothing, and not in a thin triangle,
+   * whose sub-faces a refinement at its small corner makes next (femur: a flip with 3
+   * there left a 0.17 degree tet between points on two input edges 1.3 degrees apart) */
+  for (int maxfan = SL_FACET_FAN; maxfan <= SL_FACET_FAN_LONG && !have; maxfan++)
+    for (int k = 0; k < 4; k++) {
+      const uint32_t *tv = m->tv + 4 * (size_t)t;
+      uint32_t fv[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
+      if (!tr_sliver_protected(c, fv, 3))
+        continue;
+      uint32_t f = subface_of(c, fv[0], fv[1], fv[2]);
+      if (f == TR_VTMAP_NONE || (maxfan > SL_FACET_FAN && c->thin && c->thin[c->sub->tri[f]]))
+        continue;
+      for (int j = 0; j < 3; j++)
+        if (edge_flip(c, t, k, f, fv[j], fv[(j + 1) % 3], fv[(j + 2) % 3], maxfan, best.newmin,
+                      &x, R) &&
+            x.newmin > best.newmin)
+          best = x, have = 1;
+    }
   if (!have)
     return TR_OK;
   TR_CHECK(apply(c, &best, done));

@@ -304,6 +304,7 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
   c->memo = keep.memo;
   c->sub = keep.sub;
   c->facets = keep.facets;
+  c->thin = keep.thin;
   return s;
 }
 
@@ -332,10 +333,19 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   /* the facet flips rewrite sub-faces: not under --keep-surface, where each input
    * triangle is one */
   tr_facets facets = {0};
+  uint8_t *thin = NULL;
   if (s == TR_OK && !par->keep.keep_surface && par->keep.plc) {
-    s = tr_facets_build(par->keep.plc, par->keep.keep_edges, &facets);
+    const struct tr_plc *plc = par->keep.plc;
+    s = tr_facets_build(plc, par->keep.keep_edges, &facets);
     c.sub = sub;
     c.facets = &facets;
+    thin = malloc(plc->ntris ? plc->ntris : 1);
+    tr_quality_thin tq;
+    if (s == TR_OK && !thin)
+      s = tr_error(TR_ERR_NOMEM, "out of memory for %u triangle flags", plc->ntris);
+    if (s == TR_OK)
+      s = tr_plc_thin_triangles(plc, par->keep.keep_edges, SL_FACET_THIN_CORNER, thin, &tq);
+    c.thin = thin;
   }
   tr_refine_memo memo = {0};
   c.memo = &memo;
@@ -377,5 +387,6 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   tr_sliver_ctx_free(&c);
   tr_refine_memo_free(&memo);
   tr_facets_free(&facets);
+  free(thin);
   return s;
 }

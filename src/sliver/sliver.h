@@ -81,6 +81,10 @@ enum { TR_SLIVER_OFF = 0, TR_SLIVER_FLIPS = 1, TR_SLIVER_SMOOTH = 2, TR_SLIVER_I
 
 #define SL_MAX_RING 7 /* largest edge shell the flips remove (7 tets -> 10) */
 #define SL_FACET_FAN 2 /* most tets on one side of a facet flip's edge (facetflip.c) */
+/* ... and when a tet has no flip with SL_FACET_FAN, on a triangle without a corner under
+ * SL_FACET_THIN_CORNER degrees (facetflip.c) */
+#define SL_FACET_FAN_LONG 3
+#define SL_FACET_THIN_CORNER 10.0
 
 /* The refinement's bounds hold after the stage: a new tet's volume is at most its region's
  * bound (exactly, as refinement decides it), and its radius-edge ratio at most the ratio
@@ -136,6 +140,9 @@ typedef struct tr_sliver_ctx {
      centroid, which a flip may move; NULL: every triangle is) */
   tr_subfaces *sub;
   const struct tr_facets *facets;
+  /* per input triangle, 1 if a facet of its own with a corner under SL_FACET_THIN_CORNER
+     (tr_plc_thin_triangles; NULL: none is) */
+  const uint8_t *thin;
 } tr_sliver_ctx;
 
 /* The context of one mesh: c->m = m, the constraint sets of sub, the movable vertices
