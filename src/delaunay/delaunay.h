@@ -78,6 +78,14 @@ void tr_dt_run_jobs(void *(*fn)(void *), void *job, size_t size, int nth);
 /* Hilbert index of an integer point with `bits` bits per coordinate (3*bits <= 64). */
 uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits);
 
+/* A key and what it sorts. tr_radix_sort_kv: a[0..n) sorted by key, stable (equal keys
+ * keep their order), keys under 2^56; tmp holds n entries. */
+typedef struct tr_kv {
+  uint64_t key;
+  uint32_t idx;
+} tr_kv;
+void tr_radix_sort_kv(tr_kv *a, tr_kv *tmp, size_t n);
+
 #ifdef __cplusplus
 }
 #endif

@@ -123,14 +123,11 @@ uint64_t tr_hilbert_key(uint32_t x, uint32_t y, uint32_t z, int bits)
   return hilbert_key(x, y, z, bits);
 }
 
-typedef struct kv {
-  uint64_t key;
-  uint32_t idx;
-} kv;
+typedef tr_kv kv;
 
 /* Stable LSD radix sort of a[0..n) by key (tmp: n entries). One read counts the digits
  * of every pass; passes whose digit is the same for every entry are skipped. */
-static void radix_sort(kv *a, kv *tmp, size_t n)
+void tr_radix_sort_kv(kv *a, kv *tmp, size_t n)
 {
   if (n < 32) {
     for (size_t i = 1; i < n; i++) {
@@ -217,7 +214,7 @@ static void *radix_job(void *arg)
   return NULL;
 }
 
-/* radix_sort with nth threads (same result). */
+/* tr_radix_sort_kv with nth threads (same result). */
 static void radix_sort_par(kv *a, kv *tmp, size_t n, int nth, uint64_t varying)
 {
   enum { PASSES = 7 };
@@ -428,7 +425,7 @@ tr_status tr_spatial_order_threads(const double *xyz, uint32_t n, uint32_t *orde
   }
   tr_dt_run_jobs(key_job, K, sizeof *K, nth);
   if (nth == 1) {
-    radix_sort(a, tmp, n);
+    tr_radix_sort_kv(a, tmp, n);
   } else {
     uint64_t varying = 0;
     for (int j = 0; j < nth; j++)

@@ -15,19 +15,6 @@
 
 #define ORDER_BITS 16 /* per axis */
 
-typedef struct tkey {
-  uint64_t key;
-  uint32_t t;
-} tkey;
-
-static int tkey_cmp(const void *a, const void *b)
-{
-  const tkey *x = a, *y = b;
-  if (x->key != y->key)
-    return x->key < y->key ? -1 : 1;
-  return x->t < y->t ? -1 : x->t > y->t;
-}
-
 /* x in [lo, lo + span] on the grid of ORDER_BITS bits */
 static uint32_t grid(double x, double lo, double span)
 {
@@ -51,10 +38,11 @@ tr_status tr_sliver_sort_tets(struct tr_mesh *m)
     }
   /* one span for the three axes: the cells stay cubes */
   const double span = fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2]));
-  tkey *k = malloc(sizeof *k * n);
+  /* keyed in slot order, so the stable sort breaks ties by the old slot */
+  tr_kv *k = malloc(sizeof *k * n), *tmp = malloc(sizeof *tmp * n);
   uint32_t *order = malloc(sizeof *order * n);
-  if (!k || !order) {
-    free(k), free(order);
+  if (!k || !tmp || !order) {
+    free(k), free(tmp), free(order);
     return tr_error(TR_ERR_NOMEM, "out of memory sorting %u tets", n);
   }
   uint32_t i = 0;
@@ -74,12 +62,14 @@ tr_status tr_sliver_sort_tets(struct tr_mesh *m)
     for (int j = 0; j < 3; j++)
       q[j] = grid(c[j] / nc, lo[j], span);
     k[i].key = tr_hilbert_key(q[0], q[1], q[2], ORDER_BITS);
-    k[i++].t = t;
+    k[i++].idx = t;
   }
-  qsort(k, n, sizeof *k, tkey_cmp);
+  _Static_assert(3 * ORDER_BITS < 56, "the key fits tr_radix_sort_kv");
+  tr_radix_sort_kv(k, tmp, n);
   for (i = 0; i < n; i++)
-    order[i] = k[i].t;
+    order[i] = k[i].idx;
   free(k);
+  free(tmp);
   tr_status s = tr_mesh_permute_tets(m, order, n);
   free(order);
   return s;
