@@ -11,6 +11,10 @@
  *    tets it deletes, and never deletes a constraint: a sub-face (tr_subfaces) or an edge
  *    of one (so no input edge either). Validity is exact: every new tet strictly positive
  *    by tr_orient3d_p on the exact points.
+ *  - facetflip.c: where none of those helps, the flip of an edge inside a facet (sub-faces
+ *    a b c, a b d -> a c d, b c d) with the fans of tets around it on both sides, of
+ *    SL_FACET_FAN tets a side, else SL_FACET_FAN_LONG outside thin input triangles,
+ *    under the same rules; the sub-faces, their labels and the constraint sets follow.
  *  - smooth.c: every interior vertex (on no input edge or triangle, not an input point)
  *    whose star holds such a tet is moved to a double position that strictly raises the
  *    smallest dihedral angle of its star, accepted only when every tet of the star is
@@ -135,9 +139,9 @@ typedef struct tr_sliver_ctx {
    * it rebuilds and by the trials' (not owned; NULL: none) */
   struct tr_refine_memo *memo;
   /* the sub-faces, which the facet flips rewrite (tr_sliver_remove's; NULL: no facet
-     flips), and the input's facets: only a sub-face of a triangle that is a facet of its
-     own flips (a merged facet's sub-face is labelled with the triangle that holds its
-     centroid, which a flip may move; NULL: every triangle is) */
+     flips), and the input's facets: a flip stays within one, and a merged facet's
+     sub-faces are labelled again with the triangle that holds their centroid, which a
+     flip may move (NULL: every triangle is a facet of its own) */
   tr_subfaces *sub;
   const struct tr_facets *facets;
   /* per input triangle, 1 if a facet of its own with a corner under SL_FACET_THIN_CORNER
