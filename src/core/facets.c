@@ -35,8 +35,7 @@ int tr_plc_tri_axis(const struct tr_plc *plc, uint32_t t)
   return -1;
 }
 
-/* p in the closed input triangle t, projected along k. */
-static int in_tri_2d(const struct tr_plc *plc, uint32_t t, int k, const tr_point *p)
+int tr_plc_tri_holds(const struct tr_plc *plc, uint32_t t, int k, const tr_point *p)
 {
   const uint32_t *T = plc->tris + 3 * (size_t)t;
   tr_point a = tr_pt_d(plc->xyz + 3 * (size_t)T[0]), b = tr_pt_d(plc->xyz + 3 * (size_t)T[1]),
@@ -49,7 +48,7 @@ static int in_tri_2d(const struct tr_plc *plc, uint32_t t, int k, const tr_point
 uint32_t tr_facets_triangle_of(const tr_facets *F, const struct tr_plc *plc, uint32_t g, int k,
                                const tr_point *p, uint32_t hint)
 {
-  if (hint != NONE && (F->group[hint] != g || !in_tri_2d(plc, hint, k, p)))
+  if (hint != NONE && (F->group[hint] != g || !tr_plc_tri_holds(plc, hint, k, p)))
     hint = NONE;
   /* members are increasing, so the first that holds p is the smallest; the box test in
    * doubles only skips triangles that p's exact coordinates lie outside of */
@@ -69,7 +68,7 @@ uint32_t tr_facets_triangle_of(const tr_facets *F, const struct tr_plc *plc, uin
       }
       out = hi[j] < mn || lo[j] > mx;
     }
-    if (!out && in_tri_2d(plc, t, k, p))
+    if (!out && tr_plc_tri_holds(plc, t, k, p))
       return t;
   }
   return hint;

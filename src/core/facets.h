@@ -35,6 +35,9 @@ tr_status tr_facets_copy(tr_facets *dst, const tr_facets *src);
 int tr_plc_tri_axis(const struct tr_plc *plc, uint32_t t);
 
 struct tr_point;
+/* p, a point in input triangle t's plane, in the closed triangle, tested in the projection
+ * along axis k (non-degenerate for t). Exact. */
+int tr_plc_tri_holds(const struct tr_plc *plc, uint32_t t, int k, const struct tr_point *p);
 /* The smallest triangle of facet g (a group id) whose closed triangle holds p, a point in
  * g's plane, tested in the projection along axis k (non-degenerate for g, so for every
  * member); UINT32_MAX (TR_NONE) if none. hint, if not UINT32_MAX, is a member known or guessed to hold p:

@@ -226,10 +226,7 @@ int rf_in_input_triangle(const rf_ctx *c, uint32_t tri, const tr_point *p)
            d = tr_mesh_point(c->m, T[2]);
   if (tr_orient3d_p(&a, &b, &d, p) != 0)
     return 0;
-  int k = tri_drop(c, tri);
-  int s = tr_orient2d_proj_p(&a, &b, &d, k);
-  return s * tr_orient2d_proj_p(&a, &b, p, k) >= 0 && s * tr_orient2d_proj_p(&b, &d, p, k) >= 0 &&
-         s * tr_orient2d_proj_p(&d, &a, p, k) >= 0;
+  return tr_plc_tri_holds(c->plc, tri, tri_drop(c, tri), p);
 }
 
 uint32_t rf_facet_triangle_of(const rf_ctx *c, uint32_t g, const tr_point *p, uint32_t hint)

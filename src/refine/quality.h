@@ -64,7 +64,10 @@ tr_status tr_quality_thin_input(const struct tr_mesh *m, const struct tr_plc *pl
                                 int keep_edges, double corner, double degrees,
                                 tr_quality_thin *out);
 /* The thin triangles alone (out->below_on_thin 0); thin (NULL, or plc->ntris flags): 1 for
- * each. */
+ * each. tr_facets_thin_triangles: the same with plc's facets already built. */
+struct tr_facets;
+void tr_facets_thin_triangles(const struct tr_plc *plc, const struct tr_facets *fc,
+                              double corner, uint8_t *thin, tr_quality_thin *out);
 tr_status tr_plc_thin_triangles(const struct tr_plc *plc, int keep_edges, double corner,
                                 uint8_t *thin, tr_quality_thin *out);
 /* A short human-readable summary: three lines, each starting with prefix. */

@@ -39,22 +39,18 @@ static double smallest_corner(const struct tr_plc *plc, uint32_t t, uint32_t *at
   return acos(fmin(hi, 1)) * (180 / 3.14159265358979323846);
 }
 
-tr_status tr_plc_thin_triangles(const struct tr_plc *plc, int keep_edges, double corner,
-                                uint8_t *thin, tr_quality_thin *out)
+void tr_facets_thin_triangles(const struct tr_plc *plc, const tr_facets *fc, double corner,
+                              uint8_t *thin, tr_quality_thin *out)
 {
   out->triangles = 0;
   out->below_on_thin = 0;
   out->thinnest = out->thinnest_vertex = TR_NONE;
   out->thinnest_angle = 180;
-  if (!plc->ntris)
-    return TR_OK;
-  /* a triangle merged into a planar facet is no constraint: its corners bound nothing */
-  tr_facets fc;
-  TR_CHECK(tr_facets_build(plc, keep_edges, &fc));
   for (uint32_t t = 0; t < plc->ntris; t++) {
     if (thin)
       thin[t] = 0;
-    if (tr_facets_size(&fc, fc.group[t]) != 1)
+    /* a triangle merged into a planar facet is no constraint: its corners bound nothing */
+    if (tr_facets_size(fc, fc->group[t]) != 1)
       continue;
     uint32_t at;
     double lo = smallest_corner(plc, t, &at);
@@ -69,6 +65,15 @@ tr_status tr_plc_thin_triangles(const struct tr_plc *plc, int keep_edges, double
       out->thinnest_vertex = at;
     }
   }
+}
+
+tr_status tr_plc_thin_triangles(const struct tr_plc *plc, int keep_edges, double corner,
+                                uint8_t *thin, tr_quality_thin *out)
+{
+  tr_facets fc = {0};
+  if (plc->ntris)
+    TR_CHECK(tr_facets_build(plc, keep_edges, &fc));
+  tr_facets_thin_triangles(plc, &fc, corner, thin, out);
   tr_facets_free(&fc);
   return TR_OK;
 }

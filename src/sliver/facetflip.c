@@ -129,7 +129,8 @@ static int fan(const tr_sliver_ctx *c, uint32_t t, uint32_t a, uint32_t b, uint3
 /* The flip of edge ab of sub-face f = face k of t (c0 its third vertex): each side's fan
  * replaced by the best triangulation of its ring coned to a and b, the ring's ends c0 and
  * d0 joined (the new sub-faces a c0 d0, b c0 d0), if both sides' beat `floor` and the old
- * tets; *x filled, 1 returned. */
+ * tets; *x filled, 1 returned. With maxfan over SL_FACET_FAN only a flip with a longer
+ * fan on some side: the others were weighed with SL_FACET_FAN, against the same floor. */
 static int edge_flip(const tr_sliver_ctx *c, uint32_t t, int k, uint32_t f, uint32_t a,
                      uint32_t b, uint32_t c0, int maxfan, double floor, fcand *x,
                      tr_sliver_ring R[2])
@@ -149,6 +150,11 @@ static int edge_flip(const tr_sliver_ctx *c, uint32_t t, int k, uint32_t f, uint
   }
   x->sides = sides;
   if (g[0] == f)
+    return 0;
+  int longest = 0;
+  for (int s = 0; s < sides; s++)
+    longest = R[s].n - 1 > longest ? R[s].n - 1 : longest;
+  if (maxfan > SL_FACET_FAN && longest <= SL_FACET_FAN)
     return 0;
   const uint32_t d0 = R[0].r[R[0].n - 1];
   double oldmin = INFINITY, was = 0;

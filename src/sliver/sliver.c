@@ -344,7 +344,7 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
     if (s == TR_OK && !thin)
       s = tr_error(TR_ERR_NOMEM, "out of memory for %u triangle flags", plc->ntris);
     if (s == TR_OK)
-      s = tr_plc_thin_triangles(plc, par->keep.keep_edges, SL_FACET_THIN_CORNER, thin, &tq);
+      tr_facets_thin_triangles(plc, &facets, SL_FACET_THIN_CORNER, thin, &tq);
     c.thin = thin;
   }
   tr_refine_memo memo = {0};

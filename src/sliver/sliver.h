@@ -145,7 +145,7 @@ typedef struct tr_sliver_ctx {
   tr_subfaces *sub;
   const struct tr_facets *facets;
   /* per input triangle, 1 if a facet of its own with a corner under SL_FACET_THIN_CORNER
-     (tr_plc_thin_triangles; NULL: none is) */
+     (tr_facets_thin_triangles; NULL: none is) */
   const uint8_t *thin;
 } tr_sliver_ctx;
 
