@@ -75,6 +75,10 @@ typedef struct tr_refine_params {
   int flat_splits;     /* 1: a sub-segment opposite an angle over 120 degrees of a sub-face
                           is split at that vertex's foot, once (flat.c); 0: off.
                           tr_refine_stage sets it */
+  int wedge_grading;   /* 1: a bad tet exempt for a small input angle between two input
+                          edges still has the pieces of one that the other's points
+                          encroach split, out from the innermost (angles.c,
+                          rf_wedge_split); 0: off. tr_refine_stage sets it */
   int spacing_radii;   /* the circumcentre rule takes a vertex's current spacing (refine.c,
                           after_insert) instead of its insertion radius; the radius-edge
                           refinement ends (no error, bad tets left) at 20 points per input
@@ -95,6 +99,7 @@ typedef struct tr_refine_stats {
   uint64_t points;          /* points added, all kinds */
   uint64_t on_segments, on_facets, inside; /* by kind */
   uint64_t skipped_small_angle; /* bad tets exempt: quality forced by an input angle */
+  uint64_t wedge_splits;    /* pieces queued by wedge grading (par.wedge_grading) */
   uint64_t skipped_close;   /* bad tets left: circumcentre within a new vertex's
                                insertion radius (refine.c, too_close) */
   uint64_t skipped_other;   /* bad tets left: circumcentre blocked / refused */

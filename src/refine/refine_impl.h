@@ -96,6 +96,14 @@ typedef struct rf_ctx {
   uint32_t nssfoot;
 } rf_ctx;
 
+/* Squared distance of two points in doubles (a measure for the rules, never a decision
+ * of validity). */
+static inline double rf_dist2(const double *a, const double *b)
+{
+  return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+         (a[2] - b[2]) * (a[2] - b[2]);
+}
+
 /* ---- longs.c ---- */
 /* Sub-segment g is at least half its input edge (on the doubles). */
 int rf_piece_long(const rf_ctx *c, uint32_t g);
@@ -189,6 +197,10 @@ int rf_protected(const rf_ctx *c, int seg, uint32_t id, uint32_t v);
 /* The same for a point at pw on a constraint (kind RF_*, owner own) not inserted yet. */
 int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t own,
                     const double *pw);
+
+/* 1 iff sub-segment g, encroached by vertex v on a constraint meeting g's at a small
+ * angle, may still be split to grade the wedge between them (angles.c). */
+int rf_wedge_split(const rf_ctx *c, uint32_t g, uint32_t v);
 
 /* ---- subshape.c ---- */
 /* 1 iff sub-face f's radius-edge ratio exceeds bound, its shortest edge taken at least as

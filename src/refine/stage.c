@@ -135,6 +135,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   par.keep_surface = opt->keep_surface;
   par.flat_splits = 1; /* flat.c, which weighs its cost; after the pinned splits too under
                           --subface-quality (tr_sliver_bounds) */
+  par.wedge_grading = 1; /* angles.c */
   par.spacing_radii = opt->refine_spacing_radii;
   par.partial = opt->refine_partial;
   /* the smallest of all bounds sizes the default budget */

@@ -333,6 +333,7 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
   rp.ratio = c->keep.ratio;
   rp.max_volume = c->keep.max_volume;
   rp.keep_edges = c->keep.keep_edges;
+  rp.wedge_grading = c->keep.wedge_grading;
   rp.budget = SL_CAP_POINTS;
   rp.sub_exported = 1; /* tr_refine's or a hook's output (tr_sliver_remove) */
   rp.memo = c->memo;

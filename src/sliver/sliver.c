@@ -266,6 +266,7 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
   rp.max_volume = c->keep.max_volume;
   rp.keep_edges = c->keep.keep_edges;
   rp.flat_splits = c->keep.flat_splits;
+  rp.wedge_grading = c->keep.wedge_grading;
   rp.budget = TR_SLIVER_POINTS(m->nv); /* its own: the interior points may have used theirs */
   rp.sub_exported = 1; /* tr_refine's or a hook's output (tr_sliver_remove) */
   rp.memo = c->memo;

@@ -101,6 +101,7 @@ typedef struct tr_sliver_bounds {
   int flat_splits;             /* refinement's tr_refine_params.flat_splits */
   int keep_surface;            /* --keep-surface: no point on a constraint, so no pinned
                                   tets' points (sliver.c) and no cap trials (caps.c) */
+  int wedge_grading;           /* refinement's tr_refine_params.wedge_grading */
 } tr_sliver_bounds;
 
 typedef struct tr_sliver_params {

@@ -81,7 +81,7 @@ static void a_sliver_is_removed_by_a_flip(void)
   double before = min_dihedral(m);
   EXPECT(before < 5, "the sliver's smallest angle %g is not small", before);
   tr_subfaces none = {0, NULL, NULL};
-  tr_sliver_params par = {TR_SLIVER_FLIPS, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL, 0, 0, 0}};
+  tr_sliver_params par = {TR_SLIVER_FLIPS, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL, 0, 0, 0, 0}};
   tr_sliver_stats st;
   tr_status s = tr_sliver_remove(m, &none, NULL, 8, &par, &st);
   EXPECT(s == TR_OK, "sliver stage: %s", tr_last_error());
@@ -112,7 +112,7 @@ static void constraints_are_kept_and_their_vertices_stay(void)
   double x0[36];
   memcpy(x0, m->xyz, sizeof x0);
   double before = min_dihedral(m);
-  tr_sliver_params par = {TR_SLIVER_SMOOTH, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL, 0, 0, 0}};
+  tr_sliver_params par = {TR_SLIVER_SMOOTH, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL, 0, 0, 0, 0}};
   tr_sliver_stats st;
   tr_status s = tr_sliver_remove(m, &sub, vkind, 8, &par, &st);
   EXPECT(s == TR_OK, "sliver stage: %s", tr_last_error());
@@ -462,17 +462,19 @@ static void a_beam_on_thin_side_triangles_is_no_longer_pinned_and_rises_over_tet
  * input corner fixes the worst tet's angles (its other vertices on the corner's input
  * edges, so a split of its own edges makes a congruent tet again), a split of another
  * input edge at that corner opens it: star_steiner_cluster_s3_1477.off rises from 0.036
- * degrees (the worst tet's own pieces only) over 0.5, star_rounding_budget.off from 3.81
- * over 4.0 (over 4.2 before the tet sort of order.c and the spacing radii of refine.c,
- * which give 4.036), every mesh through the mesh and exact conformity validators
- * (tmesh.h). */
+ * degrees (the worst tet's own pieces only) over 0.5, every mesh through the mesh and
+ * exact conformity validators (tmesh.h). star_rounding_budget.off was a second case (3.81
+ * -> over 4.0); since refinement's wedge grading (src/refine/angles.c) its worst tet is
+ * one between the shells at 1/16 and 1/8 around input vertex 52, whose edges to 37 and 53
+ * meet at 1.8 degrees, at 3.615 degrees with or without the wide trials (measured with
+ * SL_POLISH_WIDE_TRIALS at 0), so it no longer shows them (its tets under 10 degrees went
+ * from 45 to 35 in the CLI's run). */
 static void a_corner_tet_rises_with_a_split_of_another_input_edge_at_its_corner(const char *dir)
 {
   static const struct {
     const char *file;
     double above;
-  } cases[] = {{"regressions/star_steiner_cluster_s3_1477.off", 0.5},
-               {"star_rounding_budget.off", 4.0}};
+  } cases[] = {{"regressions/star_steiner_cluster_s3_1477.off", 0.5}};
   for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", dir, cases[i].file);
@@ -561,7 +563,7 @@ static void a_tet_pinned_between_sub_faces_gets_points_on_them(void)
   EXPECT(s == TR_OK && rs.points == 0, "pinned: an empty list added points or failed");
   const uint32_t flat[4] = {0, 1, 2, 3};
   EXPECT(has_tet(m, flat), "pinned: the flat tet is not there to begin with");
-  tr_sliver_params par = {TR_SLIVER_INSERT, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, plc, 0, 0, 0}};
+  tr_sliver_params par = {TR_SLIVER_INSERT, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, plc, 0, 0, 0, 0}};
   tr_sliver_stats st;
   s = tr_sliver_remove(m, &sub, NULL, 4, &par, &st);
   EXPECT(s == TR_OK, "pinned: sliver stage: %s", tr_last_error());
