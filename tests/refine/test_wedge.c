@@ -4,7 +4,7 @@
  * facet of its own, its edges at the apex input edges). Refinement alone (tr_refine after
  * the recovery and outer colouring, no sliver stage) under R = 1.414, once with wedge
  * grading and once without: with 7.5-degree corners (N = 48), grading splits pieces across
- * the wedges (counted) and leaves fewer tets under 10 degrees (140 against 153). The
+ * the wedges (counted) and leaves fewer tets under 10 degrees (129 against 153). The
  * rule's 3-degree floor has no test here: on a cone every pair of rim edges counts
  * (2.4-degree corners still have 4.8-degree pairs), and on a needle or a fin whose edges
  * all meet under 3 degrees the rule found nothing to split even without the floor. Every mesh goes through the mesh validator and the exact conformity validator, with the
