@@ -25,7 +25,9 @@
  * Termination: sub-segments next to an input vertex are split on concentric shells; a
  * bad tet whose shortest edge joins points on two input edges that meet at an input
  * vertex under less than 60 degrees is left as it is (its quality is forced by that
- * angle); a circumcentre closer to a vertex of its cavity than that vertex's insertion
+ * angle), but for wedge grading (angles.c), which splits pieces of such edges only away
+ * from that vertex and only while longer than a quarter of their distance from it; a
+ * circumcentre closer to a vertex of its cavity than that vertex's insertion
  * radius (its distance to its nearest vertex when refinement added it; with spacing_radii,
  * that radius shrunk by the points put next to the vertex since, and the radius-edge
  * refinement ends at a point cap, after which only tets over a volume bound are refined,
