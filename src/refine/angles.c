@@ -13,7 +13,7 @@
  * encroaches is split when it does not end at V and y - x > x / 4 (rf_wedge_split). Both edges are then split at radii a step of at most
  * about 1.25 apart where the tets between them are bad, so the sub-faces spanning the
  * wedge there are no longer caps with their small corners at split points, which every
- * tet standing on them inherits (rotor_small.off: 0.63% of tets under 10 degrees -> 0.48%).
+ * tet standing on them inherits (rotor_small.off: 0.63% of tets under 10 degrees -> 0.46%).
  * It cannot descend: the piece at V is never split by it, so its points lie beyond the
  * innermost point of their edge, each piece it makes is longer than x / 16 (the split
  * point is within a quarter of the middle), and an edge of length L whose innermost point
