@@ -10,8 +10,9 @@
  * of 3 degrees or more, for the bad tets that refinement leaves so (refine.c: exempt with
  * a dihedral angle under 10 degrees, or with a circumcentre it cannot use): a piece [x, y]
  * of one edge (x, y its ends' distances from V) that a vertex of the tet on the other
- * encroaches is split when it does not end at V and y - x > x / 4 (rf_wedge_split). Both edges are then split at radii a step of at most
- * about 1.25 apart where the tets between them are bad, so the sub-faces spanning the
+ * encroaches is split when it does not end at V and y - x > x / 4 (rf_wedge_split).
+ * Both edges are then split at radii a step of at most about 1.25 apart where the tets
+ * between them are bad, so the sub-faces spanning the
  * wedge there are no longer caps with their small corners at split points, which every
  * tet standing on them inherits (rotor_small.off: 0.63% of tets under 10 degrees -> 0.46%).
  * It cannot descend: the piece at V is never split by it, so its points lie beyond the

@@ -88,6 +88,38 @@ static tr_status push_tet(rf_ctx *c, uint32_t t)
   return TR_OK;
 }
 
+/* The sub-segments of t that a vertex of t off them encroaches, queued for splitting
+ * (*pushed = 1 when one was; left as it was otherwise): with wedge_only 0 each one not
+ * protected near a small input angle, or protected but one that wedge grading may split
+ * (angles.c, rf_wedge_split); with wedge_only 1 only the ones wedge grading may split.
+ * Those wedge grading takes are counted in st->wedge_splits. */
+static tr_status encroached_segments(rf_ctx *c, uint32_t t, int wedge_only, int *pushed)
+{
+  const uint32_t *v = c->m->tv + 4 * (size_t)t;
+  for (int e = 0; e < 6; e++) {
+    uint32_t g = rf_subseg_of(c, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]]);
+    if (g == TR_NONE || c->ssnosplit[g])
+      continue;
+    tr_point a = tr_mesh_point(c->m, c->ssv[2 * (size_t)g]),
+             b = tr_mesh_point(c->m, c->ssv[2 * (size_t)g + 1]);
+    for (int k = 0; k < 4; k++) {
+      if (k == tr_edge_vtx[e][0] || k == tr_edge_vtx[e][1])
+        continue;
+      tr_point p = tr_mesh_point(c->m, v[k]);
+      if (!rf_in_diametral(&a, &b, &p))
+        continue;
+      int wedge = wedge_only || rf_protected(c, 1, g, v[k]);
+      if (wedge && !(c->par.wedge_grading && rf_wedge_split(c, g, v[k])))
+        continue;
+      TR_CHECK(tr_u32buf_push(&c->qseg, g));
+      c->st->wedge_splits += (uint64_t)wedge;
+      *pushed = 1;
+      break;
+    }
+  }
+  return TR_OK;
+}
+
 /* The fallback for a bad tet whose circumcentre cannot be used (it lies beyond a sub-face,
  * on a constraint, or encroaches a piece that may not be split): the constraints of t its
  * own vertices encroach, each sub-face by the vertex opposite it, each sub-segment by the
@@ -111,28 +143,7 @@ static tr_status own_encroached(rf_ctx *c, uint32_t t, int *pushed)
       *pushed = 1;
     }
   }
-  for (int e = 0; e < 6; e++) {
-    uint32_t g = rf_subseg_of(c, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]]);
-    if (g == TR_NONE || c->ssnosplit[g])
-      continue;
-    tr_point a = tr_mesh_point(c->m, c->ssv[2 * (size_t)g]),
-             b = tr_mesh_point(c->m, c->ssv[2 * (size_t)g + 1]);
-    for (int k = 0; k < 4; k++) {
-      if (k == tr_edge_vtx[e][0] || k == tr_edge_vtx[e][1])
-        continue;
-      tr_point p = tr_mesh_point(c->m, v[k]);
-      if (!rf_in_diametral(&a, &b, &p))
-        continue;
-      int wedge = rf_protected(c, 1, g, v[k]);
-      if (wedge && !(c->par.wedge_grading && rf_wedge_split(c, g, v[k])))
-        continue;
-      TR_CHECK(tr_u32buf_push(&c->qseg, g));
-      c->st->wedge_splits += (uint64_t)wedge;
-      *pushed = 1;
-      break;
-    }
-  }
-  return TR_OK;
+  return encroached_segments(c, t, 0, pushed);
 }
 
 static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid);
@@ -289,24 +300,7 @@ static tr_status wedge_encroached(rf_ctx *c, uint32_t t, int *pushed)
                             m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &r, &w) <
         RF_WEDGE_DIHEDRAL))
     return TR_OK;
-  for (int e = 0; e < 6; e++) {
-    uint32_t g = rf_subseg_of(c, v[tr_edge_vtx[e][0]], v[tr_edge_vtx[e][1]]);
-    if (g == TR_NONE || c->ssnosplit[g])
-      continue;
-    tr_point a = tr_mesh_point(m, c->ssv[2 * (size_t)g]), b = tr_mesh_point(m, c->ssv[2 * (size_t)g + 1]);
-    for (int k = 0; k < 4; k++) {
-      if (k == tr_edge_vtx[e][0] || k == tr_edge_vtx[e][1])
-        continue;
-      tr_point p = tr_mesh_point(m, v[k]);
-      if (rf_wedge_split(c, g, v[k]) && rf_in_diametral(&a, &b, &p)) {
-        TR_CHECK(tr_u32buf_push(&c->qseg, g));
-        c->st->wedge_splits++;
-        *pushed = 1;
-        break;
-      }
-    }
-  }
-  return TR_OK;
+  return encroached_segments(c, t, 1, pushed);
 }
 
 static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
