@@ -12,11 +12,15 @@
 /* The split point *q, its cavity built, into the mesh (which then owns it: *q = NULL) and
  * inserted (*ok from rf_insert). Past the bit-size guard of tr_mesh_add_constructed
  * (TR_ERR_UNSUPPORTED) the cavity is released and *ok = 0: the piece is left as it is. */
-static tr_status insert_split_point(rf_ctx *c, tr_qpoint **q, uint32_t *pid, int *ok)
+static tr_status insert_split_point(rf_ctx *c, tr_qpoint **q, int kind, uint32_t *pid,
+                                    int *ok)
 {
   tr_status st = tr_mesh_add_constructed(c->m, *q, pid);
   if (st == TR_OK) {
     *q = NULL;
+    /* its kind before its sub-faces and sub-segments exist (rf_subface_of's shortcut) */
+    TR_CHECK(rf_vertex_room(c, *pid + 1));
+    c->vkind[*pid] = (uint8_t)kind;
     return rf_insert(c, *pid, ok);
   }
   if (st == TR_ERR_UNSUPPORTED) {
@@ -42,7 +46,7 @@ tr_status rf_split_segment(rf_ctx *c, uint32_t g)
   tr_status st = rf_cavity(c, t, &p, m->nv, 1, &ok);
   uint32_t pid = TR_NONE;
   if (st == TR_OK && ok)
-    st = insert_split_point(c, &q, &pid, &ok);
+    st = insert_split_point(c, &q, RF_SEG, &pid, &ok);
   c->split_seg = TR_NONE;
   if (q) {
     tr_qpoint_clear(q);
@@ -133,7 +137,7 @@ tr_status rf_split_facet(rf_ctx *c, uint32_t f)
     st = tr_u32buf_push(&c->qface, f);
     ok = -1;
   } else if (st == TR_OK && ok)
-    st = insert_split_point(c, &q, &pid, &ok);
+    st = insert_split_point(c, &q, RF_FACET, &pid, &ok);
   if (q) {
     tr_qpoint_clear(q);
     free(q);
