@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "color.h"
+#include "core/vtmap.h"
 #include "flage.h"
 
 typedef struct {
@@ -30,77 +31,24 @@ static void sort4(uint32_t *s)
       }
 }
 
-/* The sub-faces by vertex triple: open addressing, each slot holding the sorted triple and
- * the sub-face's id, or for a triple listed more than once FSLOT_RUN | the index of its
- * first key in the sorted keys (the others follow it there), so a probe touches one cache
- * line and a hit needs no key; a fixed hash, so no run depends on addresses. Every tet
- * face is looked up: a binary search over the keys was a tenth of the time of a mesh
- * without Steiner points. */
+/* The sub-faces by vertex triple in the shared vertex-tuple map (core/vtmap.h), with its
+ * filter (most faces of the mesh are no sub-face): the value is the sub-face's id, or for
+ * a triple listed more than once FSLOT_RUN | the index of its first key in the sorted
+ * keys (the others follow it there). Every tet face is looked up: a binary search over
+ * the keys was a tenth of the time of a mesh without Steiner points. */
 #define FSLOT_RUN 0x80000000u
-typedef struct {
-  uint32_t k[3], first; /* first == TR_NONE: empty */
-} fslot;
 
-typedef struct {
-  const fkey *keys;
-  fslot *slot;
-  uint32_t mask;
-  uint64_t *bits; /* one bit per key's hash in a table of 16 bits per key: most faces of
-                     the mesh are not sub-faces, and the bit table, unlike the slots,
-                     stays in cache */
-  uint32_t bmask;
-} fhash;
-
-static uint32_t fhash_start(const fhash *h, const uint32_t s[3])
+static tr_status build_faces(tr_vtmap *h, const fkey *keys, uint32_t n)
 {
-  return (uint32_t)(tr_hash3(s) >> 32) & h->mask;
-}
-
-static uint32_t fhash_bit(const fhash *h, const uint32_t s[3])
-{
-  return (uint32_t)tr_hash3(s) & h->bmask;
-}
-
-/* The slot's value for triple s (see fslot), TR_NONE if s is no sub-face. */
-static uint32_t find_face(const fhash *h, const uint32_t s[3])
-{
-  uint32_t b = fhash_bit(h, s);
-  if (!(h->bits[b >> 6] & (1ull << (b & 63))))
-    return TR_NONE;
-  for (uint32_t i = fhash_start(h, s);; i = (i + 1) & h->mask) {
-    const fslot *e = h->slot + i;
-    if (e->first == TR_NONE || (e->k[0] == s[0] && e->k[1] == s[1] && e->k[2] == s[2]))
-      return e->first;
-  }
-}
-
-static tr_status fhash_build(fhash *h, const fkey *keys, uint32_t n)
-{
-  uint32_t cap = 16;
-  while (cap < 2 * (uint64_t)n)
-    cap *= 2;
   if (n >= FSLOT_RUN - 1)
     return tr_error(TR_ERR_NOMEM, "%u sub-faces: more than the coloring can index", n);
-  h->keys = keys;
-  h->mask = cap - 1;
-  uint32_t nb = 64;
-  while (nb < 16 * (uint64_t)n)
-    nb *= 2;
-  h->bmask = nb - 1;
-  if (!(h->slot = malloc(sizeof *h->slot * cap)) || !(h->bits = calloc(nb / 64, 8)))
-    return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-face keys", n);
-  memset(h->slot, 0xff, sizeof *h->slot * cap);
+  TR_CHECK(tr_vtmap_reserve(h, 3, n));
+  TR_CHECK(tr_vtmap_filter(h));
   for (uint32_t j = 0; j < n; j++) {
     if (j && memcmp(keys[j].k, keys[j - 1].k, sizeof keys[j].k) == 0)
       continue;
-    uint32_t i = fhash_start(h, keys[j].k);
-    while (h->slot[i].first != TR_NONE)
-      i = (i + 1) & h->mask;
-    memcpy(h->slot[i].k, keys[j].k, sizeof keys[j].k);
     int run = j + 1 < n && memcmp(keys[j].k, keys[j + 1].k, sizeof keys[j].k) == 0;
-    h->slot[i].first = run ? FSLOT_RUN | j : keys[j].id;
-    uint32_t b = fhash_bit(h, keys[j].k);
-    h->bits[b >> 6] |= 1ull << (b & 63);
+    TR_CHECK(tr_vtmap_put(h, 3, keys[j].k, run ? FSLOT_RUN | j : keys[j].id, NULL));
   }
   return TR_OK;
 }
@@ -166,7 +114,7 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
   uint8_t *cflag = NULL;  /* per component: 1 ghost, 2 inner vote, 4 outer vote */
   ckey *ck = NULL;
   uint32_t *rid = NULL;
-  fhash fh = {NULL, NULL, 0, NULL, 0};
+  tr_vtmap fh = {0};
   tr_status st = TR_OK;
   if (!keys || !cmask || !seen || !comp || !queue) {
     st = tr_error(TR_ERR_NOMEM, "out of memory coloring %u tets", nt);
@@ -191,7 +139,7 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
     keys[nk++].id = j;
   }
   qsort(keys, nk, sizeof *keys, cmp_fkey);
-  if ((st = fhash_build(&fh, keys, nk)) != TR_OK)
+  if ((st = build_faces(&fh, keys, nk)) != TR_OK)
     goto done;
   /* Constraint faces, marked on both sides; the FLAGE votes are taken after the
    * components are known. */
@@ -214,8 +162,8 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
       for (int i = 0; i < 3; i++)
         s[i] = m->tv[4 * (size_t)t + tr_face_vtx[k][i]];
       tr_sort3(s);
-      uint32_t f = find_face(&fh, s);
-      if (f == TR_NONE)
+      uint32_t f = tr_vtmap_get(&fh, 3, s);
+      if (f == TR_VTMAP_NONE)
         continue;
       if (!(f & FSLOT_RUN) && seen[f] == TR_NONE)
         seen[f] = real;
@@ -378,8 +326,7 @@ tr_status tr_outer_color_ex(struct tr_mesh *m, const tr_subfaces *sub, int keep_
   }
   *nregions = ni;
 done:
-  free(fh.slot);
-  free(fh.bits);
+  tr_vtmap_free(&fh);
   free(keys);
   free(cmask);
   if (seen != subtet)
