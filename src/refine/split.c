@@ -19,7 +19,11 @@ static tr_status insert_split_point(rf_ctx *c, tr_qpoint **q, int kind, uint32_t
   if (st == TR_OK) {
     *q = NULL;
     /* its kind before its sub-faces and sub-segments exist (rf_subface_of's shortcut) */
-    TR_CHECK(rf_vertex_room(c, *pid + 1));
+    st = rf_vertex_room(c, *pid + 1);
+    if (st != TR_OK) {
+      rf_cavity_release(c);
+      return st;
+    }
     c->vkind[*pid] = (uint8_t)kind;
     return rf_insert(c, *pid, ok);
   }
