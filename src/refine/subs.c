@@ -14,6 +14,18 @@ static uint8_t kind_of(const rf_ctx *c, uint32_t v)
   return v < c->capv ? c->vkind[v] : RF_INPUT;
 }
 
+static uint32_t live_face(const rf_ctx *c, uint32_t a, uint32_t b, uint32_t d)
+{
+  uint32_t f = rf_face_get(&c->fm, a, b, d);
+  return f != TR_NONE && !c->sfdead[f] ? f : TR_NONE;
+}
+
+static uint32_t live_seg(const rf_ctx *c, uint32_t u, uint32_t v)
+{
+  uint32_t s = tr_edgeset_get(&c->es, u, v);
+  return s != TR_EDGESET_NONE && !c->ssdead[s] ? s : TR_NONE;
+}
+
 /* Every vertex of a live sub-face lies on a constraint (build_tables gives the kinds, and
  * a split point has its kind before its insertion makes sub-faces: split.c), while most
  * faces a cavity walks have an interior vertex: those need no key and no probe (the
@@ -21,12 +33,10 @@ static uint8_t kind_of(const rf_ctx *c, uint32_t v)
 uint32_t rf_subface_of(const rf_ctx *c, uint32_t a, uint32_t b, uint32_t d)
 {
   if (kind_of(c, a) == RF_FREE || kind_of(c, b) == RF_FREE || kind_of(c, d) == RF_FREE) {
-    assert(rf_face_get(&c->fm, a, b, d) == TR_NONE ||
-           c->sfdead[rf_face_get(&c->fm, a, b, d)]);
+    assert(live_face(c, a, b, d) == TR_NONE);
     return TR_NONE;
   }
-  uint32_t f = rf_face_get(&c->fm, a, b, d);
-  return f != TR_NONE && !c->sfdead[f] ? f : TR_NONE;
+  return live_face(c, a, b, d);
 }
 
 /* Likewise a live sub-segment's ends are input vertices or split points of input edges. */
@@ -34,12 +44,10 @@ uint32_t rf_subseg_of(const rf_ctx *c, uint32_t u, uint32_t v)
 {
   uint8_t ku = kind_of(c, u), kv = kind_of(c, v);
   if (ku == RF_FREE || ku == RF_FACET || kv == RF_FREE || kv == RF_FACET) {
-    assert(tr_edgeset_get(&c->es, u, v) == TR_EDGESET_NONE ||
-           c->ssdead[tr_edgeset_get(&c->es, u, v)]);
+    assert(live_seg(c, u, v) == TR_NONE);
     return TR_NONE;
   }
-  uint32_t s = tr_edgeset_get(&c->es, u, v);
-  return s != TR_EDGESET_NONE && !c->ssdead[s] ? s : TR_NONE;
+  return live_seg(c, u, v);
 }
 
 static tr_status grow_arrays(void **arrs, const size_t *sizes, int n, uint32_t *cap,
