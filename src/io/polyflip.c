@@ -22,6 +22,7 @@
  * number of flips is also capped so that the work stays bounded whatever the rounding
  * does. Everything is sequential over arrays in a fixed order: same input, same output. */
 #include "polyflip.h"
+#include "soup.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -136,25 +137,6 @@ static tr_status pair_up(const tr_polyflip_in *in, uint32_t *nb)
   return TR_OK;
 }
 
-typedef struct {
-  uint32_t *a;
-  size_t n, cap;
-} stack;
-
-static tr_status push(stack *s, uint32_t h)
-{
-  if (s->n == s->cap) {
-    size_t c = s->cap ? 2 * s->cap : 64;
-    uint32_t *q = realloc(s->a, sizeof *q * c);
-    if (!q)
-      return tr_error(TR_ERR_NOMEM, "out of memory improving a polygon's triangulation");
-    s->a = q;
-    s->cap = c;
-  }
-  s->a[s->n++] = h;
-  return TR_OK;
-}
-
 tr_status tr_polyflip(tr_polyflip_in *in, uint32_t *nflips)
 {
   uint32_t nt = in->ntri, *T = in->tri, done = 0;
@@ -164,7 +146,7 @@ tr_status tr_polyflip(tr_polyflip_in *in, uint32_t *nflips)
     return TR_OK;
   uint32_t *nb = malloc(sizeof *nb * 3 * (size_t)nt);
   double *q = malloc(sizeof *q * nt);
-  stack s = {0};
+  tr_u32vec s = {0}; /* half-edges to test */
   tr_status st = TR_OK;
   if (!nb || !q) {
     st = tr_error(TR_ERR_NOMEM, "out of memory improving a polygon's triangulation");
@@ -176,7 +158,7 @@ tr_status tr_polyflip(tr_polyflip_in *in, uint32_t *nflips)
   /* Pushed in reverse so that the first diagonal of the first triangle is tried first. */
   for (uint32_t h = 3 * nt; h-- > 0 && st == TR_OK;)
     if (nb[h] != NONE && h < nb[h])
-      st = push(&s, h);
+      st = tr_u32vec_push(&s, h);
   /* Lawson's flips take O(n^2) in the worst case; the cap only bounds what rounding in
    * the measure could add to that. */
   uint64_t cap = (uint64_t)nt * nt + 16 * (uint64_t)nt;
@@ -218,13 +200,13 @@ tr_status tr_polyflip(tr_polyflip_in *in, uint32_t *nflips)
     uint32_t again[4] = {3 * t, 3 * t + 2, 3 * u, 3 * u + 1};
     for (int i = 0; i < 4 && st == TR_OK; i++)
       if (nb[again[i]] != NONE)
-        st = push(&s, again[i]);
+        st = tr_u32vec_push(&s, again[i]);
   }
   if (nflips)
     *nflips = done;
 out:
   free(nb);
   free(q);
-  free(s.a);
+  tr_u32vec_free(&s);
   return st;
 }

@@ -127,32 +127,13 @@ static int in_cone(const ptab *t, uint32_t a, uint32_t c, uint32_t b, uint32_t h
   return s1 > 0 && s2 > 0; /* straight corner: h must be on the interior side */
 }
 
-typedef struct {
-  uint32_t *v; /* local vertex per position */
-  uint32_t n, cap;
-} poly;
-
-static tr_status poly_push(poly *P, uint32_t x)
-{
-  if (P->n == P->cap) {
-    uint32_t c = P->cap ? 2 * P->cap : 32;
-    uint32_t *q = realloc(P->v, sizeof *q * c);
-    if (!q)
-      return tr_error(TR_ERR_NOMEM, "out of memory triangulating a polygon");
-    P->v = q;
-    P->cap = c;
-  }
-  P->v[P->n++] = x;
-  return TR_OK;
-}
-
 /* Visibility of segment (x,y) against every edge of polygon P and of the pending holes.
  * Edges touching x or y's point are skipped: their relation is decided by the cones. */
-static int visible(const ptab *t, const poly *P, uint32_t *const *hl, const uint32_t *hn,
+static int visible(const ptab *t, const tr_u32vec *P, uint32_t *const *hl, const uint32_t *hn,
                    uint32_t nh, uint32_t x, uint32_t y)
 {
   for (uint32_t i = 0; i < P->n; i++) {
-    uint32_t a = P->v[i], b = P->v[(i + 1) % P->n];
+    uint32_t a = P->a[i], b = P->a[(i + 1) % P->n];
     if (t->id[a] == t->id[x] || t->id[b] == t->id[x] || t->id[a] == t->id[y] ||
         t->id[b] == t->id[y])
       continue;
@@ -171,7 +152,7 @@ static int visible(const ptab *t, const poly *P, uint32_t *const *hl, const uint
   return 1;
 }
 
-static tr_status bridge(const ptab *t, poly *P, uint32_t **hl, uint32_t *hn, uint32_t nh,
+static tr_status bridge(const ptab *t, tr_u32vec *P, uint32_t **hl, uint32_t *hn, uint32_t nh,
                         const char *what)
 {
   /* hl[0] is joined now; hl[1..] are the holes still pending. */
@@ -179,7 +160,7 @@ static tr_status bridge(const ptab *t, poly *P, uint32_t **hl, uint32_t *hn, uin
   for (uint32_t hi = 0; hi < m; hi++) {
     uint32_t h = H[hi], hp = H[(hi + m - 1) % m], hx = H[(hi + 1) % m];
     for (uint32_t j = 0; j < P->n; j++) {
-      uint32_t c = P->v[j], cp = P->v[(j + P->n - 1) % P->n], cx = P->v[(j + 1) % P->n];
+      uint32_t c = P->a[j], cp = P->a[(j + P->n - 1) % P->n], cx = P->a[(j + 1) % P->n];
       if (!in_cone(t, cp, c, cx, h) || !in_cone(t, hp, h, hx, c))
         continue;
       if (!visible(t, P, hl, hn, nh, h, c))
@@ -187,11 +168,11 @@ static tr_status bridge(const ptab *t, poly *P, uint32_t **hl, uint32_t *hn, uin
       /* P[0..j], H[hi..], H[..hi], h, c, P[j+1..] */
       uint32_t extra = m + 2, old = P->n;
       for (uint32_t k = 0; k < extra; k++)
-        TR_CHECK(poly_push(P, 0));
-      memmove(P->v + j + 1 + extra, P->v + j + 1, sizeof *P->v * (old - j - 1));
+        TR_CHECK(tr_u32vec_push(P, 0));
+      memmove(P->a + j + 1 + extra, P->a + j + 1, sizeof *P->a * (old - j - 1));
       for (uint32_t k = 0; k <= m; k++)
-        P->v[j + 1 + k] = H[(hi + k) % m];
-      P->v[j + 1 + m + 1] = c;
+        P->a[j + 1 + k] = H[(hi + k) % m];
+      P->a[j + 1 + m + 1] = c;
       return TR_OK;
     }
   }
@@ -200,7 +181,7 @@ static tr_status bridge(const ptab *t, poly *P, uint32_t **hl, uint32_t *hn, uin
 }
 
 /* Appends the triangles as local vertices, counterclockwise in t. */
-static tr_status earclip(const ptab *t, poly *P, tr_u32vec *out, const char *what)
+static tr_status earclip(const ptab *t, tr_u32vec *P, tr_u32vec *out, const char *what)
 {
   uint32_t n = P->n;
   uint32_t *prev = malloc(sizeof *prev * n), *next = malloc(sizeof *next * n);
@@ -217,14 +198,14 @@ static tr_status earclip(const ptab *t, poly *P, tr_u32vec *out, const char *wha
   uint32_t cur = 0, left = n, fails = 0;
   while (left > 3 && st == TR_OK) {
     uint32_t a = prev[cur], b = next[cur];
-    uint32_t va = P->v[a], vc = P->v[cur], vb = P->v[b];
+    uint32_t va = P->a[a], vc = P->a[cur], vb = P->a[b];
     int ear = o2(t, va, vc, vb) > 0;
     if (ear) {
       for (uint32_t k = next[b]; k != a; k = next[k]) {
-        uint32_t q = P->v[k];
+        uint32_t q = P->a[k];
         if (t->id[q] == t->id[va] || t->id[q] == t->id[vb] || t->id[q] == t->id[vc])
           continue;
-        if (o2(t, P->v[prev[k]], q, P->v[next[k]]) > 0)
+        if (o2(t, P->a[prev[k]], q, P->a[next[k]]) > 0)
           continue; /* a strictly convex vertex cannot be the first thing inside an ear */
         if (o2(t, va, vc, q) >= 0 && o2(t, vc, vb, q) >= 0 && o2(t, vb, va, q) >= 0) {
           ear = 0;
@@ -252,10 +233,10 @@ static tr_status earclip(const ptab *t, poly *P, tr_u32vec *out, const char *wha
   }
   if (st == TR_OK) {
     uint32_t a = prev[cur], b = next[cur];
-    if (o2(t, P->v[a], P->v[cur], P->v[b]) <= 0)
+    if (o2(t, P->a[a], P->a[cur], P->a[b]) <= 0)
       st = tr_error(TR_ERR_INPUT, "%s: polygon is self-overlapping or degenerate", what);
     else {
-      uint32_t tri[3] = {P->v[a], P->v[cur], P->v[b]};
+      uint32_t tri[3] = {P->a[a], P->a[cur], P->a[b]};
       for (int k = 0; k < 3 && st == TR_OK; k++)
         st = tr_u32vec_push(out, tri[k]);
     }
@@ -349,7 +330,7 @@ tr_status tr_triangulate_facet(const double *xyz, const uint32_t *idx, const uin
   uint32_t *lidx = malloc(sizeof *lidx * nidx);
   char *is_hole = calloc(nloops, 1);
   uint32_t *side = malloc(sizeof *side * nidx);
-  poly P = {0};
+  tr_u32vec P = {0}; /* the working polygon: local vertex per position */
   tr_u32vec loc = {0};
   if (!t.p || !t.id || !L || !Ln || !lidx || !is_hole || !side) {
     st = tr_error(TR_ERR_NOMEM, "out of memory triangulating %s", what);
@@ -411,7 +392,7 @@ tr_status tr_triangulate_facet(const double *xyz, const uint32_t *idx, const uin
       reverse(L[l], Ln[l]);
   }
   for (uint32_t i = 0; i < Ln[0] && st == TR_OK; i++)
-    st = poly_push(&P, L[0][i]);
+    st = tr_u32vec_push(&P, L[0][i]);
   for (uint32_t l = 1; l < nloops && st == TR_OK; l++)
     st = bridge(&t, &P, L + l, Ln + l, nloops - l, what);
   if (st == TR_OK)
@@ -428,7 +409,7 @@ tr_status tr_triangulate_facet(const double *xyz, const uint32_t *idx, const uin
 done:
   tr_u32vec_free(&loc);
   free(side);
-  free(P.v);
+  tr_u32vec_free(&P);
   free(t.p);
   free(t.id);
   free(L);
