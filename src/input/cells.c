@@ -33,6 +33,7 @@
 
 #include "classify.h"
 #include "construct.h"
+#include "core/box.h"
 #include "core/edgesort.h"
 #include "predicates.h"
 #include "validate.h"
@@ -522,19 +523,14 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
     c.lo[d] = nt ? P(plc, plc->tris[0])[d] : 0;
     c.hi[d] = c.lo[d];
   }
-  for (uint32_t t = 0; t < nt; t++)
+  for (uint32_t t = 0; t < nt; t++) {
+    double *lo = c.box + 6 * (size_t)t, *hi = lo + 3;
+    tr_box_of(plc->xyz, plc->tris + 3 * (size_t)t, 3, lo, hi);
     for (int d = 0; d < 3; d++) {
-      double lo = P(plc, plc->tris[3 * (size_t)t])[d], hi = lo;
-      for (int k = 1; k < 3; k++) {
-        double x = P(plc, plc->tris[3 * (size_t)t + k])[d];
-        lo = x < lo ? x : lo;
-        hi = x > hi ? x : hi;
-      }
-      c.box[6 * (size_t)t + d] = lo;
-      c.box[6 * (size_t)t + 3 + d] = hi;
-      c.lo[d] = lo < c.lo[d] ? lo : c.lo[d];
-      c.hi[d] = hi > c.hi[d] ? hi : c.hi[d];
+      c.lo[d] = lo[d] < c.lo[d] ? lo[d] : c.lo[d];
+      c.hi[d] = hi[d] > c.hi[d] ? hi[d] : c.hi[d];
     }
+  }
   c.len = 2 * ((c.hi[0] - c.lo[0]) + (c.hi[1] - c.lo[1]) + (c.hi[2] - c.lo[2])) + 1;
   for (int d = 0; d < 3; d++)
     if (!(c.len + c.hi[d] - c.lo[d] < 1e300) || c.hi[d] > 1e300 || c.lo[d] < -1e300) {

@@ -24,6 +24,7 @@
 #include <stdlib.h>
 
 #include "classify.h"
+#include "core/box.h"
 #include "predicates.h"
 #include "validate.h"
 
@@ -499,16 +500,7 @@ static tr_status run(sweep *sw, int method)
   }
   s.hi = s.lo + 3 * (size_t)n;
   for (uint32_t t = 0; t < n; t++)
-    for (int d = 0; d < 3; d++) {
-      double lo = P(plc, plc->tris[3 * (size_t)t])[d], h = lo;
-      for (int k = 1; k < 3; k++) {
-        double x = P(plc, plc->tris[3 * (size_t)t + k])[d];
-        lo = x < lo ? x : lo;
-        h = x > h ? x : h;
-      }
-      s.lo[3 * (size_t)t + d] = lo;
-      s.hi[3 * (size_t)t + d] = h;
-    }
+    tr_box_of(plc->xyz, plc->tris + 3 * (size_t)t, 3, s.lo + 3 * (size_t)t, s.hi + 3 * (size_t)t);
   double ext[3] = {0, 0, 0};
   for (int d = 0; d < 3 && n; d++) {
     double lo = s.lo[d], h = s.hi[d];

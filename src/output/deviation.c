@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "classify.h"
+#include "core/box.h"
 #include "core/plc.h"
 #include "deviation.h"
 
@@ -76,16 +77,11 @@ static const double *X(const struct tr_plc *plc, uint32_t v) { return plc->xyz +
 
 static int box_holds(const struct tr_plc *plc, const uint32_t *v, int nv, const tr_qpoint *q)
 {
-  for (int k = 0; k < 3; k++) {
-    double lo = X(plc, v[0])[k], hi = lo;
-    for (int i = 1; i < nv; i++) {
-      double x = X(plc, v[i])[k];
-      lo = x < lo ? x : lo;
-      hi = x > hi ? x : hi;
-    }
-    if (q->hi[k] < lo || q->lo[k] > hi)
+  double lo[3], hi[3];
+  tr_box_of(plc->xyz, v, nv, lo, hi);
+  for (int k = 0; k < 3; k++)
+    if (q->hi[k] < lo[k] || q->lo[k] > hi[k])
       return 0;
-  }
   return 1;
 }
 

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/box.h"
 #include "predicates.h"
 #include "round.h"
 
@@ -338,15 +339,10 @@ static int conflicts(const search_ctx *c, uint32_t t0)
   int tabu_o[TR_ROUND_TABU], ntabu = 0, wtabu = 0;
   const uint32_t *tv = m->tv + 4 * (size_t)t0;
   int axis = 0;
-  double spread[3];
+  double spread[3], lo[3], hi[3];
+  tr_box_of(m->xyz, tv, 4, lo, hi);
   for (int k = 0; k < 3; k++) {
-    double lo = m->xyz[3 * (size_t)tv[0] + k], hi = lo;
-    for (int i = 1; i < 4; i++) {
-      double x = m->xyz[3 * (size_t)tv[i] + k];
-      lo = x < lo ? x : lo;
-      hi = x > hi ? x : hi;
-    }
-    spread[k] = hi - lo;
+    spread[k] = hi[k] - lo[k];
     if (spread[k] < spread[axis])
       axis = k;
   }
