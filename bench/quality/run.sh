@@ -4,7 +4,7 @@
 # dir), in the same run. Per model and in total: CPU time (user + system, /usr/bin/time),
 # tets, minimum dihedral angle, share of tets with a dihedral angle under 10 and under 5
 # degrees, the largest radius-edge ratio and the share of tets over R (the bound both were
-# given; TetGen's insertion rules meet it on more tets, README). The shape figures of both
+# given; TetGen's insertion rules meet it on more tets, docs/benchmarks.md). The shape figures of both
 # outputs come from one measure, `tetrec check MODEL OUT.node --quality R`
 # (src/refine/quality.h, on the written doubles), which also validates the output (links
 # and exact orientation; for tetrec's --exact output also exact conformity and volume); a

@@ -24,7 +24,7 @@
  *  - near a small angle the facet split path refuses points that would encroach a
  *    protected sub-segment (angles.c), and the sub-face is left, unless
  *    rf_subshape_may_split below allows that split.
- * Measured on 12 CGAL models (README): at S = R = 1.414 it costs 41% more CPU and 26% more
+ * Measured on 12 CGAL models (docs/refinement.md): at S = R = 1.414 it costs 41% more CPU and 26% more
  * tets for 3.87% of tets under 10 degrees against 3.95%; most thin sub-faces there lie
  * across the wedges of thin input triangles, which the second rule leaves.
  * Whole bench (bench/quality, 74 models, same tree and load): off, targets met on 54 in

@@ -226,8 +226,8 @@ static void small_angle(void)
  * circumcentres the insertion radii allow: the share of tets under 10 degrees drops (all
  * 24 -> 70 of 84; without the close splits it stayed at all 24), while every tet keeps a
  * radius-edge ratio of 4 or more and the worst is 38 (23 before refinement; 16 without
- * the close splits, which left a third of the tets under 4): a known limit, see the
- * README. */
+ * the close splits, which left a third of the tets under 4): a known limit, see
+ * docs/refinement.md. */
 static void thin_slab(void)
 {
   const double lo[3] = {0, 0, 0}, hi[3] = {8, 8, 0.25};
