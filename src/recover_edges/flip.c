@@ -4,6 +4,7 @@
  * region's boundary. */
 #include "recover_edges/flip.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -60,6 +61,7 @@ tr_status tr_flip23(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, v
                     tr_flip_rec *rec, int *done)
 {
   *done = 0;
+  assert(k >= 0 && k < 4);
   uint32_t c = m->tn[4 * (size_t)t + (size_t)k];
   if (c == TR_NONE || !tr_tet_is_real(m, t) || !tr_tet_is_real(m, c >> 2))
     return TR_OK;
@@ -449,7 +451,9 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
     for (;;) {
       /* an undone nested removal leaves the same tets, not the same slots: the shell and
        * the tet copied from it are stale then, so the scan starts again on a fresh shell
-       * (seen keeps the ring vertices already tried, so it ends) */
+       * (seen keeps the ring vertices already tried, and a scan meets a stale slot only
+       * after a nested try of a new one, so it ends). A slot still holding the tet or
+       * another one with face (a, b, r) is used as it is. */
       int stale = 0;
       for (size_t i = 0; i < sh.n && !progress && !stale && s == TR_OK && !spent(j); i++) {
         uint32_t tv[4];
@@ -465,9 +469,16 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
             continue;
           if (nseen < 64) {
             /* first sight of r in shell order: this tet is the first with face (a, b, r) */
-            seen[nseen++] = r;
             t = sh.a[i];
             k = tr_fcode(m, t, a, b, r);
+            if (k < 0) {
+              /* a nested removal that undid its own flips leaves j->n as it was but may
+               * free or refill this slot (fuzz_pipeline: a freed one, k = -1): the shell
+               * is stale; r is tried on the fresh one */
+              stale = 1;
+              break;
+            }
+            seen[nseen++] = r;
           } else if (!shell_face(m, &sh, a, b, r, &t, &k))
             continue;
           s = tr_flip23_j(m, t, k, guard, ud, j, &ok);
