@@ -5,6 +5,7 @@
 #include "classify.h"
 #include "output/flatflip.h"
 #include "output/round.h"
+#include "refine/refine.h"
 #include "refine/refine_impl.h" /* rf_volume_above: the bound decided as refinement does */
 #include "refine/refine_stage.h"
 
@@ -12,6 +13,9 @@ typedef struct {
   struct tr_mesh *m;
   const tr_plc *plc;
   double max_volume;
+  /* the region points' bounds, sorted by id (tr_refine_region_bounds) */
+  uint32_t *region_id, nregion_bounds;
+  double *region_bound;
   uint32_t *sub; /* the sub-faces as sorted triples, in lexicographic order */
   uint32_t nsub;
   tr_u32buf shell;
@@ -56,7 +60,8 @@ static int on_segment(const ctx *c, uint32_t a, uint32_t b)
 /* Tet v of region r keeps its volume bound. */
 static int within_bound(const ctx *c, const uint32_t *v, uint32_t r)
 {
-  double b = tr_refine_region_volume_bound(c->plc, c->max_volume, r);
+  double b = tr_refine_region_bound_of(c->region_id, c->region_bound, c->nregion_bounds,
+                                       c->max_volume, r);
   if (!(b > 0))
     return 1;
   tr_point p[4];
@@ -260,9 +265,14 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
   if (!flat && !bounded)
     return TR_OK;
   ctx c = {.m = m, .plc = plc, .max_volume = max_volume, .nsub = flat ? sub->n : 0};
+  double least = 0;
+  TR_CHECK(tr_refine_region_bounds(plc, &c.region_id, &c.region_bound, &c.nregion_bounds, &least));
   c.sub = malloc(3 * sizeof *c.sub * (c.nsub ? c.nsub : 1));
-  if (!c.sub)
+  if (!c.sub) {
+    free(c.region_id);
+    free(c.region_bound);
     return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-faces", sub->n);
+  }
   for (uint32_t i = 0; i < c.nsub; i++) {
     memcpy(c.sub + 3 * (size_t)i, sub->v + 3 * (size_t)i, 3 * sizeof *c.sub);
     tr_sort3(c.sub + 3 * (size_t)i);
@@ -274,6 +284,8 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
   if (st == TR_OK && bounded)
     st = split_over_bound(&c);
   free(c.sub);
+  free(c.region_id);
+  free(c.region_bound);
   tr_u32buf_free(&c.shell);
   return st;
 }

@@ -283,7 +283,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       tr_sliver_params sp = {level, fmax(TR_SLIVER_BOUND, dt), TR_SLIVER_ROUNDS,
                              fmax(TR_SLIVER_INSERT_BOUND, dt),
                              {opt.quality_ratio, opt.max_volume, p, opt.keep_edges,
-                              opt.quality_subface_ratio > 0, opt.keep_surface, 1}};
+                              opt.quality_subface_ratio > 0, opt.keep_surface, 1, NULL, NULL, 0}};
       tr_sliver_stats ss;
       uint32_t nv1 = m->nv;
       st = tr_sliver_remove(m, &sub, vkind, p->npoints, &sp, &ss);

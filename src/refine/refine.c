@@ -33,24 +33,28 @@ uint64_t tr_refine_default_budget(uint32_t npoints, double domain_volume, double
   return b > ceiling ? (uint64_t)ceiling : (uint64_t)b;
 }
 
+double tr_refine_region_bound_of(const uint32_t *ids, const double *bounds, uint32_t n,
+                                 double max_volume, uint32_t region)
+{
+  uint32_t lo = 0, hi = n;
+  while (lo < hi) {
+    uint32_t mid = lo + (hi - lo) / 2;
+    if (ids[mid] < region)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  if (lo < n && ids[lo] == region && (!(max_volume > 0) || bounds[lo] < max_volume))
+    return bounds[lo];
+  return max_volume;
+}
+
 double tr_refine_tet_bound(const tr_refine_params *par, const struct tr_mesh *m, uint32_t t)
 {
-  double bound = par->max_volume;
-  if (par->nregion_bounds && m->region) {
-    /* the region's own bound, by binary search of the sorted ids */
-    uint32_t r = m->region[t], lo = 0, hi = par->nregion_bounds;
-    while (lo < hi) {
-      uint32_t mid = lo + (hi - lo) / 2;
-      if (par->region_id[mid] < r)
-        lo = mid + 1;
-      else
-        hi = mid;
-    }
-    if (lo < par->nregion_bounds && par->region_id[lo] == r &&
-        (!(bound > 0) || par->region_max_volume[lo] < bound))
-      bound = par->region_max_volume[lo];
-  }
-  return bound;
+  if (!par->nregion_bounds || !m->region)
+    return par->max_volume;
+  return tr_refine_region_bound_of(par->region_id, par->region_max_volume, par->nregion_bounds,
+                                   par->max_volume, m->region[t]);
 }
 
 /* Radius-edge ratio in doubles (a measure: it only decides which tets get a point); the

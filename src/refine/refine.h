@@ -114,6 +114,10 @@ typedef struct tr_refine_stats {
 /* Tet t's volume bound under par: the smaller of par->max_volume and its region's
  * (m->region[t] among par->region_id); 0: none. */
 double tr_refine_tet_bound(const tr_refine_params *par, const struct tr_mesh *m, uint32_t t);
+/* The volume bound of region `region`: the smaller of max_volume and the region's entry
+ * in a sorted table of tr_refine_region_bounds (ids, bounds, n; binary search); 0: none. */
+double tr_refine_region_bound_of(const uint32_t *ids, const double *bounds, uint32_t n,
+                                 double max_volume, uint32_t region);
 
 /* The default budget: 100 points per input point plus 100,000, plus, with a volume bound,
  * 20 per multiple of V in the domain's volume (a mesh of tets of volume about V/6 needs

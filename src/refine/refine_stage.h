@@ -28,10 +28,6 @@ tr_status tr_refine_count_over(const struct tr_mesh *m, const struct tr_plc *plc
  * to the smallest (it is the caller's global bound, or 0 for none). */
 tr_status tr_refine_region_bounds(const struct tr_plc *plc, uint32_t **ids, double **bounds,
                                   uint32_t *n, double *least);
-/* The volume bound of the tets of region `region` (an attribute): the smaller of
- * max_volume and plc's region points' with that attribute (plc may be NULL); 0: none. */
-double tr_refine_region_volume_bound(const struct tr_plc *plc, double max_volume,
-                                    uint32_t region);
 /* The shape rows of s (min/max dihedral, histograms, ...) measured on m's doubles. */
 void tr_quality_stats(const struct tr_mesh *m, tr_stats *s);
 

@@ -85,17 +85,6 @@ tr_status tr_refine_region_bounds(const struct tr_plc *plc, uint32_t **ids, doub
   return TR_OK;
 }
 
-double tr_refine_region_volume_bound(const struct tr_plc *plc, double max_volume,
-                                    uint32_t region)
-{
-  double b = max_volume;
-  for (uint32_t i = 0; plc && i < plc->nregions; i++)
-    if (plc->region_maxvol[i] > 0 && (uint32_t)plc->region_attr[i] == region &&
-        (!(b > 0) || plc->region_maxvol[i] < b))
-      b = plc->region_maxvol[i];
-  return b;
-}
-
 /* par's volume bounds: opt->max_volume and plc's region points' (none when plc is NULL;
  * *id and *bound, which par points to, are the caller's to free); *least = the smallest
  * of them (0: none). */

@@ -337,11 +337,10 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
   rp.budget = SL_CAP_POINTS;
   rp.sub_exported = 1; /* tr_refine's or a hook's output (tr_sliver_remove) */
   rp.memo = c->memo;
-  uint32_t *id = NULL;
-  double *bound = NULL, least = 0;
-  tr_status s = tr_refine_region_bounds(c->keep.plc, &id, &bound, &rp.nregion_bounds, &least);
-  rp.region_id = id;
-  rp.region_max_volume = bound;
+  rp.region_id = c->keep.region_id;
+  rp.region_max_volume = c->keep.region_max_volume;
+  rp.nregion_bounds = c->keep.nregion_bounds;
+  tr_status s = TR_OK;
   for (int i = 0; i < np && s == TR_OK && !*done; i++) {
     uint32_t key[3] = {p[i][0], p[i][1], n[i] == 3 ? p[i][2] : TR_NONE};
     for (int a = 1; a < n[i]; a++) /* sorted: the piece whatever its order */
@@ -403,7 +402,5 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
       snap_restore(m, sub, &z); /* c's measures hold: the trial measured with tc only */
     }
   }
-  free(id);
-  free(bound);
   return s;
 }

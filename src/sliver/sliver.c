@@ -73,7 +73,8 @@ int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t
 {
   if (c->keep.ratio > 0 && ratio > fmax(c->keep.ratio, ratio_was) && !(dih >= c->bound))
     return 0;
-  double V = tr_refine_region_volume_bound(c->keep.plc, c->keep.max_volume, region);
+  double V = tr_refine_region_bound_of(c->keep.region_id, c->keep.region_max_volume,
+                                       c->keep.nregion_bounds, c->keep.max_volume, region);
   if (!(V > 0))
     return 1;
   tr_point q[4];
@@ -270,17 +271,12 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
   rp.budget = TR_SLIVER_POINTS(m->nv); /* its own: the interior points may have used theirs */
   rp.sub_exported = 1; /* tr_refine's or a hook's output (tr_sliver_remove) */
   rp.memo = c->memo;
-  uint32_t *id = NULL;
-  double *bound = NULL, least = 0;
-  s = tr_refine_region_bounds(plc, &id, &bound, &rp.nregion_bounds, &least);
-  rp.region_id = id;
-  rp.region_max_volume = bound;
+  rp.region_id = c->keep.region_id;
+  rp.region_max_volume = c->keep.region_max_volume;
+  rp.nregion_bounds = c->keep.nregion_bounds;
   tr_refine_stats rs;
   uint32_t nv0 = m->nv;
-  if (s == TR_OK)
-    s = tr_refine_open_pinned(m, plc, sub, &rp, list.a, (uint32_t)list.n, &rs);
-  free(id);
-  free(bound);
+  s = tr_refine_open_pinned(m, plc, sub, &rp, list.a, (uint32_t)list.n, &rs);
   tr_sliver_forget_all(c); /* refinement may have changed any tet */
   TR_CHECK(s);
   tr_u32buf_free(&list);
@@ -331,6 +327,14 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   if (par->insert_bound > 0)
     c.insert_bound = par->insert_bound;
   c.keep = par->keep;
+  uint32_t *region_id = NULL;
+  double *region_bound = NULL, least = 0;
+  if (s == TR_OK && par->keep.plc) {
+    s = tr_refine_region_bounds(par->keep.plc, &region_id, &region_bound,
+                                &c.keep.nregion_bounds, &least);
+    c.keep.region_id = region_id;
+    c.keep.region_max_volume = region_bound;
+  }
   /* the facet flips rewrite sub-faces: not under --keep-surface, where each input
    * triangle is one */
   tr_facets facets = {0};
@@ -389,5 +393,7 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   tr_refine_memo_free(&memo);
   tr_facets_free(&facets);
   free(thin);
+  free(region_id);
+  free(region_bound);
   return s;
 }

@@ -102,6 +102,11 @@ typedef struct tr_sliver_bounds {
   int keep_surface;            /* --keep-surface: no point on a constraint, so no pinned
                                   tets' points (sliver.c) and no cap trials (caps.c) */
   int wedge_grading;           /* refinement's tr_refine_params.wedge_grading */
+  /* plc's region bounds as tr_refine_region_bounds makes them (ids sorted): tr_sliver_remove
+   * builds them once, for the per-tet bound checks and the refinement trials */
+  const uint32_t *region_id;
+  const double *region_max_volume;
+  uint32_t nregion_bounds;
 } tr_sliver_bounds;
 
 typedef struct tr_sliver_params {

@@ -81,7 +81,7 @@ static void a_sliver_is_removed_by_a_flip(void)
   double before = min_dihedral(m);
   EXPECT(before < 5, "the sliver's smallest angle %g is not small", before);
   tr_subfaces none = {0, NULL, NULL};
-  tr_sliver_params par = {TR_SLIVER_FLIPS, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL, 0, 0, 0, 0}};
+  tr_sliver_params par = {TR_SLIVER_FLIPS, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL, 0, 0, 0, 0, NULL, NULL, 0}};
   tr_sliver_stats st;
   tr_status s = tr_sliver_remove(m, &none, NULL, 8, &par, &st);
   EXPECT(s == TR_OK, "sliver stage: %s", tr_last_error());
@@ -112,7 +112,7 @@ static void constraints_are_kept_and_their_vertices_stay(void)
   double x0[36];
   memcpy(x0, m->xyz, sizeof x0);
   double before = min_dihedral(m);
-  tr_sliver_params par = {TR_SLIVER_SMOOTH, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL, 0, 0, 0, 0}};
+  tr_sliver_params par = {TR_SLIVER_SMOOTH, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, NULL, 0, 0, 0, 0, NULL, NULL, 0}};
   tr_sliver_stats st;
   tr_status s = tr_sliver_remove(m, &sub, vkind, 8, &par, &st);
   EXPECT(s == TR_OK, "sliver stage: %s", tr_last_error());
@@ -563,7 +563,7 @@ static void a_tet_pinned_between_sub_faces_gets_points_on_them(void)
   EXPECT(s == TR_OK && rs.points == 0, "pinned: an empty list added points or failed");
   const uint32_t flat[4] = {0, 1, 2, 3};
   EXPECT(has_tet(m, flat), "pinned: the flat tet is not there to begin with");
-  tr_sliver_params par = {TR_SLIVER_INSERT, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, plc, 0, 0, 0, 0}};
+  tr_sliver_params par = {TR_SLIVER_INSERT, TR_SLIVER_BOUND, TR_SLIVER_ROUNDS, 0, {0, 0, plc, 0, 0, 0, 0, NULL, NULL, 0}};
   tr_sliver_stats st;
   s = tr_sliver_remove(m, &sub, NULL, 4, &par, &st);
   EXPECT(s == TR_OK, "pinned: sliver stage: %s", tr_last_error());
