@@ -1,84 +1,202 @@
 /* Hole and region points (tr_plc_add_hole / tr_plc_add_region), applied to the colored
  * mesh: see points.h. Each point is located exactly: first against the input triangles
- * (a point on a facet names no cell: an error), then in the mesh by a scan of the tets
- * whose interval box holds it, with exact orient3d on the (possibly rational) vertices.
- * A point on a face, edge or vertex of the mesh that is not on a facet is inside the
- * closures of tets of one cell only, so the first tet found names its cell. */
+ * (a point on a facet names no cell: an error), then among the inner tets whose interval
+ * box holds it, with exact orient3d on the (possibly rational) vertices. A point on a
+ * face, edge or vertex of the mesh that is not on a facet is inside the closures of tets of
+ * one cell only (cells, the outside among them, meet only on facets), so any tet found
+ * names its cell, and a point in no inner tet lies outside the domain.
+ *
+ * All points are located in one pass over the triangles and one over the tets: the points
+ * sit in a uniform grid (pgrid) and each triangle or tet asks only the cells its box
+ * overlaps. A scan of everything per point made a thousand region points cost more than
+ * the mesh (10,000 points in a sphere of 1,620 triangles: 2.5 s). A point records the
+ * first triangle it lies on, in index order, so the messages name the same triangle as a
+ * scan would. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "classify.h"
+#include "core/box.h"
 #include "points.h"
 
-/* Error if P lies on an input triangle (closed). */
-static tr_status on_facet(const struct tr_plc *plc, const double *p, const char *what,
-                          uint32_t i)
+/* Up to 64 cells per axis, about one point per cell. */
+#define PG_MAX_RES 64u
+
+typedef struct {
+  uint32_t n, res[3];
+  double lo[3], scale[3]; /* the cell of x along d: floor((x - lo[d]) * scale[d]), clamped */
+  uint32_t *start, *item; /* the points of cell c: item[start[c] .. start[c + 1]) */
+  const double *const *p; /* p[i]: point i's coordinates */
+} pgrid;
+
+/* Monotone in x (rounding is), so a box that holds a point covers the point's cell; safe
+ * for any double: NaN and everything below lo go to cell 0. */
+static uint32_t cell_of(const pgrid *g, int d, double x)
 {
-  tr_point P = tr_pt_d(p);
-  for (uint32_t t = 0; t < plc->ntris; t++) {
-    const uint32_t *v = plc->tris + 3 * (size_t)t;
-    const double *a = plc->xyz + 3 * (size_t)v[0], *b = plc->xyz + 3 * (size_t)v[1],
-                 *c = plc->xyz + 3 * (size_t)v[2];
-    int out = 0;
-    for (int d = 0; d < 3 && !out; d++) {
-      double lo = a[d] < b[d] ? a[d] : b[d], hi = a[d] < b[d] ? b[d] : a[d];
-      lo = c[d] < lo ? c[d] : lo;
-      hi = c[d] > hi ? c[d] : hi;
-      out = p[d] < lo || p[d] > hi;
+  double c = (x - g->lo[d]) * g->scale[d];
+  if (!(c > 0))
+    return 0;
+  return c >= (double)g->res[d] ? g->res[d] - 1 : (uint32_t)c;
+}
+
+static uint32_t cell_index(const pgrid *g, const uint32_t k[3])
+{
+  return (k[2] * g->res[1] + k[1]) * g->res[0] + k[0];
+}
+
+static tr_status pgrid_build(pgrid *g, const double *const *p, uint32_t n)
+{
+  memset(g, 0, sizeof *g);
+  g->n = n;
+  g->p = p;
+  double hi[3] = {0, 0, 0};
+  for (int d = 0; d < 3 && n; d++)
+    g->lo[d] = hi[d] = p[0][d];
+  for (uint32_t i = 1; i < n; i++)
+    for (int d = 0; d < 3; d++) {
+      g->lo[d] = p[i][d] < g->lo[d] ? p[i][d] : g->lo[d];
+      hi[d] = p[i][d] > hi[d] ? p[i][d] : hi[d];
     }
-    if (out)
-      continue;
-    tr_point A = tr_pt_d(a), B = tr_pt_d(b), C = tr_pt_d(c);
-    if (tr_classify_segment_triangle(&P, &P, &A, &B, &C).n)
-      return tr_error(TR_ERR_INPUT,
-                      "%s %u (%.17g, %.17g, %.17g) lies on triangle %u (input face %u): it "
-                      "must lie strictly inside a cell", what, i, p[0], p[1], p[2], t,
-                      plc->tri_source ? plc->tri_source[t] : t);
+  uint32_t r = (uint32_t)ceil(cbrt((double)n));
+  r = r < 1 ? 1 : r > PG_MAX_RES ? PG_MAX_RES : r;
+  for (int d = 0; d < 3; d++) {
+    double ext = hi[d] - g->lo[d];
+    g->res[d] = ext > 0 && isfinite(ext) ? r : 1;
+    g->scale[d] = g->res[d] > 1 ? (double)g->res[d] / ext : 0;
   }
+  size_t ncell = (size_t)g->res[0] * g->res[1] * g->res[2];
+  g->start = calloc(ncell + 1, sizeof *g->start);
+  g->item = malloc(sizeof *g->item * n);
+  uint32_t *cell = malloc(sizeof *cell * n);
+  if (!g->start || !g->item || !cell) {
+    free(cell);
+    return tr_error(TR_ERR_NOMEM, "out of memory locating %u hole and region points", n);
+  }
+  for (uint32_t i = 0; i < n; i++) {
+    uint32_t k[3] = {cell_of(g, 0, p[i][0]), cell_of(g, 1, p[i][1]), cell_of(g, 2, p[i][2])};
+    cell[i] = cell_index(g, k);
+    g->start[cell[i] + 1]++;
+  }
+  for (size_t c = 0; c < ncell; c++)
+    g->start[c + 1] += g->start[c];
+  for (uint32_t i = 0; i < n; i++) /* points of a cell in index order */
+    g->item[g->start[cell[i]]++] = i;
+  for (size_t c = ncell; c > 0; c--)
+    g->start[c] = g->start[c - 1];
+  g->start[0] = 0;
+  free(cell);
   return TR_OK;
 }
 
-static void widen(const struct tr_mesh *m, uint32_t v, double lo[3], double hi[3])
+static void pgrid_free(pgrid *g)
 {
-  const tr_qpoint *q = m->vq ? m->vq[v] : NULL;
+  free(g->start);
+  free(g->item);
+}
+
+/* Calls hit(ud, i) for every point i in the closed box [lo, hi] whose found[i] is still
+ * TR_NONE; hit may set it. */
+static void pgrid_query(const pgrid *g, const double lo[3], const double hi[3],
+                        const uint32_t *found, void (*hit)(void *, uint32_t), void *ud)
+{
+  uint32_t a[3], b[3], k[3];
   for (int d = 0; d < 3; d++) {
-    double a = q ? q->lo[d] : m->xyz[3 * (size_t)v + d], b = q ? q->hi[d] : a;
-    lo[d] = a < lo[d] ? a : lo[d];
-    hi[d] = b > hi[d] ? b : hi[d];
+    a[d] = cell_of(g, d, lo[d]);
+    b[d] = cell_of(g, d, hi[d]);
+  }
+  for (k[2] = a[2]; k[2] <= b[2]; k[2]++)
+    for (k[1] = a[1]; k[1] <= b[1]; k[1]++)
+      for (k[0] = a[0]; k[0] <= b[0]; k[0]++) {
+        uint32_t c = cell_index(g, k);
+        for (uint32_t j = g->start[c]; j < g->start[c + 1]; j++) {
+          uint32_t i = g->item[j];
+          const double *q = g->p[i];
+          if (found[i] != TR_NONE || q[0] < lo[0] || q[1] < lo[1] || q[2] < lo[2] ||
+              q[0] > hi[0] || q[1] > hi[1] || q[2] > hi[2])
+            continue;
+          hit(ud, i);
+        }
+      }
+}
+
+typedef struct {
+  const struct tr_plc *plc;
+  const struct tr_mesh *m;
+  const pgrid *g;
+  uint32_t cur;   /* the triangle or tet being asked */
+  uint32_t *found; /* per point: the first triangle it lies on / a tet that holds it */
+} asker;
+
+static void on_triangle(void *ud, uint32_t i)
+{
+  asker *q = ud;
+  const uint32_t *v = q->plc->tris + 3 * (size_t)q->cur;
+  tr_point P = tr_pt_d(q->g->p[i]);
+  tr_point A = tr_pt_d(q->plc->xyz + 3 * (size_t)v[0]), B = tr_pt_d(q->plc->xyz + 3 * (size_t)v[1]),
+           C = tr_pt_d(q->plc->xyz + 3 * (size_t)v[2]);
+  if (tr_classify_segment_triangle(&P, &P, &A, &B, &C).n)
+    q->found[i] = q->cur;
+}
+
+static void in_tet(void *ud, uint32_t i)
+{
+  asker *q = ud;
+  const uint32_t *tv = q->m->tv + 4 * (size_t)q->cur;
+  tr_point P = tr_pt_d(q->g->p[i]), V[4];
+  for (int k = 0; k < 4; k++)
+    V[k] = tr_mesh_point(q->m, tv[k]);
+  for (int k = 0; k < 4; k++) {
+    tr_point W[4] = {V[0], V[1], V[2], V[3]};
+    W[k] = P;
+    if (tr_orient3d_p(&W[0], &W[1], &W[2], &W[3]) < 0) /* tets are positive */
+      return;
+  }
+  q->found[i] = q->cur;
+}
+
+/* The interval box of tet t: its vertices' doubles, or their exact bounds. */
+static void tet_box(const struct tr_mesh *m, uint32_t t, double lo[3], double hi[3])
+{
+  const uint32_t *tv = m->tv + 4 * (size_t)t;
+  tr_box_of(m->xyz, tv, 4, lo, hi);
+  for (int k = 0; k < 4; k++) {
+    const tr_qpoint *q = m->vq ? m->vq[tv[k]] : NULL;
+    for (int d = 0; q && d < 3; d++) {
+      lo[d] = q->lo[d] < lo[d] ? q->lo[d] : lo[d];
+      hi[d] = q->hi[d] > hi[d] ? q->hi[d] : hi[d];
+    }
   }
 }
 
-/* A real tet whose closure holds p, or TR_NONE (outside the convex hull). */
-static uint32_t locate(const struct tr_mesh *m, const double *p)
+/* facet[i]: the first input triangle point i lies on (closed), TR_NONE if none;
+ * tet[i]: an inner tet whose closure holds it, TR_NONE if none (outside the domain). */
+static tr_status locate_all(const struct tr_mesh *m, const struct tr_plc *plc,
+                            const double *const *p, uint32_t n, uint32_t *facet, uint32_t *tet)
 {
-  tr_point P = tr_pt_d(p);
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (!tr_tet_is_real(m, t))
-      continue;
-    const uint32_t *tv = m->tv + 4 * (size_t)t;
-    double lo[3] = {p[0], p[1], p[2]}, hi[3] = {p[0], p[1], p[2]};
-    lo[0] = hi[0] = m->xyz[3 * (size_t)tv[0]];
-    lo[1] = hi[1] = m->xyz[3 * (size_t)tv[0] + 1];
-    lo[2] = hi[2] = m->xyz[3 * (size_t)tv[0] + 2];
-    for (int k = 0; k < 4; k++)
-      widen(m, tv[k], lo, hi);
-    if (p[0] < lo[0] || p[1] < lo[1] || p[2] < lo[2] || p[0] > hi[0] || p[1] > hi[1] ||
-        p[2] > hi[2])
-      continue;
-    tr_point V[4];
-    for (int k = 0; k < 4; k++)
-      V[k] = tr_mesh_point(m, tv[k]);
-    int in = 1;
-    for (int k = 0; k < 4 && in; k++) {
-      tr_point W[4] = {V[0], V[1], V[2], V[3]};
-      W[k] = P;
-      in = tr_orient3d_p(&W[0], &W[1], &W[2], &W[3]) >= 0; /* tets are positive */
-    }
-    if (in)
-      return t;
+  pgrid g;
+  TR_CHECK(pgrid_build(&g, p, n));
+  for (uint32_t i = 0; i < n; i++)
+    facet[i] = tet[i] = TR_NONE;
+  asker q = {plc, m, &g, 0, facet};
+  for (uint32_t t = 0; t < plc->ntris; t++) {
+    double lo[3], hi[3];
+    tr_box_of(plc->xyz, plc->tris + 3 * (size_t)t, 3, lo, hi);
+    q.cur = t;
+    pgrid_query(&g, lo, hi, facet, on_triangle, &q);
   }
-  return TR_NONE;
+  q.found = tet;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t) || !m->region[t])
+      continue;
+    double lo[3], hi[3];
+    tet_box(m, t, lo, hi);
+    q.cur = t;
+    pgrid_query(&g, lo, hi, tet, in_tet, &q);
+  }
+  pgrid_free(&g);
+  return TR_OK;
 }
 
 tr_status tr_outer_points(struct tr_mesh *m, const struct tr_plc *plc, int verbose,
@@ -90,19 +208,33 @@ tr_status tr_outer_points(struct tr_mesh *m, const struct tr_plc *plc, int verbo
   /* per region id 0..n: 1 emptied by a hole; the region point that names it + 1 */
   uint8_t *hole = calloc((size_t)n + 1, 1);
   uint32_t *named = calloc((size_t)n + 1, sizeof *named), *newid = NULL;
+  uint32_t np = plc->nholes + plc->nregions;
+  const double **pts = malloc(sizeof *pts * np);
+  uint32_t *facet = malloc(sizeof *facet * np), *tet = malloc(sizeof *tet * np);
   tr_status st = TR_OK;
-  if (!hole || !named) {
+  if (!hole || !named || !pts || !facet || !tet) {
     st = tr_error(TR_ERR_NOMEM, "out of memory applying hole and region points");
     goto done;
   }
-  for (uint32_t i = 0; i < plc->nholes + plc->nregions && st == TR_OK; i++) {
+  for (uint32_t i = 0; i < np; i++)
+    pts[i] = i < plc->nholes ? plc->holes + 3 * (size_t)i
+                             : plc->region_xyz + 3 * (size_t)(i - plc->nholes);
+  if ((st = locate_all(m, plc, pts, np, facet, tet)) != TR_OK)
+    goto done;
+  for (uint32_t i = 0; i < np && st == TR_OK; i++) {
     int is_hole = i < plc->nholes;
     uint32_t j = is_hole ? i : i - plc->nholes;
-    const double *p = is_hole ? plc->holes + 3 * (size_t)j : plc->region_xyz + 3 * (size_t)j;
+    const double *p = pts[i];
     const char *what = is_hole ? "hole point" : "region point";
-    if ((st = on_facet(plc, p, what, j)) != TR_OK)
+    if (facet[i] != TR_NONE) {
+      uint32_t t = facet[i];
+      st = tr_error(TR_ERR_INPUT,
+                    "%s %u (%.17g, %.17g, %.17g) lies on triangle %u (input face %u): it "
+                    "must lie strictly inside a cell", what, j, p[0], p[1], p[2], t,
+                    plc->tri_source ? plc->tri_source[t] : t);
       break;
-    uint32_t t = locate(m, p);
+    }
+    uint32_t t = tet[i];
     uint32_t r = t == TR_NONE ? 0 : m->region[t];
     if (r == 0) {
       /* a hole there removes nothing; an attribute there cannot be honoured */
@@ -174,5 +306,8 @@ done:
   free(hole);
   free(named);
   free(newid);
+  free(pts);
+  free(facet);
+  free(tet);
   return st;
 }

@@ -12,8 +12,9 @@
  * outside the domain (it removes nothing), a region's positive maximum volume (stored,
  * not supported: there is no refinement). verbose >= 2 says which region each point hit.
  * *nregions becomes the number of inner cells left. Exact: the points are located with
- * exact orient3d, also among rational Steiner points. Cost: each point scans the input
- * triangles and the tets (with an interval box filter): for a few points. */
+ * exact orient3d, also among rational Steiner points. Cost: one pass over the input
+ * triangles and one over the inner tets, each asking a grid of the points for the ones in
+ * its box (thousands of points cost about as much as one). */
 #ifndef TR_OUTER_POINTS_H
 #define TR_OUTER_POINTS_H
 

@@ -339,6 +339,86 @@ static void t_many(void)
   tr_plc_destroy(p);
 }
 
+/* Thousands of region points, located in one pass (src/outer/points.c, a grid of the
+ * points): the box [0,13]^3 holding a 4 x 4 x 4 grid of boxes [1+3i, 3+3i]^3 given
+ * outward (inclusions), 8 region points in each box with its own attribute and every
+ * point of the half-integer lattice outside the boxes with attribute 7. Each tet's region
+ * is checked against the box its centroid lies in. Then the errors name the first
+ * offender in point order, and the first triangle in index order: a hole point on the
+ * diagonal shared by the outer box's triangles 0 and 1 names triangle 0. */
+static void t_many_points(void)
+{
+  static builder b;
+  memset(&b, 0, sizeof b);
+  cube(&b, 0, 0, 0, 13, 0);
+  for (int i = 0; i < 64; i++)
+    cube(&b, 1 + 3 * (i & 3), 1 + 3 * (i >> 2 & 3), 1 + 3 * (i >> 4), 2, 0);
+  tr_plc *p = make(&b);
+  uint32_t nbody = 0;
+  for (int i = 0; i < 64; i++)
+    for (int k = 0; k < 8; k++)
+      tr_plc_add_region(p, 1.5 + 3 * (i & 3) + (k & 1), 1.5 + 3 * (i >> 2 & 3) + (k >> 1 & 1),
+                        1.5 + 3 * (i >> 4) + (k >> 2), 100 + i, 0);
+  for (int x = 1; x < 26; x++)
+    for (int y = 1; y < 26; y++)
+      for (int z = 1; z < 26; z++) {
+        double c[3] = {0.5 * x, 0.5 * y, 0.5 * z};
+        int in = 1; /* in or on a grid box: all three coordinates in one box's range */
+        for (int d = 0; d < 3; d++) {
+          double u = c[d] - 1 - 3 * (int)((c[d] - 1) / 3);
+          in &= c[d] >= 1 && c[d] <= 12 && u <= 2;
+        }
+        if (!in) {
+          tr_plc_add_region(p, c[0], c[1], c[2], 7, 0);
+          nbody++;
+        }
+      }
+  EXPECT(nbody == 25 * 25 * 25 - 64 * 125, "%u lattice points outside the boxes", nbody);
+  tr_mesh *m = mesh("many_region_points", p, 6 * 13 * 13 * 13, NULL);
+  if (m) {
+    uint32_t bad = 0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+      if (tr_tet_is_free(m, t) || !m->region[t])
+        continue;
+      uint32_t want = 7;
+      for (int i = 0; i < 64; i++) {
+        double lo[3] = {1 + 3 * (i & 3), 1 + 3 * (i >> 2 & 3), 1 + 3 * (i >> 4)}, c[3];
+        int in = 1;
+        for (int d = 0; d < 3; d++) {
+          c[d] = 0;
+          for (int k = 0; k < 4; k++)
+            c[d] += m->xyz[3 * (size_t)m->tv[4 * (size_t)t + k] + d] / 4;
+          in &= c[d] > lo[d] && c[d] < lo[d] + 2;
+        }
+        if (in)
+          want = 100 + (uint32_t)i;
+      }
+      bad += m->region[t] != want;
+    }
+    EXPECT(bad == 0, "many region points: %u tets with the wrong attribute", bad);
+  }
+  tr_mesh_destroy(m);
+  tr_plc_destroy(p);
+  /* errors: the first offending point, and the first triangle it lies on */
+  memset(&b, 0, sizeof b);
+  cube(&b, 0, 0, 0, 4, 0);
+  p = make(&b);
+  for (int i = 0; i < 50; i++)
+    tr_plc_add_hole(p, 9, 9, 9 + i); /* outside: warnings only */
+  tr_plc_add_hole(p, 2, 2, 0); /* on the diagonal of triangles 0 and 1 */
+  tr_plc_add_hole(p, 0, 2, 2); /* on another face: not the one reported */
+  tr_options opt;
+  tr_options_default(&opt);
+  opt.verbose = 0;
+  m = NULL;
+  tr_status s = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(s == TR_ERR_INPUT && strstr(tr_last_error(), "hole point 50 ") &&
+         strstr(tr_last_error(), "triangle 0 "), "first hole point on a facet: %s: %s",
+         tr_status_name(s), tr_last_error());
+  tr_mesh_destroy(m);
+  tr_plc_destroy(p);
+}
+
 /* An input segment inside a box (tr_plc_add_segments) is a chain of mesh edges; bad
  * segments are refused. */
 static void t_segments(void)
@@ -434,6 +514,8 @@ int main(int argc, char **argv)
     t_errors();
   if (all || !strcmp(w, "many"))
     t_many();
+  if (all || !strcmp(w, "many_points"))
+    t_many_points();
   if (all || !strcmp(w, "segments"))
     t_segments();
   if (all || !strcmp(w, "poly"))
