@@ -101,9 +101,14 @@ tr_status tr_plc_read(const char *path, tr_plc **out)
   return TR_OK;
 }
 
+/* Room for element n of an array that holds n: the capacity is the next power of two
+ * (an array only ever grows here), so a million tr_plc_add_region calls are a few dozen
+ * reallocations, not a million. */
 static tr_status grow(void **a, size_t elem, uint32_t n)
 {
-  void *x = realloc(*a, elem * ((size_t)n + 1));
+  if (n & (n - 1))
+    return TR_OK; /* n is no power of two: there is room up to the next one */
+  void *x = realloc(*a, elem * (n ? 2 * (size_t)n : 1));
   if (!x)
     return tr_error(TR_ERR_NOMEM, "out of memory adding a point to the PLC");
   *a = x;
