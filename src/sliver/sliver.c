@@ -389,6 +389,8 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   }
   if (s == TR_OK) /* the worst tets, also those over the bound */
     s = tr_sliver_polish(&c, sub, par->level, st);
+  if (s == TR_OK && par->level >= TR_SLIVER_SMOOTH)
+    s = tr_sliver_ratio_pass(&c, st);
   tr_sliver_ctx_free(&c);
   tr_refine_memo_free(&memo);
   tr_facets_free(&facets);

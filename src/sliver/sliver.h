@@ -221,6 +221,13 @@ tr_status tr_sliver_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_u32buf *sh, tr_sli
 tr_status tr_sliver_facet_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_sliver_stats *st, int *done);
 /* One smoothing pass over the movable vertices in index order (smooth.c). */
 tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
+/* 1 iff every tet of the star `ball` of v is exactly positive with v at the double x
+ * (smooth.c): then x lies strictly inside the star's link. */
+int tr_sliver_star_positive(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
+                            const double x[3]);
+/* Moves of interior vertices whose star holds a tet over the ratio bound (ratio.c), last:
+ * the rounds may leave such tets where they have no angle under the bound. */
+tr_status tr_sliver_ratio_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
 /* Up to SL_MOVES moves of vertex v (if movable) while its star's smallest angle is under
  * `bound`, each raising it; *moved = 1 if one was made. ball: scratch. */
 tr_status tr_sliver_smooth_vertex(tr_sliver_ctx *c, uint32_t v, double bound, tr_u32buf *ball,

@@ -88,13 +88,9 @@ static double cos_floor(double floor)
   return -2;
 }
 
-/* Every tet of the star exactly positive with v at x, and within the bounds (a tet's
- * ratio may exceed the bound only up to the star's largest ratio as it is, `was`). cs
- * (may be NULL): each tet's smallest cosine with v at x, none flat (star_min_at's). */
-static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
-                      const double x[3], double was, const double *cs)
+int tr_sliver_star_positive(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
+                            const double x[3])
 {
-  const struct tr_mesh *m = c->m;
   for (size_t i = 0; i < ball->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
     tr_point p[4];
@@ -103,6 +99,18 @@ static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
     if (tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) <= 0)
       return 0;
   }
+  return 1;
+}
+
+/* Every tet of the star exactly positive with v at x, and within the bounds (a tet's
+ * ratio may exceed the bound only up to the star's largest ratio as it is, `was`). cs
+ * (may be NULL): each tet's smallest cosine with v at x, none flat (star_min_at's). */
+static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
+                      const double x[3], double was, const double *cs)
+{
+  const struct tr_mesh *m = c->m;
+  if (!tr_sliver_star_positive(m, ball, v, x))
+    return 0;
   for (size_t i = 0; i < ball->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
     /* the angle as tr_sliver_min_dihedral_at gives it, from the cosine when known; the
