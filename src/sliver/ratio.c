@@ -51,22 +51,6 @@ static int star_at(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, co
   return 1;
 }
 
-/* Exactly positive and within the volume bounds with v at x. */
-static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, const double *x,
-                      double was)
-{
-  const struct tr_mesh *m = c->m;
-  if (!tr_sliver_star_positive(m, ball, v, x))
-    return 0;
-  for (size_t i = 0; i < ball->n; i++) {
-    const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
-    double r, q = tr_sliver_min_dihedral_at(m, tv, v, x, &r);
-    if (!tr_sliver_keeps_bounds(c, tv, v, x, m->region ? m->region[ball->a[i]] : 0, r, q, was))
-      return 0;
-  }
-  return 1;
-}
-
 /* The trial positions of v; returns how many. */
 static int trials(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
                   double out[SL_RATIO_TRIALS][3])
@@ -117,15 +101,8 @@ static tr_status ratio_vertex(tr_sliver_ctx *c, uint32_t v, double keep, tr_u32b
   struct tr_mesh *m = c->m;
   *moved = 0;
   TR_CHECK(tr_ball(m, v, 0, ball));
-  if (!ball->n)
-    return TR_OK;
-  for (size_t i = 0; i < ball->n; i++)
-    for (int k = 0; k < 4; k++) {
-      uint32_t nb = m->tn[4 * (size_t)ball->a[i] + (size_t)k];
-      if (m->tv[4 * (size_t)ball->a[i] + (size_t)k] != v &&
-          (nb == TR_NONE || tr_tet_is_ghost(m, nb >> 2)))
-        return TR_OK; /* v on the mesh's boundary: no move */
-    }
+  if (!ball->n || !tr_sliver_star_closed(m, ball, v))
+    return TR_OK; /* v on the mesh's boundary: no move */
   double was, q0;
   if (!star_at(c, ball, v, NULL, 0, INFINITY, &was, &q0) || !(was > c->keep.ratio))
     return TR_OK;
@@ -153,7 +130,7 @@ static tr_status ratio_vertex(tr_sliver_ctx *c, uint32_t v, double keep, tr_u32b
         b = i;
     if (b < 0)
       return TR_OK;
-    if (star_valid(c, ball, v, trial[b], was)) {
+    if (tr_sliver_star_valid(c, ball, v, trial[b], was, NULL)) {
       memcpy(m->xyz + 3 * (size_t)v, trial[b], sizeof trial[b]);
       for (size_t i = 0; i < ball->n; i++)
         tr_sliver_forget(c, ball->a[i]);

@@ -221,10 +221,15 @@ tr_status tr_sliver_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_u32buf *sh, tr_sli
 tr_status tr_sliver_facet_flip_tet(tr_sliver_ctx *c, uint32_t t, tr_sliver_stats *st, int *done);
 /* One smoothing pass over the movable vertices in index order (smooth.c). */
 tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
-/* 1 iff every tet of the star `ball` of v is exactly positive with v at the double x
- * (smooth.c): then x lies strictly inside the star's link. */
-int tr_sliver_star_positive(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
-                            const double x[3]);
+/* For moves of vertex v whose star is `ball` (smooth.c; the ratio pass uses them too):
+ * tr_sliver_star_closed: every face of the star through v has a real tet behind it (v is
+ * inside the mesh). tr_sliver_star_valid: every tet of the star is exactly positive with v
+ * at the double x (so x lies strictly inside the star's link) and keeps the bounds (its
+ * ratio over the bound only up to `was`, the star's largest as it is); cs (may be NULL):
+ * each tet's smallest cosine with v at x, none flat. */
+int tr_sliver_star_closed(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v);
+int tr_sliver_star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
+                         const double x[3], double was, const double *cs);
 /* Moves of interior vertices whose star holds a tet over the ratio bound (ratio.c), last:
  * the rounds may leave such tets where they have no angle under the bound. */
 tr_status tr_sliver_ratio_pass(tr_sliver_ctx *c, tr_sliver_stats *st);

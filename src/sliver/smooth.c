@@ -88,9 +88,11 @@ static double cos_floor(double floor)
   return -2;
 }
 
-int tr_sliver_star_positive(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v,
-                            const double x[3])
+/* sliver.h; cs, when given, holds star_min_at's cosines of the trial. */
+int tr_sliver_star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
+                         const double x[3], double was, const double *cs)
 {
+  const struct tr_mesh *m = c->m;
   for (size_t i = 0; i < ball->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
     tr_point p[4];
@@ -99,18 +101,6 @@ int tr_sliver_star_positive(const struct tr_mesh *m, const tr_u32buf *ball, uint
     if (tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) <= 0)
       return 0;
   }
-  return 1;
-}
-
-/* Every tet of the star exactly positive with v at x, and within the bounds (a tet's
- * ratio may exceed the bound only up to the star's largest ratio as it is, `was`). cs
- * (may be NULL): each tet's smallest cosine with v at x, none flat (star_min_at's). */
-static int star_valid(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v,
-                      const double x[3], double was, const double *cs)
-{
-  const struct tr_mesh *m = c->m;
-  if (!tr_sliver_star_positive(m, ball, v, x))
-    return 0;
   for (size_t i = 0; i < ball->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)ball->a[i];
     /* the angle as tr_sliver_min_dihedral_at gives it, from the cosine when known; the
@@ -140,14 +130,15 @@ static double star_ratio(const tr_sliver_ctx *c, const tr_u32buf *ball)
   return was;
 }
 
-/* Every face of the star through v has a tet behind it: v is inside the mesh. */
-static int star_closed(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v)
+int tr_sliver_star_closed(const struct tr_mesh *m, const tr_u32buf *ball, uint32_t v)
 {
   for (size_t i = 0; i < ball->n; i++)
-    for (int k = 0; k < 4; k++)
+    for (int k = 0; k < 4; k++) {
+      uint32_t nb = m->tn[4 * (size_t)ball->a[i] + (size_t)k];
       if (m->tv[4 * (size_t)ball->a[i] + (size_t)k] != v &&
-          m->tn[4 * (size_t)ball->a[i] + (size_t)k] == TR_NONE)
+          (nb == TR_NONE || tr_tet_is_ghost(m, nb >> 2)))
         return 0;
+    }
   return 1;
 }
 
@@ -246,7 +237,7 @@ static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, doub
     int b = best_trial(val, nt, q0);
     if (b < 0)
       break;
-    if (star_valid(c, ball, v, trial[b], was, b == top && cur ? kept : NULL)) {
+    if (tr_sliver_star_valid(c, ball, v, trial[b], was, b == top && cur ? kept : NULL)) {
       pick = b;
       break;
     }
@@ -265,7 +256,7 @@ static void move(const tr_sliver_ctx *c, const tr_u32buf *ball, uint32_t v, doub
     val[i] = star_min_at(m, ball, v, trial[i], q0, cf, worst, worst, &arg, NULL);
   for (;;) {
     int b = best_trial(val, nt, q0);
-    if (b < 0 || star_valid(c, ball, v, trial[b], was, NULL)) {
+    if (b < 0 || tr_sliver_star_valid(c, ball, v, trial[b], was, NULL)) {
       ref = b;
       break;
     }
@@ -287,7 +278,7 @@ tr_status tr_sliver_smooth_vertex(tr_sliver_ctx *c, uint32_t v, double bound, tr
   if (!c->movable[v])
     return TR_OK;
   TR_CHECK(tr_ball(m, v, 0, ball));
-  if (!ball->n || !star_closed(m, ball, v))
+  if (!ball->n || !tr_sliver_star_closed(m, ball, v))
     return TR_OK;
   for (int it = 0; it < SL_MOVES; it++) {
     size_t worst = 0;

@@ -13,6 +13,7 @@
 #include "refine/quality.h"
 #include "sliver/sliver.h"
 #include "../pipeline/tmesh.h"
+#include "tico.h"
 
 /* The star of v: its largest radius-edge ratio and smallest dihedral angle. */
 static void star_shape(const tr_mesh *m, uint32_t v, double *top, double *low)
@@ -121,35 +122,10 @@ static void no_ratio_bound_no_move(void)
  * exact-double surface: each new vertex is the rounded projection, fixed once), into plc. */
 static tr_status icosphere(tr_plc **plc)
 {
-  const double f = (1 + sqrt(5.0)) / 2;
   double x[3 * 162];
-  uint32_t t[3 * 320], nv = 12, nt = 0;
-  for (int i = 0; i < 12; i++) {
-    double a[3] = {0, i & 1 ? -1 : 1, i & 2 ? -f : f};
-    for (int k = 0; k < 3; k++)
-      x[3 * i + k] = a[(k + 3 - i / 4) % 3];
-  }
-  for (uint32_t a = 0; a < 12; a++) /* the 20 faces: triples of pairwise neighbours */
-    for (uint32_t b = a + 1; b < 12; b++)
-      for (uint32_t c = b + 1; c < 12; c++) {
-        const uint32_t id[3] = {a, b, c};
-        int edges = 0;
-        for (int i = 0; i < 3; i++) {
-          double d = 0;
-          for (int k = 0; k < 3; k++)
-            d += (x[3 * id[i] + k] - x[3 * id[(i + 1) % 3] + k]) *
-                 (x[3 * id[i] + k] - x[3 * id[(i + 1) % 3] + k]);
-          edges += d < 4.5;
-        }
-        if (edges < 3)
-          continue;
-        double u[3], w[3], s = 0;
-        for (int k = 0; k < 3; k++)
-          u[k] = x[3 * b + k] - x[3 * a + k], w[k] = x[3 * c + k] - x[3 * a + k];
-        for (int k = 0; k < 3; k++)
-          s += (u[(k + 1) % 3] * w[(k + 2) % 3] - u[(k + 2) % 3] * w[(k + 1) % 3]) * x[3 * a + k];
-        t[nt++] = a, t[nt++] = s > 0 ? b : c, t[nt++] = s > 0 ? c : b;
-      }
+  uint32_t t[3 * 320], nv = 12, nt = 60;
+  TR_CHECK(tico_icosahedron(x, t));
+  const double f = (1 + sqrt(5.0)) / 2;
   double rad = sqrt(1 + f * f);
   for (int level = 0; level < 2; level++) {
     uint32_t n = nt / 3, mid[3];

@@ -13,6 +13,7 @@
 #include "refine/refine.h"
 #include "sliver/sliver.h"
 #include "../pipeline/tmesh.h"
+#include "tico.h"
 
 /* The box [0,1]^3 (vertices 0..7) and a sliver: a square at z = 1/2 folded by e, its
  * corners alternately up and down (vertices 8..11). Its circumsphere is centred in the
@@ -342,36 +343,9 @@ static void refined_surfaces(const char *dir)
  * oriented outward, into plc. */
 static tr_status icosahedron(tr_plc **plc)
 {
-  const double f = (1 + sqrt(5.0)) / 2;
   double x[36];
-  for (int i = 0; i < 12; i++) {
-    double a[3] = {0, i & 1 ? -1 : 1, i & 2 ? -f : f};
-    for (int k = 0; k < 3; k++)
-      x[3 * i + k] = a[(k + 3 - i / 4) % 3];
-  }
-  uint32_t tris[60], n = 0;
-  for (uint32_t a = 0; a < 12; a++)
-    for (uint32_t b = a + 1; b < 12; b++)
-      for (uint32_t c = b + 1; c < 12; c++) {
-        const double *p[3] = {x + 3 * a, x + 3 * b, x + 3 * c};
-        int edges = 0; /* the 30 edges have length 2, every other pair is longer */
-        for (int i = 0; i < 3; i++) {
-          double d = 0;
-          for (int k = 0; k < 3; k++)
-            d += (p[i][k] - p[(i + 1) % 3][k]) * (p[i][k] - p[(i + 1) % 3][k]);
-          edges += d < 4.5;
-        }
-        if (edges < 3 || n >= 60)
-          continue;
-        double u[3], v[3], nn = 0;
-        for (int k = 0; k < 3; k++)
-          u[k] = p[1][k] - p[0][k], v[k] = p[2][k] - p[0][k];
-        for (int k = 0; k < 3; k++) /* outward: the normal points away from the origin */
-          nn += (u[(k + 1) % 3] * v[(k + 2) % 3] - u[(k + 2) % 3] * v[(k + 1) % 3]) * p[0][k];
-        tris[n++] = a, tris[n++] = nn > 0 ? b : c, tris[n++] = nn > 0 ? c : b;
-      }
-  if (n != 60)
-    return tr_error(TR_ERR_INTERNAL, "icosahedron: %u faces", n / 3);
+  uint32_t tris[60];
+  TR_CHECK(tico_icosahedron(x, tris));
   TR_CHECK(tr_plc_create(plc));
   return tr_plc_set(*plc, x, 12, tris, 20, NULL);
 }
