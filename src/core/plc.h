@@ -8,6 +8,9 @@
 
 #include "tetrec.h"
 
+/* Values of tr_plc.hole_cavity. */
+enum { TR_HOLE_EMPTIED = 1, TR_HOLE_IN_CAVITY = 2 };
+
 struct tr_plc {
   uint32_t npoints;
   double *xyz;           /* 3 * npoints */
@@ -32,9 +35,12 @@ struct tr_plc {
   int32_t *region_attr;  /* nregions */
   double *region_maxvol; /* nregions, <= 0: no constraint */
   uint32_t ncavities, ninclusions; /* nested shells by kind, from tr_plc_validate */
-  uint8_t *hole_cavity;  /* NULL or nholes: 1 = the hole point emptied a cell of the
-                            domain in tr_plc_validate (a nested shell made a cavity, or a
-                            cell of the cell analysis), so it lies outside by design */
+  uint8_t *hole_cavity;  /* NULL or nholes, from tr_plc_validate: TR_HOLE_EMPTIED = the
+                            hole point emptied a cell of the domain (a nested shell made a
+                            cavity, or a cell of the cell analysis); TR_HOLE_IN_CAVITY = it
+                            lies in a cavity the surface leaves empty anyway; either way it
+                            lies outside by design. 0: outside every shell, or in the
+                            domain (the outer stage tells which) */
   char *source;          /* file name for messages, or NULL */
   char *report;          /* repairs made by tr_plc_validate, one per line, or NULL */
   double validate_seconds[3]; /* the last tr_plc_validate: whole, of which

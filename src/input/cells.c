@@ -19,14 +19,17 @@
  *
  * Domain. The unbounded cell has depth 0; a cell's depth is the fewest triangles
  * crossed to reach it from infinity. Depth 1 is inside the domain. A deeper cell is
- * inside iff most of the triangles between it and shallower cells face out of it (an
- * inclusion, a region of its own, or a body inside a cavity) and outside iff most face
- * into it (a cavity), as tr_input_shell_cavities decides for closed shells; on a tie,
- * odd depth is inside and even depth outside (a cavity is at depth 2). The cell of a
- * hole point (located by a ray: the side of the first triangle crossed) is outside. A triangle between an inside and an outside cell is turned to face the
- * outside cell; a triangle with the domain (or the outside) on both sides, an internal
- * facet or a crack, keeps its orientation. A triangle with a free edge whose cell is
- * outside the domain is an open surface: an error unless allow_open. */
+ * inside iff most of the triangles between it and shallower cells face out of it as
+ * given (an inclusion, a region of its own, or a body inside a cavity) and outside iff
+ * most face into it (a cavity), as tr_input_shell_cavities decides for closed shells; on
+ * a tie, odd depth is inside and even depth outside (a cavity is at depth 2). The cell of
+ * a hole point (located by a ray: the side of the first triangle crossed) is outside. A
+ * triangle between an inside and an outside cell is turned to face the outside cell, one
+ * between a nested cell and a shallower cell of the same kind to face out of the nested
+ * cell if it is inside and into it if not; any other triangle with the domain (or the
+ * outside) on both sides, an internal facet or a crack, keeps its orientation. A
+ * triangle with a free edge whose cell is outside the domain is an open surface: an
+ * error unless allow_open. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -481,8 +484,9 @@ static int cast(caster *c, uint32_t t, int s, uint32_t *uf, uint32_t inf)
 
 /* The analysis; sides (may be NULL) receives per triangle, after orientation, bit 0 =
  * the + side is in the domain, bit 1 = the - side is; tnum / orig may be NULL;
- * hole_used (may be NULL) marks the hole points whose cell would be in the domain
- * without them. */
+ * hole_used (may be NULL) receives per hole point TR_HOLE_EMPTIED if its cell would be
+ * in the domain without it, TR_HOLE_IN_CAVITY if its cell is a cavity anyway, 0 if it
+ * lies outside every shell. */
 static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t *orig,
                        int allow_open, char *flipped, uint8_t *sides, uint8_t *hole_used)
 {
@@ -604,10 +608,14 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
                     PRE(plc), tnum ? tnum[t] : t);
       goto done;
     }
+    /* The orientation as given votes, as in nesting.c: the consistency repair turned a
+     * whole shell to agree with its first triangle, which says nothing of the shell's
+     * kind (a .poly box with one facet listed inward is still an inclusion). */
+    int as_given = flipped && flipped[t] ? -1 : 1;
     if (depth[p] == depth[m] + 1 && depth[p] >= 2)
-      vote[p]--; /* the normal points into p, the inner cell */
+      vote[p] -= as_given; /* the normal points into p, the inner cell */
     else if (depth[m] == depth[p] + 1 && depth[m] >= 2)
-      vote[m]++;
+      vote[m] += as_given;
   }
   /* A hole point's cell is outside the domain (vote INT32_MIN marks it). */
   for (uint32_t h = 0; h < plc->nholes; h++) {
@@ -635,9 +643,15 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
                     "an edge)", h);
       goto done;
     }
-    if (hole_used) /* a second hole point in an emptied cell counts as used too */
+    /* a second hole point in an emptied cell counts as used too; one in a cell already
+     * outside is either in a cavity (the surface leaves it empty: asked and done) or
+     * outside every shell (it removes nothing) */
+    if (hole_used)
       hole_used[h] = vote[cell] == INT32_MIN ||
-                     (vote[cell] ? vote[cell] > 0 : (int)(depth[cell] & 1));
+                             (vote[cell] ? vote[cell] > 0 : (int)(depth[cell] & 1))
+                         ? TR_HOLE_EMPTIED
+                     : depth[cell] ? TR_HOLE_IN_CAVITY
+                                   : 0;
     vote[cell] = INT32_MIN;
   }
   for (uint32_t t = 0; t < nt; t++) {
@@ -667,7 +681,16 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
     }
     if (sides) /* after the turn below, when there is one: outside on the + side */
       sides[t] = (uint8_t)(in_p && !in_m ? 2 : in_p | in_m << 1);
-    if (in_p && !in_m) { /* the normal points into the domain: turn it */
+    /* Between a nested cell and a shallower one the triangle faces the way its vote
+     * went (out of an inner cell, into an outer one), so that the analysis of the
+     * validated surface (tr_input_side_domains, as given = as it is) decides alike;
+     * elsewhere only a normal pointing into the domain from outside is turned. */
+    int turn = in_p && !in_m;
+    if (in_p == in_m && depth[p] == depth[m] + 1 && depth[p] >= 2)
+      turn = in_p;
+    else if (in_p == in_m && depth[m] == depth[p] + 1 && depth[m] >= 2)
+      turn = !in_m;
+    if (turn) {
       uint32_t *v = plc->tris + 3 * (size_t)t, x = v[1];
       v[1] = v[2];
       v[2] = x;

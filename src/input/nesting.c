@@ -284,8 +284,9 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
   uint32_t *byd = malloc(sizeof *byd * ncomp), *holed = calloc(ncomp, sizeof *holed);
   uint32_t *regioned = calloc(ncomp, sizeof *regioned);
   char *dom_in = calloc(ncomp, 1);
+  uint32_t *hin = malloc(sizeof *hin * (plc->nholes ? plc->nholes : 1)); /* innermost shell */
   tr_status st = TR_OK;
-  if (!depth || !parent || !cstart || !byd || !holed || !regioned || !dom_in) {
+  if (!depth || !parent || !cstart || !byd || !holed || !regioned || !dom_in || !hin) {
     st = tr_error(TR_ERR_NOMEM, "out of memory deciding shell nesting");
     goto done;
   }
@@ -340,6 +341,8 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
       uint32_t i = hole ? h : h - plc->nholes;
       tr_point P = tr_pt_d(hole ? plc->holes + 3 * (size_t)i : plc->region_xyz + 3 * (size_t)i);
       hn = 0;
+      if (hole)
+        hin[i] = UINT32_MAX;
       int r = containers(&N, &P, UINT32_MAX, &hl, &hn, &hcap);
       if (r == -2) {
         free(hl);
@@ -351,6 +354,8 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
         uint32_t *mark = hole ? holed : regioned;
         if (!mark[c])
           mark[c] = i + 1;
+        if (hole)
+          hin[i] = c;
       }
     }
     free(hl);
@@ -374,8 +379,6 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
     if (holed[c] || (!regioned[c] && given[c] <= 0)) {
       cavity[c] = 1;
       (*ncav)++;
-      if (holed[c] && plc->hole_cavity)
-        plc->hole_cavity[holed[c] - 1] = 1;
       if (holed[c])
         tr_report_add(rep, TR_REP_SHELL,
                       "shell of triangle %u (inside the shell of triangle %u) is a cavity: "
@@ -404,7 +407,15 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
                       "hole point in it, to make it a cavity)", t0, tp);
     }
   }
+  /* Every hole point in a cavity, not only the one that named it, did what it asked
+   * (the outer stage finds it in no tet and must not call it outside the domain); the
+   * cavity is its doing unless the shell was given facing into itself anyway. */
+  for (uint32_t h = 0; h < plc->nholes && plc->hole_cavity; h++)
+    if (hin[h] != UINT32_MAX && cavity[hin[h]])
+      plc->hole_cavity[h] = !regioned[hin[h]] && given[hin[h]] <= 0 ? TR_HOLE_IN_CAVITY
+                                                                     : TR_HOLE_EMPTIED;
 done:
+  free(hin);
   free(N.tbox);
   free(N.sbox);
   free(N.stamp);

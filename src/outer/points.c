@@ -244,7 +244,14 @@ tr_status tr_outer_points(struct tr_mesh *m, const struct tr_plc *plc, int verbo
                       p[0], p[1], p[2]);
         break;
       }
-      if (plc->hole_cavity && plc->hole_cavity[j]) {
+      /* Validation knows why the cell is empty: a hole point there did what it asked;
+       * only one outside every shell removes nothing. */
+      uint8_t why = plc->hole_cavity ? plc->hole_cavity[j] : 0;
+      if (why == TR_HOLE_IN_CAVITY) {
+        if (verbose >= 2)
+          fprintf(stderr, "tetrec: hole point %u lies in a cavity the surface already leaves "
+                          "empty\n", j);
+      } else if (why) {
         if (verbose >= 2)
           fprintf(stderr, "tetrec: hole point %u: its cell was made empty by validation\n", j);
       } else if (verbose >= 1)

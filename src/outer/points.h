@@ -9,7 +9,8 @@
  * (TR_ERR_INPUT, naming the point): a hole or region point on an input triangle, a
  * region point outside the domain or in an emptied cell, two region points with
  * different attributes in one cell. Warnings on stderr (verbose >= 1): a hole point
- * outside the domain (it removes nothing), a region's positive maximum volume (stored,
+ * outside every shell (it removes nothing; one in a cavity the surface leaves empty
+ * anyway is not warned about), a region's positive maximum volume (stored,
  * not supported: there is no refinement). verbose >= 2 says which region each point hit.
  * *nregions becomes the number of inner cells left. Exact: the points are located with
  * exact orient3d, also among rational Steiner points. Cost: one pass over the input

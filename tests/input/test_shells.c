@@ -2,10 +2,12 @@
  * tr_plc_add_hole / tr_plc_add_region, src/input/nesting.c, src/outer/points.c). Every
  * mesh goes through the mesh validator and the exact conformity validator with the
  * exact volume expected from the construction (small integers, exact in doubles). */
+#define _POSIX_C_SOURCE 200809L /* dup, dup2, fileno: the warnings are read back */
 #include <gmp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/plc.h"
 #include "input/validate.h"
@@ -66,13 +68,15 @@ static tr_plc *nested(int inner_inward)
   return make(&b);
 }
 
+static int verbosity; /* opt.verbose of mesh(); mesh_said() raises it */
+
 /* Meshes p, runs both validators with the expected 6 * volume, and checks that the
  * cell analysis's domain volume of the meshed PLC agrees. NULL on failure. */
 static tr_mesh *mesh(const char *name, const tr_plc *p, long vol6, tr_plc **used_out)
 {
   tr_options opt;
   tr_options_default(&opt);
-  opt.verbose = 0;
+  opt.verbose = verbosity;
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
   tr_status s = tr_mesh_plc_ex(p, &opt, &m, NULL, &used);
@@ -94,6 +98,39 @@ static tr_mesh *mesh(const char *name, const tr_plc *p, long vol6, tr_plc **used
     *used_out = used;
   else
     tr_plc_destroy(used);
+  return m;
+}
+
+/* mesh() at verbosity v, with what it wrote to stderr in said[0 .. n) (NUL-terminated);
+ * a failure's own lines are passed on. */
+static tr_mesh *mesh_said(const char *name, const tr_plc *p, long vol6, int v, char *said,
+                          size_t n)
+{
+  said[0] = 0;
+  fflush(stderr);
+  FILE *tf = tmpfile();
+  int saved = tf ? dup(2) : -1;
+  if (saved < 0 || dup2(fileno(tf), 2) < 0) {
+    EXPECT(0, "%s: cannot capture stderr", name);
+    if (tf)
+      fclose(tf);
+    if (saved >= 0)
+      close(saved);
+    return NULL;
+  }
+  int before = failures;
+  verbosity = v;
+  tr_mesh *m = mesh(name, p, vol6, NULL);
+  verbosity = 0;
+  fflush(stderr);
+  dup2(saved, 2);
+  close(saved);
+  rewind(tf);
+  size_t k = fread(said, 1, n - 1, tf);
+  said[k] = 0;
+  fclose(tf);
+  if (failures != before)
+    fputs(said, stderr);
   return m;
 }
 
@@ -438,6 +475,118 @@ static void t_segments(void)
   tr_plc_destroy(p);
 }
 
+/* The box [0,4]^3 cut by the internal facet x = 2 (so the cell analysis, not the
+ * closed-shell nesting, decides the domain) holding the box B = [0.5,1.5]x[1,3]x[1,3],
+ * as a .poly whose facets carry no orientation: B's first facet is listed facing into
+ * B, its other five facing out (as TetGen's example.poly lists its inner box), and the
+ * hole points are hx[0 .. nh). */
+static int write_split_box(const char *path, const double (*hx)[3], int nh)
+{
+  FILE *f = fopen(path, "w");
+  if (!f)
+    return 0;
+  fprintf(f, "20 3 0 0\n");
+  for (int k = 0; k < 2; k++) /* 1..12: x in {0,2,4}, y in {0,4}, z in {0,4} */
+    for (int j = 0; j < 2; j++)
+      for (int i = 0; i < 3; i++)
+        fprintf(f, "%d %d %d %d\n", 1 + i + 3 * j + 6 * k, 2 * i, 4 * j, 4 * k);
+  for (int i = 0; i < 8; i++) /* 13..20: B, bit 0 x, bit 1 y, bit 2 z */
+    fprintf(f, "%d %g %d %d\n", 13 + i, i & 1 ? 1.5 : 0.5, i & 2 ? 3 : 1, i & 4 ? 3 : 1);
+  fprintf(f, "17 0\n");
+  for (int i = 0; i < 3; i++) /* x = 0, the internal x = 2, x = 4 */
+    fprintf(f, "1\n4 %d %d %d %d\n", 1 + i, 4 + i, 10 + i, 7 + i);
+  for (int i = 0; i < 2; i++) /* y = 0, y = 4, z = 0, z = 4 over each half */
+    fprintf(f, "1\n4 %d %d %d %d\n1\n4 %d %d %d %d\n1\n4 %d %d %d %d\n1\n4 %d %d %d %d\n",
+            1 + i, 2 + i, 8 + i, 7 + i, 4 + i, 5 + i, 11 + i, 10 + i, 1 + i, 2 + i, 5 + i,
+            4 + i, 7 + i, 8 + i, 11 + i, 10 + i);
+  static const int q[6][4] = {{1, 3, 2, 0}, {4, 5, 7, 6}, {0, 1, 5, 4}, /* first: inward */
+                              {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int k = 0; k < 6; k++)
+    fprintf(f, "1\n4 %d %d %d %d\n", 13 + q[k][0], 13 + q[k][1], 13 + q[k][2], 13 + q[k][3]);
+  fprintf(f, "%d\n", nh);
+  for (int h = 0; h < nh; h++)
+    fprintf(f, "%d %g %g %g\n", h + 1, hx[h][0], hx[h][1], hx[h][2]);
+  fprintf(f, "0\n");
+  return fclose(f) == 0;
+}
+
+/* 1 iff the centroid of tet t lies in the open box B of write_split_box. */
+static int centroid_in_b(const tr_mesh *m, uint32_t t)
+{
+  static const double lo[3] = {0.5, 1, 1}, hi[3] = {1.5, 3, 3};
+  for (int d = 0; d < 3; d++) {
+    double c = 0;
+    for (int k = 0; k < 4; k++)
+      c += m->xyz[3 * (size_t)m->tv[4 * (size_t)t + k] + d];
+    if (!(c / 4 > lo[d] && c / 4 < hi[d]))
+      return 0;
+  }
+  return 1;
+}
+
+/* Issue 50, 6b (TetGen's example.poly): a hole point in an inner box whose first facet
+ * happens to be listed inward empties the box, and says nothing at -v: the box is an
+ * inclusion by the majority of its facets as given (it was taken for a cavity by the
+ * orientation of its first facet, and the hole point warned "outside the domain: it
+ * removes nothing"). Without the hole point the box is meshed, as TetGen meshes it. */
+static void t_hole_box_poly(const char *dir)
+{
+  char path[4096], said[1 << 16];
+  static const double hx[2][3] = {{1, 2, 2}, {9, 9, 9}};
+  for (int nh = 0; nh <= 2; nh++) {
+    snprintf(path, sizeof path, "%s/split_box_holes%d.poly", dir, nh);
+    EXPECT(write_split_box(path, hx, nh), "cannot write %s", path);
+    tr_plc *p = NULL;
+    tr_status s = tr_plc_read(path, &p);
+    EXPECT(s == TR_OK, "read %s: %s", path, tr_last_error());
+    if (s != TR_OK)
+      continue;
+    tr_mesh *m = mesh_said(path, p, 6 * (nh ? 64 - 4 : 64), 1, said, sizeof said);
+    if (m) {
+      uint32_t in_b = 0, mixed = 0;
+      for (uint32_t t = 0; t < m->nt; t++) {
+        int b = centroid_in_b(m, t);
+        in_b += b;
+        mixed += b && m->region[t] == m->region[0] && !centroid_in_b(m, 0);
+      }
+      EXPECT(nh ? in_b == 0 : in_b > 0 && mixed == 0,
+             "holes %d: %u tets in the box, %u of them in a region outside it", nh, in_b, mixed);
+    }
+    EXPECT(!strstr(said, "hole point 0"), "holes %d: hole point 0 in the box reported: %s",
+           nh, said);
+    /* one outside both halves removes nothing: that warning stays */
+    EXPECT((nh == 2) == (strstr(said, "warning: hole point 1") &&
+                         strstr(said, "it removes nothing")),
+           "holes %d: the warning for the hole point outside: %s", nh, said);
+    tr_mesh_destroy(m);
+    tr_plc_destroy(p);
+  }
+}
+
+/* A hole point in a cavity the surface leaves empty anyway (a box given facing into
+ * itself) did what it asked: no warning at -v, and at -v -v exactly that; a hole point
+ * outside every shell is warned about. The closed-shell nesting decides here. */
+static void t_hole_said(void)
+{
+  char said[1 << 16];
+  tr_plc *p = nested(1);
+  tr_plc_add_hole(p, 2, 2, 2);
+  tr_plc_add_hole(p, 9, 9, 9);
+  for (int v = 1; v <= 2; v++) {
+    tr_mesh *m = mesh_said("hole_in_cavity_and_outside", p, 6 * (64 - 8), v, said, sizeof said);
+    EXPECT(m && max_region(m) == 1, "hole in a cavity: not one region left");
+    EXPECT((v == 2) == (strstr(said, "tetrec: hole point 0 lies in a cavity the surface "
+                                     "already leaves empty") != NULL) &&
+               !strstr(said, "warning: hole point 0"),
+           "-v x%d: hole point 0 in the inward box: %s", v, said);
+    EXPECT(strstr(said, "warning: hole point 1 (9, 9, 9) lies outside the domain: it "
+                        "removes nothing") != NULL,
+           "-v x%d: hole point 1 outside not warned about: %s", v, said);
+    tr_mesh_destroy(m);
+  }
+  tr_plc_destroy(p);
+}
+
 /* The hole and region sections of a .poly file reach the PLC and the mesh. */
 static void t_poly(const char *dir)
 {
@@ -520,6 +669,10 @@ int main(int argc, char **argv)
     t_segments();
   if (all || !strcmp(w, "poly"))
     t_poly(argc > 2 ? argv[2] : ".");
+  if (all || !strcmp(w, "hole_box_poly"))
+    t_hole_box_poly(argc > 2 ? argv[2] : ".");
+  if (all || !strcmp(w, "hole_said"))
+    t_hole_said();
   if (failures)
     fprintf(stderr, "%d failure(s)\n", failures);
   return failures ? 1 : 0;
