@@ -69,9 +69,29 @@ tr_status tr_recover_edges(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
  * no_lawson: no Lawson flips around the midpoints (the mesh is left as the split made it). */
 typedef struct tr_edge_recovery_opts {
   int no_flips, no_midpoints, no_lawson;
+  /* NULL, or one flag per input edge: 1 for an edge inside a flat region (its two input
+   * triangles exactly coplanar, one marker; tr_flat_edges). The flips recover the other
+   * edges first with only those protected, then these (see recover_edges.c). */
+  const uint8_t *flat;
 } tr_edge_recovery_opts;
 tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
                               const tr_edge_recovery_opts *opt, tr_edge_chains *chains,
                               tr_edge_recovery_stats *st);
+
+/* flat[i] = 1 iff input edge i (edges: sorted pairs, as tr_recover_edges takes them) has
+ * exactly two triangles of plc, exactly coplanar and with one marker, and is no segment
+ * (surfswap.c). */
+tr_status tr_flat_edges(const struct tr_plc *plc, const uint32_t *edges, uint32_t n,
+                        uint8_t *flat);
+
+/* Before recovery: swaps diagonals of exactly coplanar input triangle pairs (one marker,
+ * strictly convex quad) whose shared edge the mesh lacks for the other diagonal when the
+ * mesh has it (surfswap.c); edges: plc's input edges as tr_recover_edges takes them;
+ * *nswaps = how many, *nmissing = the input edges the mesh lacked before them. After a
+ * swap the input edges must be listed again. */
+struct tr_plc;
+tr_status tr_surface_swaps_to_mesh(struct tr_plc *plc, struct tr_mesh *m,
+                                   const uint32_t *edges, uint32_t ne, uint64_t *nswaps,
+                                   uint32_t *nmissing);
 
 #endif

@@ -70,7 +70,20 @@ static int convex_quad(const double *A, const double *B, const double *C, const 
   return s1 * s2 < 0 && s3 * s4 < 0;
 }
 
+static int incircle_rule(void *user, const double *const q[4], uint32_t A, uint32_t B,
+                         uint32_t C, uint32_t D)
+{
+  (void)user, (void)A, (void)B, (void)C, (void)D;
+  return tr_coplanar_incircle(q[0], q[2], q[1], q[3]);
+}
+
 tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
+{
+  return tr_smooth_surface_rule(plc, incircle_rule, NULL, nswaps);
+}
+
+tr_status tr_smooth_surface_rule(struct tr_plc *plc, tr_swap_rule rule, void *user,
+                                 uint64_t *nswaps)
 {
   *nswaps = 0;
   uint32_t nt = plc->ntris, ne = 3 * nt, nv = plc->npoints;
@@ -128,8 +141,9 @@ tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps)
         continue;
       const double *pa = X + 3 * (size_t)A, *pb = X + 3 * (size_t)B, *pc = X + 3 * (size_t)C,
                    *pd = X + 3 * (size_t)D;
+      const double *const quad[4] = {pa, pb, pc, pd};
       if (tr_orient3d(pa, pb, pc, pd) != 0 || !convex_quad(pa, pb, pc, pd) ||
-          !tr_coplanar_incircle(pa, pc, pb, pd)) {
+          !rule(user, quad, A, B, C, D)) {
         rej[s1] = (uint32_t)pass + 1;
         rejp[s1] = s2;
         continue;

@@ -30,6 +30,16 @@
  * tr_plc_validate); *nswaps = number of swaps done. */
 tr_status tr_smooth_surface(struct tr_plc *plc, uint64_t *nswaps);
 
+/* The swap condition (4) of tr_smooth_surface made a parameter: called on a quad that
+ * meets (1)-(3), with q = the points of A, B, C, D (AC the shared diagonal); 1 to swap AC
+ * for BD. It must depend on the four vertices only: a refusal is remembered while
+ * neither triangle changes. Each swap must make progress towards a fixed point (the
+ * passes stop at TR_SMOOTH_MAX_PASSES otherwise). */
+typedef int (*tr_swap_rule)(void *user, const double *const q[4], uint32_t A, uint32_t B,
+                            uint32_t C, uint32_t D);
+tr_status tr_smooth_surface_rule(struct tr_plc *plc, tr_swap_rule rule, void *user,
+                                 uint64_t *nswaps);
+
 /* 1 iff D is strictly inside the circumcircle of the non-degenerate triangle ABC, the four
  * points being coplanar (exact). */
 int tr_coplanar_incircle(const double a[3], const double b[3], const double c[3],

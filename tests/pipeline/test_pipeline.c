@@ -184,11 +184,15 @@ static void t_cube(int n)
   EXPECT(r == 1, "%s: expected 1 region, got %d", name, r);
   EXPECT(st.surface_nodes == (uint64_t)(6 * n * n + 2), "%s: surface nodes %llu", name,
          (unsigned long long)st.surface_nodes);
+  EXPECT(st.surface_swaps == 0, "%s: %llu swaps without smoothing", name,
+         (unsigned long long)st.surface_swaps);
   r = run(name, p, 0, 1, 0, &st, NULL);
   EXPECT(r == 1, "%s (smoothed): expected 1 region, got %d", name, r);
-  /* squares are cocircular: strict incircle never swaps them */
-  EXPECT(st.surface_swaps == 0, "%s: %llu swaps on cocircular squares", name,
-         (unsigned long long)st.surface_swaps);
+  /* squares are cocircular: strict incircle never swaps them, so every swap is one
+   * towards the Delaunay mesh's own diagonal, and then no edge is missing */
+  EXPECT(st.missing_edges == 0 && st.points_added_for_edges == 0,
+         "%s: %llu edges missing after %llu swaps towards the mesh on cocircular squares",
+         name, (unsigned long long)st.missing_edges, (unsigned long long)st.surface_swaps);
   tr_plc_destroy(p);
 }
 

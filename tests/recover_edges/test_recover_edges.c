@@ -526,7 +526,7 @@ static int insert_point(struct tr_mesh *m, tr_qpoint *q, uint32_t *id)
 static int test_equal_doubles(void)
 {
   static const double xyz[] = {0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1, 0.4, 0.45, 0, 0.6, 0.55, 2};
-  static const tr_edge_recovery_opts opts[3] = {{0, 0, 0}, {1, 0, 1}, {1, 1, 0}};
+  static const tr_edge_recovery_opts opts[3] = {{0, 0, 0, NULL}, {1, 0, 1, NULL}, {1, 1, 0, NULL}};
   static const char *const names[3] = {"equal doubles, defaults",
                                        "equal doubles, no flips and no Lawson flips",
                                        "equal doubles, no flips and no midpoint splits"};
