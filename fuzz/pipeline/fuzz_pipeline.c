@@ -24,6 +24,15 @@
  *    is far above an ulp).
  * Bit 4 of byte 0 scrambles the triangle orientations (the validator repairs them).
  *
+ * Scale (issue 50): an input that ends in the four bytes '2' '^' e0 e1 is the input
+ * without them, scaled by 2^e with e = (e0 + 256 e1) mod 1201 - 600, in [-600, 600] (the
+ * volume too, exactly). Multiplying by a power of two is exact, so the same geometry meets
+ * the code at extreme magnitudes, where double arithmetic on coordinates overflows or
+ * underflows (a NaN point once reached GMP in suppression, and every statistic
+ * overflowed). A trailer rather than more bits from the stream: the seeds before it
+ * (none ends so) keep their meaning, the regression seeds their scale; libFuzzer's
+ * comparison tracing finds the two marker bytes, and seeds with it are in the corpus.
+ *
  * The mesh is asked with TR_PIPE_KEEP_EXACT, so the validators see the exact mesh even
  * when no doubles keep every tet positive (TR_FUZZ_STRICT_ROUNDING=1 makes that a
  * finding too).
@@ -139,10 +148,32 @@ static void finding(const char *stage, tr_status st, const char *msg)
 
 /* Meshes g and validates the result. vol6 NULL: the volume the surface encloses;
  * euler: also check V - E + F - T == 1 (the domain is a ball or at least has chi 1). */
-static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
+static int scale_exp; /* e of the trailer, 0 without one */
+
+static void run(const gen *g0, mpq_srcptr vol0, int euler, const char *kind)
 {
-  if (g->nt > MAX_TRIS)
+  if (g0->nt > MAX_TRIS)
     return;
+  /* the scale (top comment): the generated points and the volume times 2^e, exactly */
+  static gen gs;
+  const gen *g = g0;
+  mpq_t vol6s;
+  mpq_init(vol6s);
+  mpq_srcptr vol6 = vol0;
+  int e = scale_exp;
+  if (e) {
+    memcpy(&gs, g0, sizeof gs);
+    for (uint32_t i = 0; i < 3 * gs.np; i++)
+      gs.xyz[i] = ldexp(gs.xyz[i], e);
+    g = &gs;
+    if (vol0) {
+      if (e > 0)
+        mpq_mul_2exp(vol6s, vol0, (mp_bitcnt_t)(3 * e));
+      else
+        mpq_div_2exp(vol6s, vol0, (mp_bitcnt_t)(-3 * e));
+      vol6 = vol6s;
+    }
+  }
   tr_plc *plc = NULL;
   if (tr_plc_create(&plc) != TR_OK ||
       tr_plc_set(plc, g->xyz, g->np, g->tris, g->nt, NULL) != TR_OK)
@@ -191,9 +222,9 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
   tr_status st = tr_mesh_plc_flags(plc, &opt, &m, &stats, &used, TR_PIPE_KEEP_EXACT);
   if (verbose && *verbose && *verbose != '0')
     fprintf(stderr,
-            "fuzz_pipeline: %s: %u points, %u triangles -> %s, %u tets, %llu+%llu missing "
-            "edges+facets, %llu+%llu Steiner, %.1f ms\n",
-            kind, g->np, g->nt, tr_status_name(st), m ? tr_mesh_num_tets(m) : 0,
+            "fuzz_pipeline: %s at 2^%d: %u points, %u triangles -> %s, %u tets, %llu+%llu "
+            "missing edges+facets, %llu+%llu Steiner, %.1f ms\n",
+            kind, e, g->np, g->nt, tr_status_name(st), m ? tr_mesh_num_tets(m) : 0,
             (unsigned long long)stats.missing_edges, (unsigned long long)stats.missing_facets,
             (unsigned long long)stats.points_added_for_edges,
             (unsigned long long)stats.points_added_for_facets, 1e3 * stats.total_seconds);
@@ -204,6 +235,7 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
     tr_mesh_destroy(m);
     tr_plc_destroy(used);
     tr_plc_destroy(plc);
+    mpq_clear(vol6s);
     return;
   }
 #endif
@@ -277,6 +309,7 @@ static void run(const gen *g, mpq_srcptr vol6, int euler, const char *kind)
     finding("rounding of Steiner points", TR_ERR_INVALID_MESH, msg);
   }
   mpq_clear(dom);
+  mpq_clear(vol6s);
   tr_mesh_destroy(m);
   tr_plc_destroy(used);
   tr_plc_destroy(plc);
@@ -571,6 +604,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
   if (size == 0 || size > 4096)
     return 0;
+  scale_exp = 0;
+  if (size >= 4 && data[size - 4] == '2' && data[size - 3] == '^') {
+    scale_exp = (int)((data[size - 2] | (unsigned)data[size - 1] << 8) % 1201) - 600;
+    size -= 4;
+  }
   bitrd r = {data, size, 0, 0, 0};
 #ifdef TR_FUZZ_QUALITY
   quality_sel = bits(&r, 8);

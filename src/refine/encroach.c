@@ -330,9 +330,18 @@ tr_status rf_segment_split_point(rf_ctx *c, uint32_t s, tr_qpoint **out)
      * edges at a small angle do not encroach each other's pieces without end. r / |AB| is
      * irrational in general, so the parameter is r / |AB| rounded to 12 significant bits:
      * the shells of two edges then agree to 2^-11 */
-    double L = 0;
+    /* |AB| in the frame 2^-e0 that brings its half extent into [1/2, 1): the squares
+     * underflow to L = 0 (a NaN parameter reached GMP, which aborts) at 2^-600 and
+     * overflow at 2^600. tr below is r / |AB|, a ratio, the same in any frame; and a
+     * power of two scales exactly, so the shells at 2^k are those at 1 times 2^k. */
+    double h = 0, L = 0;
     for (int i = 0; i < 3; i++)
-      L += (pB.d[i] - pA.d[i]) * (pB.d[i] - pA.d[i]);
+      h = fmax(h, fabs(0.5 * pB.d[i] - 0.5 * pA.d[i]));
+    int e0 = h > 0 && isfinite(h) ? ilogb(h) + 1 : 0;
+    for (int i = 0; i < 3; i++) {
+      double d = ldexp(pB.d[i], -e0) - ldexp(pA.d[i], -e0);
+      L += d * d;
+    }
     L = sqrt(L);
     mpq_sub(w, hi, lo);
     double D = mpq_get_d(w) * L;
@@ -342,7 +351,10 @@ tr_status rf_segment_split_point(rf_ctx *c, uint32_t s, tr_qpoint **out)
     int te;
     frexp(tr, &te);
     double tq = ldexp(floor(ldexp(tr, 12 - te) + 0.5), te - 12);
-    mpq_set_d(t, tq);
+    if (isfinite(tq))
+      mpq_set_d(t, tq);
+    else
+      mpq_set_ui(t, 0, 1); /* GMP aborts on inf and NaN; the fallback below takes over */
     if (at_b) {
       mpq_set_ui(w, 1, 1);
       mpq_sub(t, w, t);

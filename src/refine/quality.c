@@ -21,11 +21,51 @@ static void cross3(const double *a, const double *b, double *o)
   o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* The measures are invariant under scaling; their double formulas, products of degree 2
+ * to 4 of coordinate differences, are not: a tet 1e200 across overflows them (every angle
+ * came out 180 and every ratio inf), one 1e-200 across underflows them. A tet whose half
+ * extent lies in [2^-SHAPE_SAFE, 2^SHAPE_SAFE) is measured as given (degree 4 stays within
+ * 2^(+-4 SHAPE_SAFE), inside the normal range), any other on its coordinates times 2^-e,
+ * its half extent then in [1/2, 1): multiplying by a power of two is exact, so the
+ * figures are those of the same tet at unit size, and the common case pays a bounding box
+ * and no libm call. Returns e (0: as given) and points *q at the coordinates to use. */
+#define SHAPE_SAFE 240
+
+static int shape_frame(const double *const p[4], double buf[4][3], const double *q[4])
+{
+  double half = 0;
+  for (int k = 0; k < 3; k++) {
+    double lo = p[0][k], hi = p[0][k];
+    for (int i = 1; i < 4; i++) {
+      lo = p[i][k] < lo ? p[i][k] : lo;
+      hi = p[i][k] > hi ? p[i][k] : hi;
+    }
+    double h = 0.5 * hi - 0.5 * lo; /* never overflows, unlike hi - lo */
+    half = h > half ? h : half;
+  }
+  for (int i = 0; i < 4; i++)
+    q[i] = p[i];
+  /* a flat point or a coordinate that is not finite has nothing to scale */
+  if (!(half > 0) || !isfinite(half) ||
+      (half >= 0x1p-240 && half < 0x1p240)) /* 2^-SHAPE_SAFE, 2^SHAPE_SAFE */
+    return 0;
+  int e = ilogb(half) + 1;
+  for (int i = 0; i < 4; i++) {
+    for (int k = 0; k < 3; k++)
+      buf[i][k] = ldexp(p[i][k], -e);
+    q[i] = buf[i];
+  }
+  return e;
+}
+
 /* cs[e] = the cosine of the angle between the normals of the two faces
  * at edge e (ECode order), clamped to [-1, 1]; 1 where a face has no normal. The
  * dihedral angle at e is pi minus its arccosine. */
-static void dihedral_cosines(const double *const p[4], double cs[6])
+static void dihedral_cosines(const double *const pin[4], double cs[6])
 {
+  double buf[4][3];
+  const double *p[4];
+  shape_frame(pin, buf, p);
   /* tr_face_vtx and, per edge of tr_edge_vtx, the two faces through it (those opposite
    * the other two vertices), as constants: with the mesh's tables (another unit) the
    * compiler could unroll nothing, and the search for the two faces was a tenth of this
@@ -50,10 +90,13 @@ static void dihedral_cosines(const double *const p[4], double cs[6])
   }
 }
 
-int tr_tet_shape(const double *a, const double *b, const double *c, const double *d,
+int tr_tet_shape(const double *a0, const double *b0, const double *c0, const double *d0,
                  double *ratio, double *volume, double dih[6], double cc[3])
 {
-  const double *p[4] = {a, b, c, d};
+  const double *p0[4] = {a0, b0, c0, d0}, *p[4];
+  double buf[4][3];
+  int fe = shape_frame(p0, buf, p);
+  const double *a = p[0], *b = p[1], *c = p[2], *d = p[3];
   double u[3], v[3], w[3];
   sub3(b, a, u);
   sub3(c, a, v);
@@ -63,7 +106,7 @@ int tr_tet_shape(const double *a, const double *b, const double *c, const double
   cross3(w, u, wu);
   cross3(u, v, uv);
   double det = dot3(u, vw);
-  *volume = det / 6;
+  *volume = fe ? ldexp(det / 6, 3 * fe) : det / 6;
   /* circumcentre: a + (|u|^2 v x w + |v|^2 w x u + |w|^2 u x v) / (2 det) */
   double uu = dot3(u, u), vv = dot3(v, v), ww = dot3(w, w), o[3];
   for (int i = 0; i < 3; i++)
@@ -75,29 +118,36 @@ int tr_tet_shape(const double *a, const double *b, const double *c, const double
     emin = fmin(emin, dot3(x, x));
   }
   *ratio = det != 0 ? R / sqrt(emin) : INFINITY;
+  int finite = isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]);
+  for (int i = 0; i < 3 && fe; i++)
+    o[i] = ldexp(o[i], fe);
   if (cc)
-    for (int i = 0; i < 3; i++)
-      cc[i] = a[i] + o[i];
+    for (int i = 0; i < 3; i++) {
+      cc[i] = a0[i] + o[i];
+      finite = finite && isfinite(cc[i]);
+    }
   if (dih) {
     double cs[6];
     dihedral_cosines(p, cs);
     for (int e = 0; e < 6; e++)
       dih[e] = tr_dihedral_of_cos(cs[e]);
   }
-  return isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]);
+  return finite;
 }
 
 double tr_tet_min_cos(const double *a, const double *b, const double *c, const double *d,
                       double *volume)
 {
-  const double *p[4] = {a, b, c, d};
+  const double *p0[4] = {a, b, c, d}, *p[4];
+  double buf[4][3];
+  int fe = shape_frame(p0, buf, p);
   /* the volume as tr_tet_shape computes it, the same operations in the same order */
   double u[3], v[3], w[3], vw[3];
-  sub3(b, a, u);
-  sub3(c, a, v);
-  sub3(d, a, w);
+  sub3(p[1], p[0], u);
+  sub3(p[2], p[0], v);
+  sub3(p[3], p[0], w);
   cross3(v, w, vw);
-  *volume = dot3(u, vw) / 6;
+  *volume = fe ? ldexp(dot3(u, vw) / 6, 3 * fe) : dot3(u, vw) / 6;
   double cs[6], lo = 1;
   dihedral_cosines(p, cs);
   for (int e = 0; e < 6; e++)

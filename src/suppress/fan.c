@@ -10,10 +10,19 @@ tr_status tr_sup_plane(const tr_plc *plc, uint32_t tri, int *drop, int *sign)
   const uint32_t *t = plc->tris + 3 * (size_t)tri;
   const double *a = plc->xyz + 3 * (size_t)t[0], *b = plc->xyz + 3 * (size_t)t[1],
                *c = plc->xyz + 3 * (size_t)t[2];
-  double u[3], w[3], n[3];
+  /* in the frame 2^-e that brings the triangle's half extent into [1/2, 1): at
+   * coordinates near 1e200 the products overflow (NaN orders nothing), near 1e-200 they
+   * underflow; the power of two is exact, so the order is that of the triangle at unit
+   * size, and the mesh that of the same surface at any scale */
+  double u[3], w[3], n[3], h = 0;
   for (int i = 0; i < 3; i++) {
-    u[i] = b[i] - a[i];
-    w[i] = c[i] - a[i];
+    double lo = fmin(a[i], fmin(b[i], c[i])), hi = fmax(a[i], fmax(b[i], c[i]));
+    h = fmax(h, 0.5 * hi - 0.5 * lo);
+  }
+  int e = h > 0 && isfinite(h) ? ilogb(h) + 1 : 0;
+  for (int i = 0; i < 3; i++) {
+    u[i] = ldexp(b[i], -e) - ldexp(a[i], -e);
+    w[i] = ldexp(c[i], -e) - ldexp(a[i], -e);
   }
   n[0] = fabs(u[1] * w[2] - u[2] * w[1]);
   n[1] = fabs(u[2] * w[0] - u[0] * w[2]);

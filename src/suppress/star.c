@@ -19,12 +19,69 @@ static void face_key(const uint32_t *tv, int k, uint32_t out[3])
   tr_sort3(out);
 }
 
+/* The candidates below are found in doubles, from normals and distances of degree 2 in the
+ * coordinates: at coordinates near 1e200 those overflow (a NaN point reached GMP, which
+ * aborts on it), near 1e-200 they underflow to nothing. They are computed on coordinates
+ * times 2^-e, e = exp_of_half(half_extent(box of the points involved)), which brings the
+ * points' half extent into [1/2, 1): exact, so a star at any power-of-two scale gives the
+ * candidates of the same star at unit size, bit for bit, and the exact checks decide as
+ * they would there. */
+static double half_extent(const double lo[3], const double hi[3])
+{
+  double h = 0;
+  for (int k = 0; k < 3; k++) {
+    double d = 0.5 * hi[k] - 0.5 * lo[k]; /* never overflows, unlike hi - lo */
+    h = d > h ? d : h;
+  }
+  return h;
+}
+
+static int exp_of_half(double h)
+{
+  return h > 0 && isfinite(h) ? ilogb(h) + 1 : 0;
+}
+
+/* the box of the points ids[0..n) of m and of x (if not NULL) */
+static void box_of(const struct tr_mesh *m, const uint32_t *ids, size_t n, const double *x,
+                   double lo[3], double hi[3])
+{
+  const double *first = x ? x : m->xyz + 3 * (size_t)ids[0];
+  for (int k = 0; k < 3; k++)
+    lo[k] = hi[k] = first[k];
+  for (size_t i = 0; i < n; i++)
+    for (int k = 0; k < 3; k++) {
+      double y = m->xyz[3 * (size_t)ids[i] + k];
+      lo[k] = y < lo[k] ? y : lo[k];
+      hi[k] = y > hi[k] ? y : hi[k];
+    }
+}
+
+/* the normal of the triangle (a, b, c) of m in the frame 2^-e and its length */
+static double normal(const struct tr_mesh *m, const uint32_t *abc, int e, double n[3])
+{
+  double x[3][3], u[3], w[3];
+  for (int i = 0; i < 3; i++)
+    for (int k = 0; k < 3; k++)
+      x[i][k] = ldexp(m->xyz[3 * (size_t)abc[i] + k], -e);
+  for (int k = 0; k < 3; k++) {
+    u[k] = x[1][k] - x[0][k];
+    w[k] = x[2][k] - x[0][k];
+  }
+  n[0] = u[1] * w[2] - u[2] * w[1];
+  n[1] = u[2] * w[0] - u[0] * w[2];
+  n[2] = u[0] * w[1] - u[1] * w[0];
+  return sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
 /* 1 iff every face (3 ids each) sees apex strictly positively, exactly and with every
  * point at its double (m->xyz); faces that contain apex are skipped, apex == TR_NONE:
  * the double point q. */
 int sup_sees_all(const struct tr_mesh *m, const uint32_t *f, size_t nf, uint32_t apex,
                  const double *q, int dbl)
 {
+  /* a candidate that left the range of doubles is no point (GMP aborts on it) */
+  if (apex == TR_NONE && !(isfinite(q[0]) && isfinite(q[1]) && isfinite(q[2])))
+    return 0;
   tr_point pq = apex == TR_NONE ? tr_pt_d(q) : tr_mesh_point(m, apex);
   for (size_t i = 0; i < nf; i++) {
     const uint32_t *g = f + 3 * i;
@@ -211,38 +268,23 @@ static tr_status star_of(sup_ctx *c, uint32_t p, const tr_u32buf *old, tr_u32buf
 static void relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const double g[3],
                  double q[3], int pass)
 {
-  double lo[3], hi[3], L = 0;
-  for (int k = 0; k < 3; k++)
-    lo[k] = hi[k] = g[k];
-  for (size_t i = 0; i < 3 * nf; i++)
-    for (int k = 0; k < 3; k++) {
-      double x = m->xyz[3 * (size_t)f[i] + k];
-      lo[k] = x < lo[k] ? x : lo[k];
-      hi[k] = x > hi[k] ? x : hi[k];
-    }
-  for (int k = 0; k < 3; k++)
-    L = hi[k] - lo[k] > L ? hi[k] - lo[k] : L;
+  double lo[3], hi[3];
+  box_of(m, f, 3 * nf, g, lo, hi);
+  int e = exp_of_half(half_extent(lo, hi));
+  double L = ldexp(2 * half_extent(lo, hi), -e), x[3];
   double tau = L / (double)(8 << (3 * pass));
   for (int k = 0; k < 3; k++)
-    q[k] = g[k];
+    x[k] = ldexp(g[k], -e);
   for (int it = 0; it < 400; it++) {
     double worst = 0, wn[3] = {0, 0, 0};
     int found = 0;
     for (size_t i = 0; i < nf; i++) {
-      const double *a = m->xyz + 3 * (size_t)f[3 * i], *b = m->xyz + 3 * (size_t)f[3 * i + 1],
-                   *c = m->xyz + 3 * (size_t)f[3 * i + 2];
-      double u[3], w[3], n[3];
-      for (int k = 0; k < 3; k++) {
-        u[k] = b[k] - a[k];
-        w[k] = c[k] - a[k];
-      }
-      n[0] = u[1] * w[2] - u[2] * w[1];
-      n[1] = u[2] * w[0] - u[0] * w[2];
-      n[2] = u[0] * w[1] - u[1] * w[0];
-      double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      double n[3], a[3], len = normal(m, f + 3 * i, e, n);
       if (!(len > 0))
         continue;
-      double d = (n[0] * (q[0] - a[0]) + n[1] * (q[1] - a[1]) + n[2] * (q[2] - a[2])) / len;
+      for (int k = 0; k < 3; k++)
+        a[k] = ldexp(m->xyz[3 * (size_t)f[3 * i] + k], -e);
+      double d = (n[0] * (x[0] - a[0]) + n[1] * (x[1] - a[1]) + n[2] * (x[2] - a[2])) / len;
       if (!found || d < worst) {
         found = 1;
         worst = d;
@@ -251,10 +293,12 @@ static void relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const d
       }
     }
     if (!found || worst >= tau)
-      return;
+      break;
     for (int k = 0; k < 3; k++)
-      q[k] += (tau - worst) * wn[k];
+      x[k] += (tau - worst) * wn[k];
   }
+  for (int k = 0; k < 3; k++)
+    q[k] = ldexp(x[k], e);
 }
 
 /* A double point that sees every face of bf strictly (sees_all): from p's double p0
@@ -291,9 +335,10 @@ int sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *st
   }
   for (size_t i = 0; i < star->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)star->a[i];
+    /* quarters first: exact, and the sum of four coordinates near 1e308 overflows */
     for (int k = 0; k < 3; k++)
-      q[k] = 0.25 * (m->xyz[3 * (size_t)tv[0] + k] + m->xyz[3 * (size_t)tv[1] + k] +
-                     m->xyz[3 * (size_t)tv[2] + k] + m->xyz[3 * (size_t)tv[3] + k]);
+      q[k] = 0.25 * m->xyz[3 * (size_t)tv[0] + k] + 0.25 * m->xyz[3 * (size_t)tv[1] + k] +
+             0.25 * m->xyz[3 * (size_t)tv[2] + k] + 0.25 * m->xyz[3 * (size_t)tv[3] + k];
     if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl))
       return 1;
   }
@@ -347,37 +392,30 @@ static tr_status try_relocate(sup_ctx *c, uint32_t p, const tr_u32buf *star,
 {
   struct tr_mesh *m = c->m;
   size_t nf = bf->n / 3;
-  double g[3] = {0, 0, 0}, q[3];
+  double g[3] = {0, 0, 0}, q[3], lo[3], hi[3];
   const double *p0 = m->xyz + 3 * (size_t)p;
+  box_of(m, bf->a, 3 * nf, p0, lo, hi);
+  int e = exp_of_half(half_extent(lo, hi));
   /* g: the centroid of the link's vertices (the link faces come first in bf) */
   for (size_t i = 0; i < star->n * 3; i++)
     for (int k = 0; k < 3; k++)
-      g[k] += m->xyz[3 * (size_t)bf->a[i] + k];
+      g[k] += ldexp(m->xyz[3 * (size_t)bf->a[i] + k], -e);
   for (int k = 0; k < 3; k++)
-    g[k] /= (double)(star->n * 3);
+    g[k] = ldexp(g[k] / (double)(star->n * 3), e);
   /* the inner direction (dir[0..2]: the merged triangles' unit normals, which bf lists
    * pointing in) and the star's size (dir[3]) */
   double dir[4] = {0, 0, 0, 0};
   for (size_t i = star->n; i < nf; i++) {
-    const double *a = m->xyz + 3 * (size_t)bf->a[3 * i], *b = m->xyz + 3 * (size_t)bf->a[3 * i + 1],
-                 *cc = m->xyz + 3 * (size_t)bf->a[3 * i + 2];
-    double u[3], w[3], n[3];
-    for (int k = 0; k < 3; k++) {
-      u[k] = b[k] - a[k];
-      w[k] = cc[k] - a[k];
-    }
-    n[0] = u[1] * w[2] - u[2] * w[1];
-    n[1] = u[2] * w[0] - u[0] * w[2];
-    n[2] = u[0] * w[1] - u[1] * w[0];
-    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    double n[3], len = normal(m, bf->a + 3 * i, e, n);
     for (int k = 0; k < 3 && len > 0; k++)
       dir[k] += n[k] / len;
   }
   for (size_t i = 0; i < 3 * nf; i++)
     for (int k = 0; k < 3; k++) {
-      double d = fabs(m->xyz[3 * (size_t)bf->a[i] + k] - p0[k]);
+      double d = fabs(ldexp(m->xyz[3 * (size_t)bf->a[i] + k], -e) - ldexp(p0[k], -e));
       dir[3] = d > dir[3] ? d : dir[3];
     }
+  dir[3] = ldexp(dir[3], e);
   if (nf == star->n)
     dir[3] = 0; /* an interior point: no surface to step away from */
   if (!sup_find_q(m, bf, star, p0, g, dir, dbl, SUP_RELAX_PASSES, q))
