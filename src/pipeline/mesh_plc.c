@@ -216,13 +216,10 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
    * surfswap.c); not in the paper's algorithm, and not where every input edge is to stay
    * an edge (--keep-edges) */
   double tswap = tr_pipeline_now();
-  int any_missing = 1; /* unknown: edge recovery looks */
   if (st == TR_OK && opt.smooth && !opt.keep_surface && !opt.keep_edges &&
       opt.recovery != 1) {
     uint64_t n2 = 0;
-    uint32_t nmiss = 0;
-    st = tr_surface_swaps_to_mesh(p, m, edges, ne, &n2, &nmiss);
-    any_missing = nmiss > 0;
+    st = tr_surface_swaps_to_mesh(p, m, edges, ne, &n2);
     if (st == TR_OK && n2) {
       stats->surface_swaps += n2;
       free(edges);
@@ -232,8 +229,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   }
   double swap_secs = tr_pipeline_now() - tswap; /* counted as edge recovery's */
   if (st == TR_OK) {
-    st = tr_pipeline_recover(m, p, edges, ne, any_missing, &sub, stats, secs, &opt, &vkind,
-                             &vindex, &subhint);
+    st = tr_pipeline_recover(m, p, edges, ne, &sub, stats, secs, &opt, &vkind, &vindex,
+                             &subhint);
     secs[0] += swap_secs;
     stats->recovery_seconds = secs[0] + secs[1];
     stage[TR_STAGE_EDGES] = secs[0];

@@ -50,12 +50,9 @@ tr_status tr_pipeline_edges(const struct tr_plc *plc, uint32_t **edges, uint32_t
  * both stages to opt->progress (TR_ERR_CANCELLED when it asks to stop). opt->recovery
  * picks the steps (1: the paper's only; 2: no facet flips). subhint (may be NULL):
  * *subhint = the sub-faces' tet hints for tr_outer_color_ex (tr_recover_facets_ex's
- * hint_out; NULL: none), freed by the caller. any_missing = 0: the caller knows that
- * every input edge is a mesh edge (the flat edges of src/recover_edges are then not
- * looked for). */
+ * hint_out; NULL: none), freed by the caller. */
 tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
-                              const uint32_t *edges, uint32_t ne, int any_missing,
-                              tr_subfaces *sub,
+                              const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
                               tr_stats *stats, double secs[2], const tr_options *opt,
                               uint8_t **vkind, uint32_t **vindex, uint32_t **subhint);
 /* opt->progress(user, tr_stage_name(stage), fraction) if set; TR_ERR_CANCELLED with a

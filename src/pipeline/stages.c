@@ -221,8 +221,7 @@ tr_status tr_pipeline_progress(const tr_options *opt, int stage, double fraction
 }
 
 tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
-                              const uint32_t *edges, uint32_t ne, int any_missing,
-                              tr_subfaces *sub,
+                              const uint32_t *edges, uint32_t ne, tr_subfaces *sub,
                               tr_stats *stats, double secs[2], const tr_options *opt,
                               uint8_t **vkind, uint32_t **vindex, uint32_t **subhint)
 {
@@ -250,19 +249,8 @@ tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
   tr_facet_recovery_opts fo = {0};
   eo.no_flips = eo.no_midpoints = eo.no_lawson = fo.paper = recovery == 1;
   fo.no_flips = recovery == 2;
-  uint8_t *flat = NULL;
-  tr_status st = TR_OK;
-  /* the flat edges matter only to the flips of missing edges */
-  if (recovery != 1 && any_missing) {
-    if (!(flat = malloc(ne ? ne : 1)))
-      st = tr_error(TR_ERR_NOMEM, "out of memory for %u edge flags", ne);
-    else
-      st = tr_flat_edges(plc, edges, ne, flat);
-    eo.flat = flat;
-  }
-  if (st == TR_OK)
-    st = tr_recover_edges_ex(m, edges, ne, &eo, &chains, &es);
-  free(flat);
+  eo.surface = recovery == 1 ? NULL : plc; /* its flat edges after the others */
+  tr_status st = tr_recover_edges_ex(m, edges, ne, &eo, &chains, &es);
   double t1 = tr_pipeline_now();
   secs[0] = t1 - t0;
   stats->missing_edges = es.missing_edges;
@@ -285,7 +273,7 @@ tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
     st = tr_pipeline_origins(m, plc->npoints, &chains, sub, vkind, vindex);
   tr_edge_chains_free(&chains);
 #else
-  (void)recovery, (void)any_missing; /* nothing is recovered in this build */
+  (void)recovery; /* nothing is recovered in this build */
   double t0 = tr_pipeline_now();
   tr_status st = recover_none(m, plc, edges, ne, sub, stats);
   secs[0] = tr_pipeline_now() - t0;

@@ -89,6 +89,7 @@ typedef struct ctx {
   tr_lawson law;        /* scratch of the Lawson flips */
   tr_lawson_stats lst;
   int depth;            /* > 0: the deepening pass's flip depth (steiner == 0 only) */
+  const uint8_t *flat;  /* NULL (one phase of flips), or per input edge: 1 = flat */
   uint32_t budget;      /* its flip attempts per sub-segment */
 } ctx;
 
@@ -397,7 +398,7 @@ static tr_status build_chains(ctx *c, tr_edge_chains *ch)
 static tr_status flip_phase(ctx *c, int phase, const uint8_t *there, uint32_t *missing,
                             uint32_t *nmiss, uint8_t *left, tr_edge_recovery_stats *st)
 {
-  const uint8_t *flat = c->opt.flat;
+  const uint8_t *flat = c->flat;
   uint32_t k0 = *nmiss;
   for (uint32_t i = 0; i < c->n; i++) {
     int mine = !flat || (phase == 0) == !flat[i];
@@ -446,7 +447,7 @@ static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
 {
   struct tr_mesh *m = c->m;
   uint32_t *missing = NULL, nmiss = 0;
-  uint8_t *left = NULL, *there = NULL;
+  uint8_t *left = NULL, *there = NULL, *flat = NULL;
   tr_status s = TR_OK;
   if (c->n) {
     missing = malloc((size_t)c->n * sizeof *missing);
@@ -467,15 +468,20 @@ static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
    * recovers the flat ones. One phase (1) otherwise. On the Thingi10K models of
    * STLCutters.jl: 2112 -> 2032 Steiner points on edges, 181 -> 161 left after
    * suppression. */
-  uint32_t miss_feature = 0;
-  for (uint32_t i = 0; i < c->n && s == TR_OK; i++) {
+  for (uint32_t i = 0; i < c->n && s == TR_OK; i++)
     st->missing_edges += !there[i];
-    miss_feature += !there[i] && c->opt.flat && !c->opt.flat[i];
+  uint32_t miss_feature = 0;
+  if (s == TR_OK && st->missing_edges && c->opt.surface) {
+    if (!(flat = malloc(c->n)))
+      s = tr_error(TR_ERR_NOMEM, "out of memory for %u edge flags", c->n);
+    else
+      s = tr_flat_edges(c->opt.surface, c->edges, c->n, flat);
+    for (uint32_t i = 0; i < c->n && s == TR_OK; i++)
+      miss_feature += !there[i] && !flat[i];
   }
-  if (!miss_feature)
-    c->opt.flat = NULL;
-  for (int phase = c->opt.flat ? 0 : 1; phase < 2 && s == TR_OK; phase++) {
-    if (phase == 1 && c->opt.flat)
+  c->flat = miss_feature ? flat : NULL;
+  for (int phase = c->flat ? 0 : 1; phase < 2 && s == TR_OK; phase++) {
+    if (phase == 1 && c->flat)
       s = tr_mesh_find_edges(m, c->edges, c->n, there); /* phase 0 flipped some away */
     if (s == TR_OK)
       s = flip_phase(c, phase, there, missing, &nmiss, left, st);
@@ -522,6 +528,7 @@ done:
   free(missing);
   free(left);
   free(there);
+  free(flat);
   return s;
 }
 
@@ -569,7 +576,12 @@ void tr_edge_chains_free(tr_edge_chains *c)
 uint32_t tr_edge_chains_find(const tr_edge_chains *c, const uint32_t *edges, uint32_t a,
                              uint32_t b)
 {
-  uint32_t lo = 0, hi = c->n;
+  return tr_edge_index(edges, c->n, a, b);
+}
+
+uint32_t tr_edge_index(const uint32_t *edges, uint32_t n, uint32_t a, uint32_t b)
+{
+  uint32_t lo = 0, hi = n;
   if (a > b) {
     uint32_t t = a;
     a = b;

@@ -67,31 +67,32 @@ tr_status tr_recover_edges(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
  * no_flips: only the paper's Swap23 / Swap44 before Steiner points (no flip.h flips);
  * no_midpoints: pass 2 uses the paper's pipels right away (no midpoint splits);
  * no_lawson: no Lawson flips around the midpoints (the mesh is left as the split made it). */
+struct tr_plc;
 typedef struct tr_edge_recovery_opts {
   int no_flips, no_midpoints, no_lawson;
-  /* NULL, or one flag per input edge: 1 for an edge inside a flat region (its two input
-   * triangles exactly coplanar, one marker; tr_flat_edges). The flips recover the other
-   * edges first with only those protected, then these (see recover_edges.c). */
-  const uint8_t *flat;
+  /* NULL, or the surface the input edges are those of (with segments): when an edge is
+   * missing, its flat edges (tr_flat_edges) are recovered after the others, the flips
+   * of the others protecting only those (see recover_edges.c). */
+  const struct tr_plc *surface;
 } tr_edge_recovery_opts;
 tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
                               const tr_edge_recovery_opts *opt, tr_edge_chains *chains,
                               tr_edge_recovery_stats *st);
 
-/* flat[i] = 1 iff input edge i (edges: sorted pairs, as tr_recover_edges takes them) has
- * exactly two triangles of plc, exactly coplanar and with one marker, and is no segment
- * (surfswap.c). */
+/* The index of edge {a,b} (either order) in n sorted unique pairs, TR_NONE if absent. */
+uint32_t tr_edge_index(const uint32_t *edges, uint32_t n, uint32_t a, uint32_t b);
+
+/* flat[i] = 1 iff input edge i (edges: sorted pairs, as tr_recover_edges takes them) is
+ * an inner edge of a planar facet of plc (core/facets.h: two exactly coplanar triangles
+ * of one marker) and no segment (surfswap.c). */
 tr_status tr_flat_edges(const struct tr_plc *plc, const uint32_t *edges, uint32_t n,
                         uint8_t *flat);
 
 /* Before recovery: swaps diagonals of exactly coplanar input triangle pairs (one marker,
  * strictly convex quad) whose shared edge the mesh lacks for the other diagonal when the
  * mesh has it (surfswap.c); edges: plc's input edges as tr_recover_edges takes them;
- * *nswaps = how many, *nmissing = the input edges the mesh lacked before them. After a
- * swap the input edges must be listed again. */
-struct tr_plc;
+ * *nswaps = how many. After a swap the input edges must be listed again. */
 tr_status tr_surface_swaps_to_mesh(struct tr_plc *plc, struct tr_mesh *m,
-                                   const uint32_t *edges, uint32_t ne, uint64_t *nswaps,
-                                   uint32_t *nmissing);
+                                   const uint32_t *edges, uint32_t ne, uint64_t *nswaps);
 
 #endif

@@ -36,7 +36,7 @@ static inline tr_status trec_to_recovery(tr_plc *plc, trec_run *r)
   if (s == TR_OK)
     s = tr_delaunay_build(plc->xyz, plc->npoints, &r->m);
   if (s == TR_OK)
-    s = tr_pipeline_recover(r->m, plc, r->edges, r->ne, 1, &r->sub, &r->st, secs, &opt,
+    s = tr_pipeline_recover(r->m, plc, r->edges, r->ne, &r->sub, &r->st, secs, &opt,
                             &r->vkind, &r->vindex, &r->hint);
   return s;
 }
