@@ -4,6 +4,7 @@
 #ifndef TR_CORE_BOX_H
 #define TR_CORE_BOX_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -20,6 +21,28 @@ static inline void tr_box_of(const double *xyz, const uint32_t *v, int n, double
     lo[d] = l;
     hi[d] = h;
   }
+}
+
+/* The largest half side of the box lo..hi: 0.5 hi - 0.5 lo never overflows, unlike
+ * hi - lo. */
+static inline double tr_box_half_extent(const double lo[3], const double hi[3])
+{
+  double h = 0;
+  for (int d = 0; d < 3; d++) {
+    double x = 0.5 * hi[d] - 0.5 * lo[d];
+    h = x > h ? x : h;
+  }
+  return h;
+}
+
+/* The frame of a few points whose double formulas (normals, squared lengths, products
+ * of degree up to 4 of coordinate differences) overflow near 1e200 and underflow near
+ * 1e-200: their coordinates times 2^-e, e the exponent that brings their half extent
+ * `half` into [1/2, 1) (0 for a flat or non-finite extent: nothing to scale). A power
+ * of two scales exactly, so the figures are those of the same points at unit size. */
+static inline int tr_frame_exp(double half)
+{
+  return half > 0 && isfinite(half) ? ilogb(half) + 1 : 0;
 }
 
 #endif

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "core/box.h"
 #include "predicates/predicates.h"
 #include "refine/refine_impl.h"
 
@@ -337,7 +338,7 @@ tr_status rf_segment_split_point(rf_ctx *c, uint32_t s, tr_qpoint **out)
     double h = 0, L = 0;
     for (int i = 0; i < 3; i++)
       h = fmax(h, fabs(0.5 * pB.d[i] - 0.5 * pA.d[i]));
-    int e0 = h > 0 && isfinite(h) ? ilogb(h) + 1 : 0;
+    int e0 = tr_frame_exp(h);
     for (int i = 0; i < 3; i++) {
       double d = ldexp(pB.d[i], -e0) - ldexp(pA.d[i], -e0);
       L += d * d;

@@ -4,6 +4,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/box.h"
+
 static void sub3(const double *a, const double *b, double *o)
 {
   o[0] = a[0] - b[0];
@@ -33,23 +35,20 @@ static void cross3(const double *a, const double *b, double *o)
 
 static int shape_frame(const double *const p[4], double buf[4][3], const double *q[4])
 {
-  double half = 0;
+  double lo[3], hi[3];
   for (int k = 0; k < 3; k++) {
-    double lo = p[0][k], hi = p[0][k];
+    lo[k] = hi[k] = p[0][k];
     for (int i = 1; i < 4; i++) {
-      lo = p[i][k] < lo ? p[i][k] : lo;
-      hi = p[i][k] > hi ? p[i][k] : hi;
+      lo[k] = p[i][k] < lo[k] ? p[i][k] : lo[k];
+      hi[k] = p[i][k] > hi[k] ? p[i][k] : hi[k];
     }
-    double h = 0.5 * hi - 0.5 * lo; /* never overflows, unlike hi - lo */
-    half = h > half ? h : half;
   }
+  double half = tr_box_half_extent(lo, hi);
   for (int i = 0; i < 4; i++)
     q[i] = p[i];
-  /* a flat point or a coordinate that is not finite has nothing to scale */
-  if (!(half > 0) || !isfinite(half) ||
-      (half >= 0x1p-240 && half < 0x1p240)) /* 2^-SHAPE_SAFE, 2^SHAPE_SAFE */
+  int e = tr_frame_exp(half); /* 0: flat or not finite, nothing to scale */
+  if (!e || (half >= 0x1p-240 && half < 0x1p240)) /* 2^-SHAPE_SAFE, 2^SHAPE_SAFE */
     return 0;
-  int e = ilogb(half) + 1;
   for (int i = 0; i < 4; i++) {
     for (int k = 0; k < 3; k++)
       buf[i][k] = ldexp(p[i][k], -e);

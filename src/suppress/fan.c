@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/box.h"
 #include "suppress_int.h"
 
 tr_status tr_sup_plane(const tr_plc *plc, uint32_t tri, int *drop, int *sign)
@@ -14,12 +15,9 @@ tr_status tr_sup_plane(const tr_plc *plc, uint32_t tri, int *drop, int *sign)
    * coordinates near 1e200 the products overflow (NaN orders nothing), near 1e-200 they
    * underflow; the power of two is exact, so the order is that of the triangle at unit
    * size, and the mesh that of the same surface at any scale */
-  double u[3], w[3], n[3], h = 0;
-  for (int i = 0; i < 3; i++) {
-    double lo = fmin(a[i], fmin(b[i], c[i])), hi = fmax(a[i], fmax(b[i], c[i]));
-    h = fmax(h, 0.5 * hi - 0.5 * lo);
-  }
-  int e = h > 0 && isfinite(h) ? ilogb(h) + 1 : 0;
+  double u[3], w[3], n[3], lo[3], hi[3];
+  tr_box_of(plc->xyz, t, 3, lo, hi);
+  int e = tr_frame_exp(tr_box_half_extent(lo, hi));
   for (int i = 0; i < 3; i++) {
     u[i] = ldexp(b[i], -e) - ldexp(a[i], -e);
     w[i] = ldexp(c[i], -e) - ldexp(a[i], -e);

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/box.h"
 #include "suppress_int.h"
 
 static int cmp_u32(const void *a, const void *b)
@@ -22,25 +23,10 @@ static void face_key(const uint32_t *tv, int k, uint32_t out[3])
 /* The candidates below are found in doubles, from normals and distances of degree 2 in the
  * coordinates: at coordinates near 1e200 those overflow (a NaN point reached GMP, which
  * aborts on it), near 1e-200 they underflow to nothing. They are computed on coordinates
- * times 2^-e, e = exp_of_half(half_extent(box of the points involved)), which brings the
+ * times 2^-e, e = tr_frame_exp(tr_box_half_extent(box of the points involved)), which brings the
  * points' half extent into [1/2, 1): exact, so a star at any power-of-two scale gives the
  * candidates of the same star at unit size, bit for bit, and the exact checks decide as
  * they would there. */
-static double half_extent(const double lo[3], const double hi[3])
-{
-  double h = 0;
-  for (int k = 0; k < 3; k++) {
-    double d = 0.5 * hi[k] - 0.5 * lo[k]; /* never overflows, unlike hi - lo */
-    h = d > h ? d : h;
-  }
-  return h;
-}
-
-static int exp_of_half(double h)
-{
-  return h > 0 && isfinite(h) ? ilogb(h) + 1 : 0;
-}
-
 /* the box of the points ids[0..n) of m and of x (if not NULL) */
 static void box_of(const struct tr_mesh *m, const uint32_t *ids, size_t n, const double *x,
                    double lo[3], double hi[3])
@@ -270,8 +256,8 @@ static void relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const d
 {
   double lo[3], hi[3];
   box_of(m, f, 3 * nf, g, lo, hi);
-  int e = exp_of_half(half_extent(lo, hi));
-  double L = ldexp(2 * half_extent(lo, hi), -e), x[3];
+  int e = tr_frame_exp(tr_box_half_extent(lo, hi));
+  double L = ldexp(2 * tr_box_half_extent(lo, hi), -e), x[3];
   double tau = L / (double)(8 << (3 * pass));
   for (int k = 0; k < 3; k++)
     x[k] = ldexp(g[k], -e);
@@ -395,7 +381,7 @@ static tr_status try_relocate(sup_ctx *c, uint32_t p, const tr_u32buf *star,
   double g[3] = {0, 0, 0}, q[3], lo[3], hi[3];
   const double *p0 = m->xyz + 3 * (size_t)p;
   box_of(m, bf->a, 3 * nf, p0, lo, hi);
-  int e = exp_of_half(half_extent(lo, hi));
+  int e = tr_frame_exp(tr_box_half_extent(lo, hi));
   /* g: the centroid of the link's vertices (the link faces come first in bf) */
   for (size_t i = 0; i < star->n * 3; i++)
     for (int k = 0; k < 3; k++)
