@@ -186,12 +186,18 @@ tr_status sup_flip_out(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t
   uint32_t tf = TR_NONE;
   int filled = 0;
   if (st == TR_OK && stuck && j.n && (st = tr_ball(m, p, 1, &ball)) == TR_OK) {
+    /* The passes retry p while anything changed anywhere, and its flips get stuck on
+     * the same smaller star again: its retriangulation (the costliest part, a local
+     * Delaunay mesh) would fail the same way, as the whole star's would (star.c). */
+    uint64_t key = c && c->ftried ? sup_star_key(m, p, &ball, (unsigned)dbl) : 0;
     if (m->region && ball.n)
       st = paint(m, ball.a[0], &link, region);
-    if (st == TR_OK)
+    if (st == TR_OK && (!key || c->ftried[p] != key))
       st = sup_star_fill(m, c, p, region, dbl, SUP_FILL_EXPAND, &tf, &filled);
     if (st == TR_OK && filled)
       *done = 1;
+    else if (st == TR_OK && key)
+      c->ftried[p] = key;
   }
   /* the 4-1 flip: the vertex of the link that t0 lacks takes p's place in t0 */
   uint32_t nv[4] = {0, 0, 0, 0};

@@ -182,8 +182,10 @@ static tr_status merge_pair(struct tr_mesh *m, uint32_t p, uint32_t q, const tr_
     return st;
   }
   double dir[4] = {0, 0, 0, 0}, x[3];
-  if (!sup_find_q(m, bf, u, m->xyz + 3 * (size_t)p, m->xyz + 3 * (size_t)q, dir, dbl,
-                  SUP_MERGE_RELAX, x))
+  int found = 0;
+  TR_CHECK(sup_find_q(m, bf, u, m->xyz + 3 * (size_t)p, m->xyz + 3 * (size_t)q, dir, dbl,
+                      SUP_MERGE_RELAX, x, &found));
+  if (!found)
     return TR_OK;
   /* the cone is positive for x, so for q moved there (exactly, a double); which faces
    * the cone has does not depend on where q is */

@@ -247,17 +247,32 @@ static tr_status star_of(sup_ctx *c, uint32_t p, const tr_u32buf *old, tr_u32buf
   return TR_OK;
 }
 
+/* The faces' planes in the frame 2^-e, for the projections below: computed once per
+ * search, not once per step of every pass (400 steps times the faces, times the passes,
+ * made the projections the costliest part of merging). A face of zero length is
+ * skipped (len = 0). */
+typedef struct kplane {
+  double n[3], a[3], len;
+} kplane;
+
+static void planes_of(const struct tr_mesh *m, const uint32_t *f, size_t nf, int e, kplane *pl)
+{
+  for (size_t i = 0; i < nf; i++) {
+    pl[i].len = normal(m, f + 3 * i, e, pl[i].n);
+    for (int k = 0; k < 3; k++)
+      pl[i].a[k] = ldexp(m->xyz[3 * (size_t)f[3 * i] + k], -e);
+  }
+}
+
 /* A point inside the kernel of the faces by projections in doubles (Agmon-Motzkin): from
  * g, move onto the half-space d_i >= tau of the face the point violates most, until it
  * is at least tau inside every face or 400 steps are taken, for margins tau shrinking
- * from a fraction of the star's size. Only a candidate: the caller checks it exactly. */
-static void relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const double g[3],
-                 double q[3], int pass)
+ * from a fraction of the star's size. Only a candidate: the caller checks it exactly.
+ * pl: the planes in the frame 2^-e, L the box's size in it. */
+static void relax(const kplane *pl, size_t nf, int e, double L, const double g[3], double q[3],
+                  int pass)
 {
-  double lo[3], hi[3];
-  box_of(m, f, 3 * nf, g, lo, hi);
-  int e = tr_frame_exp(tr_box_half_extent(lo, hi));
-  double L = ldexp(2 * tr_box_half_extent(lo, hi), -e), x[3];
+  double x[3];
   double tau = L / (double)(8 << (3 * pass));
   for (int k = 0; k < 3; k++)
     x[k] = ldexp(g[k], -e);
@@ -265,11 +280,9 @@ static void relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const d
     double worst = 0, wn[3] = {0, 0, 0};
     int found = 0;
     for (size_t i = 0; i < nf; i++) {
-      double n[3], a[3], len = normal(m, f + 3 * i, e, n);
+      const double *n = pl[i].n, *a = pl[i].a, len = pl[i].len;
       if (!(len > 0))
         continue;
-      for (int k = 0; k < 3; k++)
-        a[k] = ldexp(m->xyz[3 * (size_t)f[3 * i] + k], -e);
       double d = (n[0] * (x[0] - a[0]) + n[1] * (x[1] - a[1]) + n[2] * (x[2] - a[2])) / len;
       if (!found || d < worst) {
         found = 1;
@@ -290,11 +303,12 @@ static void relax(const struct tr_mesh *m, const uint32_t *f, size_t nf, const d
 /* A double point that sees every face of bf strictly (sees_all): from p's double p0
  * halfway towards g again and again, then projections into the kernel (relax), then the
  * centroids of the region's tets. */
-int sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
-               const double *p0, const double g[3], const double dir[4], int dbl, int relaxes,
-               double q[3])
+tr_status sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
+                     const double *p0, const double g[3], const double dir[4], int dbl,
+                     int relaxes, double q[3], int *found)
 {
   size_t nf = bf->n / 3;
+  *found = 1;
   /* p moved off the surface along the sum of the merged triangles' inner unit normals:
    * for a small enough step this is inside the kernel (p sees every link face strictly,
    * and the sum points into the inner side of each surface plane through p), so the
@@ -304,20 +318,33 @@ int sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *st
     for (int k = 0; k < 3; k++)
       q[k] = p0[k] + step * dir[k];
     if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl))
-      return 1;
+      return TR_OK;
   }
   double s = 1.0;
   for (int j = 0; j < 40; j++, s *= 0.5) {
     for (int k = 0; k < 3; k++)
       q[k] = p0[k] + (g[k] - p0[k]) * s;
     if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl))
-      return 1;
+      return TR_OK;
   }
   /* a relaxed point that has not reached its margin may still see every face */
-  for (int pass = 0; pass < relaxes; pass++) {
-    relax(m, bf->a, nf, g, q, pass);
-    if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl))
-      return 1;
+  if (relaxes > 0 && nf > 0) {
+    kplane *pl = malloc(sizeof *pl * nf);
+    if (!pl)
+      return tr_error(TR_ERR_NOMEM, "out of memory for %zu planes", nf);
+    double lo[3], hi[3];
+    box_of(m, bf->a, 3 * nf, g, lo, hi);
+    int e = tr_frame_exp(tr_box_half_extent(lo, hi));
+    double L = ldexp(2 * tr_box_half_extent(lo, hi), -e);
+    planes_of(m, bf->a, nf, e, pl);
+    for (int pass = 0; pass < relaxes; pass++) {
+      relax(pl, nf, e, L, g, q, pass);
+      if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl)) {
+        free(pl);
+        return TR_OK;
+      }
+    }
+    free(pl);
   }
   for (size_t i = 0; i < star->n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)star->a[i];
@@ -326,9 +353,10 @@ int sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *st
       q[k] = 0.25 * m->xyz[3 * (size_t)tv[0] + k] + 0.25 * m->xyz[3 * (size_t)tv[1] + k] +
              0.25 * m->xyz[3 * (size_t)tv[2] + k] + 0.25 * m->xyz[3 * (size_t)tv[3] + k];
     if (sup_sees_all(m, bf->a, nf, TR_NONE, q, dbl))
-      return 1;
+      return TR_OK;
   }
-  return 0;
+  *found = 0;
+  return TR_OK;
 }
 
 /* Full removal: the first boundary vertex (in id order) that sees every face not on it
@@ -404,7 +432,9 @@ static tr_status try_relocate(sup_ctx *c, uint32_t p, const tr_u32buf *star,
   dir[3] = ldexp(dir[3], e);
   if (nf == star->n)
     dir[3] = 0; /* an interior point: no surface to step away from */
-  if (!sup_find_q(m, bf, star, p0, g, dir, dbl, SUP_RELAX_PASSES, q))
+  int found = 0;
+  TR_CHECK(sup_find_q(m, bf, star, p0, g, dir, dbl, SUP_RELAX_PASSES, q, &found));
+  if (!found)
     return TR_OK;
   tr_u32buf nv = {0};
   tr_status st = TR_OK;
@@ -440,8 +470,8 @@ static int cmp_face4(const void *pa, const void *pb)
  * the first expansion adds), in sorted order, and the flags, mixed into 64 bits (never
  * 0). The expansion may look further than that: the chance a change there gives is
  * given up. */
-static uint64_t star_key(const struct tr_mesh *m, uint32_t p, const tr_u32buf *ball,
-                         unsigned flags)
+uint64_t sup_star_key(const struct tr_mesh *m, uint32_t p, const tr_u32buf *ball,
+                      unsigned flags)
 {
   uint64_t h = 0x9E3779B97F4A7C15ull ^ flags;
   uint32_t *f = malloc(sizeof *f * 4 * (ball->n ? ball->n : 1));
@@ -510,7 +540,7 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
     if (inner && (flags & TR_SUP_REMOVE)) {
       /* the passes retry every point left while anything changed: a retriangulation
        * that failed on the same star (and the same tets behind it) would fail again */
-      uint64_t key = c->tried ? star_key(m, p, &star, (unsigned)dbl) : 0;
+      uint64_t key = c->tried ? sup_star_key(m, p, &star, (unsigned)dbl) : 0;
       if (!key || c->tried[p] != key) {
         uint32_t t;
         st = sup_star_fill(m, c, p, region, dbl, SUP_FILL_EXPAND, &t, done);

@@ -234,10 +234,12 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
     c.head[v] = TR_NONE;
   c.tried = calloc(m->nv ? m->nv : 1, sizeof *c.tried);
   c.mtried = calloc(m->nv ? m->nv : 1, sizeof *c.mtried);
-  if (!c.tried || !c.mtried) {
+  c.ftried = calloc(m->nv ? m->nv : 1, sizeof *c.ftried);
+  if (!c.tried || !c.mtried || !c.ftried) {
     free(c.head);
     free(c.tried);
     free(c.mtried);
+    free(c.ftried);
     return tr_error(TR_ERR_NOMEM, "out of memory for %u vertices", m->nv);
   }
   for (uint32_t i = 0; i < sub->n && st == TR_OK; i++)
@@ -328,6 +330,7 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
   free(c.head);
   free(c.tried);
   free(c.mtried);
+  free(c.ftried);
   free(c.v);
   free(c.tri);
   free(c.lnext);

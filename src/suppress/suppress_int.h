@@ -19,6 +19,8 @@ typedef struct sup_ctx {
   uint64_t *tried;             /* nv or NULL: per interior point, the key of its star at
                                   its last failed retriangulation (star.c), 0 none */
   uint64_t *mtried;            /* nv or NULL: the same for its last failed merge (merge.c) */
+  uint64_t *ftried;            /* nv or NULL: the same for its last failed retriangulation
+                                  of the star its flips got stuck on (flipout.c) */
 } sup_ctx;
 
 /* Appends sub-face (a,b,c) of input triangle tri and links it to its vertices. */
@@ -66,12 +68,18 @@ int sup_sees_all(const struct tr_mesh *m, const uint32_t *f, size_t nf, uint32_t
                  const double *q, int dbl);
 /* A double point q that sees every face of bf (sup_sees_all): candidates from p0 along
  * dir (dir[3] the step, 0: none), between p0 and g, projections into the kernel (with
- * `relaxes` margins, the costly part), the centroids of the tets of star (star.c). 1 if
- * found. */
+ * `relaxes` margins, the costly part), the centroids of the tets of star (star.c).
+ * *found = 1 if found. */
 #define SUP_RELAX_PASSES 6
-int sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
-               const double *p0, const double g[3], const double dir[4], int dbl, int relaxes,
-               double q[3]);
+tr_status sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
+                     const double *p0, const double g[3], const double dir[4], int dbl,
+                     int relaxes, double q[3], int *found);
+
+/* A key of p's star (ball: its tets) for its retriangulation, which p's position does
+ * not matter to: its link faces, each with the vertex behind it, and flags; nonzero, or
+ * 0 (no key) when out of memory (star.c). */
+uint64_t sup_star_key(const struct tr_mesh *m, uint32_t p, const tr_u32buf *ball,
+                      unsigned flags);
 
 /* Two interior Steiner points become one (merge.c): for a neighbour q of interior point
  * p that is an interior Steiner point too, the union of their stars is replaced by the
