@@ -297,8 +297,9 @@ typedef struct tr_stats {
   uint64_t tets_dihedral_below_5, tets_dihedral_below_10;
   uint64_t dihedral_histogram[18];   /* all six angles of every tet, 10-degree bins */
   uint64_t radius_edge_histogram[7]; /* <1, <1.414, <2, <4, <10, <100, >=100 */
-  /* sliver removal (src/sliver/sliver.h): points it added (none: it flips and moves
-   * interior points only), flips it made, interior points it moved */
+  /* sliver removal (src/sliver/sliver.h): points it added, net of the interior points
+   * its last-resort cavities took out (the output has that many vertices more than
+   * without the stage), flips it made, interior points it moved */
   uint64_t points_added_for_sliver, sliver_flips, sliver_points_smoothed;
   /* input edges inside merged planar facets under refinement (tr_options.keep_edges):
    * no constraints, so not kept as chains of mesh edges */

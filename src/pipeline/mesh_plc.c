@@ -308,7 +308,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
       if (st == TR_OK) /* its points: interior ones, and those on constraints under
                           pinned tets */
         st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv1, &vkind, &vindex);
-      stats->points_added_for_sliver = ss.points;
+      /* net: a last-resort cavity may take out interior points (they leave the mesh) */
+      stats->points_added_for_sliver = ss.points > ss.swallowed ? ss.points - ss.swallowed : 0;
       stats->sliver_flips = ss.flips23 + ss.flips32 + ss.flips44 + ss.flipsn + ss.facet_flips;
       stats->sliver_points_smoothed = ss.smoothed;
       if (st == TR_OK && opt.verbose >= 2)

@@ -553,7 +553,7 @@ static void rank(const tr_sliver_ctx *c, uint32_t t, const double (*cand)[3], in
  * circumcentre lies beyond a constraint or its cone is worse); the best one that beats
  * its cavity goes in (*done = 1). */
 static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, int last, trial *best, trial *z,
-                           int *done)
+                           int *done, uint32_t *gone)
 {
   struct tr_mesh *m = c->m;
   *done = 0;
@@ -649,6 +649,7 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, int last, trial *best, 
       for (int k = 0; k < 4; k++) {
         uint32_t x = m->tv[4 * (size_t)best->cav[i] + (size_t)k];
         if (!set_has(&best->cone, x)) {
+          *gone += c->movable[x]; /* once per vertex: movable until swallowed */
           c->movable[x] = 0;
           if (m->dup_map)
             m->dup_map[x] = TR_NONE;
@@ -681,17 +682,20 @@ tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int 
     }
   if (tr_vtmap_get(&c->failed, 4, key) != TR_VTMAP_NONE)
     return TR_OK;
-  TR_CHECK(insert_at(c, t, 0, &z[0], &z[1], done));
+  uint32_t gone = 0;
+  TR_CHECK(insert_at(c, t, 0, &z[0], &z[1], done, &gone));
   return *done ? TR_OK : tr_vtmap_set(&c->failed, 4, key, 0);
 }
 
-tr_status tr_sliver_insert_last(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done)
+tr_status tr_sliver_insert_last(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done,
+                                 uint32_t *gone)
 {
   trial *z = scratch;
   *done = 0;
+  *gone = 0;
   if (!pinned(c, c->m->tv + 4 * (size_t)t))
     return TR_OK;
-  return insert_at(c, t, 1, &z[0], &z[1], done);
+  return insert_at(c, t, 1, &z[0], &z[1], done, gone);
 }
 
 void *tr_sliver_insert_scratch(void)

@@ -157,9 +157,11 @@ tr_status tr_sliver_polish(tr_sliver_ctx *c, tr_subfaces *sub, int level, tr_sli
        * passes this came before the pinned tets' refinement, and took the tets it would
        * have opened better: oblong 19 -> 52 tets under 10 degrees) */
       if (s == TR_OK && !done && scratch && points < k) {
-        s = tr_sliver_insert_last(c, t, scratch, &done);
+        uint32_t gone = 0;
+        s = tr_sliver_insert_last(c, t, scratch, &done, &gone);
         points += (uint32_t)done;
         st->points += (uint64_t)done;
+        st->swallowed += gone;
       }
       changed += (uint32_t)done;
     }

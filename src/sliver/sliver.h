@@ -124,6 +124,7 @@ typedef struct tr_sliver_stats {
   uint64_t smoothed;                          /* accepted vertex moves */
   uint64_t points;                            /* points added, all kinds */
   uint64_t on_constraints; /* of them on input edges and triangles (pinned tets) */
+  uint64_t swallowed; /* interior vertices the last resort's cavities took out (in no tet) */
 } tr_sliver_stats;
 
 /* What the steps may not touch, built once from the sub-faces. */
@@ -248,7 +249,8 @@ tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int 
  * nothing else opened: the same candidates, with cavities carved off the vertices they
  * swallow, else with cavities that may swallow interior points on no constraint (they
  * leave the mesh). Not remembered in c->failed. */
-tr_status tr_sliver_insert_last(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done);
+tr_status tr_sliver_insert_last(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done,
+                                 uint32_t *gone);
 void *tr_sliver_insert_scratch(void);
 /* The final polish (polish.c): the globally worst tets, whatever their angle, get flips,
  * moves and points (as par->level allows) that raise their local minimum; at level 3 with

@@ -645,8 +645,9 @@ static tr_status cap_under_a_point(tr_sliver_ctx *c, tr_sliver_stats *st)
     return tr_error(TR_ERR_NOMEM, "scratch");
   uint32_t t = tm_find_tet(c->m, cap);
   tr_status s = tr_sliver_insert_tet(c, t, z, &last_ordinary);
+  uint32_t gone = 0;
   if (s == TR_OK && !last_ordinary)
-    s = tr_sliver_insert_last(c, t, z, &last_resort);
+    s = tr_sliver_insert_last(c, t, z, &last_resort, &gone);
   st->points += (uint64_t)(last_ordinary + last_resort);
   free(z);
   return s;
