@@ -9,6 +9,8 @@
 #   plain    tetrec mesh IN -o W/tetrec.node --stats W/tetrec.json -q   tetgen -pQ
 #   keep     ... --keep-surface                                         tetgen -pYQ
 #   quality  ... --quality R (R=1.414)                                  tetgen -pqRQ
+#   TetGen gets `a` too for a .poly or .smesh (its region list's volume bounds, which
+#   tetrec always applies: without it TetGen meshes a coarser task)
 #
 # Per model (one row; "-" where there is nothing to show):
 #   tris     input triangles (the manifest's count, as tetrec reads the file)
@@ -229,6 +231,9 @@ while read -r _ src path _ tris note <&3; do
       [ ! -f "${model%.*}.node" ] || ln -s "${model%.*}.node" "$w/tg/$stem.node" ;;
   esac
 
+  tg_flags=$TG_FLAGS
+  case $ext in poly|smesh) [[ $tg_flags == *a* ]] || tg_flags=${tg_flags}a ;; esac
+
   run_tetrec() {
     tr_rc=0
     # shellcheck disable=SC2086
@@ -239,7 +244,7 @@ while read -r _ src path _ tris note <&3; do
     tg_rc=0
     if [ -z "$tg_in" ]; then tg_rc=conv; return; fi
     # shellcheck disable=SC2086
-    (cd "$w/tg" && timed ../tetgen.time "$TETGEN" $TG_FLAGS "$tg_in" >../tetgen.log 2>&1) || tg_rc=$?
+    (cd "$w/tg" && timed ../tetgen.time "$TETGEN" $tg_flags "$tg_in" >../tetgen.log 2>&1) || tg_rc=$?
   }
   # alternate which program runs first, so that neither always finds the caches warm
   if [ $((idx % 2)) -eq 0 ]; then run_tetrec; run_tetgen; else run_tetgen; run_tetrec; fi
@@ -286,7 +291,7 @@ while read -r _ src path _ tris note <&3; do
     inputs=
     if [ "$TG_DETAIL" = 1 ]; then
       # the same meshing, untimed, without files and with statistics
-      (cd "$w/tg" && timeout "$TIMEOUT" "$TETGEN" "${TG_FLAGS//Q/}NEF" "$tg_in" >../tetgen.stats 2>&1) || true
+      (cd "$w/tg" && timeout "$TIMEOUT" "$TETGEN" "${tg_flags//Q/}NEF" "$tg_in" >../tetgen.stats 2>&1) || true
       if grep -q 'Input points:' "$w/tetgen.stats"; then
         inputs=$(tg_stat 'Input points' "$w/tetgen.stats")
         b_e=$(tg_stat 'Steiner points on input segments' "$w/tetgen.stats")

@@ -104,6 +104,28 @@ tr_status tr_flip23(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, v
   return TR_OK;
 }
 
+int tr_flip23_blockers(const struct tr_mesh *m, uint32_t t, int k, uint32_t e[3][2])
+{
+  uint32_t c = m->tn[4 * (size_t)t + (size_t)k];
+  if (c == TR_NONE || !tr_tet_is_real(m, t) || !tr_tet_is_real(m, c >> 2))
+    return 0;
+  const uint32_t *tv = m->tv + 4 * (size_t)t;
+  uint32_t a = tv[k], b = m->tv[4 * (size_t)(c >> 2) + (c & 3)];
+  uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
+  int n = 0;
+  /* orient(a, b, f[i], f[i+1]) sums, as a volume, to a multiple of (b - a) . N with N
+   * the face's normal, negative for a on the face's positive side: ab meets the open
+   * face iff all three are negative, and an edge with a sign >= 0 is one ab passes
+   * beside (or through) */
+  for (int i = 0; i < 3; i++)
+    if (orient(m, a, b, f[i], f[(i + 1) % 3]) >= 0) {
+      e[n][0] = f[i];
+      e[n][1] = f[(i + 1) % 3];
+      n++;
+    }
+  return n;
+}
+
 /* The vertex of tet t that is none of a, b and is shared with tet u. */
 static uint32_t shared_third(const struct tr_mesh *m, uint32_t t, uint32_t u, uint32_t a,
                              uint32_t b)
@@ -363,6 +385,19 @@ tr_status tr_flip_journal_undo(struct tr_mesh *m, tr_flip_journal *j, uint32_t t
   return TR_OK;
 }
 
+/* Keeps the flip just made in r[n] if the journal's admission rule allows it. */
+static tr_status admit(struct tr_mesh *m, tr_flip_journal *j, int *done)
+{
+  if (!*done)
+    return TR_OK;
+  if (j->accept && !j->accept(j->aud, m, &j->r[j->n])) {
+    *done = 0;
+    return tr_flip_undo(m, &j->r[j->n]);
+  }
+  journal_commit(m, j);
+  return TR_OK;
+}
+
 static int spent(const tr_flip_journal *j)
 {
   return j->budget && j->tries >= j->budget;
@@ -377,9 +412,7 @@ tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard,
   j->tries++;
   TR_CHECK(journal_room(j));
   TR_CHECK(tr_flip23(m, t, k, guard, ud, &j->r[j->n], done));
-  if (*done)
-    journal_commit(m, j);
-  return TR_OK;
+  return admit(m, j, done);
 }
 
 static tr_status remove_j(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
@@ -391,9 +424,7 @@ static tr_status remove_j(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0
   j->tries++;
   TR_CHECK(journal_room(j));
   TR_CHECK(tr_flip_remove_edge(m, a, b, t0, guard, ud, &j->r[j->n], done));
-  if (*done)
-    journal_commit(m, j);
-  return TR_OK;
+  return admit(m, j, done);
 }
 
 /* The shell tet holding face (a, b, r) and its code of that face, found from Shell(ab). */
@@ -481,16 +512,29 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
             seen[nseen++] = r;
           } else if (!shell_face(m, &sh, a, b, r, &t, &k))
             continue;
+          /* with j->pivot, only the edges that block the Swap23 (TetGen's reflex link
+           * edges): removing the others rarely helps and doubles the search per level */
+          int try_ar = 1, try_br = 1;
+          if (j->pivot) {
+            uint32_t be[3][2];
+            int nb = tr_flip23_blockers(m, t, k, be);
+            try_ar = try_br = 0;
+            for (int x = 0; x < nb; x++) {
+              try_ar |= (be[x][0] == a && be[x][1] == r) || (be[x][0] == r && be[x][1] == a);
+              try_br |= (be[x][0] == b && be[x][1] == r) || (be[x][0] == r && be[x][1] == b);
+            }
+          }
           s = tr_flip23_j(m, t, k, guard, ud, j, &ok);
           if (s == TR_OK && !ok && depth > 2 && !spent(j)) {
             /* the Swap23 is blocked by edge a-r or b-r: try removing one of them; a
              * removal that fails is undone before the other is tried */
-            s = tr_flip_remove_edge_nm(m, a, r, TR_NONE, depth - 1, guard, ud, j, &ok);
+            if (try_ar)
+              s = tr_flip_remove_edge_nm(m, a, r, TR_NONE, depth - 1, guard, ud, j, &ok);
             if (s == TR_OK && !ok) {
               stale |= j->n != n0;
               s = tr_flip_journal_undo(m, j, n0);
             }
-            if (s == TR_OK && !ok)
+            if (s == TR_OK && !ok && try_br)
               s = tr_flip_remove_edge_nm(m, b, r, TR_NONE, depth - 1, guard, ud, j, &ok);
             if (s == TR_OK && !ok) {
               stale |= j->n != n0;

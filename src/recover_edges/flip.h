@@ -73,6 +73,10 @@ tr_status tr_flip_undo(struct tr_mesh *m, const tr_flip_rec *rec);
  * it sees vertex lists, TR_GHOST in slot 3 for ghosts). Zero-initialise; free with
  * tr_flip_journal_free. */
 typedef int (*tr_flip_measure)(void *ud, const struct tr_mesh *m, const uint32_t v[4]);
+/* Per-flip admission, asked after each flip with its record: 0 takes the flip back at
+ * once (it then counts as refused). Edge recovery by flips uses it for TetGen's rule
+ * that no flip may create a face or an edge the segment crosses (flipfirst.c). */
+typedef int (*tr_flip_accept)(void *ud, const struct tr_mesh *m, const tr_flip_rec *r);
 typedef struct tr_flip_journal {
   tr_flip_rec *r;
   uint32_t n, cap;
@@ -80,6 +84,9 @@ typedef struct tr_flip_journal {
   uint32_t flips[5]; /* kept in the journal by kind: 2-3, 3-2, 4-4, n >= 5, hull */
   tr_flip_measure measure;
   void *mud;
+  tr_flip_accept accept; /* NULL: every valid flip is kept */
+  void *aud;
+  int pivot; /* 1: the recursion removes only the edges that block a Swap23 */
   /* Flip attempts (made or refused) allowed, 0 = no limit: the recursion of
    * tr_flip_remove_edge_nm grows exponentially with its depth, and the deep searches of
    * edge recovery stop when this many attempts were spent. `tries` counts them; the
@@ -99,6 +106,10 @@ tr_status tr_flip_journal_undo(struct tr_mesh *m, tr_flip_journal *j, uint32_t t
 tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                                  int depth, tr_flip_guard guard, void *ud, tr_flip_journal *j,
                                  int *done);
+/* The edges of face k of t that keep the segment between the two apexes from crossing
+ * the open face (the Swap23 is valid iff there is none): their number, the edges in
+ * e[0..n). 0 also when a tet is a ghost. */
+int tr_flip23_blockers(const struct tr_mesh *m, uint32_t t, int k, uint32_t e[3][2]);
 /* Swap23 on face k of t, appended to j. */
 tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, void *ud,
                       tr_flip_journal *j, int *done);

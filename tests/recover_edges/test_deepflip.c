@@ -1,5 +1,5 @@
-/* The deeper flip searches of edge recovery: depth 4 on a short pipe before a Steiner
- * point, and the deepening pass's levels (tr_pipe_try_flips_budget, recover_edges.c).
+/* The pipel-count flip search of flipseg.c: depth 4 on a short pipe before a Steiner
+ * point (recover_edges.c), and deeper levels with a flip budget (tr_pipe_try_flips_budget).
  * Usage: test_deepflip <npoints> <seed> [coordinate range, default 1000] [depth D, default
  *        4] [flip budget, default 0 = none]
  *        test_deepflip faceedge <npoints> <seed> <range>

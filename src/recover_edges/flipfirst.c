@@ -1,0 +1,194 @@
+/* Recovery of one missing sub-segment ab by flips that remove its crossings one at a time
+ * from an end (TetGen's recoveredgebyflips, Si 2015), before the pipel-count search of
+ * flipseg.c.
+ *
+ * The simplex ab crosses nearest to a (the far face or edge of the pipel at a) is
+ * removed: a crossed face by Swap23, or else by removing one of its edges; a crossed edge
+ * by edge removal with the bounded recursion of flip.h. When nothing at a's end can be
+ * removed, the crossing nearest to b is tried. Every flip, including those inside the
+ * recursion, is admitted only if ab crosses none of the faces and edges it creates
+ * (TetGen's flip eligibility): crossed simplices then only disappear, so each removal
+ * lowers their number, the loop ends, and a removal is kept even when ab does not appear
+ * at the end. That is the difference from flipseg.c, which undoes an attempt unless the
+ * pipel count drops: a crossed face turned into a crossed edge keeps the count (the edge's
+ * tets all count), and the edge's removal that would follow is never reached. On the
+ * CAD surfaces of STLCutters.jl most feature edges that flipseg.c left to Steiner points
+ * are recovered this way.
+ */
+#include <string.h>
+
+#include "classify.h"
+#include "recover_edges/edgeset.h"
+#include "recover_edges/flip.h"
+#include "recover_edges/pipe.h"
+
+static int cons_guard(void *ud, const uint32_t *v, int nv)
+{
+  return nv == 2 && tr_edgeset_get(ud, v[0], v[1]) != TR_EDGESET_NONE;
+}
+
+static int has2(const uint32_t *t, uint32_t x, uint32_t y)
+{
+  int n = 0;
+  for (int i = 0; i < 4; i++)
+    n += t[i] == x || t[i] == y;
+  return n == 2;
+}
+
+static int has3(const uint32_t *t, const uint32_t f[3])
+{
+  int n = 0;
+  for (int i = 0; i < 4; i++)
+    n += t[i] == f[0] || t[i] == f[1] || t[i] == f[2];
+  return n == 3;
+}
+
+/* The admission rule (flip.h's tr_flip_accept): refuse a flip when ab meets the interior
+ * of a face shared by two new tets, or the interior of an edge no old tet had. Those are
+ * the simplices a flip creates; its region's boundary is the old one. */
+static int eligible(void *ud, const struct tr_mesh *m, const tr_flip_rec *r)
+{
+  tr_segmemo *g = ud;
+  for (uint32_t i = 0; i < r->nnew; i++) {
+    const uint32_t *v = r->newv + 4 * (size_t)i;
+    if (v[3] == TR_GHOST)
+      continue;
+    tr_isect x = tr_segmemo_classify(g, m, v);
+    for (int e = 0; e < x.n; e++) {
+      if (x.end[e].type == TR_FAC) {
+        uint32_t f[3];
+        for (int q = 0; q < 3; q++)
+          f[q] = v[tr_face_vtx[x.end[e].code][q]];
+        for (uint32_t k = 0; k < r->nnew; k++)
+          if (k != i && has3(r->newv + 4 * (size_t)k, f))
+            return 0;
+      } else if (x.end[e].type == TR_EDG) {
+        uint32_t p = v[tr_ecode_start(x.end[e].code)], q = v[tr_ecode_end(x.end[e].code)];
+        int old = 0;
+        for (uint32_t k = 0; k < r->nold && !old; k++)
+          old = has2(r->oldv + 4 * (size_t)k, p, q);
+        if (!old)
+          return 0;
+      }
+    }
+  }
+  return 1;
+}
+
+/* The crossing at a's end (side 0: far end of the real pipel with a as its entry vertex)
+ * or at b's end (side 1); 0 if the pipe has none (a pipe of ghosts only). */
+static int end_crossing(const struct tr_mesh *m, const tr_pipe *p, uint32_t a, uint32_t b,
+                        int side, uint32_t *t, int *type, int *code)
+{
+  for (uint32_t i = 0; i < p->n; i++) {
+    const tr_pipel *pl = &p->pl[i];
+    if (pl->ghost)
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)pl->iEle;
+    int t1 = pl->type & 3, t2 = (pl->type >> 2) & 3;
+    if (side == 0 && t1 == TR_NOD && tv[pl->iCod1] == a && (t2 == TR_FAC || t2 == TR_EDG)) {
+      *t = pl->iEle;
+      *type = t2;
+      *code = pl->iCod2;
+      return 1;
+    }
+    if (side == 1 && t2 == TR_NOD && tv[pl->iCod2] == b && (t1 == TR_FAC || t1 == TR_EDG)) {
+      *t = pl->iEle;
+      *type = t1;
+      *code = pl->iCod1;
+      return 1;
+    }
+  }
+  return 0;
+}
+
+/* Removes the face (code k of t) or edge (ECode) ab crosses; *done = 1 if it is gone. The
+ * flips made stay in j also when it is not: they created nothing ab crosses, and a shell
+ * shrunk by them is where the next, deeper try starts (TetGen keeps them too). */
+static tr_status remove_crossing(struct tr_mesh *m, uint32_t t, int type, int code,
+                                 const struct tr_edgeset *cons, int depth, tr_flip_journal *j,
+                                 int *done)
+{
+  *done = 0;
+  uint32_t tv[4];
+  memcpy(tv, m->tv + 4 * (size_t)t, sizeof tv);
+  tr_flip_guard guard = cons ? cons_guard : NULL;
+  if (type == TR_EDG) {
+    TR_CHECK(tr_flip_remove_edge_nm(m, tv[tr_ecode_start(code)], tv[tr_ecode_end(code)], t,
+                                    depth, guard, (void *)cons, j, done));
+    return TR_OK;
+  }
+  uint32_t be[3][2];
+  int nb = tr_flip23_blockers(m, t, code, be);
+  TR_CHECK(tr_flip23_j(m, t, code, guard, (void *)cons, j, done));
+  for (int e = 0; e < nb && !*done && !(j->budget && j->tries >= j->budget); e++) {
+    TR_CHECK(tr_flip_remove_edge_nm(m, be[e][0], be[e][1], TR_NONE, depth, guard,
+                                    (void *)cons, j, done));
+  }
+  return TR_OK;
+}
+
+tr_status tr_pipe_flip_first(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
+                             const struct tr_edgeset *cons, tr_segmemo *memo, int depth,
+                             uint32_t budget, tr_edge_stats *st, int *done)
+{
+  *done = 0;
+  tr_segmemo own;
+  if (!memo) {
+    tr_segmemo_init(&own, m, a, b);
+    memo = &own;
+  }
+  tr_flip_journal j;
+  memset(&j, 0, sizeof j);
+  j.accept = eligible;
+  j.aud = memo;
+  j.budget = budget;
+  j.pivot = 1;
+  tr_status s = TR_OK;
+  /* each removal takes away a crossed simplex and creates none: the count of crossed
+   * faces and edges bounds the rounds; the cap only guards that argument */
+  for (uint32_t round = 0, cap = 8 * p->n + 64; round < cap && s == TR_OK; round++) {
+    int gone = 0;
+    for (int side = 0; side < 2 && !gone && s == TR_OK; side++) {
+      uint32_t t, via;
+      int type, code;
+      /* a failed try at a's end may have moved tets to other slots */
+      if (side == 1 && (s = tr_pipe_collect_memo(m, a, b, p, &via, memo)) != TR_OK)
+        break;
+      if (!end_crossing(m, p, a, b, side, &t, &type, &code))
+        continue;
+      s = remove_crossing(m, t, type, code, cons, depth, &j, &gone);
+    }
+    st->flip23 += j.flips[0];
+    st->flip32 += j.flips[1];
+    st->flip44 += j.flips[2];
+    st->flipn += j.flips[3];
+    st->flip_hull += j.flips[4];
+    memset(j.flips, 0, sizeof j.flips);
+    j.n = 0;
+    if (s != TR_OK || !gone)
+      break;
+    int yes;
+    if ((s = tr_mesh_has_edge(m, a, b, &yes)) != TR_OK)
+      break;
+    if (yes) {
+      *done = 1;
+      st->by_flips++;
+      break;
+    }
+    uint32_t via;
+    if ((s = tr_pipe_collect_memo(m, a, b, p, &via, memo)) != TR_OK)
+      break;
+    if (via != TR_NONE)
+      s = tr_error(TR_ERR_INTERNAL, "flips: segment %u-%u now passes through vertex %u", a, b,
+                   via);
+  }
+  if (s == TR_OK && !*done) {
+    uint32_t via; /* flips, kept or refused, may have moved tets to other slots */
+    s = tr_pipe_collect_memo(m, a, b, p, &via, memo);
+  }
+  tr_flip_journal_free(&j);
+  if (memo == &own)
+    tr_segmemo_free(&own);
+  return s;
+}
