@@ -4,9 +4,12 @@
  * triangle, and a split sub-segment by its two halves. Everything is checked before the
  * mesh is touched: each new face through the point must be shared by exactly two new
  * tets, or by one when it is a new sub-face on the domain boundary. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "output/round.h"
+#include "predicates/predicates.h"
 #include "refine/refine_impl.h"
 
 typedef struct {
@@ -56,6 +59,83 @@ static int fans_into(const rf_ctx *c, uint32_t f, uint32_t a, uint32_t b, uint32
     x[i] = tr_mesh_point(m, v[i]);
   int s = tr_orient2d_proj_p(&x[0], &x[1], &x[2], axis);
   return s != 0 && tr_orient2d_proj_p(&pa, &pb, &pp, axis) == s;
+}
+
+/* Refinement's points against the doubles they are written as (issue 50, item 4). The
+ * cone is positive exactly (cavity.c), but on a surface bumpy below double resolution
+ * (stlcutters 77343.stl and 93703.stl: nearly planar bottoms off their planes by a few
+ * ulps) split points land closer to a vertex than the doubles separate, or with new tets
+ * thinner than an ulp; rounded, those tets are flat or inverted, and a cascade of them
+ * exhausts the final repair (output/round.c), which may move a point by only
+ * TR_ROUND_RADIUS ulps per axis. Such a point is refused: the element it was for is given
+ * up like any refused insertion. Both tests below are exact and scale-free, and a tet
+ * that passed them keeps passing: no vertex's double changes during refinement. */
+
+/* The double vertex v is written as before any repair: a Steiner point's nearest double
+ * (the repair starts from it), any other vertex's coordinates. */
+static const double *rounded(const struct tr_mesh *m, uint32_t v)
+{
+  return m->vq && m->vq[v] ? m->vq[v]->near : m->xyz + 3 * (size_t)v;
+}
+
+/* Do the doubles x and y lie within RF_ROUND_APART ulps (of the larger magnitude of the
+ * two) of each other on every axis? Then the repair may not separate them: in particular
+ * two distinct exact points with the same nearest double. Exact: the difference of two
+ * doubles that close is exact (Sterbenz), and the bound is a power of two times an ulp;
+ * a farther pair's rounded difference still exceeds it. */
+#define RF_ROUND_APART TR_ROUND_RADIUS
+static int inseparable(const double *x, const double *y)
+{
+  for (int i = 0; i < 3; i++) {
+    double a = fmax(fabs(x[i]), fabs(y[i]));
+    if (!(fabs(x[i] - y[i]) <= RF_ROUND_APART * (nextafter(a, INFINITY) - a)))
+      return 0;
+  }
+  return 1;
+}
+
+/* Is every new tet (a, b, d, p), a b d = the first three entries of each 6-entry record
+ * of nv, strictly positive (exact orient3d) with p at the double y? */
+static int cone_positive_at(const struct tr_mesh *m, const uint32_t *nv, size_t nnew,
+                            const double *y)
+{
+  for (size_t i = 0; i < nnew; i++)
+    if (tr_orient3d(rounded(m, nv[6 * i]), rounded(m, nv[6 * i + 1]),
+                    rounded(m, nv[6 * i + 2]), y) <= 0)
+      return 0;
+  return 1;
+}
+
+/* May point pid, its cone in nv, go in for its doubles? No vertex of the cone within
+ * RF_ROUND_APART ulps of it, and every new tet strictly positive with pid at its nearest
+ * double or, for a Steiner point (which the repair moves), at a double one ulp away on
+ * some axes: a transient sliver thinner than an ulp that a single repair move opens,
+ * and that later points usually remove, is let in (refusing it cost
+ * star_steiner_cluster_s3_1477.off most of its -O 3 gain: 1.10 -> 0.14 degrees). */
+static int rounding_allows(const struct tr_mesh *m, const uint32_t *nv, size_t nnew,
+                           uint32_t pid)
+{
+  const double *x = rounded(m, pid);
+  for (size_t i = 0; i < nnew; i++)
+    for (int j = 0; j < 3; j++)
+      if (nv[6 * i + j] != TR_GHOST && inseparable(rounded(m, nv[6 * i + j]), x))
+        return 0;
+  for (size_t i = 0; i < nnew; i++)
+    for (int j = 0; j < 3; j++)
+      if (nv[6 * i + j] == TR_GHOST)
+        return 1; /* no double to test; never in a cavity of inner tets */
+  if (cone_positive_at(m, nv, nnew, x))
+    return 1;
+  if (!(m->vq && m->vq[pid]))
+    return 0;
+  for (int o = 1; o < 27; o++) {
+    double y[3];
+    for (int i = 0, k = o; i < 3; i++, k /= 3)
+      y[i] = k % 3 == 0 ? x[i] : nextafter(x[i], k % 3 == 1 ? INFINITY : -INFINITY);
+    if (cone_positive_at(m, nv, nnew, y))
+      return 1;
+  }
+  return 0;
 }
 
 tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
@@ -136,6 +216,8 @@ tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
     }
   }
   if (good)
+    good = rounding_allows(m, nv, nnew, pid);
+  if (good)
     qsort(pr, 3 * nnew, sizeof *pr, cmp_prec);
   size_t npr = good ? 3 * nnew : 0;
   for (size_t i = 0; good && i < npr;) {
@@ -166,6 +248,18 @@ tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
     rf_cavity_release(c);
     free(pr);
     free(nv);
+    /* the refused point was the last one added: it goes, or it would stay a vertex of no
+     * tet, which the stages after refinement (Ball walks) do not expect */
+    if (pid == m->nv - 1 && m->v2t[pid] == TR_NONE) {
+      if (m->vq && m->vq[pid]) {
+        tr_qpoint_clear(m->vq[pid]);
+        free(m->vq[pid]);
+        m->vq[pid] = NULL;
+      }
+      if (pid < c->capv)
+        c->vkind[pid] = RF_FREE; /* the slot's next point sets its own */
+      m->nv--;
+    }
     return st;
   }
   /* 4. the mesh: free the cavity, build and glue the cone */

@@ -254,7 +254,9 @@ tr_status rf_split_facet(rf_ctx *c, uint32_t f);
 /* ---- insert.c ---- */
 /* Replaces the cavity by the cone from vertex pid (already in the mesh), updates the
  * sub-faces and, when c->split_seg != TR_NONE, that sub-segment; the new tets are in
- * c->newtets. *ok = 0 (mesh unchanged, cavity released) when the cone would not glue. */
+ * c->newtets. *ok = 0 (mesh unchanged, cavity released, pid removed when it is the last
+ * vertex and in no tet) when the cone would not glue, or when the point is refused for
+ * the doubles it and its cone are written as (rounding_allows). */
 tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok);
 
 #endif
