@@ -5,8 +5,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli.h"
+#include "io/io.h"
 #include "tetrec.h"
 
 static const char usage[] =
@@ -71,7 +73,8 @@ static const struct option {
     {"-v", NULL, C_ALL, "verbose"},
     {"--stats", "FILE", C_MESH | C_DELAUNAY,
      "write statistics as JSON, also when the run fails (with\n"
-     "\"status\" and \"message\")"},
+     "\"status\" and \"message\"); a FILE named like a mesh or\n"
+     "surface file, or naming the input or output, is refused"},
     {"--exact", NULL, C_MESH | C_DELAUNAY,
      "write Steiner points as exact rationals num/den in the\n"
      "TetGen .node (exactly on their edges and facets). Without it\n"
@@ -204,8 +207,20 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
 {
   if (!strcmp(name, "-o"))
     a->out = v;
-  else if (!strcmp(name, "--stats"))
+  else if (!strcmp(name, "--stats")) {
+    /* The statistics are written also when the run fails: `--stats IN OUT.mesh` (the
+     * value forgotten) would read OUT.mesh, fail, and write JSON over the surface IN. A
+     * name with a mesh or surface extension is refused before anything is opened. */
+    static const char *mesh_ext[] = {".stl", ".off", ".obj", ".ply", ".poly", ".smesh",
+                                     ".mesh", ".node", ".ele", ".face", ".msh", ".vtk",
+                                     ".vtu"};
+    for (size_t i = 0; i < sizeof mesh_ext / sizeof *mesh_ext; i++)
+      if (tr_io_has_ext(v, mesh_ext[i]))
+        return tr_error(TR_ERR_USAGE, "--stats FILE writes JSON statistics, and '%s' is named "
+                        "like a mesh or surface file it would overwrite (--stats OUT.json IN)",
+                        v);
     a->stats = v;
+  }
   else if (!strcmp(name, "-q"))
     a->quiet = 1;
   else if (!strcmp(name, "-v"))
@@ -307,6 +322,14 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
   return TR_OK;
 }
 
+/* 1 iff both paths name one existing file (however they are spelled). */
+static int same_file(const char *x, const char *y)
+{
+  struct stat sx, sy;
+  return x && y && stat(x, &sx) == 0 && stat(y, &sy) == 0 && sx.st_dev == sy.st_dev &&
+         sx.st_ino == sy.st_ino;
+}
+
 tr_status tr_cli_parse_args(int argc, char **argv, tr_cli_args *a)
 {
   memset(a, 0, sizeof *a);
@@ -367,5 +390,8 @@ tr_status tr_cli_parse_args(int argc, char **argv, tr_cli_args *a)
   if (npos != c->nfiles + 1)
     return tr_error(TR_ERR_USAGE, "'%s' takes %d file argument%s (see tetrec %s --help)",
                     c->name, c->nfiles, c->nfiles > 1 ? "s" : "", c->name);
+  if (a->stats && (same_file(a->stats, a->in) || (a->out && same_file(a->stats, a->out))))
+    return tr_error(TR_ERR_USAGE, "--stats %s names the %s file", a->stats,
+                    same_file(a->stats, a->in) ? "input" : "output");
   return TR_OK;
 }

@@ -68,6 +68,15 @@ with tempfile.TemporaryDirectory() as d:
     expect(rc == 0, f"--check-only: {rc} {err}")
     st = json.load(open(os.path.join(d, "s.json")))
     expect(st["surface_nodes"] == 4 and st["surface_facets"] == 4, f"stats json {st}")
+    # --stats writes also when the run fails: its value forgotten (`--stats IN OUT`), the
+    # JSON went over the surface IN; a mesh-like name, or the input itself, is refused
+    before = open(os.path.join(d, "t.off"), "rb").read()
+    rc, _, err = run(["mesh", "--stats", "t.off", "out.mesh"], cwd=d)
+    expect(rc == 1 and "--stats OUT.json IN" in err, f"--stats with a surface name -> 1: {rc} {err}")
+    os.symlink("t.off", os.path.join(d, "link.json"))
+    rc, _, err = run(["mesh", "--stats", "link.json", "t.off"], cwd=d)
+    expect(rc == 1 and "names the input file" in err, f"--stats naming the input -> 1: {rc} {err}")
+    expect(open(os.path.join(d, "t.off"), "rb").read() == before, "the input is left as it was")
     rc, _, err = run(["delaunay", "-q", "t.off"], cwd=d)
     expect(rc == 0 and err == "", f"delaunay -q: {rc} {err}")
     for ext in (".node", ".ele", ".face"):
