@@ -75,33 +75,6 @@ static int eligible(void *ud, const struct tr_mesh *m, const tr_flip_rec *r)
   return 1;
 }
 
-/* The crossing at a's end (side 0: far end of the real pipel with a as its entry vertex)
- * or at b's end (side 1); 0 if the pipe has none (a pipe of ghosts only). */
-static int end_crossing(const struct tr_mesh *m, const tr_pipe *p, uint32_t a, uint32_t b,
-                        int side, uint32_t *t, int *type, int *code)
-{
-  for (uint32_t i = 0; i < p->n; i++) {
-    const tr_pipel *pl = &p->pl[i];
-    if (pl->ghost)
-      continue;
-    const uint32_t *tv = m->tv + 4 * (size_t)pl->iEle;
-    int t1 = pl->type & 3, t2 = (pl->type >> 2) & 3;
-    if (side == 0 && t1 == TR_NOD && tv[pl->iCod1] == a && (t2 == TR_FAC || t2 == TR_EDG)) {
-      *t = pl->iEle;
-      *type = t2;
-      *code = pl->iCod2;
-      return 1;
-    }
-    if (side == 1 && t2 == TR_NOD && tv[pl->iCod2] == b && (t1 == TR_FAC || t1 == TR_EDG)) {
-      *t = pl->iEle;
-      *type = t1;
-      *code = pl->iCod1;
-      return 1;
-    }
-  }
-  return 0;
-}
-
 /* Removes the face (code k of t) or edge (ECode) ab crosses; *done = 1 if it is gone. The
  * flips made stay in j also when it is not: they created nothing ab crosses, and a shell
  * shrunk by them is where the next, deeper try starts (TetGen keeps them too). */
@@ -155,8 +128,10 @@ tr_status tr_pipe_flip_first(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe 
       /* a failed try at a's end may have moved tets to other slots */
       if (side == 1 && (s = tr_pipe_collect_memo(m, a, b, p, &via, memo)) != TR_OK)
         break;
-      if (!end_crossing(m, p, a, b, side, &t, &type, &code))
+      int pi = tr_pipe_end(m, p, a, b, side == 0, &type, &code);
+      if (pi < 0)
         continue;
+      t = p->pl[pi].iEle;
       s = remove_crossing(m, t, type, code, cons, depth, &j, &gone);
     }
     st->flip23 += j.flips[0];

@@ -53,38 +53,28 @@ static int faces_through(const struct tr_mesh *m, const uint32_t *tv, const tr_p
   return mask;
 }
 
-/* The point where ab crosses the far end of a real pipel with a NOD end at a (at_a) or
- * the near end of one with a NOD end at b: every such pipel has the same one, the first
- * (last) point where ab leaves a vertex's star. 0 on success, -1 if there is none. */
+/* The point where ab crosses the face or edge of tr_pipe_end: the first (last) point
+ * where ab leaves an end's star. 0 on success, -1 if there is none. */
 static int end_crossing(const struct tr_mesh *m, uint32_t a, uint32_t b, const tr_pipe *p,
                         int at_a, tr_qpoint *out, uint32_t fv[3])
 {
-  for (uint32_t i = 0; i < p->n; i++) {
-    const tr_pipel *pl = &p->pl[i];
-    if (pl->ghost)
-      continue;
-    const uint32_t *tv = m->tv + 4 * (size_t)pl->iEle;
-    int t1 = pl->type & 3, t2 = (pl->type >> 2) & 3;
-    int ty = at_a ? t2 : t1, code = at_a ? pl->iCod2 : pl->iCod1;
-    if ((at_a ? t1 : t2) != TR_NOD || tv[at_a ? pl->iCod1 : pl->iCod2] != (at_a ? a : b))
-      continue;
-    if (ty != TR_EDG && ty != TR_FAC)
-      continue;
-    tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b);
-    if (ty == TR_EDG) {
-      fv[0] = tv[tr_ecode_start(code)];
-      fv[1] = tv[tr_ecode_end(code)];
-      fv[2] = TR_NONE;
-      tr_point u = tr_mesh_point(m, fv[0]), w = tr_mesh_point(m, fv[1]);
-      return tr_construct_line_line(&pa, &pb, &u, &w, out);
-    }
-    for (int j = 0; j < 3; j++)
-      fv[j] = tv[tr_face_vtx[code][j]];
-    tr_point u = tr_mesh_point(m, fv[0]), v = tr_mesh_point(m, fv[1]),
-             w = tr_mesh_point(m, fv[2]);
-    return tr_construct_line_plane(&pa, &pb, &u, &v, &w, out);
+  int ty, code, i = tr_pipe_end(m, p, a, b, at_a, &ty, &code);
+  if (i < 0)
+    return -1;
+  const uint32_t *tv = m->tv + 4 * (size_t)p->pl[i].iEle;
+  tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b);
+  if (ty == TR_EDG) {
+    fv[0] = tv[tr_ecode_start(code)];
+    fv[1] = tv[tr_ecode_end(code)];
+    fv[2] = TR_NONE;
+    tr_point u = tr_mesh_point(m, fv[0]), w = tr_mesh_point(m, fv[1]);
+    return tr_construct_line_line(&pa, &pb, &u, &w, out);
   }
-  return -1;
+  for (int j = 0; j < 3; j++)
+    fv[j] = tv[tr_face_vtx[code][j]];
+  tr_point u = tr_mesh_point(m, fv[0]), v = tr_mesh_point(m, fv[1]),
+           w = tr_mesh_point(m, fv[2]);
+  return tr_construct_line_plane(&pa, &pb, &u, &v, &w, out);
 }
 
 /* The hub of a pipe: an edge that every real pipel has (0 if there is none or the pipe

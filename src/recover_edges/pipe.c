@@ -502,3 +502,24 @@ tr_status tr_recover_edge(struct tr_mesh *m, uint32_t a, uint32_t b, tr_edge_sta
   tr_pipe_free(&pipe);
   return s;
 }
+
+int tr_pipe_end(const struct tr_mesh *m, const tr_pipe *p, uint32_t a, uint32_t b, int at_a,
+                int *type, int *code)
+{
+  for (uint32_t i = 0; i < p->n; i++) {
+    const tr_pipel *pl = &p->pl[i];
+    if (pl->ghost)
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)pl->iEle;
+    int t1 = pl->type & 3, t2 = (pl->type >> 2) & 3;
+    int ty = at_a ? t2 : t1;
+    if ((at_a ? t1 : t2) != TR_NOD || tv[at_a ? pl->iCod1 : pl->iCod2] != (at_a ? a : b))
+      continue;
+    if (ty != TR_EDG && ty != TR_FAC)
+      continue;
+    *type = ty;
+    *code = at_a ? pl->iCod2 : pl->iCod1;
+    return (int)i;
+  }
+  return -1;
+}

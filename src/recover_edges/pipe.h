@@ -93,6 +93,12 @@ tr_status tr_pipe_try_flips_budget(struct tr_mesh *m, uint32_t a, uint32_t b, tr
                                    const struct tr_edgeset *cons, tr_segmemo *memo, int depth,
                                    uint32_t budget, tr_edge_stats *st, int *done);
 
+/* The crossing of Pipe(ab) at an end: the far face or edge of the real pipel entered at
+ * vertex a (at_a), or the near one of the pipel left at vertex b. Every such pipel has the
+ * same one: where ab leaves the end's star first (last). The pipel's index, its crossing's
+ * type (TR_FAC / TR_EDG) and code in the pipel's tet; -1 if there is none. */
+int tr_pipe_end(const struct tr_mesh *m, const tr_pipe *p, uint32_t a, uint32_t b, int at_a,
+                int *type, int *code);
 /* Removes the faces and edges ab crosses one at a time from its ends, every flip admitted
  * only if ab crosses nothing it creates (TetGen's way, flipfirst.c); removals are kept
  * even when ab does not appear. depth, budget: as for tr_pipe_try_flips_budget; memo: a
