@@ -205,8 +205,19 @@ tr_status tr_flip_edge_tet(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t *
   return tr_ball_find_ex(m, a, b, TR_NONE, 1, t);
 }
 
+static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
+                             tr_flip_guard guard, void *ud, const tr_flip_journal *j,
+                             tr_flip_rec *rec, int *done);
+
 tr_status tr_flip_remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                               tr_flip_guard guard, void *ud, tr_flip_rec *rec, int *done)
+{
+  return remove_edge(m, a, b, t0, guard, ud, NULL, rec, done);
+}
+
+static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
+                             tr_flip_guard guard, void *ud, const tr_flip_journal *j,
+                             tr_flip_rec *rec, int *done)
 {
   *done = 0;
   uint32_t e2[2] = {a, b};
@@ -235,6 +246,13 @@ tr_status tr_flip_remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_
       ok = g < 0;
       g = i;
     }
+  }
+  if (ok && j && j->tetgen_flips && n >= 4 && g < 0) {
+    int flat = 1;
+    for (int q = 3; q < n && flat; q++)
+      flat = orient(m, ring[0], ring[1], ring[2], ring[q]) == 0;
+    if (!flat)
+      return TR_OK;
   }
   /* tet i = {a, b, ring[i-1], ring[i]}: one parity for all real tets of the shell */
   for (int i = 0; i < n && ok; i++) {
@@ -423,7 +441,7 @@ static tr_status remove_j(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0
     return TR_OK;
   j->tries++;
   TR_CHECK(journal_room(j));
-  TR_CHECK(tr_flip_remove_edge(m, a, b, t0, guard, ud, &j->r[j->n], done));
+  TR_CHECK(remove_edge(m, a, b, t0, guard, ud, j, &j->r[j->n], done));
   return admit(m, j, done);
 }
 

@@ -103,7 +103,7 @@ static tr_status remove_crossing(struct tr_mesh *m, uint32_t t, int type, int co
 
 tr_status tr_pipe_flip_first(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
                              const struct tr_edgeset *cons, tr_segmemo *memo, int depth,
-                             uint32_t budget, tr_edge_stats *st, int *done)
+                             uint32_t budget, int tetgen_flips, tr_edge_stats *st, int *done)
 {
   *done = 0;
   tr_segmemo own;
@@ -117,6 +117,7 @@ tr_status tr_pipe_flip_first(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe 
   j.aud = memo;
   j.budget = budget;
   j.pivot = 1;
+  j.tetgen_flips = tetgen_flips;
   tr_status s = TR_OK;
   /* each removal takes away a crossed simplex and creates none: the count of crossed
    * faces and edges bounds the rounds; the cap only guards that argument */

@@ -102,11 +102,12 @@ int tr_pipe_end(const struct tr_mesh *m, const tr_pipe *p, uint32_t a, uint32_t 
 /* Removes the faces and edges ab crosses one at a time from its ends, every flip admitted
  * only if ab crosses nothing it creates (TetGen's way, flipfirst.c); removals are kept
  * even when ab does not appear. depth, budget: as for tr_pipe_try_flips_budget; memo: a
- * memo of segment ab or NULL. p must be Pipe(ab) with no vertex inside ab; on return it is
+ * memo of segment ab or NULL; tetgen_flips: edge removal only as TetGen's flips reach it
+ * (flip.h's journal field). p must be Pipe(ab) with no vertex inside ab; on return it is
  * the current Pipe(ab) unless *done. */
 tr_status tr_pipe_flip_first(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
                              const struct tr_edgeset *cons, tr_segmemo *memo, int depth,
-                             uint32_t budget, tr_edge_stats *st, int *done);
+                             uint32_t budget, int tetgen_flips, tr_edge_stats *st, int *done);
 /* Splits ab at one exact point M (midsplit.c): its midpoint, or, when that lies in the
  * pipels at a or at b, the first point nested midpoints would reach between them; the
  * tets of Pipe(ab) whose closure holds M are replaced by the cone from M. When no short

@@ -1,6 +1,6 @@
 /* Edge recovery by removing the crossings from the segment's ends (flipfirst.c).
  *
- * Usage: test_flipfirst lattice <npoints> <seed> <range> <depth>
+ * Usage: test_flipfirst lattice <npoints> <seed> <range> <depth> [tetgen]
  *        test_flipfirst prism <path of tests/data/twisted_star_prism.off>
  *
  * lattice: a Delaunay mesh of random integer points in [0, range)^3 (cospherical and
@@ -11,6 +11,7 @@
  *   a segment left missing crosses no more faces and edges than before: every flip kept
  *   created nothing the segment crosses (the admission rule), also the flips of a
  *   removal that failed. Some segment must be recovered, else the test shows nothing.
+ *   With "tetgen", edge removal only as TetGen's flips reach it (3-2, n-m on flat rings).
  *
  * prism: a star-shaped prism (8 points, radii 1 and 0.7) whose top is turned by 0.1
  *   radians, sides and caps in fans: 16 of its edges are missing from the Delaunay mesh.
@@ -68,7 +69,7 @@ static uint32_t crossings(const struct tr_mesh *m, const tr_pipe *p, tr_sxset *s
   return n;
 }
 
-static int lattice(uint32_t np, uint32_t range, int depth)
+static int lattice(uint32_t np, uint32_t range, int depth, int tetgen)
 {
   double *x = malloc(sizeof *x * 3 * np);
   struct tr_mesh *m = NULL;
@@ -123,7 +124,8 @@ static int lattice(uint32_t np, uint32_t range, int depth)
     tr_edge_stats st;
     memset(&st, 0, sizeof st);
     int done = 0;
-    tr_status s = tr_pipe_flip_first(m, a, b, &p, &cons, NULL, depth, 20000, &st, &done);
+    tr_status s = tr_pipe_flip_first(m, a, b, &p, &cons, NULL, depth, 20000, tetgen, &st,
+                                      &done);
     if (s != TR_OK) {
       fprintf(stderr, "segment %u-%u: %s\n", a, b, tr_last_error());
       bad++;
@@ -191,9 +193,10 @@ static int prism(const char *path)
 
 int main(int argc, char **argv)
 {
-  if (argc == 6 && !strcmp(argv[1], "lattice")) {
+  if ((argc == 6 || argc == 7) && !strcmp(argv[1], "lattice")) {
     rng = strtoull(argv[3], NULL, 10);
-    return lattice((uint32_t)atoi(argv[2]), (uint32_t)atoi(argv[4]), atoi(argv[5]));
+    return lattice((uint32_t)atoi(argv[2]), (uint32_t)atoi(argv[4]), atoi(argv[5]),
+                   argc == 7 && !strcmp(argv[6], "tetgen"));
   }
   if (argc == 3 && !strcmp(argv[1], "prism"))
     return prism(argv[2]);
