@@ -125,21 +125,33 @@ static inline double tr_insphere_det_(const double a[3], const double b[3], cons
   return (la * ma - lb * mb) + (lc * mc - ld * md);
 }
 
-static inline double tr_orient3d(const double a[3], const double b[3], const double c[3],
-                                 const double d[3])
+/* The static filter of tr_orient3d alone: 1 with *det of the right sign, or 0 when only
+ * the adaptive stages can decide (callers that remember the hard cases, such as the
+ * flips' orientation memo, ask this first). */
+static inline int tr_orient3d_filter(const double a[3], const double b[3], const double c[3],
+                                     const double d[3], double *det)
 {
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
   const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
-  const double det = tr_orient3d_det_(a, b, c, d);
+  *det = tr_orient3d_det_(a, b, c, d);
   const double mx = tr_absmax3_(ux, vx, wx), my = tr_absmax3_(uy, vy, wy),
                mz = tr_absmax3_(uz, vz, wz);
   if (mx >= TR_O3_FLO && my >= TR_O3_FLO && mz >= TR_O3_FLO && mx <= TR_O3_FHI &&
       my <= TR_O3_FHI && mz <= TR_O3_FHI) {
     const double eb = TR_O3_FILTER * mx * my * mz;
-    if (det > eb || -det > eb)
-      return det;
+    if (*det > eb || -*det > eb)
+      return 1;
   }
+  return 0;
+}
+
+static inline double tr_orient3d(const double a[3], const double b[3], const double c[3],
+                                 const double d[3])
+{
+  double det;
+  if (tr_orient3d_filter(a, b, c, d, &det))
+    return det;
   return tr_orient3d_adapt(a, b, c, d);
 }
 

@@ -17,15 +17,6 @@ const uint8_t tr_face_rot[4][4][2] = {
     {{2, 1}, {0, 2}, {1, 0}, {3, 3}},
 };
 
-int tr_ncode(const struct tr_mesh *m, uint32_t t, uint32_t v)
-{
-  const uint32_t *tv = m->tv + 4 * (size_t)t;
-  for (int k = 0; k < 4; k++)
-    if (tv[k] == v)
-      return k;
-  return -1;
-}
-
 int tr_tet_even_order(const struct tr_mesh *m, uint32_t t, const uint32_t p[4])
 {
   int pos[4], inv = 0;
@@ -36,20 +27,4 @@ int tr_tet_even_order(const struct tr_mesh *m, uint32_t t, const uint32_t p[4])
     for (int j = i + 1; j < 4; j++)
       inv += pos[i] > pos[j];
   return (inv & 1) == 0;
-}
-
-int tr_tet_ecode(const struct tr_mesh *m, uint32_t t, uint32_t a, uint32_t b)
-{
-  int i = tr_ncode(m, t, a), j = tr_ncode(m, t, b);
-  if (i < 0 || j < 0 || i == j)
-    return -1;
-  return i < j ? (i | j << 2) : (j | i << 2);
-}
-
-int tr_fcode(const struct tr_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c)
-{
-  int i = tr_ncode(m, t, a), j = tr_ncode(m, t, b), k = tr_ncode(m, t, c);
-  if (i < 0 || j < 0 || k < 0 || i == j || j == k || i == k)
-    return -1;
-  return 6 - i - j - k;
 }

@@ -1,5 +1,6 @@
 /* The mesh store: allocation, vertices, tet slots, export. */
 #include "mesh.h"
+#include "orient_memo.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -72,6 +73,7 @@ void tr_mesh_destroy(struct tr_mesh *m)
   free(m->region);
   free(m->dup_map);
   tr_mesh_attrs_free(m->attrs);
+  tr_mesh_orient_memo_off(m);
   free(m);
 }
 

@@ -4,23 +4,23 @@
  * region's boundary. */
 #include "recover_edges/flip.h"
 
+#include "mesh/orient_memo.h"
+
 #include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-static int positive(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
-{
-  tr_point p[4] = {tr_mesh_point(m, a), tr_mesh_point(m, b), tr_mesh_point(m, c),
-                   tr_mesh_point(m, d)};
-  return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) > 0;
-}
-
+/* Through the orientation memo when the stage has it on (mesh/orient_memo.h): the
+ * searches below ask the same tuples many times over. */
 static int orient(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
 {
-  tr_point p[4] = {tr_mesh_point(m, a), tr_mesh_point(m, b), tr_mesh_point(m, c),
-                   tr_mesh_point(m, d)};
-  return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]);
+  return tr_mesh_orient(m, a, b, c, d);
+}
+
+static int positive(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
+{
+  return orient(m, a, b, c, d) > 0;
 }
 
 /* A cheap shape measure in doubles (only ranks valid triangulations, never decides

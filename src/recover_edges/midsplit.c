@@ -34,6 +34,7 @@
 
 #include "classify.h"
 #include "construct.h"
+#include "mesh/orient_memo.h"
 #include "recover_edges/pipe.h"
 
 /* Bit k set iff face k of real tet tv holds p; -1 if p is outside the tet. */
@@ -251,6 +252,7 @@ tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_
         free(m->vq[id]);
         m->vq[id] = NULL;
         m->nv--;
+        tr_mesh_orient_memo_forget(m); /* id will name another point */
         s = TR_OK;
       }
     }

@@ -43,6 +43,7 @@
 #include <string.h>
 
 #include "classify.h"
+#include "mesh/orient_memo.h"
 #include "recover_edges/edgeset.h"
 #include "recover_edges/lawson.h"
 #include "recover_edges/pipe.h"
@@ -558,7 +559,13 @@ tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t
   c.nv0 = m->nv;
   if (opt)
     c.opt = *opt;
-  tr_status s = run(&c, chains, st);
+  /* points are only added here (midsplit.c forgets the memo when it takes one back) */
+  int memo = !m->omemo;
+  tr_status s = memo ? tr_mesh_orient_memo_on(m) : TR_OK;
+  if (s == TR_OK)
+    s = run(&c, chains, st);
+  if (memo)
+    tr_mesh_orient_memo_off(m);
   tr_edgeset_free(&c.cons);
   tr_u32buf_free(&c.stack);
   tr_u32buf_free(&c.walk);
