@@ -3,6 +3,7 @@
  * tets and on Delaunay meshes of such points (the refinement runs are test_refine.c's). */
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "delaunay/delaunay.h"
@@ -89,6 +90,41 @@ static void min_dihedral_equals_smallest_of_six(void)
     EXPECT(m == lo || (isnan(m) && isnan(lo)), "tet %d: %.17g vs the six's smallest %.17g", it,
            m, lo);
     EXPECT((r2 == ratio || (isnan(r2) && isnan(ratio))) && v2 == vol, "tet %d: ratio/volume", it);
+  }
+}
+
+/* A tet scaled by a power of two has the same figures, bit for bit (the volume scaled
+ * with it), on both sides of the frame's range (half extents 2^-240 and 2^240) and far
+ * outside it: whether a tet is measured as given or in its frame, and by tr_tet_shape,
+ * tr_tet_min_cos or tr_tet_min_dihedral (which measures on one frame what the other two
+ * measure on theirs), the sliver stage ranks it the same. */
+static void measures_invariant_under_power_of_two_scaling(void)
+{
+  static const int ks[] = {-900, -300, -241, -240, -239, 0, 238, 239, 240, 241, 300, 900};
+  uint64_t r = 4242;
+  for (int it = 0; it < 2000; it++) {
+    double p[4][3];
+    random_tet(&r, p);
+    double ratio0, vol0, dih0[6], w0;
+    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio0, &vol0, dih0, NULL);
+    double lo0 = tr_tet_min_cos(p[0], p[1], p[2], p[3], &w0);
+    for (size_t j = 0; j < sizeof ks / sizeof *ks; j++) {
+      double q[4][3];
+      for (int i = 0; i < 4; i++)
+        for (int k = 0; k < 3; k++)
+          q[i][k] = ldexp(p[i][k], ks[j]);
+      double ratio, vol, dih[6], w, r2, v2;
+      tr_tet_shape(q[0], q[1], q[2], q[3], &ratio, &vol, dih, NULL);
+      double lo = tr_tet_min_cos(q[0], q[1], q[2], q[3], &w);
+      double m = tr_tet_min_dihedral(q[0], q[1], q[2], q[3], &r2, &v2);
+      EXPECT(ratio == ratio0 && r2 == ratio0, "tet %d at 2^%d: ratio %.17g, %.17g vs %.17g",
+             it, ks[j], ratio, r2, ratio0);
+      EXPECT(!memcmp(dih, dih0, sizeof dih) && lo == lo0 && m == tr_dihedral_of_cos(lo0),
+             "tet %d at 2^%d: angles", it, ks[j]);
+      if (3 * abs(ks[j]) < 1000) /* the volume itself within doubles */
+        EXPECT(vol == ldexp(vol0, 3 * ks[j]) && w == vol && v2 == vol,
+               "tet %d at 2^%d: volume %.17g vs %.17g", it, ks[j], vol, ldexp(vol0, 3 * ks[j]));
+    }
   }
 }
 
@@ -228,6 +264,7 @@ int main(int argc, char **argv)
       {"quality_summary", quality_summary_equals_per_angle_definition, NULL},
       {"dihedral_at_edge", dihedral_at_edge_matches_geometry, NULL},
       {"cos_below", cos_below_screens_only_angles_under_the_bound, NULL},
+      {"scale_invariant", measures_invariant_under_power_of_two_scaling, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
