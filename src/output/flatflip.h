@@ -7,7 +7,7 @@
  * ulps, zeros moved to subnormals) has a volume no double position of a Steiner point
  * can keep positive. Such a tet is often not needed: the face under it has a better
  * apex a few tets away. This pass runs on the exact mesh after outer removal and, for
- * each kept tet that is not strictly positive on the nearest doubles (m->xyz), tries
+ * each kept tet that is not strictly positive on the doubles m->xyz (round.h), tries
  * flips that
  *   - keep the mesh exactly valid: every new tet strictly positive on the exact points;
  *   - keep it conforming: no sub-face is flipped away (so no sub-segment of an input

@@ -453,12 +453,27 @@ static int one_round(const search_ctx *c, int kind, uint32_t *fail_v, uint32_t *
   return progress;
 }
 
-uint64_t tr_round_nearest(struct tr_mesh *m)
+static int off_nearest(const struct tr_mesh *m, uint32_t v)
 {
-  for (uint32_t v = 0; m->vq && v < m->nv; v++)
-    if (steiner(m, v))
-      memcpy(m->xyz + 3 * (size_t)v, m->vq[v]->near, 3 * sizeof(double));
-  return tr_round_count_nonpositive(m, NULL);
+  return memcmp(m->xyz + 3 * (size_t)v, m->vq[v]->near, 3 * sizeof(double)) != 0;
+}
+
+/* Each Steiner point off its nearest double (refinement admitted it next to it) goes back
+ * to it where its whole star is strictly positive there, in index order: it was kept off
+ * for tets refinement replaced since, or for neighbours that went back before it. Only
+ * v's tets change and all end positive, so no tet becomes flat. */
+static void back_to_nearest(struct tr_mesh *m, const star_index *S)
+{
+  for (uint32_t v = 0; v < m->nv; v++) {
+    if (!steiner(m, v) || !off_nearest(m, v))
+      continue;
+    double *x = m->xyz + 3 * (size_t)v, was[3];
+    memcpy(was, x, sizeof was);
+    memcpy(x, m->vq[v]->near, sizeof was);
+    uint32_t hint = 0;
+    if (star_failure(m, S, v, TR_NONE, &hint) != TR_NONE)
+      memcpy(x, was, sizeof was);
+  }
 }
 
 /* Why tet tv may have no double position, when a plain reason exists: two of its
@@ -485,9 +500,15 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
   *repaired = 0;
   if (!m->vq)
     return TR_OK;
-  /* Start from the nearest doubles whatever xyz held, so the result depends only on the
-   * exact mesh. */
-  if (tr_round_nearest(m) == 0)
+  /* Start from the doubles in xyz (round.h): a point refinement admitted off its nearest
+   * double stays there unless its star allows the nearest, since the points after it
+   * were admitted against it there; starting from the nearest doubles instead, the moves
+   * those points need conflict (stlcutters 1452677.stl under --quality). */
+  int admitted_off = 0;
+  for (uint32_t v = 0; v < m->nv && !admitted_off; v++)
+    admitted_off = steiner(m, v) && off_nearest(m, v);
+  uint64_t nbad = tr_round_count_nonpositive(m, NULL);
+  if (!admitted_off && nbad == 0)
     return TR_OK;
   uint64_t work = 0;
   star_index S = {NULL, NULL, &work, budget ? budget : TR_ROUND_BUDGET};
@@ -495,7 +516,9 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
   offset *off = NULL;
   tr_status st = c.stale ? stars_build(m, &S)
                          : tr_error(TR_ERR_NOMEM, "out of memory for the rounding search");
-  if (st == TR_OK)
+  if (st == TR_OK && admitted_off)
+    back_to_nearest(m, &S);
+  if (st == TR_OK && nbad)
     st = offsets_build(&off, &c.noff);
   c.off = off;
   while (c.npair < c.noff && offset_norm(&off[c.npair]) <= TR_ROUND_PAIR_RADIUS2)
@@ -505,7 +528,7 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
    * the first other kind of move that helps (min-conflicts, pairs, descent: cheapest
    * first, Chazelle moved by ulps spent 400,000 checks on pairs and 100,000 on the
    * descent before one min-conflicts round of 543 freed it), then single moves again. */
-  while (st == TR_OK) {
+  while (st == TR_OK && nbad) {
     while (one_round(&c, MOVE_SINGLE, &fail_v, &fail_t))
       ;
     if (fail_v == TR_NONE)
@@ -516,12 +539,11 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
       break;
   }
   for (uint32_t v = 0; v < m->nv; v++)
-    if (steiner(m, v))
-      *repaired += memcmp(m->xyz + 3 * (size_t)v, m->vq[v]->near, 3 * sizeof(double)) != 0;
+    *repaired += steiner(m, v) && off_nearest(m, v);
   if (st == TR_OK && work > S.budget) {
     uint32_t bad = TR_NONE;
-    uint64_t nbad = tr_round_count_nonpositive(m, &bad);
-    if (nbad > 0) {
+    uint64_t left = tr_round_count_nonpositive(m, &bad);
+    if (left > 0) {
       const uint32_t *tv = m->tv + 4 * (size_t)bad;
       char why[160];
       explain(m, tv, why, sizeof why);
@@ -530,7 +552,7 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
                     "first: tet %u (%u %u %u %u) near (%.17g, %.17g, %.17g)%s) after %llu star "
                     "checks, the repair's budget; the exact mesh is valid: write it with "
                     "--exact to a .node file",
-                    (unsigned long long)nbad, bad, tv[0], tv[1], tv[2], tv[3],
+                    (unsigned long long)left, bad, tv[0], tv[1], tv[2], tv[3],
                     m->xyz[3 * (size_t)tv[0]], m->xyz[3 * (size_t)tv[0] + 1],
                     m->xyz[3 * (size_t)tv[0] + 2], why, (unsigned long long)S.budget);
     }

@@ -5,7 +5,12 @@
  *
  * Steiner points are exact rationals (vq) that lie exactly on their edge or facet; the
  * writers print m->xyz, which for a Steiner point starts as its nearest double. Nearest
- * rounding can make a thin incident tet flat or inverted in doubles. This stage re-checks
+ * rounding can make a thin incident tet flat or inverted in doubles. Refinement therefore
+ * admits a split point only where its new tets are positive in doubles, at its nearest
+ * double or at one next to it, which it then keeps in m->xyz: the points after it were
+ * admitted against that double (refine/insert.c). The repair starts from m->xyz as the
+ * stages before left it; a point off its nearest double first goes back to it where its
+ * whole star stays strictly positive there (index order). This stage re-checks
  * every tet incident to a Steiner point with the exact orient3d on the doubles the writers
  * print, and moves the double (never the exact point) of each Steiner point whose star has
  * a tet that is not strictly positive to a nearby double point that makes its whole star
@@ -33,7 +38,8 @@
  * that is fewer than now (clusters of nearly degenerate Steiner points then free each
  * other one by one). After any such move, single moves again. Every kept move changes
  * only the tets of the moved points and strictly lowers how many of them are not
- * positive, so the rounds terminate, and the result depends only on the mesh. */
+ * positive, so the rounds terminate, and the result depends only on the mesh and the
+ * doubles it starts from. */
 #ifndef TR_OUTPUT_ROUND_H
 #define TR_OUTPUT_ROUND_H
 
@@ -54,16 +60,12 @@
 #define TR_ROUND_BUDGET 2000000
 
 /* Repairs m->xyz of the Steiner points of m's kept tets (real, not TR_TF_OUTER) as above,
- * with at most `budget` star checks (0: TR_ROUND_BUDGET).
+ * starting from m->xyz, with at most `budget` star checks (0: TR_ROUND_BUDGET).
  * *repaired = number of Steiner points whose double ends off its nearest rounding.
  * When some tet stays flat or inverted, returns TR_ERR_INVALID_MESH naming the first such
  * Steiner point (index, coordinates) and tet; the moves made so far are kept, the exact
  * points are never changed. */
 tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaired);
-
-/* Puts every Steiner point of m at its nearest double, without repair; returns
- * tr_round_count_nonpositive(m, NULL). */
-uint64_t tr_round_nearest(struct tr_mesh *m);
 
 /* Tet v[0..3] is not strictly positive on the doubles m->xyz (exact orient3d on doubles). */
 static inline int tr_round_flat(const struct tr_mesh *m, const uint32_t *v)

@@ -137,10 +137,13 @@ tr_status tr_pipeline_compact(struct tr_mesh *m, const tr_compact_in *in, struct
       continue;
     uint32_t id;
     if (m->vq && m->vq[v]) {
-      /* moved, not copied: the working store is destroyed right after */
+      /* moved, not copied: the working store is destroyed right after; its double too,
+       * which need not be the nearest one (refinement's, refine/insert.c) */
       st = tr_mesh_add_steiner(o, m->vq[v], &id);
-      if (st == TR_OK)
+      if (st == TR_OK) {
         m->vq[v] = NULL;
+        memcpy(o->xyz + 3 * (size_t)id, m->xyz + 3 * (size_t)v, 3 * sizeof(double));
+      }
     } else
       st = tr_mesh_add_vertex(o, m->xyz + 3 * (size_t)v, &id);
   }

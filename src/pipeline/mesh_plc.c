@@ -344,11 +344,11 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     /* The caller writes the exact points: the repair would only move doubles nobody
      * prints, and where no doubles exist it searches for its whole budget (35 s of the
      * 37 s of Chazelle's polyhedron moved by ulps, against 1.3 s of recovery). */
-    uint64_t flat = tr_round_nearest(res);
+    uint64_t flat = tr_round_count_nonpositive(res, NULL);
     if (flat && opt.verbose >= 1)
       fprintf(stderr,
               "tetrec: warning: %llu tets are flat or inverted with the Steiner points at "
-              "their nearest doubles: only the exact output is valid\n",
+              "their unrepaired doubles: only the exact output is valid\n",
               (unsigned long long)flat);
   } else if (st == TR_OK) {
     st = tr_round_steiner(res, opt.round_budget, &stats->rounding_repairs);

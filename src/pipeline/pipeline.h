@@ -26,10 +26,11 @@ tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *opt, tr_mesh **out
 /* tr_mesh_plc_ex with flags (TR_PIPE_*). The output's Steiner points keep their exact
  * positions (vq); their doubles (xyz, what the writers print) are the nearest doubles,
  * moved where needed so that every tet is strictly positive in doubles
- * (src/output/round.h; stats->rounding_repairs counts the moved points). When no such
- * doubles are found the call fails with TR_ERR_INVALID_MESH. With TR_PIPE_KEEP_EXACT
- * there is no repair: the doubles are the nearest ones, and when that leaves a tet flat
- * or inverted a warning is printed (the exact points are valid). */
+ * (src/output/round.h; stats->rounding_repairs counts the points off their nearest
+ * double). When no such doubles are found the call fails with TR_ERR_INVALID_MESH. With
+ * TR_PIPE_KEEP_EXACT there is no repair: the doubles are the nearest ones (or the one
+ * next to it that refinement admitted a point at), and when that leaves a tet flat or
+ * inverted a warning is printed (the exact points are valid). */
 enum {
   TR_PIPE_KEEP_EXACT = 1u << 0, /* the caller writes exact coordinates (--exact .node) */
   TR_PIPE_KEEP_STEINER = 1u << 1 /* the recovery's Steiner points as they are, no

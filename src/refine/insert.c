@@ -69,13 +69,15 @@ static int fans_into(const rf_ctx *c, uint32_t f, uint32_t a, uint32_t b, uint32
  * exhausts the final repair (output/round.c), which may move a point by only
  * TR_ROUND_RADIUS ulps per axis. Such a point is refused: the element it was for is given
  * up like any refused insertion. Both tests below are exact and scale-free, and a tet
- * that passed them keeps passing: no vertex's double changes during refinement. */
+ * that passed them keeps passing: no vertex's double changes during refinement, not even
+ * the double a Steiner point was admitted at (below), which it keeps in m->xyz. */
 
-/* The double vertex v is written as before any repair: a Steiner point's nearest double
- * (the repair starts from it), any other vertex's coordinates. */
+/* The double vertex v is written as before any repair: m->xyz, which for a Steiner point
+ * is its nearest double or the double next to it that rounding_allows admitted it at (the
+ * repair starts from there, round.h). */
 static const double *rounded(const struct tr_mesh *m, uint32_t v)
 {
-  return m->vq && m->vq[v] ? m->vq[v]->near : m->xyz + 3 * (size_t)v;
+  return m->xyz + 3 * (size_t)v;
 }
 
 /* Do the doubles x and y lie within RF_ROUND_APART ulps (of the larger magnitude of the
@@ -109,13 +111,19 @@ static int cone_positive_at(const struct tr_mesh *m, const uint32_t *nv, size_t 
 /* May point pid, its cone in nv, go in for its doubles? No vertex of the cone within
  * RF_ROUND_APART ulps of it, and every new tet strictly positive with pid at its nearest
  * double or, for a Steiner point (which the repair moves), at a double one ulp away on
- * some axes: a transient sliver thinner than an ulp that a single repair move opens,
- * and that later points usually remove, is let in (refusing it cost
- * star_steiner_cluster_s3_1477.off most of its -O 3 gain: 1.10 -> 0.14 degrees). */
+ * some axes: a sliver thinner than an ulp is let in (refusing it cost
+ * star_steiner_cluster_s3_1477.off most of its -O 3 gain: 1.10 -> 0.14 degrees; pinion
+ * admits 289 points so). *at = the double it goes in at, which it keeps (rf_insert): the
+ * points after it are checked against it there. Checked against its nearest double
+ * instead, each point let in so assumed its neighbours at theirs, and the moves they
+ * needed at the end conflicted: stlcutters 1452677.stl left 161 tets flat after the
+ * repair's budget (exit 9), a box with an edge chamfered 1e-9 wide
+ * (tests/data/chamfer_ribbon_rounding.off) one. */
 static int rounding_allows(const struct tr_mesh *m, const uint32_t *nv, size_t nnew,
-                           uint32_t pid)
+                           uint32_t pid, double at[3])
 {
   const double *x = rounded(m, pid);
+  memcpy(at, x, 3 * sizeof(double));
   for (size_t i = 0; i < nnew; i++)
     for (int j = 0; j < 3; j++)
       if (nv[6 * i + j] != TR_GHOST && inseparable(rounded(m, nv[6 * i + j]), x))
@@ -132,8 +140,10 @@ static int rounding_allows(const struct tr_mesh *m, const uint32_t *nv, size_t n
     double y[3];
     for (int i = 0, k = o; i < 3; i++, k /= 3)
       y[i] = k % 3 == 0 ? x[i] : nextafter(x[i], k % 3 == 1 ? INFINITY : -INFINITY);
-    if (cone_positive_at(m, nv, nnew, y))
+    if (cone_positive_at(m, nv, nnew, y)) {
+      memcpy(at, y, sizeof y);
       return 1;
+    }
   }
   return 0;
 }
@@ -215,8 +225,10 @@ tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
       pr[3 * i + j] = (prec){x < y ? x : y, x < y ? y : x, (uint32_t)i, j};
     }
   }
+  double at[3];
+  memcpy(at, rounded(m, pid), sizeof at);
   if (good)
-    good = rounding_allows(m, nv, nnew, pid);
+    good = rounding_allows(m, nv, nnew, pid, at);
   if (good)
     qsort(pr, 3 * nnew, sizeof *pr, cmp_prec);
   size_t npr = good ? 3 * nnew : 0;
@@ -262,7 +274,9 @@ tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
     }
     return st;
   }
-  /* 4. the mesh: free the cavity, build and glue the cone */
+  /* 4. the mesh: free the cavity, build and glue the cone; pid at the double its cone
+   * was admitted for */
+  memcpy(m->xyz + 3 * (size_t)pid, at, sizeof at);
   rf_cavity_release(c);
   for (size_t i = 0; i < c->cav.n; i++)
     tr_tet_free(m, c->cav.a[i]);

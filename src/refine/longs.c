@@ -14,8 +14,9 @@
  * of an input edge split once) is added by rf_subseg_add. Pieces whose ball spans many
  * cells are kept in one list that every query scans. The ball test is in doubles with a
  * margin far above the rounding of the pieces' end points (constraint points may be
- * rationals, m->xyz their nearest doubles), so it never misses a piece the exact test
- * (rf_in_diametral) would find: it only decides which cavities are built. */
+ * rationals, m->xyz their nearest doubles or one next to it, insert.c), so it never
+ * misses a piece the exact test (rf_in_diametral) would find: it only decides which
+ * cavities are built. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
