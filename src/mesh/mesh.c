@@ -209,6 +209,18 @@ tr_status tr_mesh_add_constructed(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx
   return tr_mesh_add_steiner(m, q, idx);
 }
 
+void tr_mesh_pop_vertex(struct tr_mesh *m)
+{
+  uint32_t v = m->nv - 1;
+  if (m->vq && m->vq[v]) {
+    tr_qpoint_clear(m->vq[v]);
+    free(m->vq[v]);
+    m->vq[v] = NULL;
+  }
+  m->nv--;
+  tr_mesh_orient_memo_forget(m);
+}
+
 tr_status tr_tet_new(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d,
                      uint32_t *t)
 {

@@ -138,6 +138,10 @@ tr_status tr_mesh_add_steiner(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx);
  * leaves that a margin of 3.2. */
 #define TR_STEINER_MAX_BITS 65536
 tr_status tr_mesh_add_constructed(struct tr_mesh *m, tr_qpoint *q, uint32_t *idx);
+/* Takes back the last vertex, a point no tet uses (a split that did not go ahead): frees
+ * its exact point, and empties the orientation memo (orient_memo.h), since the id will
+ * name another point. */
+void tr_mesh_pop_vertex(struct tr_mesh *m);
 /* The exact point of vertex v (v must not be TR_GHOST). */
 static inline tr_point tr_mesh_point(const struct tr_mesh *m, uint32_t v)
 {

@@ -9,7 +9,8 @@
  *
  * The memo is keyed by vertex ids, so it is correct only while each id keeps its point:
  * a stage turns it on where points are only added (tr_mesh_orient_memo_on), calls
- * tr_mesh_orient_memo_forget when it takes a vertex back or moves one, and turns it off
+ * tr_mesh_orient_memo_forget when it moves a point (tr_mesh_pop_vertex forgets for a
+ * vertex taken back), and turns it off
  * at its end. It is the shared vertex-tuple map (core/vtmap.h) on the sorted tuple,
  * grown from 4096 keys and emptied when it reaches TR_ORIENT_MEMO_KEYS, so its memory
  * stays bounded; the signs are exact either way, so the output does not depend on what
@@ -24,8 +25,8 @@
 
 struct tr_mesh;
 
-/* 2^16 keys: at most 2.6 MB of slots (2^18 was no faster); the working set of one edge's flip search fits
- * many times over. */
+/* 2^16 keys: at most 2.6 MB of slots (2^18 was no faster); the working set of one edge's
+ * flip search fits many times over. */
 #define TR_ORIENT_MEMO_KEYS (1u << 16)
 
 typedef struct tr_orient_memo {

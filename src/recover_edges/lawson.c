@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mesh/orient_memo.h"
+
 void tr_lawson_free(tr_lawson *L)
 {
   free(L->st);
@@ -85,13 +87,6 @@ static int holds_face(const struct tr_mesh *m, uint32_t t, uint32_t p, const uin
   return 1;
 }
 
-static int orient(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
-{
-  tr_point q[4] = {tr_mesh_point(m, a), tr_mesh_point(m, b), tr_mesh_point(m, c),
-                   tr_mesh_point(m, d)};
-  return tr_orient3d_p(&q[0], &q[1], &q[2], &q[3]);
-}
-
 /* The 4-4 flip of the degenerate case: p, d and the face edge xy (the face's vertices
  * other than z = tv[j]) coplanar, pd crossing xy at a point interior to both. The shell
  * of xy is then t = (p,x,y,z), u = (d,x,y,z), (p,x,y,w), (d,x,y,w); on each side of the
@@ -108,10 +103,10 @@ static tr_status flip44(struct tr_mesh *m, uint32_t t, int k, int j, uint32_t u,
   for (int i = 0; i < 4; i++)
     if (i != j && i != k)
       e[ne++] = tv[i];
-  if (orient(m, p, d, e[0], e[1]) != 0)
+  if (tr_mesh_orient(m, p, d, e[0], e[1]) != 0)
     return TR_OK;
-  int sx = orient(m, p, d, z, e[0]), sy = orient(m, p, d, z, e[1]);
-  int sp = orient(m, e[0], e[1], z, p), sd = orient(m, e[0], e[1], z, d);
+  int sx = tr_mesh_orient(m, p, d, z, e[0]), sy = tr_mesh_orient(m, p, d, z, e[1]);
+  int sp = tr_mesh_orient(m, e[0], e[1], z, p), sd = tr_mesh_orient(m, e[0], e[1], z, d);
   if (!sx || sx != -sy || !sp || sp != -sd)
     return TR_OK;
   /* the other side: t's neighbour across (p,x,y) and u's across (d,x,y), same apex w */
@@ -144,7 +139,7 @@ static tr_status flip44(struct tr_mesh *m, uint32_t t, int k, int j, uint32_t u,
       q[1] = p;
       q[2] = d;
       q[3] = e[b];
-      int o = orient(m, q[0], q[1], q[2], q[3]);
+      int o = tr_mesh_orient(m, q[0], q[1], q[2], q[3]);
       if (o == 0)
         return TR_OK; /* cannot happen after the tests above; refuse rather than assume */
       if (o < 0) {

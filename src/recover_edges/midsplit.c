@@ -34,7 +34,6 @@
 
 #include "classify.h"
 #include "construct.h"
-#include "mesh/orient_memo.h"
 #include "recover_edges/pipe.h"
 
 /* Bit k set iff face k of real tet tv holds p; -1 if p is outside the tet. */
@@ -248,11 +247,7 @@ tr_status tr_pipe_split_mid(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_
           *done = 2;
       } else {
         /* unused: take the vertex back so the store has no orphan */
-        tr_qpoint_clear(m->vq[id]);
-        free(m->vq[id]);
-        m->vq[id] = NULL;
-        m->nv--;
-        tr_mesh_orient_memo_forget(m); /* id will name another point */
+        tr_mesh_pop_vertex(m);
         s = TR_OK;
       }
     }

@@ -559,7 +559,7 @@ tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t
   c.nv0 = m->nv;
   if (opt)
     c.opt = *opt;
-  /* points are only added here (midsplit.c forgets the memo when it takes one back) */
+  /* points are only added here (tr_mesh_pop_vertex forgets the memo when one is taken back) */
   int memo = !m->omemo;
   tr_status s = memo ? tr_mesh_orient_memo_on(m) : TR_OK;
   if (s == TR_OK)

@@ -8,6 +8,7 @@
 #include "classify.h"
 #include "construct.h"
 #include "core/vtmap.h"
+#include "mesh/orient_memo.h"
 #include "recover_edges/decompose.h"
 #include "recover_edges/edge_tables.h"
 #include "recover_facets/cluster.h"
@@ -375,13 +376,6 @@ static tr_status decompose_cluster(ctx *cx, const tr_clusterel *cl, uint32_t ncl
 
 /* ---- Swap32 (Table 10) ---- */
 
-static int pos(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
-{
-  tr_point p[4] = {tr_mesh_point(m, a), tr_mesh_point(m, b), tr_mesh_point(m, c),
-                   tr_mesh_point(m, d)};
-  return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) > 0;
-}
-
 /* The crossing tet of cl with vertex set {a,b,c,d}, or TR_NONE. */
 static uint32_t find_tet(const struct tr_mesh *m, const uint32_t *cr, int n, uint32_t a,
                          uint32_t b, uint32_t c, uint32_t d)
@@ -454,7 +448,7 @@ static tr_status try_swap32(struct tr_mesh *m, uint32_t e, uint32_t f, uint32_t 
       int ok = 1;
       for (int j = 0; j < 3 && ok; j++) {
         const uint8_t *o = t->old[j];
-        ok = pos(m, ids[o[0]], ids[o[1]], ids[o[2]], ids[o[3]]);
+        ok = tr_mesh_orient(m, ids[o[0]], ids[o[1]], ids[o[2]], ids[o[3]]) > 0;
         old[j] = find_tet(m, cr, 3, ids[o[0]], ids[o[1]], ids[o[2]], ids[o[3]]);
         ok = ok && old[j] != TR_NONE;
       }

@@ -263,14 +263,9 @@ tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
     /* the refused point was the last one added: it goes, or it would stay a vertex of no
      * tet, which the stages after refinement (Ball walks) do not expect */
     if (pid == m->nv - 1 && m->v2t[pid] == TR_NONE) {
-      if (m->vq && m->vq[pid]) {
-        tr_qpoint_clear(m->vq[pid]);
-        free(m->vq[pid]);
-        m->vq[pid] = NULL;
-      }
       if (pid < c->capv)
         c->vkind[pid] = RF_FREE; /* the slot's next point sets its own */
-      m->nv--;
+      tr_mesh_pop_vertex(m);
     }
     return st;
   }

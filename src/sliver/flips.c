@@ -4,6 +4,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "mesh/orient_memo.h"
 #include "refine/quality.h"
 #include "sliver/sliver.h"
 #include "sliver/ring.h"
@@ -19,9 +20,7 @@ typedef struct cand {
 
 static int positive(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
 {
-  tr_point p[4] = {tr_mesh_point(m, a), tr_mesh_point(m, b), tr_mesh_point(m, c),
-                   tr_mesh_point(m, d)};
-  return tr_orient3d_p(&p[0], &p[1], &p[2], &p[3]) > 0;
+  return tr_mesh_orient(m, a, b, c, d) > 0;
 }
 
 /* Tet t's smallest dihedral angle; its ratio raises *ratio to at least it. */

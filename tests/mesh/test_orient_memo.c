@@ -96,8 +96,8 @@ static int test_signs(void)
   return 0;
 }
 
-/* A vertex id that is taken back and given to another point: after forget the memo
- * answers for the new point. */
+/* A vertex id that is taken back (tr_mesh_pop_vertex, which forgets the memo) and given
+ * to another point: the memo answers for the new point. */
 static int test_forget(void)
 {
   struct tr_mesh *m;
@@ -114,11 +114,7 @@ static int test_forget(void)
   uint32_t v[4] = {g[0], g[1], g[2], id};
   EXPECT(before == direct(m, v) && before == 0, "on the plane: %d", before);
   /* take it back the way edge recovery does (midsplit.c), then reuse the id */
-  tr_qpoint_clear(m->vq[id]);
-  free(m->vq[id]);
-  m->vq[id] = NULL;
-  m->nv--;
-  tr_mesh_orient_memo_forget(m);
+  tr_mesh_pop_vertex(m);
   uint32_t id2;
   long off[3] = {1, 1, 6};
   if (add_rational(m, off, d, zero, &id2) != 0)
