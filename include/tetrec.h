@@ -336,12 +336,13 @@ tr_status tr_delaunay(const double *xyz, uint32_t npoints, tr_mesh **out);
 tr_status tr_plc_validate(tr_plc *plc, const tr_options *opt);
 /* What the last tr_plc_validate repaired, one line per item ("" if nothing). */
 const char *tr_plc_report(const tr_plc *plc);
-/* Writes the surface (points + triangles + markers) as .mesh, .vtu, .vtk, .msh, .off or
- * TetGen .node/.face; a name whose extension has no letter ("out", "cube.1") is a TetGen
- * base name; any other extension is TR_ERR_USAGE. */
+/* Writes the surface (points + triangles + markers) as .mesh, .meshb, .vtu, .vtk, .msh,
+ * .off, .stl (binary, float coordinates: the format has no others) or TetGen .node/.face;
+ * a name whose extension has no letter ("out", "cube.1") is a TetGen base name; any other
+ * extension is TR_ERR_USAGE. */
 tr_status tr_plc_write(const tr_plc *plc, const char *path);
-/* Writes a mesh: .mesh (Medit), .vtu (VTK XML), .vtk (legacy VTK), .msh (Gmsh 4.1),
- * .node/.ele/.face or a TetGen base name as above (writes base.node, base.ele,
+/* Writes a mesh: .mesh (Medit), .meshb (binary Medit), .vtu (VTK XML), .vtk (legacy VTK),
+ * .msh (Gmsh 4.1), .node/.ele/.face or a TetGen base name as above (writes base.node, base.ele,
  * base.face); any other extension is TR_ERR_USAGE. exact != 0: Steiner points as exact
  * rationals num/den in the .node file. Tets carry their region (Medit reference, .ele
  * attribute, VTU/VTK "region" cell data, Gmsh physical tag). The faces written are those
@@ -350,7 +351,12 @@ tr_status tr_plc_write(const tr_plc *plc, const char *path);
  * tags), plus, for an open input meshed within its convex hull, the hull faces with
  * marker 0; a tr_delaunay mesh writes its hull faces with marker 1. */
 tr_status tr_mesh_write(const tr_mesh *mesh, const char *path, int exact);
-/* The same with the Gmsh format version of a .msh output: 41 (4.1) or 22 (2.2). */
+/* The same with the Gmsh format version of a .msh output: 41 (4.1) or 22 (2.2), to which
+ * TR_WRITE_BINARY may be added (msh_version = 41 | TR_WRITE_BINARY): the binary form of
+ * .msh (Gmsh binary, little-endian), .vtu (raw appended data, UInt64 headers) and .vtk
+ * (legacy binary, big-endian); other formats refuse it (TR_ERR_USAGE), except .meshb and
+ * .stl, which are binary anyway. */
+#define TR_WRITE_BINARY 0x100
 tr_status tr_mesh_write_ex(const tr_mesh *mesh, const char *path, int exact, int msh_version);
 tr_status tr_plc_write_ex(const tr_plc *plc, const char *path, int msh_version);
 /* The largest distance of a written (double) Steiner point of mesh from the input edge or

@@ -17,15 +17,16 @@ static const char usage[] =
     "commands:\n"
     "  mesh IN [-o OUT]        tetrahedralize the volume bounded by the surface IN\n"
     "  delaunay IN [-o OUT]    Delaunay tetrahedralization of the points of IN\n"
-    "  check IN MESH           validate MESH (.mesh, .msh, or .ele/.node) against IN\n"
+    "  check IN MESH           validate MESH (.mesh, .meshb, .msh, or .ele/.node) against IN\n"
     "  check-surface IN [-o F] list every defect of the surface IN\n"
     "  convert IN OUT          convert a surface or mesh between formats\n"
     "\n"
-    "input formats (by extension): .off .stl .obj .ply .mesh .msh .node .poly .smesh\n"
-    "output: .mesh (Medit), .vtu (VTK XML), .vtk (legacy VTK), .msh (Gmsh),\n"
-    "  .node/.ele/.face or a TetGen base name (a name whose extension has no letter,\n"
-    "  like out or cube.1); any other extension is an error. Without -o, IN's name with\n"
-    "  '.1' (cube.off -> cube.1.node/.ele/.face), like TetGen\n"
+    "input formats (by extension): .off .stl .obj .ply .mesh .meshb .msh .node .poly .smesh\n"
+    "output: .mesh (Medit), .meshb (binary Medit), .vtu (VTK XML), .vtk (legacy VTK),\n"
+    "  .msh (Gmsh; --binary: binary .msh, .vtu, .vtk), .off and .stl (binary;\n"
+    "  surfaces only: convert), .node/.ele/.face or a TetGen base name (a name whose\n"
+    "  extension has no letter, like out or cube.1); any other extension is an error.\n"
+    "  Without -o, IN's name with '.1' (cube.off -> cube.1.node/.ele/.face), like TetGen\n"
     "\n"
     "exit status (= tr_status):\n"
     "  0 ok, 1 usage, 2 I/O error, 3 parse error, 4 invalid input (NaN, bad index,\n"
@@ -48,8 +49,8 @@ static const struct command {
     {"delaunay", C_DELAUNAY, 1, "delaunay IN [-o OUT] [options]",
      "Delaunay tetrahedralization of the points of IN (its triangles are ignored).\n"},
     {"check", C_CHECK, 2, "check IN MESH [options]",
-     "Validate the tetrahedral mesh MESH (.mesh, .msh or .node/.ele) against the surface\n"
-     "IN: links, exact orientation, and, when every vertex is known exactly\n"
+     "Validate the tetrahedral mesh MESH (.mesh, .meshb, .msh or .node/.ele) against the\n"
+     "surface IN: links, exact orientation, and, when every vertex is known exactly\n"
      "(an --exact .node, or no Steiner points), exact conformity and volume; also the\n"
      "largest distance of a rounded Steiner point from the input surface.\n"},
     {"check-surface", C_CHECK_SURFACE, 1, "check-surface IN [-o FILE] [options]",
@@ -60,7 +61,8 @@ static const struct command {
      "intersecting triangle, 2 open edge, 3 non-manifold edge, 4 triangle of a non-planar\n"
      "polygon, 5 zero-area, 6 duplicate triangle, for ParaView or Gmsh.\n"},
     {"convert", C_CONVERT, 2, "convert IN OUT [options]",
-     "Convert a surface or mesh between formats (OUT: .off .mesh .vtu .vtk .msh or TetGen).\n"},
+     "Convert a surface or mesh between formats (OUT: .off .stl .mesh .meshb .vtu .vtk .msh\n"
+     "or TetGen).\n"},
 };
 
 static const struct option {
@@ -83,7 +85,13 @@ static const struct option {
      "keep every tet strictly positive, so it may lie a hair off\n"
      "its facet (see --strict-doubles)"},
     {"--msh-version", "V", C_MESH | C_DELAUNAY | C_CONVERT | C_CHECK_SURFACE,
-     ".msh output format: 4.1 (default) or 2.2"},
+     ".msh output format: 4.1 (default) or 2.2; 4.1b and 2.2b\n"
+     "are the binary forms (the same as adding --binary)"},
+    {"--binary", NULL, C_MESH | C_DELAUNAY | C_CONVERT | C_CHECK_SURFACE,
+     "write the binary form of the output format: .msh (Gmsh\n"
+     "binary), .vtu (raw appended data), .vtk (legacy binary);\n"
+     ".meshb and .stl are binary anyway; any other format is a\n"
+     "usage error. Text is the default for .msh, .vtu and .vtk"},
     {"--allow-open", NULL, C_MESH | C_CHECK, "accept open or non-manifold surfaces"},
     {"--check-only", NULL, C_MESH, "only read and validate the input"},
     {"--no-smooth", NULL, C_MESH, "no surface diagonal swaps before recovery"},
@@ -212,8 +220,8 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
      * value forgotten) would read OUT.mesh, fail, and write JSON over the surface IN. A
      * name with a mesh or surface extension is refused before anything is opened. */
     static const char *mesh_ext[] = {".stl", ".off", ".obj", ".ply", ".poly", ".smesh",
-                                     ".mesh", ".node", ".ele", ".face", ".msh", ".vtk",
-                                     ".vtu"};
+                                     ".mesh", ".meshb", ".node", ".ele", ".face", ".msh",
+                                     ".vtk", ".vtu"};
     for (size_t i = 0; i < sizeof mesh_ext / sizeof *mesh_ext; i++)
       if (tr_io_has_ext(v, mesh_ext[i]))
         return tr_error(TR_ERR_USAGE, "--stats FILE writes JSON statistics, and '%s' is named "
@@ -290,13 +298,21 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
       return tr_error(TR_ERR_USAGE, "--recovery needs 'default', 'paper' or "
                       "'no-facet-flips', not '%s'", v);
   }
+  else if (!strcmp(name, "--binary"))
+    a->msh_version |= TR_WRITE_BINARY;
   else if (!strcmp(name, "--msh-version")) {
+    /* the version in the low byte, the binary flag kept from --binary given before */
+    int bin = a->msh_version & TR_WRITE_BINARY;
     if (!strcmp(v, "4.1") || !strcmp(v, "4"))
-      a->msh_version = 41;
+      a->msh_version = 41 | bin;
     else if (!strcmp(v, "2.2") || !strcmp(v, "2"))
-      a->msh_version = 22;
+      a->msh_version = 22 | bin;
+    else if (!strcmp(v, "4.1b"))
+      a->msh_version = 41 | TR_WRITE_BINARY;
+    else if (!strcmp(v, "2.2b"))
+      a->msh_version = 22 | TR_WRITE_BINARY;
     else
-      return tr_error(TR_ERR_USAGE, "--msh-version is 4.1 or 2.2, not '%s'", v);
+      return tr_error(TR_ERR_USAGE, "--msh-version is 4.1, 2.2, 4.1b or 2.2b, not '%s'", v);
   } else if (!strcmp(name, "--round-budget") || !strcmp(name, "--refine-budget")) {
     /* digits only, 1 .. 10^15: strtoull alone would take "-1", "+5" and " 7" */
     size_t len = strlen(v);

@@ -118,6 +118,8 @@ static int finish(const tr_cli_args *a, tr_stats *st, double t0, tr_status s)
 static tr_status check_names(const tr_cli_args *a, const char *path)
 {
   TR_CHECK(tr_io_check_out_name(path, 0));
+  if (a->msh_version & TR_WRITE_BINARY)
+    TR_CHECK(tr_io_check_binary_name(path));
   if (a->exact && tr_io_out_format(path) != TR_OUT_TETGEN)
     return tr_error(TR_ERR_USAGE, "--exact writes exact rationals only to a TetGen .node file, "
                     "not to %s", path);
@@ -435,6 +437,8 @@ static int cmd_convert(const tr_cli_args *a)
 {
   tr_plc *plc = NULL;
   tr_status s = tr_io_check_out_name(a->in2, 1);
+  if (s == TR_OK && (a->msh_version & TR_WRITE_BINARY))
+    s = tr_io_check_binary_name(a->in2);
   if (s == TR_OK)
     s = tr_plc_read(a->in, &plc);
   if (s == TR_OK)
@@ -465,7 +469,13 @@ int main(int argc, char **argv)
   case C_DELAUNAY: return cmd_delaunay(&a);
   case C_CHECK: return cmd_check(&a);
   case C_CHECK_SURFACE: {
-    s = tr_cli_check_surface(a.in, a.out, a.msh_version, a.quiet);
+    /* check-surface writes its .vtk as text (check_surface.c): --binary is for its .msh */
+    s = TR_OK;
+    if (a.out && (a.msh_version & TR_WRITE_BINARY) && tr_io_out_format(a.out) != TR_OUT_MSH)
+      s = tr_error(TR_ERR_USAGE, "%s: check-surface writes .vtk as text only; --binary "
+                   "applies to its .msh", a.out);
+    if (s == TR_OK)
+      s = tr_cli_check_surface(a.in, a.out, a.msh_version, a.quiet);
     return s == TR_OK ? 0 : fail(s);
   }
   default: return cmd_convert(&a);

@@ -1,25 +1,10 @@
-/* Loading files and choosing the reader by extension. */
+/* Loading files and choosing the reader by extension (format_name.c). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "io.h"
-
-int tr_io_has_ext(const char *path, const char *ext)
-{
-  size_t n = strlen(path), m = strlen(ext);
-  if (n < m)
-    return 0;
-  for (size_t i = 0; i < m; i++) {
-    char a = path[n - m + i], b = ext[i];
-    if (a >= 'A' && a <= 'Z')
-      a = (char)(a - 'A' + 'a');
-    if (a != b)
-      return 0;
-  }
-  return 1;
-}
 
 tr_status tr_io_load(const char *path, char **buf, size_t *len)
 {
@@ -72,17 +57,10 @@ tr_status tr_io_read_file(const char *path, struct tr_plc *plc)
   char *buf = NULL, *nbuf = NULL, *npath = NULL;
   size_t len = 0, nlen = 0;
   tr_status st;
-  int kind = -1;
-  static const char *exts[] = {".off", ".stl", ".obj", ".ply", ".mesh",
-                               ".node", ".poly", ".smesh", ".ele", ".msh"};
-  for (int i = 0; i < 10; i++)
-    if (tr_io_has_ext(path, exts[i]))
-      kind = i;
-  if (kind < 0)
-    return tr_error(TR_ERR_USAGE,
-                    "%s: unknown file extension (supported: .off .stl .obj .ply .mesh .msh "
-                    ".node .poly .smesh .ele)", path);
-  if (kind == 8) {
+  enum tr_in_format kind = tr_io_in_format(path);
+  if (kind == TR_IN_UNKNOWN)
+    return tr_io_unknown_input(path);
+  if (kind == TR_IN_ELE) {
     /* .ele: the points come from the .node next to it. */
     npath = sibling(path, ".node");
     if (!npath)
@@ -99,13 +77,16 @@ tr_status tr_io_read_file(const char *path, struct tr_plc *plc)
   }
   TR_CHECK(tr_io_load(path, &buf, &len));
   switch (kind) {
-  case 0: st = tr_read_off_buf(buf, len, path, plc); break;
-  case 1: st = tr_read_stl_buf(buf, len, path, plc); break;
-  case 2: st = tr_read_obj_buf(buf, len, path, plc); break;
-  case 3: st = tr_read_ply_buf(buf, len, path, plc); break;
-  case 4: st = tr_read_medit_buf(buf, len, path, plc); break;
-  case 9: st = tr_read_msh_buf(buf, len, path, plc); break;
-  case 5: st = tr_read_tetgen_buf(TR_TETGEN_NODE, buf, len, path, NULL, 0, NULL, plc); break;
+  case TR_IN_OFF: st = tr_read_off_buf(buf, len, path, plc); break;
+  case TR_IN_STL: st = tr_read_stl_buf(buf, len, path, plc); break;
+  case TR_IN_OBJ: st = tr_read_obj_buf(buf, len, path, plc); break;
+  case TR_IN_PLY: st = tr_read_ply_buf(buf, len, path, plc); break;
+  case TR_IN_MEDIT: st = tr_read_medit_buf(buf, len, path, plc); break;
+  case TR_IN_MESHB: st = tr_read_meshb_buf(buf, len, path, plc); break;
+  case TR_IN_MSH: st = tr_read_msh_buf(buf, len, path, plc); break;
+  case TR_IN_NODE:
+    st = tr_read_tetgen_buf(TR_TETGEN_NODE, buf, len, path, NULL, 0, NULL, plc);
+    break;
   default: {
     /* A .poly/.smesh may leave its points to the .node of the same name. */
     npath = sibling(path, ".node");
@@ -121,8 +102,8 @@ tr_status tr_io_read_file(const char *path, struct tr_plc *plc)
         }
       }
     }
-    st = tr_read_tetgen_buf(kind == 6 ? TR_TETGEN_POLY : TR_TETGEN_SMESH, buf, len, path, nbuf,
-                            nlen, npath, plc);
+    st = tr_read_tetgen_buf(kind == TR_IN_POLY ? TR_TETGEN_POLY : TR_TETGEN_SMESH, buf, len,
+                            path, nbuf, nlen, npath, plc);
     break;
   }
   }

@@ -5,7 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "io.h"
+#include "put_number.h"
+#include "write.h"
 
 tr_status tr_write_medit(const struct tr_mesh_view *m, const char *path)
 {

@@ -4,31 +4,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io.h"
+#include "format_name.h"
+#include "write.h"
+#include "core/plc.h"
 #include "core/vtmap.h"
 #include "mesh/mesh.h"
 #include "output/round.h"
-
-void tr_io_put_ints(FILE *f, const int64_t *x, int n)
-{
-  char line[24 * 8], *p = line;
-  for (int i = 0; i < n && i < 8; i++) {
-    char dig[24];
-    int k = 0;
-    uint64_t u = x[i] < 0 ? 0 - (uint64_t)x[i] : (uint64_t)x[i];
-    do
-      dig[k++] = (char)('0' + u % 10);
-    while (u /= 10);
-    if (i)
-      *p++ = ' ';
-    if (x[i] < 0)
-      *p++ = '-';
-    while (k)
-      *p++ = dig[--k];
-  }
-  *p++ = '\n';
-  fwrite(line, 1, (size_t)(p - line), f);
-}
 
 /* Faces written: those of include/tetrec.h's tr_mesh_boundary_faces with their markers
  * for a tr_mesh_plc mesh (input_faces); for other meshes (tr_delaunay's) the boundary
@@ -121,6 +102,8 @@ tr_status tr_mesh_write_ex(const tr_mesh *mesh, const char *path, int exact, int
   if (!m)
     return tr_error(TR_ERR_USAGE, "tr_mesh_write: no mesh");
   TR_CHECK(tr_io_check_out_name(path, 0));
+  if (msh_version & TR_WRITE_BINARY)
+    TR_CHECK(tr_io_check_binary_name(path));
   /* A mesh that tr_mesh_plc returned under TR_PIPE_KEEP_EXACT may have tets that are flat
    * or inverted on the doubles: only its exact TetGen output is a valid mesh. */
   uint32_t bad;
@@ -202,6 +185,8 @@ tr_status tr_plc_write_ex(const tr_plc *plc, const char *path, int msh_version)
 {
   tr_error_clear();
   TR_CHECK(tr_io_check_out_name(path, 1));
+  if (msh_version & TR_WRITE_BINARY)
+    TR_CHECK(tr_io_check_binary_name(path));
   struct tr_mesh_view v = {plc->npoints, plc->xyz, NULL, plc->ntets, plc->tets, NULL,
                            plc->ntris, plc->tris, plc->tri_marker};
   return tr_write_mesh_view_as(&v, path, 0, msh_version);

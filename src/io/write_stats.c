@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "io.h"
+#include "../core/status.h"
 
 typedef struct {
   const char *name;

@@ -11,7 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io.h"
+#include "put_number.h"
+#include "write.h"
 
 static FILE *open_ext(const char *base, const char *ext, tr_status *st)
 {

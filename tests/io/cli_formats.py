@@ -100,9 +100,12 @@ with tempfile.TemporaryDirectory() as d:
     expect(st["status"] == "TR_ERR_USAGE" and ".vtkx" in st["message"], f"stats on usage error {st}")
     os.remove(os.path.join(d, "s.json"))
     expect(sorted(os.listdir(d)) == before, f"files left behind: {sorted(os.listdir(d))}")
-    rc, _, err = run(["convert", "c.off", "c.stl"], d)
-    expect(rc == 1 and "does not write '.stl'" in err, f"convert to .stl -> 1: {rc} {err}")
-    expect(not os.path.exists(os.path.join(d, "c.stl.node")), "convert wrote TetGen files")
+    rc, _, err = run(["convert", "c.off", "c.xyz"], d)
+    expect(rc == 1 and "does not write '.xyz'" in err, f"convert to .xyz -> 1: {rc} {err}")
+    expect(not os.path.exists(os.path.join(d, "c.xyz.node")), "convert wrote TetGen files")
+    rc, _, err = run(["mesh", "c.off", "-o", "m.stl"], d)
+    expect(rc == 1 and "does not write '.stl' files of a tetrahedral mesh" in err,
+           f"mesh to .stl -> 1: {rc} {err}")
 
     # unwritable outputs are found before meshing; --stats says why
     rc, _, err = run(["mesh", "c.off", "-o", "nodir/x.mesh", "--stats", "s.json"], d)
@@ -146,7 +149,7 @@ with tempfile.TemporaryDirectory() as d:
     rc, _, err = run(["check", "--exact", "c.off", "ex.node"], d)
     expect(rc == 1 and "does not apply" in err, f"option of another command -> 1: {rc} {err}")
     rc, _, err = run(["mesh", "c.off", "--msh-version", "3"], d)
-    expect(rc == 1 and "4.1 or 2.2" in err, f"--msh-version 3 -> 1: {rc} {err}")
+    expect(rc == 1 and "4.1, 2.2, 4.1b or 2.2b" in err, f"--msh-version 3 -> 1: {rc} {err}")
 
     # .msh (both versions) and .vtk outputs; `check` validates the .msh
     for args, out in ((["-o", "m41.msh"], "m41.msh"), (["-o", "m22.msh", "--msh-version", "2.2"],

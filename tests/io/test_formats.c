@@ -177,8 +177,10 @@ static void t_msh_reader(void)
     const char *text, *msg;
     tr_status status;
   } bad[] = {
-      {"$MeshFormat\n4.1 1 8\n$EndMeshFormat\n", "t:2: binary .msh not supported",
-       TR_ERR_UNSUPPORTED},
+      {"$MeshFormat\n4.1 1 4\n$EndMeshFormat\n",
+       "t:2: binary .msh with data size 4 not supported", TR_ERR_UNSUPPORTED},
+      {"$MeshFormat\n4.1 1 8\n$EndMeshFormat\n", "t:3: binary .msh: the int after the header",
+       TR_ERR_PARSE},
       {"$MeshFormat\n4 0 8\n$EndMeshFormat\n", "t:2: .msh format 4 not supported",
        TR_ERR_UNSUPPORTED},
       {"$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n99999999999\n1 0 0 0\n$EndNodes\n",
@@ -314,15 +316,21 @@ static void t_out_names(void)
   } cs[] = {{"a.mesh", TR_OUT_MEDIT}, {"A.VTK", TR_OUT_VTK},     {"x/y.msh", TR_OUT_MSH},
             {"b.vtu", TR_OUT_VTU},    {"c.1", TR_OUT_TETGEN},    {"out", TR_OUT_TETGEN},
             {"d.node", TR_OUT_TETGEN}, {"e.face", TR_OUT_TETGEN}, {"dir.v2/out", TR_OUT_TETGEN},
-            {"f.stl", TR_OUT_UNKNOWN}, {"g.vtk.bak", TR_OUT_UNKNOWN}, {"h.off", TR_OUT_OFF}};
+            {"f.stl", TR_OUT_STL},    {"g.vtk.bak", TR_OUT_UNKNOWN}, {"h.off", TR_OUT_OFF},
+            {"i.meshb", TR_OUT_MESHB}, {"j.MESHB", TR_OUT_MESHB}, {"k.xyz", TR_OUT_UNKNOWN}};
   for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++)
     EXPECT(tr_io_out_format(cs[i].name) == cs[i].f, "%s: format %d, expected %d", cs[i].name,
            tr_io_out_format(cs[i].name), cs[i].f);
-  EXPECT(tr_io_check_out_name("x.stl", 1) == TR_ERR_USAGE &&
-             strstr(tr_last_error(), "does not write '.stl'"),
-         "x.stl: %s", tr_last_error());
+  EXPECT(tr_io_check_out_name("x.xyz", 1) == TR_ERR_USAGE &&
+             strstr(tr_last_error(), "does not write '.xyz'") &&
+             strstr(tr_last_error(), ".meshb") && strstr(tr_last_error(), ".stl"),
+         "x.xyz: %s", tr_last_error());
   EXPECT(tr_io_check_out_name("x.off", 0) == TR_ERR_USAGE, "a mesh is not written as .off");
+  EXPECT(tr_io_check_out_name("x.stl", 0) == TR_ERR_USAGE &&
+             strstr(tr_last_error(), "of a tetrahedral mesh"),
+         "a mesh is not written as .stl: %s", tr_last_error());
   EXPECT(tr_io_check_out_name("x.off", 1) == TR_OK, "a surface is");
+  EXPECT(tr_io_check_out_name("x.stl", 1) == TR_OK, "a surface is, as .stl too");
   EXPECT(tr_io_check_writable(tpath(tmp, "nodir/x.mesh")) == TR_ERR_IO, "missing directory");
   EXPECT(tr_io_check_writable(tpath(tmp, "probe")) == TR_OK, "TetGen base in tmp: %s", tr_last_error());
   FILE *f = fopen(tpath(tmp, "probe.node"), "r");
@@ -335,9 +343,9 @@ static void t_out_names(void)
   static const double x[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   static const uint32_t t[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
   tr_plc_set(p, x, 4, t, 4, NULL);
-  EXPECT(tr_plc_write(p, tpath(tmp, "w.stl")) == TR_ERR_USAGE, "tr_plc_write .stl");
-  f = fopen(tpath(tmp, "w.stl.node"), "r");
-  EXPECT(f == NULL, "w.stl.node written");
+  EXPECT(tr_plc_write(p, tpath(tmp, "w.xyz")) == TR_ERR_USAGE, "tr_plc_write .xyz");
+  f = fopen(tpath(tmp, "w.xyz.node"), "r");
+  EXPECT(f == NULL, "w.xyz.node written");
   if (f)
     fclose(f);
   tr_plc_destroy(p);

@@ -1,4 +1,6 @@
-/* tr_io_fmt_double: printf("%.17g") without printf. The 17 significant digits are the
+/* Text numbers for the writers (put_number.h).
+ *
+ * tr_io_fmt_double: printf("%.17g") without printf. The 17 significant digits are the
  * double's exact value m 2^e times 10^k, rounded to an integer half to even, computed in
  * 128-bit integers whenever m 10^k fits (0 <= k <= 22, i.e. magnitudes from about 1e-6
  * to 1e16, which covers the coordinates of real models); any other double goes through
@@ -9,7 +11,28 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "io.h"
+#include "put_number.h"
+
+void tr_io_put_ints(FILE *f, const int64_t *x, int n)
+{
+  char line[24 * 8], *p = line;
+  for (int i = 0; i < n && i < 8; i++) {
+    char dig[24];
+    int k = 0;
+    uint64_t u = x[i] < 0 ? 0 - (uint64_t)x[i] : (uint64_t)x[i];
+    do
+      dig[k++] = (char)('0' + u % 10);
+    while (u /= 10);
+    if (i)
+      *p++ = ' ';
+    if (x[i] < 0)
+      *p++ = '-';
+    while (k)
+      *p++ = dig[--k];
+  }
+  *p++ = '\n';
+  fwrite(line, 1, (size_t)(p - line), f);
+}
 
 #ifdef __SIZEOF_INT128__
 typedef unsigned __int128 u128;
