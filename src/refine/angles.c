@@ -44,6 +44,8 @@ typedef struct {
   uint32_t v[3]; /* input vertex ids: 2 for a segment, 3 for a triangle */
   uint32_t tri; /* RF_FACET: the input triangle (of a merged facet: the one near the point
                    in question) */
+  uint32_t cl;  /* its cap cluster (capcluster.c), TR_NONE: none; an input vertex (kind
+                   0, v[0] the vertex) has one when it is a corner of a cap */
 } element;
 
 /* The triangle of facet g whose projection holds p (doubles: a choice of which corner
@@ -75,16 +77,22 @@ static uint32_t facet_tri_at(const rf_ctx *c, uint32_t g, const double *p)
 
 static element elem_of(const rf_ctx *c, int kind, uint32_t own, const double *at)
 {
-  element e = {0, {0, 0, 0}, TR_NONE};
+  element e = {0, {0, 0, 0}, TR_NONE, TR_NONE};
   if (kind == RF_SEG) {
     e.kind = RF_SEG;
     e.v[0] = c->ssab[2 * (size_t)own];
     e.v[1] = c->ssab[2 * (size_t)own + 1];
+    e.cl = rf_caps_edge(&c->caps, e.v[0], e.v[1]);
   } else if (kind == RF_FACET) {
     e.kind = RF_FACET;
     e.tri = facet_tri_at(c, own, at);
     for (int i = 0; i < 3; i++)
       e.v[i] = c->plc->tris[3 * (size_t)e.tri + i];
+    if (c->caps.n)
+      e.cl = c->caps.tri[e.tri];
+  } else if (kind == RF_INPUT && c->caps.n && own < c->plc->npoints) {
+    e.v[0] = own;
+    e.cl = c->caps.vert[own];
   }
   return e;
 }
@@ -231,8 +239,29 @@ static int small_at(const rf_ctx *c, uint32_t V, const element *e, const element
   return 0;
 }
 
+/* Two constraints of one cap cluster, neither holding the other (a vertex of a segment
+ * or triangle, a segment of a triangle, or the same one: pieces of one constraint). */
+static int one_cluster(const element *e, const element *f)
+{
+  if (e->cl == TR_NONE || e->cl != f->cl)
+    return 0;
+  const element *a = e->kind <= f->kind ? e : f, *b = e->kind <= f->kind ? f : e;
+  if (!a->kind)
+    return !b->kind ? a->v[0] != b->v[0] : !has(b, a->v[0]);
+  if (a->kind == b->kind)
+    return a->kind == RF_SEG ? !(has(b, a->v[0]) && has(b, a->v[1])) : a->tri != b->tri;
+  return !(has(b, a->v[0]) && has(b, a->v[1])); /* a segment, b a triangle */
+}
+
+/* *at = the input vertex where e and f meet under a small angle, or TR_NONE when they
+ * are two constraints of one cap cluster (no such vertex, and no distance from it). */
 static int small_between(const rf_ctx *c, const element *e, const element *f, uint32_t *at)
 {
+  if (one_cluster(e, f)) {
+    if (at)
+      *at = TR_NONE;
+    return 1;
+  }
   if (!e->kind || !f->kind)
     return 0;
   for (int i = 0; i < nverts(e); i++)
@@ -257,7 +286,7 @@ int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t ow
                     const double *pw)
 {
   element f = elem_of(c, kind, own, pw), e;
-  if (!f.kind)
+  if (!f.kind && f.cl == TR_NONE)
     return 0;
   const uint32_t *pv;
   int np;
@@ -265,6 +294,7 @@ int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t ow
     e.kind = RF_SEG;
     e.v[0] = c->ssab[2 * (size_t)id];
     e.v[1] = c->ssab[2 * (size_t)id + 1];
+    e.cl = rf_caps_edge(&c->caps, e.v[0], e.v[1]);
     pv = c->ssv + 2 * (size_t)id;
     np = 2;
   } else {
@@ -279,6 +309,8 @@ int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t ow
   uint32_t V;
   if (!small_between(c, &e, &f, &V))
     return 0;
+  if (V == TR_NONE)
+    return 1; /* one cap cluster: the whole of it */
   double r = rf_dist2(pw, X(c, V));
   for (int k = 0; k < np; k++)
     if (rf_dist2(c->m->xyz + 3 * (size_t)pv[k], X(c, V)) > 4 * r)
@@ -290,10 +322,11 @@ int rf_wedge_split(const rf_ctx *c, uint32_t g, uint32_t v)
 {
   if (c->vkind[v] != RF_SEG)
     return 0;
-  element e = {RF_SEG, {c->ssab[2 * (size_t)g], c->ssab[2 * (size_t)g + 1], 0}, TR_NONE};
+  element e = {RF_SEG, {c->ssab[2 * (size_t)g], c->ssab[2 * (size_t)g + 1], 0}, TR_NONE,
+               rf_caps_edge(&c->caps, c->ssab[2 * (size_t)g], c->ssab[2 * (size_t)g + 1])};
   element f = elem_of_vertex(c, v);
   uint32_t V;
-  if (!small_between(c, &e, &f, &V))
+  if (!small_between(c, &e, &f, &V) || V == TR_NONE)
     return 0;
   const uint32_t *pv = c->ssv + 2 * (size_t)g;
   if (pv[0] == V || pv[1] == V)

@@ -33,6 +33,7 @@ void rf_tables_free(rf_ctx *t)
   free(t->sfnosplit);
   tr_vtmap_free(&t->fm);
   tr_vtmap_free(&t->trimap);
+  rf_caps_free(&t->caps);
   free(t->ssv);
   free(t->ssab);
   free(t->ssdead);
@@ -100,6 +101,7 @@ static tr_status tables_copy(rf_ctx *dst, const rf_ctx *src, uint32_t nv, int to
     return tr_error(TR_ERR_NOMEM, "out of memory for a copy of %u sub-faces' tables", src->nsf);
   TR_CHECK(tr_vtmap_copy(&dst->fm, &src->fm));
   TR_CHECK(tr_vtmap_copy(&dst->trimap, &src->trimap));
+  TR_CHECK(rf_caps_copy(&dst->caps, &src->caps, dst->plc ? dst->plc : src->plc));
   return tr_vtmap_copy(&dst->es.m, &src->es.m);
 }
 

@@ -28,6 +28,18 @@ typedef struct rf_longs {
   tr_u32buf wide;  /* sub-segments whose ball spans too many cells: scanned every query */
 } rf_longs;
 
+/* Cap clusters (angles.c): input triangles with a corner over 179 degrees, joined across
+ * the edges they share. The constraints of one cluster lie within a sliver of their
+ * length of each other without meeting at a small angle at one vertex; a piece of one is
+ * not split for a point on another, and a bad tet whose shortest edge joins two of them
+ * is left. */
+typedef struct rf_caps {
+  uint32_t n;     /* cap triangles; 0: none, and the tables below are empty */
+  tr_vtmap edge;  /* an input edge of a cap (sorted ids) -> its cluster */
+  uint32_t *vert; /* per input vertex: the cluster of a cap at it, or TR_NONE */
+  uint32_t *tri;  /* per input triangle: its cluster, or TR_NONE */
+} rf_caps;
+
 typedef struct rf_ctx {
   struct tr_mesh *m;
   const struct tr_plc *plc;
@@ -46,6 +58,7 @@ typedef struct rf_ctx {
   tr_vtmap fm;      /* sorted sub-face vertices -> sub-face id (rf_face_set); a split
                        sub-face's entry stays and points to a dead id */
   tr_vtmap trimap;  /* the input triangles by their vertices (angles.c) */
+  rf_caps caps;
   /* sub-segments: vertices, the input edge (A,B) they lie on (input ids, A < B) */
   uint32_t nss, capss;
   uint32_t *ssv, *ssab;
@@ -201,6 +214,11 @@ int rf_protected_at(const rf_ctx *c, int seg, uint32_t id, int kind, uint32_t ow
 /* 1 iff sub-segment g, encroached by vertex v on a constraint meeting g's at a small
  * angle, may still be split to grade the wedge between them (angles.c). */
 int rf_wedge_split(const rf_ctx *c, uint32_t g, uint32_t v);
+tr_status rf_caps_build(rf_caps *k, const struct tr_plc *plc);
+tr_status rf_caps_copy(rf_caps *dst, const rf_caps *src, const struct tr_plc *plc);
+/* The cluster of input edge a-b, TR_NONE when it is no edge of a cap. */
+uint32_t rf_caps_edge(const rf_caps *k, uint32_t a, uint32_t b);
+void rf_caps_free(rf_caps *k);
 
 /* ---- subshape.c ---- */
 /* 1 iff sub-face f's radius-edge ratio exceeds bound, its shortest edge taken at least as

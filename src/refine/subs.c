@@ -248,6 +248,7 @@ static tr_status build_tables(rf_ctx *c, const tr_subfaces *sub)
   TR_CHECK(tr_vtmap_reserve(&c->trimap, 3, plc->ntris));
   for (uint32_t t = 0; t < plc->ntris; t++)
     TR_CHECK(rf_face_set(&c->trimap, plc->tris + 3 * (size_t)t, t));
+  TR_CHECK(rf_caps_build(&c->caps, plc));
   /* "is this mesh face a sub-face?" is asked of every face the refinement walks */
   TR_CHECK(tr_vtmap_reserve(&c->fm, 3, 2 * sub->n));
   TR_CHECK(tr_vtmap_filter(&c->fm));
