@@ -13,14 +13,9 @@
 
 /* Through the orientation memo when the stage has it on (mesh/orient_memo.h): the
  * searches below ask the same tuples many times over. */
-static int orient(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
-{
-  return tr_mesh_orient(m, a, b, c, d);
-}
-
 static int positive(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
 {
-  return orient(m, a, b, c, d) > 0;
+  return tr_mesh_orient(m, a, b, c, d) > 0;
 }
 
 /* A cheap shape measure in doubles (only ranks valid triangulations, never decides
@@ -75,7 +70,7 @@ tr_status tr_flip23(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, v
    * only the exact stage decides */
   int sg[3];
   for (int i = 0; i < 3; i++) {
-    sg[i] = orient(m, a, b, f[i], f[(i + 1) % 3]);
+    sg[i] = tr_mesh_orient(m, a, b, f[i], f[(i + 1) % 3]);
     if (sg[i] == 0 || sg[i] != sg[0])
       return TR_OK;
   }
@@ -118,7 +113,7 @@ int tr_flip23_blockers(const struct tr_mesh *m, uint32_t t, int k, uint32_t e[3]
    * face iff all three are negative, and an edge with a sign >= 0 is one ab passes
    * beside (or through) */
   for (int i = 0; i < 3; i++)
-    if (orient(m, a, b, f[i], f[(i + 1) % 3]) >= 0) {
+    if (tr_mesh_orient(m, a, b, f[i], f[(i + 1) % 3]) >= 0) {
       e[n][0] = f[i];
       e[n][1] = f[(i + 1) % 3];
       n++;
@@ -207,17 +202,22 @@ tr_status tr_flip_edge_tet(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t *
 
 static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                              tr_flip_guard guard, void *ud, const tr_flip_journal *j,
-                             tr_flip_rec *rec, int *done);
+                             tr_u32buf *sh, tr_flip_rec *rec, int *done);
 
 tr_status tr_flip_remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                               tr_flip_guard guard, void *ud, tr_flip_rec *rec, int *done)
 {
-  return remove_edge(m, a, b, t0, guard, ud, NULL, rec, done);
+  tr_u32buf sh = {0};
+  tr_status s = remove_edge(m, a, b, t0, guard, ud, NULL, &sh, rec, done);
+  tr_u32buf_free(&sh);
+  return s;
 }
 
+/* sh: scratch for Shell(ab), whose memory the caller keeps across calls (the journal's
+ * for the searches, which remove edges by the thousand) */
 static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                              tr_flip_guard guard, void *ud, const tr_flip_journal *j,
-                             tr_flip_rec *rec, int *done)
+                             tr_u32buf *sh, tr_flip_rec *rec, int *done)
 {
   *done = 0;
   uint32_t e2[2] = {a, b};
@@ -228,17 +228,13 @@ static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t
     if (t0 == TR_NONE)
       return TR_OK;
   }
-  tr_u32buf sh = {0};
   int closed = 0;
-  tr_status s = tr_shell(m, a, b, t0, &sh, &closed);
-  if (s != TR_OK || !closed || sh.n < 3 || sh.n > TR_FLIP_MAX_RING) {
-    tr_u32buf_free(&sh);
+  tr_status s = tr_shell(m, a, b, t0, sh, &closed);
+  if (s != TR_OK || !closed || sh->n < 3 || sh->n > TR_FLIP_MAX_RING)
     return s;
-  }
-  int n = (int)sh.n, g = -1, sign = 0, ok = 1;
+  int n = (int)sh->n, g = -1, sign = 0, ok = 1;
   uint32_t ring[TR_FLIP_MAX_RING], old[TR_FLIP_MAX_RING];
-  memcpy(old, sh.a, sh.n * sizeof *old);
-  tr_u32buf_free(&sh);
+  memcpy(old, sh->a, sh->n * sizeof *old);
   for (int i = 0; i < n && ok; i++) {
     ring[i] = shared_third(m, old[i], old[(i + 1) % n], a, b);
     ok = ring[i] != TR_NONE;
@@ -250,7 +246,7 @@ static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t
   if (ok && j && j->tetgen_flips && n >= 4 && g < 0) {
     int flat = 1;
     for (int q = 3; q < n && flat; q++)
-      flat = orient(m, ring[0], ring[1], ring[2], ring[q]) == 0;
+      flat = tr_mesh_orient(m, ring[0], ring[1], ring[2], ring[q]) == 0;
     if (!flat)
       return TR_OK;
   }
@@ -285,10 +281,10 @@ static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t
     uint32_t C = R.r[0], D = R.r[R.n - 1], X = R.r[1];
     /* hull faces ABC, BAD coplanar, AB and CD crossing inside both: the new hull faces
      * ACD, BDC cover the same quad (X is off the plane: tet A B C X is a real shell tet) */
-    if (orient(m, R.A, R.B, C, D) != 0)
+    if (tr_mesh_orient(m, R.A, R.B, C, D) != 0)
       return TR_OK;
-    int s1 = orient(m, R.A, R.B, C, X), s2 = orient(m, R.A, R.B, D, X);
-    int s3 = orient(m, C, D, R.A, X), s4 = orient(m, C, D, R.B, X);
+    int s1 = tr_mesh_orient(m, R.A, R.B, C, X), s2 = tr_mesh_orient(m, R.A, R.B, D, X);
+    int s3 = tr_mesh_orient(m, C, D, R.A, X), s4 = tr_mesh_orient(m, C, D, R.B, X);
     if (!s1 || !s2 || !s3 || !s4 || s1 == s2 || s3 == s4)
       return TR_OK;
   }
@@ -353,6 +349,7 @@ tr_status tr_flip_undo(struct tr_mesh *m, const tr_flip_rec *rec)
 
 void tr_flip_journal_free(tr_flip_journal *j)
 {
+  tr_u32buf_free(&j->shell);
   free(j->r);
   j->r = NULL;
   j->n = j->cap = 0;
@@ -441,7 +438,7 @@ static tr_status remove_j(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0
     return TR_OK;
   j->tries++;
   TR_CHECK(journal_room(j));
-  TR_CHECK(remove_edge(m, a, b, t0, guard, ud, j, &j->r[j->n], done));
+  TR_CHECK(remove_edge(m, a, b, t0, guard, ud, j, &j->shell, &j->r[j->n], done));
   return admit(m, j, done);
 }
 

@@ -95,6 +95,7 @@ typedef struct tr_flip_journal {
    * edge recovery stop when this many attempts were spent. `tries` counts them; the
    * caller resets it. */
   uint32_t budget, tries;
+  tr_u32buf shell; /* scratch of the edge removals: Shell(ab) (freed with the journal) */
 } tr_flip_journal;
 void tr_flip_journal_free(tr_flip_journal *j);
 /* Undoes the journal's flips back to its first `to` entries (newest first). */

@@ -135,13 +135,7 @@ tr_status tr_pipe_flip_first(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe 
       t = p->pl[pi].iEle;
       s = remove_crossing(m, t, type, code, cons, depth, &j, &gone);
     }
-    st->flip23 += j.flips[0];
-    st->flip32 += j.flips[1];
-    st->flip44 += j.flips[2];
-    st->flipn += j.flips[3];
-    st->flip_hull += j.flips[4];
-    memset(j.flips, 0, sizeof j.flips);
-    j.n = 0;
+    tr_pipe_count_flips(&j, st);
     if (s != TR_OK || !gone)
       break;
     int yes;

@@ -119,18 +119,6 @@ static tr_status apply(struct tr_mesh *m, const cand *c, const struct tr_edgeset
                                 cons ? cons_guard : NULL, (void *)cons, j, done);
 }
 
-static void count(tr_flip_journal *j, tr_edge_stats *st)
-{
-  st->flip23 += j->flips[0];
-  st->flip32 += j->flips[1];
-  st->flip44 += j->flips[2];
-  st->flipn += j->flips[3];
-  st->flip_hull += j->flips[4];
-  memset(j->flips, 0, sizeof j->flips);
-  j->n = 0;
-  j->delta = 0;
-}
-
 /* The measure of a flip attempt: 1 iff the real tet with vertices v meets the open
  * segment ab at a point that is not one of its vertices (a pipel of pipe.h; ghosts count
  * 0). Memoised: every flip made and undone re-measures the same tets, and the memo also
@@ -204,7 +192,7 @@ tr_status tr_pipe_try_flips_budget(struct tr_mesh *m, uint32_t a, uint32_t b, tr
       if ((s = apply(m, &cs[i], cons, depth, &j, &st->flips_undone, &ok)) != TR_OK)
         break;
       if (j.n && j.delta < 0) {
-        count(&j, st);
+        tr_pipe_count_flips(&j, st);
         progress = 1;
         int yes;
         if ((s = tr_mesh_has_edge(m, a, b, &yes)) != TR_OK)

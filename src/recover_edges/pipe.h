@@ -14,6 +14,8 @@
 #ifndef TR_RECOVER_EDGES_PIPE_H
 #define TR_RECOVER_EDGES_PIPE_H
 
+#include <string.h>
+
 #include "recover_edges/flip.h"
 #include "recover_edges/pipel.h"
 #include "recover_edges/segmemo.h"
@@ -63,6 +65,20 @@ typedef struct tr_edge_stats {
   uint32_t flip23, flip32, flip44, flipn, flip_hull, flips_undone;
   uint32_t midpoints;           /* sub-segments split at their midpoint (pass 2) */
 } tr_edge_stats;
+
+/* Adds the journal's kept flips to st by kind and empties the journal, its flips made for
+ * good: what a search does once an attempt has succeeded. */
+static inline void tr_pipe_count_flips(tr_flip_journal *j, tr_edge_stats *st)
+{
+  st->flip23 += j->flips[0];
+  st->flip32 += j->flips[1];
+  st->flip44 += j->flips[2];
+  st->flipn += j->flips[3];
+  st->flip_hull += j->flips[4];
+  memset(j->flips, 0, sizeof j->flips);
+  j->n = 0;
+  j->delta = 0;
+}
 
 struct tr_edgeset;
 
