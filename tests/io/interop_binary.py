@@ -12,18 +12,10 @@ import subprocess
 import sys
 import tempfile
 
-try:
-    import meshio
-    import numpy as np
-except ImportError:
-    # Debian's python3-meshio lives with Debian's interpreter (see interop_meshio.py)
-    system_python = "/usr/bin/python3"
-    if os.path.realpath(sys.executable) != os.path.realpath(system_python) \
-            and os.path.exists(system_python) and not os.environ.get("TETREC_REEXEC"):
-        os.environ["TETREC_REEXEC"] = "1"
-        os.execv(system_python, [system_python] + sys.argv)
-    print("meshio not installed: skipped")
-    sys.exit(77)
+from meshio_import import require_meshio
+
+meshio = require_meshio()
+import numpy as np  # noqa: E402 (after the interpreter is settled)
 
 tetrec, data = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 fails = 0
