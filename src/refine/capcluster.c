@@ -1,5 +1,5 @@
 /* Cap clusters (refine_impl.h, rf_caps): input triangles with a corner over 179 degrees,
- * joined across their shared edges.
+ * joined across their shared edges, two caps or more.
  *
  * A cap's third vertex lies within a sliver of its length of its long edge, and two caps
  * that share an edge put their outer edges as close to each other with no input vertex in
@@ -92,10 +92,26 @@ tr_status rf_caps_build(rf_caps *k, const struct tr_plc *plc)
   }
   if (s == TR_OK)
     memset(k->vert, 0xff, sizeof *k->vert * (size_t)plc->npoints);
+  /* a cap alone is no cluster: its edges meet at its two sharp corners, where the rules
+   * of angles.c already stop the descent, and the points its apex makes on its long edge
+   * are a few levels of splits (anchor_dense.off's one cap: smallest angle 1.6 degrees
+   * with them, 0.07 when it counted as a cluster) */
+  uint32_t *size = s == TR_OK ? calloc(plc->ntris, sizeof *size) : NULL;
+  if (s == TR_OK && !size)
+    s = tr_error(TR_ERR_NOMEM, "out of memory for cap clusters");
+  for (uint32_t t = 0; s == TR_OK && t < plc->ntris; t++)
+    if (k->tri[t] != TR_NONE)
+      size[find(up, t)]++;
+  ncap = 0;
   for (uint32_t t = 0; s == TR_OK && t < plc->ntris; t++) {
     if (k->tri[t] == TR_NONE)
       continue;
     uint32_t cl = find(up, t);
+    if (size[cl] < 2) {
+      k->tri[t] = TR_NONE;
+      continue;
+    }
+    ncap++;
     k->tri[t] = cl;
     const uint32_t *T = plc->tris + 3 * (size_t)t;
     for (int e = 0; e < 3 && s == TR_OK; e++) {
@@ -108,8 +124,9 @@ tr_status rf_caps_build(rf_caps *k, const struct tr_plc *plc)
   }
   k->n = ncap;
   free(up);
+  free(size);
   tr_vtmap_free(&owner);
-  if (s != TR_OK)
+  if (s != TR_OK || !ncap)
     rf_caps_free(k);
   return s;
 }

@@ -28,13 +28,13 @@ typedef struct rf_longs {
   tr_u32buf wide;  /* sub-segments whose ball spans too many cells: scanned every query */
 } rf_longs;
 
-/* Cap clusters (angles.c): input triangles with a corner over 179 degrees, joined across
- * the edges they share. The constraints of one cluster lie within a sliver of their
+/* Cap clusters (capcluster.c): input triangles with a corner over 179 degrees, joined
+ * across the edges they share, two caps or more. The constraints of one cluster lie within a sliver of their
  * length of each other without meeting at a small angle at one vertex; a piece of one is
  * not split for a point on another, and a bad tet whose shortest edge joins two of them
  * is left. */
 typedef struct rf_caps {
-  uint32_t n;     /* cap triangles; 0: none, and the tables below are empty */
+  uint32_t n;     /* caps in clusters; 0: none, and the tables below are empty */
   tr_vtmap edge;  /* an input edge of a cap (sorted ids) -> its cluster */
   uint32_t *vert; /* per input vertex: the cluster of a cap at it, or TR_NONE */
   uint32_t *tri;  /* per input triangle: its cluster, or TR_NONE */

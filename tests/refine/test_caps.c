@@ -31,7 +31,7 @@ static tr_plc *cap_strip(void)
 
 /* The two caps make one cluster named by the smaller (triangle 3); its five edges map to
  * it, the fan's edges at Z and the side faces' to none; the copy made for the set-up
- * memo answers the same. */
+ * memo answers the same. A lone cap and a tetrahedron make none. */
 static void clusters(void)
 {
   tr_plc *p = cap_strip();
@@ -61,6 +61,15 @@ static void clusters(void)
   }
   rf_caps_free(&k);
   rf_caps_free(&k2);
+  /* one cap alone (C beside A-D, no B) is no cluster: its sharp corners are wedges the
+   * other rules know */
+  static const double x1[15] = {0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, 0.3, 1, 0.6, 1e-5, -3e-6};
+  static const uint32_t t1[18] = {A, Z, 4, 4, Z, D, D, A, 4, A, D, U, D, Z, U, Z, A, U};
+  tr_plc *one = tm_plc(x1, 5, t1, 6);
+  s = rf_caps_build(&k, one);
+  EXPECT(s == TR_OK && k.n == 0 && !k.tri && !k.vert, "a lone cap makes a cluster (%u)", k.n);
+  rf_caps_free(&k);
+  tr_plc_destroy(one);
   /* a regular tetrahedron: no cap, nothing allocated */
   static const double x[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   static const uint32_t t[12] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3};
