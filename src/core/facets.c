@@ -4,25 +4,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/ufind.h"
 #include "core/edgesort.h"
 #include "core/facets.h"
 #include "predicates.h"
 #include "qpoint.h"
 
 #define NONE UINT32_MAX /* TR_NONE, which is mesh.h's */
-
-static uint32_t find(uint32_t *par, uint32_t x)
-{
-  uint32_t r = x;
-  while (par[r] != r)
-    r = par[r];
-  while (par[x] != r) {
-    uint32_t n = par[x];
-    par[x] = r;
-    x = n;
-  }
-  return r;
-}
 
 int tr_plc_tri_axis(const struct tr_plc *plc, uint32_t t)
 {
@@ -170,19 +158,14 @@ tr_status tr_facets_build(const struct tr_plc *plc, int keep_edges, tr_facets *o
           out->inner[s] |= (uint8_t)(1u << si);
           out->inner[t] |= (uint8_t)(1u << ti);
           out->ninner++;
-          uint32_t rs = find(par, s), rt = find(par, t);
-          /* the smaller root stays: a root is its group's smallest index */
-          if (rs < rt)
-            par[rt] = rs;
-          else if (rt < rs)
-            par[rs] = rt;
+          tr_uf_unite(par, s, t); /* a root is its group's smallest index */
         }
       }
       i = j;
     }
     free(slots);
     for (uint32_t t = 0; t < n; t++)
-      par[t] = find(par, t);
+      par[t] = tr_uf_find(par, t);
   }
   for (uint32_t t = 0; t < n; t++)
     out->start[out->group[t] + 1]++;

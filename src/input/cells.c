@@ -34,6 +34,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/ufind.h"
 #include "classify.h"
 #include "construct.h"
 #include "core/box.h"
@@ -42,23 +43,6 @@
 #include "validate.h"
 
 #define PRE(plc) (plc)->source ? (plc)->source : "", (plc)->source ? ": " : ""
-
-static uint32_t find(uint32_t *uf, uint32_t x)
-{
-  while (uf[x] != x) {
-    uf[x] = uf[uf[x]];
-    x = uf[x];
-  }
-  return x;
-}
-
-static void unite(uint32_t *uf, uint32_t a, uint32_t b)
-{
-  a = find(uf, a);
-  b = find(uf, b);
-  if (a != b)
-    uf[a < b ? b : a] = a < b ? a : b;
-}
 
 static const double *P(const struct tr_plc *plc, uint32_t v) { return plc->xyz + 3 * (size_t)v; }
 
@@ -150,7 +134,7 @@ static void wedges(const struct tr_plc *plc, const uint32_t *ids, uint32_t k, ui
     /* a triangle that runs a->b has its normal towards increasing angle */
     uint32_t up = 2 * t + (goes(plc->tris + 3 * (size_t)t, a, b) ? 0 : 1);
     uint32_t down = 2 * u + (goes(plc->tris + 3 * (size_t)u, a, b) ? 1 : 0);
-    unite(uf, up, down);
+    tr_uf_unite(uf, up, down);
   }
 }
 
@@ -386,10 +370,10 @@ static int cast_dir(caster *c, uint32_t t, int s, int d, uint32_t *uf, uint32_t 
     }
   uint32_t prev = 2 * t + (uint32_t)s;
   for (uint32_t i = 0; i < c->nh; i++) {
-    unite(uf, prev, 2 * c->hu[i] + c->hs[i]);
+    tr_uf_unite(uf, prev, 2 * c->hu[i] + c->hs[i]);
     prev = 2 * c->hu[i] + 1 - c->hs[i];
   }
-  unite(uf, prev, inf);
+  tr_uf_unite(uf, prev, inf);
   return 1;
 }
 
@@ -462,7 +446,7 @@ static int locate(caster *c, const double *p, uint32_t *uf, uint32_t inf, uint32
       }
     }
     if (clean) {
-      *cell = find(uf, first);
+      *cell = tr_uf_find(uf, first);
       done = 1;
     }
   }
@@ -554,7 +538,7 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
     goto done;
   }
   for (uint32_t x = 0; x < 2 * nt; x++) {
-    depth[x] = find(uf, x);
+    depth[x] = tr_uf_find(uf, x);
     if (depth[x] == x)
       roots[nroot++] = x;
   }
@@ -581,12 +565,12 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
    * per level of nesting. */
   for (uint32_t i = 0; i <= 2 * nt; i++)
     depth[i] = UINT32_MAX;
-  uint32_t inf = find(uf, 2 * nt);
+  uint32_t inf = tr_uf_find(uf, 2 * nt);
   depth[inf] = 0;
   for (int changed = 1; changed;) {
     changed = 0;
     for (uint32_t t = 0; t < nt; t++) {
-      uint32_t p = find(uf, 2 * t), m = find(uf, 2 * t + 1);
+      uint32_t p = tr_uf_find(uf, 2 * t), m = tr_uf_find(uf, 2 * t + 1);
       if (depth[p] != UINT32_MAX && depth[p] + 1 < depth[m])
         depth[m] = depth[p] + 1, changed = 1;
       if (depth[m] != UINT32_MAX && depth[m] + 1 < depth[p])
@@ -602,7 +586,7 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
     goto done;
   }
   for (uint32_t t = 0; t < nt; t++) {
-    uint32_t p = find(uf, 2 * t), m = find(uf, 2 * t + 1);
+    uint32_t p = tr_uf_find(uf, 2 * t), m = tr_uf_find(uf, 2 * t + 1);
     if (depth[p] == UINT32_MAX || depth[m] == UINT32_MAX) {
       st = tr_error(TR_ERR_INTERNAL, "%s%striangle %u bounds a cell not reached from outside",
                     PRE(plc), tnum ? tnum[t] : t);
@@ -655,7 +639,7 @@ static tr_status cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t 
     vote[cell] = INT32_MIN;
   }
   for (uint32_t t = 0; t < nt; t++) {
-    uint32_t p = find(uf, 2 * t), m = find(uf, 2 * t + 1);
+    uint32_t p = tr_uf_find(uf, 2 * t), m = tr_uf_find(uf, 2 * t + 1);
     int in_p = vote[p] == INT32_MIN ? 0 : vote[p] ? vote[p] > 0 : (int)(depth[p] & 1);
     int in_m = vote[m] == INT32_MIN ? 0 : vote[m] ? vote[m] > 0 : (int)(depth[m] & 1);
     if (free_edge[t] && !in_p && !allow_open) {

@@ -18,18 +18,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/ufind.h"
 #include "refine/refine_impl.h"
 
 #define RF_CAP_COS (-0.9998476951563913) /* cos 179 degrees */
-
-static uint32_t find(uint32_t *up, uint32_t x)
-{
-  while (up[x] != x) {
-    up[x] = up[up[x]];
-    x = up[x];
-  }
-  return x;
-}
 
 static int is_cap(const struct tr_plc *plc, uint32_t t)
 {
@@ -81,13 +73,7 @@ tr_status rf_caps_build(rf_caps *k, const struct tr_plc *plc)
         s = tr_vtmap_set(&owner, 2, key, t);
         continue;
       }
-      uint32_t a = find(up, o), b = find(up, t);
-      if (a != b) {
-        if (a < b)
-          up[b] = a;
-        else
-          up[a] = b;
-      }
+      tr_uf_unite(up, o, t);
     }
   }
   if (s == TR_OK)
@@ -101,12 +87,12 @@ tr_status rf_caps_build(rf_caps *k, const struct tr_plc *plc)
     s = tr_error(TR_ERR_NOMEM, "out of memory for cap clusters");
   for (uint32_t t = 0; s == TR_OK && t < plc->ntris; t++)
     if (k->tri[t] != TR_NONE)
-      size[find(up, t)]++;
+      size[tr_uf_find(up, t)]++;
   ncap = 0;
   for (uint32_t t = 0; s == TR_OK && t < plc->ntris; t++) {
     if (k->tri[t] == TR_NONE)
       continue;
-    uint32_t cl = find(up, t);
+    uint32_t cl = tr_uf_find(up, t);
     if (size[cl] < 2) {
       k->tri[t] = TR_NONE;
       continue;
