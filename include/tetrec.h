@@ -315,6 +315,10 @@ typedef struct tr_stats {
    * refinement leaves the tets on them (src/refine/thin.c); and the number of those
    * triangles */
   uint64_t tets_dihedral_below_10_on_thin_input, thin_input_triangles;
+  /* peak_memory_bytes / volume_elements (0 without tets): the memory a tet costs at the
+   * peak, the figure that says how large a mesh fits in a given memory. The command
+   * measures the peak again after writing, so there it covers the whole run */
+  double bytes_per_tet;
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

@@ -205,3 +205,11 @@ def test_spacing_radii_meets_the_ratio_bound_where_insertion_radii_refuse():
     assert spacing.stats["max_radius_edge"] <= 1.414
     with pytest.raises(TypeError):
         tetrec.tetrahedralize(points, tris, quality=1.414, spacing_radii="yes")
+
+
+def test_stats_report_the_bytes_a_tet_costs_at_the_peak(unit_cube):
+    mesh = tetrec.tetrahedralize(*unit_cube, quality=1.414)
+    check_mesh(mesh, *unit_cube)
+    st = mesh.stats
+    assert st["volume_elements"] > 0
+    assert st["bytes_per_tet"] == pytest.approx(st["peak_memory_bytes"] / st["volume_elements"])

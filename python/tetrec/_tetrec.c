@@ -359,7 +359,8 @@ static PyObject *stats_dict(const tr_stats *s)
   } reals[] = {{"min_dihedral", s->min_dihedral},
                {"max_dihedral", s->max_dihedral},
                {"max_radius_edge", s->max_radius_edge},
-               {"double_deviation", s->double_deviation}};
+               {"double_deviation", s->double_deviation},
+               {"bytes_per_tet", s->bytes_per_tet}};
   size_t nc = sizeof counts / sizeof *counts, nr = sizeof reals / sizeof *reals;
   for (size_t i = 0; i < nc + nr; i++) {
     PyObject *x = i < nc ? PyLong_FromUnsignedLongLong((unsigned long long)counts[i].value)

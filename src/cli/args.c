@@ -165,11 +165,12 @@ static const struct option {
      "a progress line (stage, share of stages done) on stderr from\n"
      "the start; without it the line shows when stderr is a\n"
      "terminal and the run takes over a second"},
-    {"--threads", "N", C_MESH | C_DELAUNAY,
-     "threads for the Delaunay tetrahedralization (default 0:\n"
+    {"--threads", "N", C_MESH | C_DELAUNAY | C_CONVERT,
+     "threads for the Delaunay tetrahedralization, for reading a\n"
+     "large .node and for formatting the output file (default 0:\n"
      "every core); the output is the same for any N, byte for\n"
      "byte"},
-    {"-j", "N", C_MESH | C_DELAUNAY, "the same as --threads"},
+    {"-j", "N", C_MESH | C_DELAUNAY | C_CONVERT, "the same as --threads"},
     {"--strict-doubles", NULL, C_MESH,
      "fail (exit 9) when a written double lies farther than\n"
      "2^-40 of the bounding box diagonal from the edge or facet\n"

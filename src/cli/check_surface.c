@@ -240,7 +240,7 @@ tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version,
   tr_status st = analyse(plc, &tris, &edges, &c);
   if (st == TR_OK && out) {
     struct tr_mesh_view v = {plc->npoints, plc->xyz, NULL, 0, NULL, NULL, tris.n, tris.a,
-                             tris.mark};
+                             tris.mark, 1};
     struct tr_edge_view e = {edges.n, edges.a, edges.mark};
     st = tr_io_out_format(out) == TR_OUT_VTK ? tr_write_vtk_edges(&v, &e, out)
                                              : tr_write_msh_edges(&v, &e, out, msh_version);

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -95,6 +96,13 @@ static void print_report(const tr_cli_args *a, const tr_plc *plc)
 static int finish(const tr_cli_args *a, tr_stats *st, double t0, tr_status s)
 {
   st->total_seconds = now() - t0;
+  /* the peak of the whole process, writing included (tr_mesh_plc measured it before) */
+  struct rusage ru;
+  if (getrusage(RUSAGE_SELF, &ru) == 0 &&
+      (uint64_t)ru.ru_maxrss * 1024u > st->peak_memory_bytes)
+    st->peak_memory_bytes = (uint64_t)ru.ru_maxrss * 1024u; /* Linux: kilobytes */
+  st->bytes_per_tet =
+      st->volume_elements ? (double)st->peak_memory_bytes / (double)st->volume_elements : 0;
   char *msg = NULL;
   int rc = 0;
   if (s != TR_OK) {
@@ -201,7 +209,7 @@ static int cmd_mesh(const tr_cli_args *a)
   tr_plc *plc = NULL;
   if (s == TR_OK) {
     progress("reading", a->in);
-    s = tr_plc_read(a->in, &plc);
+    s = tr_plc_read_threads(a->in, &plc, tr_io_thread_count(a->threads));
   }
   stats.stage_seconds[TR_STAGE_READ] = now() - t0;
   if (s == TR_OK && a->verbose)
@@ -276,7 +284,8 @@ static int cmd_mesh(const tr_cli_args *a)
   if (s == TR_OK) {
     progress("writing", path);
     double t_write = now();
-    s = tr_mesh_write_ex(mesh, path, a->exact, a->msh_version);
+    s = tr_mesh_write_threads(mesh, path, a->exact, a->msh_version,
+                              tr_io_thread_count(a->threads));
     stats.stage_seconds[TR_STAGE_WRITE] = now() - t_write;
     if (s == TR_OK && a->verbose)
       fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(TR_STAGE_WRITE),
@@ -306,11 +315,19 @@ static int cmd_mesh(const tr_cli_args *a)
   return finish(a, &stats, t0, s);
 }
 
+/* A stage's time into the statistics, and on stderr with -v. */
+static void stage_done(const tr_cli_args *a, tr_stats *st, int stage, double t)
+{
+  st->stage_seconds[stage] = now() - t;
+  if (a->verbose && !a->quiet)
+    fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(stage), st->stage_seconds[stage]);
+}
+
 static int cmd_delaunay(const tr_cli_args *a)
 {
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
-  double t0 = now();
+  double t0 = now(), t;
   char *out = a->out ? NULL : default_out(a->in);
   const char *path = a->out ? a->out : out;
   if (!path)
@@ -319,24 +336,31 @@ static int cmd_delaunay(const tr_cli_args *a)
   tr_plc *plc = NULL;
   if (s == TR_OK) {
     progress("reading", a->in);
-    s = tr_plc_read(a->in, &plc);
+    t = now();
+    s = tr_plc_read_threads(a->in, &plc, tr_io_thread_count(a->threads));
+    stage_done(a, &stats, TR_STAGE_READ, t);
   }
   if (s == TR_OK)
     s = check_writable(a, path);
   tr_mesh *mesh = NULL;
   if (s == TR_OK) {
     progress("tetrahedralizing", a->in);
+    t = now();
     s = tr_delaunay_build_threads(tr_plc_points(plc), tr_plc_num_points(plc), a->threads,
                                   &mesh);
-    if (s == TR_OK)
-      s = tr_mesh_attach_dense_tets(mesh); /* what tr_delaunay adds for the writers */
+    stage_done(a, &stats, TR_STAGE_DELAUNAY, t);
     stats.surface_nodes = tr_plc_num_points(plc);
     stats.surface_facets = tr_plc_num_triangles(plc);
   }
   tr_plc_destroy(plc);
   if (s == TR_OK) {
+    /* the writers read the store as it is (canonical order: real tets first), so the
+     * dense copy of the tets that tr_delaunay attaches for tr_mesh_tets is not made */
     progress("writing", path);
-    s = tr_mesh_write_ex(mesh, path, a->exact, a->msh_version);
+    t = now();
+    s = tr_mesh_write_threads(mesh, path, a->exact, a->msh_version,
+                              tr_io_thread_count(a->threads));
+    stage_done(a, &stats, TR_STAGE_WRITE, t);
     stats.volume_nodes = tr_mesh_num_vertices(mesh);
     stats.volume_elements = tr_mesh_num_tets(mesh);
   }
@@ -440,12 +464,12 @@ static int cmd_convert(const tr_cli_args *a)
   if (s == TR_OK && (a->msh_version & TR_WRITE_BINARY))
     s = tr_io_check_binary_name(a->in2);
   if (s == TR_OK)
-    s = tr_plc_read(a->in, &plc);
+    s = tr_plc_read_threads(a->in, &plc, tr_io_thread_count(a->threads));
   if (s == TR_OK)
     s = tr_io_check_writable(a->in2);
   if (s == TR_OK) {
     warn_nonplanar(a, plc);
-    s = tr_plc_write_ex(plc, a->in2, a->msh_version);
+    s = tr_plc_write_threads(plc, a->in2, a->msh_version, tr_io_thread_count(a->threads));
   }
   if (s == TR_OK && !a->quiet && a->verbose)
     fprintf(stderr, "tetrec: %s -> %s: %u vertices, %u triangles\n", a->in, a->in2,

@@ -50,6 +50,12 @@ enum tr_tetgen_kind { TR_TETGEN_NODE, TR_TETGEN_POLY, TR_TETGEN_SMESH, TR_TETGEN
 tr_status tr_read_tetgen_buf(enum tr_tetgen_kind kind, const char *buf, size_t len,
                              const char *name, const char *node_buf, size_t node_len,
                              const char *node_name, struct tr_plc *plc);
+/* The same with `threads` threads for the point list of a .node file (and of the .node
+ * next to a .poly/.smesh without points): the same points, read in parallel when the file
+ * is large and every point is one line (read_tetgen.c). */
+tr_status tr_read_tetgen_buf_threads(enum tr_tetgen_kind kind, const char *buf, size_t len,
+                                     const char *name, const char *node_buf, size_t node_len,
+                                     const char *node_name, struct tr_plc *plc, int threads);
 /* .ele on top of already-read points: appends plc->tets. */
 tr_status tr_read_ele_buf(const char *buf, size_t len, const char *name, struct tr_plc *plc);
 
@@ -58,6 +64,10 @@ tr_status tr_io_load(const char *path, char **buf, size_t *len);
 /* Reads any supported file chosen by its extension (tr_io_in_format: .off .stl .obj .ply
  * .mesh .meshb .msh .node .poly .smesh; .ele reads the .node next to it plus the tets). */
 tr_status tr_io_read_file(const char *path, struct tr_plc *plc);
+/* The same with `threads` threads where a reader has a parallel form (a TetGen point
+ * list), and tr_plc_read (include/tetrec.h) with them: the command passes --threads. */
+tr_status tr_io_read_file_threads(const char *path, struct tr_plc *plc, int threads);
+tr_status tr_plc_read_threads(const char *path, tr_plc **out, int threads);
 
 /* A polygon of the input that is not planar (polytri.c): plc triangles first_tri ..
  * first_tri + ntris - 1 came from input facet `facet`; deviation = the largest distance

@@ -13,25 +13,49 @@
 
 #include "put_number.h"
 
-void tr_io_put_ints(FILE *f, const int64_t *x, int n)
+/* u in decimal at p; returns the end. Two digits a step: integers are most of a mesh
+ * file's text. */
+static char *put_u64(char *p, uint64_t u)
 {
-  char line[24 * 8], *p = line;
-  for (int i = 0; i < n && i < 8; i++) {
-    char dig[24];
-    int k = 0;
-    uint64_t u = x[i] < 0 ? 0 - (uint64_t)x[i] : (uint64_t)x[i];
-    do
-      dig[k++] = (char)('0' + u % 10);
-    while (u /= 10);
+  static const char pairs[201] = "00010203040506070809101112131415161718192021222324252627282930"
+                                 "31323334353637383940414243444546474849505152535455565758596061"
+                                 "62636465666768697071727374757677787980818283848586878889909192"
+                                 "93949596979899";
+  char dig[20];
+  int k = 20;
+  while (u >= 100) {
+    unsigned r = (unsigned)(u % 100);
+    u /= 100;
+    dig[--k] = pairs[2 * r + 1];
+    dig[--k] = pairs[2 * r];
+  }
+  if (u >= 10) {
+    dig[--k] = pairs[2 * u + 1];
+    dig[--k] = pairs[2 * u];
+  } else
+    dig[--k] = (char)('0' + u);
+  memcpy(p, dig + k, (size_t)(20 - k));
+  return p + (20 - k);
+}
+
+char *tr_io_fmt_ints(char *p, const int64_t *x, int n)
+{
+  for (int i = 0; i < n; i++) {
     if (i)
       *p++ = ' ';
     if (x[i] < 0)
       *p++ = '-';
-    while (k)
-      *p++ = dig[--k];
+    p = put_u64(p, x[i] < 0 ? 0 - (uint64_t)x[i] : (uint64_t)x[i]);
   }
   *p++ = '\n';
-  fwrite(line, 1, (size_t)(p - line), f);
+  return p;
+}
+
+void tr_io_put_ints(FILE *f, const int64_t *x, int n)
+{
+  char line[TR_IO_INT_MAX * 8];
+  char *e = tr_io_fmt_ints(line, x, n < 8 ? n : 8);
+  fwrite(line, 1, (size_t)(e - line), f);
 }
 
 #ifdef __SIZEOF_INT128__
@@ -146,18 +170,10 @@ int tr_io_fmt_double(char *out, double x)
   return snprintf(out, 32, "%.17g", x);
 }
 
-void tr_io_put_xyz(FILE *f, int64_t lead, const double x[3], const char *tail)
+char *tr_io_fmt_xyz(char *p, int64_t lead, const double x[3], const char *tail)
 {
-  char line[32 * 4 + 32], *p = line;
   if (lead >= 0) {
-    char dig[24];
-    int k = 0;
-    uint64_t u = (uint64_t)lead;
-    do
-      dig[k++] = (char)('0' + u % 10);
-    while (u /= 10);
-    while (k)
-      *p++ = dig[--k];
+    p = put_u64(p, (uint64_t)lead);
     *p++ = ' ';
   }
   for (int i = 0; i < 3; i++) {
@@ -169,6 +185,12 @@ void tr_io_put_xyz(FILE *f, int64_t lead, const double x[3], const char *tail)
   if (n > 16)
     n = 16;
   memcpy(p, tail, n);
-  p += n;
-  fwrite(line, 1, (size_t)(p - line), f);
+  return p + n;
+}
+
+void tr_io_put_xyz(FILE *f, int64_t lead, const double x[3], const char *tail)
+{
+  char line[TR_IO_XYZ_MAX + 8]; /* + 8: tr_io_fmt_double may NUL-terminate past the end */
+  char *e = tr_io_fmt_xyz(line, lead, x, tail);
+  fwrite(line, 1, (size_t)(e - line), f);
 }

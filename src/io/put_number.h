@@ -21,6 +21,14 @@ int tr_io_fmt_double(char *out, double x);
 /* "lead x y z" then tail (at most 16 bytes; lead < 0: none): the doubles as %.17g. */
 void tr_io_put_xyz(FILE *f, int64_t lead, const double x[3], const char *tail);
 
+/* The same lines into memory, for the block writers (blocks.h): each writes at p, without
+ * a NUL, and returns the end. At most TR_IO_INT_MAX bytes per integer (its separator
+ * included) and TR_IO_XYZ_MAX bytes per xyz line. Any n. */
+#define TR_IO_INT_MAX 21
+#define TR_IO_XYZ_MAX (TR_IO_INT_MAX + 3 * 25 + 16)
+char *tr_io_fmt_ints(char *p, const int64_t *x, int n);
+char *tr_io_fmt_xyz(char *p, int64_t lead, const double x[3], const char *tail);
+
 /* Little-endian encodings into p; each returns p advanced past what it wrote. */
 static inline unsigned char *tr_le16(unsigned char *p, uint16_t x)
 {

@@ -41,6 +41,7 @@ struct msh {
   struct tagidx *nodes, *ents;
   uint32_t nnodes, cap_nodes, nents, cap_ents;
   int nodes_sorted, ents_sorted;
+  int nodes_in_order; /* node tags first, first + 1, ... in file order: index = tag - first */
 };
 
 static int cmp_tag(const void *a, const void *b)
@@ -68,6 +69,10 @@ static tr_status push(struct tagidx **a, uint32_t *n, uint32_t *cap, uint64_t ta
 
 static const struct tagidx *find(const struct tagidx *a, uint32_t n, uint64_t tag)
 {
+  /* sorted, no tag twice: contiguous tags (what Gmsh and tetrec write) are found by their
+   * offset; the search cost 2/3 of reading a .msh of 2.7x10^7 tets (16 s) */
+  if (n && a[n - 1].tag - a[0].tag == n - 1)
+    return tag >= a[0].tag && tag - a[0].tag < n ? a + (tag - a[0].tag) : NULL;
   uint32_t lo = 0, hi = n;
   while (lo < hi) {
     uint32_t mid = lo + (hi - lo) / 2;
@@ -82,12 +87,28 @@ static const struct tagidx *find(const struct tagidx *a, uint32_t n, uint64_t ta
 /* Sorts a tag table and rejects a tag given twice. */
 static tr_status seal(tr_lex *lx, struct tagidx *a, uint32_t n, const char *what)
 {
-  if (n > 1)
+  uint32_t k = 1;
+  while (k < n && a[k].tag > a[k - 1].tag)
+    k++;
+  if (k < n) /* not in increasing order already */
     qsort(a, n, sizeof *a, cmp_tag);
   for (uint32_t i = 1; i < n; i++)
     if (a[i].tag == a[i - 1].tag)
       return tr_error(TR_ERR_INPUT, "%s: %s tag %llu defined twice", lx->name, what,
                       (unsigned long long)a[i].tag);
+  return TR_OK;
+}
+
+/* The node tags sorted, and whether they are the file's order from the first tag on: then
+ * an element's nodes are found without reading the table, whose random reads were most
+ * of the rest of reading 2.7x10^7 tets. */
+static tr_status seal_nodes(tr_lex *lx, struct msh *g)
+{
+  TR_CHECK(seal(lx, g->nodes, g->nnodes, "node"));
+  g->nodes_sorted = 1;
+  g->nodes_in_order = g->nnodes > 0;
+  for (uint32_t i = 0; i < g->nnodes && g->nodes_in_order; i++)
+    g->nodes_in_order = g->nodes[i].idx == i && g->nodes[i].tag == g->nodes[0].tag + i;
   return TR_OK;
 }
 
@@ -334,8 +355,7 @@ static tr_status nodes(tr_lex *lx, struct msh *g, tr_soup *s)
   if (g->nnodes != total)
     return tr_error(TR_ERR_PARSE, "%s:%lu: %u nodes in the blocks, %llu declared", lx->name,
                     lx->tokline, g->nnodes, (unsigned long long)total);
-  TR_CHECK(seal(lx, g->nodes, g->nnodes, "node"));
-  g->nodes_sorted = 1;
+  TR_CHECK(seal_nodes(lx, g));
   return need(lx, "$EndNodes");
 }
 
@@ -369,6 +389,12 @@ static tr_status store(struct msh *g, tr_soup *s, int64_t type, int32_t marker,
   int nn = nodes_of_type(type);
   uint32_t v[4];
   for (int k = 0; k < nn; k++) {
+    uint64_t first = g->nnodes ? g->nodes[0].tag : 0;
+    if (g->nodes_in_order && tag[k] >= first && tag[k] - first < g->nnodes) {
+      if (k < 4)
+        v[k] = (uint32_t)(tag[k] - first);
+      continue;
+    }
     const struct tagidx *t = find(g->nodes, g->nnodes, tag[k]);
     if (!t)
       return tr_error(TR_ERR_INPUT, "%s:%s%lu: node tag %llu is not defined in $Nodes", name,
@@ -574,8 +600,7 @@ static tr_status nodes_bin(tr_lex *lx, const char *buf, struct msh *g, tr_soup *
     return tr_error(TR_ERR_PARSE, "%s: byte %lu: %u nodes in the blocks, %llu declared",
                     c.name, bin_at(&c), g->nnodes, (unsigned long long)total);
   bin_end(lx, &c);
-  TR_CHECK(seal(lx, g->nodes, g->nnodes, "node"));
-  g->nodes_sorted = 1;
+  TR_CHECK(seal_nodes(lx, g));
   return need(lx, "$EndNodes");
 }
 

@@ -10,7 +10,9 @@
 #include "qpoint.h"
 
 /* A mesh as the writers see it. exact: NULL, or per vertex NULL / the exact point
- * (written as num/den in --exact TetGen output). region, tri_marker may be NULL. */
+ * (written as num/den in --exact TetGen output). region, tri_marker may be NULL.
+ * threads: how many threads the text writers may format on (blocks.h; 0 or 1: the calling
+ * thread only); the file is the same for any value. */
 struct tr_mesh_view {
   uint32_t nverts;
   const double *xyz;
@@ -21,6 +23,7 @@ struct tr_mesh_view {
   uint32_t ntris;
   const uint32_t *tris;
   const int32_t *tri_marker;
+  int threads;
 };
 /* Edges beside a view (check-surface's offending edges), written as lines by the .vtk and
  * .msh writers. */
@@ -73,6 +76,15 @@ tr_status tr_write_mesh_view_as(const struct tr_mesh_view *m, const char *path, 
                                 int flags);
 /* tr_write_mesh_view_as with .msh version 4.1, text. */
 tr_status tr_write_mesh_view(const struct tr_mesh_view *m, const char *path, int exact);
+
+/* tr_mesh_write_ex (include/tetrec.h) with the threads the text writers may use (the
+ * public writers use one; the command passes --threads): write_mesh.c. */
+tr_status tr_mesh_write_threads(const tr_mesh *mesh, const char *path, int exact, int flags,
+                                int threads);
+tr_status tr_plc_write_threads(const tr_plc *plc, const char *path, int flags, int threads);
+/* Threads for an option value, as the Delaunay stage counts them: 0 every online core,
+ * N > 0 at most N (64 at most). */
+int tr_io_thread_count(int threads);
 
 /* TR_ERR_IO unless every file that writing path creates (three for a TetGen name) can be
  * created; leaves no new file behind. */

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "blocks.h"
 #include "put_number.h"
 #include "write.h"
 
@@ -43,6 +44,51 @@ static void keyword(struct out *o, int code, int64_t lines, uint64_t body)
   put(o, b, p);
 }
 
+/* The lines of the three keywords, formatted in blocks (blocks.h). */
+static char *vertices(const void *ctx, uint64_t i0, uint64_t i1, char *p)
+{
+  const struct tr_mesh_view *m = ctx;
+  unsigned char *q = (unsigned char *)p;
+  for (uint64_t i = i0; i < i1; i++) {
+    for (int k = 0; k < 3; k++)
+      q = tr_le_f64(q, m->xyz[3 * (size_t)i + k]);
+    q = tr_le32(q, 0);
+  }
+  return (char *)q;
+}
+
+static char *tetrahedra(const void *ctx, uint64_t t0, uint64_t t1, char *p)
+{
+  const struct tr_mesh_view *m = ctx;
+  unsigned char *q = (unsigned char *)p;
+  for (uint64_t t = t0; t < t1; t++) {
+    for (int k = 0; k < 4; k++)
+      q = tr_le32(q, m->tets[4 * (size_t)t + k] + 1);
+    q = tr_le32(q, (uint32_t)(m->region ? m->region[t] : 0));
+  }
+  return (char *)q;
+}
+
+static char *triangles(const void *ctx, uint64_t t0, uint64_t t1, char *p)
+{
+  const struct tr_mesh_view *m = ctx;
+  unsigned char *q = (unsigned char *)p;
+  for (uint64_t t = t0; t < t1; t++) {
+    for (int k = 0; k < 3; k++)
+      q = tr_le32(q, m->tris[3 * (size_t)t + k] + 1);
+    q = tr_le32(q, (uint32_t)(m->tri_marker ? m->tri_marker[t] : 0));
+  }
+  return (char *)q;
+}
+
+/* n lines of `size` bytes each */
+static tr_status lines(struct out *o, const struct tr_mesh_view *m, uint64_t n, size_t size,
+                       tr_io_block_fn fn)
+{
+  o->at += n * size;
+  return tr_io_write_blocks(o->f, n, size, fn, m, TR_IO_BINARY_THREADS);
+}
+
 tr_status tr_write_meshb(const struct tr_mesh_view *m, const char *path)
 {
   uint64_t nv = m->nverts, nt = m->ntets, ntri = m->ntris;
@@ -62,33 +108,18 @@ tr_status tr_write_meshb(const struct tr_mesh_view *m, const char *path)
   keyword(&o, KW_DIMENSION, -1, 4);
   put(&o, b, tr_le32(b, 3));
   keyword(&o, KW_VERTICES, (int64_t)nv, 28 * nv);
-  for (uint32_t i = 0; i < m->nverts; i++) {
-    p = b;
-    for (int k = 0; k < 3; k++)
-      p = tr_le_f64(p, m->xyz[3 * (size_t)i + k]);
-    put(&o, b, tr_le32(p, 0));
-  }
-  if (nt) {
+  tr_status st = lines(&o, m, nv, 28, vertices);
+  if (st == TR_OK && nt) {
     keyword(&o, KW_TETRAHEDRA, (int64_t)nt, 20 * nt);
-    for (uint32_t t = 0; t < m->ntets; t++) {
-      p = b;
-      for (int k = 0; k < 4; k++)
-        p = tr_le32(p, m->tets[4 * (size_t)t + k] + 1);
-      put(&o, b, tr_le32(p, (uint32_t)(m->region ? m->region[t] : 0)));
-    }
+    st = lines(&o, m, nt, 20, tetrahedra);
   }
-  if (ntri) {
+  if (st == TR_OK && ntri) {
     keyword(&o, KW_TRIANGLES, (int64_t)ntri, 16 * ntri);
-    for (uint32_t t = 0; t < m->ntris; t++) {
-      p = b;
-      for (int k = 0; k < 3; k++)
-        p = tr_le32(p, m->tris[3 * (size_t)t + k] + 1);
-      put(&o, b, tr_le32(p, (uint32_t)(m->tri_marker ? m->tri_marker[t] : 0)));
-    }
+    st = lines(&o, m, ntri, 16, triangles);
   }
   keyword(&o, KW_END, -1, 0);
   int bad = ferror(o.f);
-  if (fclose(o.f) != 0 || bad)
+  if ((fclose(o.f) != 0 || bad) && st == TR_OK)
     return tr_error(TR_ERR_IO, "%s: write failed", path);
-  return TR_OK;
+  return st;
 }

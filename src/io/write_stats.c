@@ -32,7 +32,8 @@ static const field counts[] = {
 /* double fields */
 static const field reals[] = {FIELD(total_seconds), FIELD(recovery_seconds),
                               FIELD(double_deviation), FIELD(min_dihedral),
-                              FIELD(max_dihedral), FIELD(max_radius_edge)};
+                              FIELD(max_dihedral), FIELD(max_radius_edge),
+                              FIELD(bytes_per_tet)};
 #undef FIELD
 
 /* The message as a JSON string: quotes, backslashes and control bytes escaped. */

@@ -432,6 +432,9 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   struct rusage ru;
   if (getrusage(RUSAGE_SELF, &ru) == 0)
     stats->peak_memory_bytes = (uint64_t)ru.ru_maxrss * 1024u; /* Linux: kilobytes */
+  stats->bytes_per_tet = stats->volume_elements ? (double)stats->peak_memory_bytes /
+                                                     (double)stats->volume_elements
+                                               : 0;
   if (statsout) {
     /* no more than the caller's struct holds (ABI growth, include/tetrec.h) */
     size_t n = statsout->size == 0 || statsout->size > sizeof full ? sizeof full

@@ -202,7 +202,7 @@ static void t_vtu_binary(void)
 {
   static const uint32_t tets[8] = {0, 1, 2, 3, 1, 2, 3, 4};
   static const int32_t reg[2] = {7, -3};
-  struct tr_mesh_view v = {5, xyz, NULL, 2, tets, reg, 5, tris, mark};
+  struct tr_mesh_view v = {5, xyz, NULL, 2, tets, reg, 5, tris, mark, 1};
   const char *f = tpath(tmp, "b.vtu"), *g = tpath(tmp, "b_again.vtu");
   EXPECT(tr_write_mesh_view_as(&v, f, 0, 41 | TR_WRITE_BINARY) == TR_OK, "%s", tr_last_error());
   EXPECT(tr_write_mesh_view_as(&v, g, 0, 41 | TR_WRITE_BINARY) == TR_OK, "%s", tr_last_error());
@@ -275,7 +275,7 @@ static void t_vtk_binary(void)
 {
   static const uint32_t tets[8] = {0, 1, 2, 3, 1, 2, 3, 4};
   static const int32_t reg[2] = {7, -3};
-  struct tr_mesh_view v = {5, xyz, NULL, 2, tets, reg, 5, tris, mark};
+  struct tr_mesh_view v = {5, xyz, NULL, 2, tets, reg, 5, tris, mark, 1};
   const char *f = tpath(tmp, "b.vtk");
   EXPECT(tr_write_mesh_view_as(&v, f, 0, 41 | TR_WRITE_BINARY) == TR_OK, "%s", tr_last_error());
   char *b = NULL;

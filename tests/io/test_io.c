@@ -312,7 +312,7 @@ static void t_mesh_write(void)
   const tr_qpoint *ex[4] = {NULL, &qp, NULL, NULL};
   double xyz[12] = {0, 0, 0, qp.near[0], qp.near[1], qp.near[2], 0, 1, 0, 0, 0, 1};
   uint32_t tet[4] = {0, 1, 2, 3};
-  struct tr_mesh_view v = {4, xyz, ex, 1, tet, NULL, 0, NULL, NULL};
+  struct tr_mesh_view v = {4, xyz, ex, 1, tet, NULL, 0, NULL, NULL, 1};
   EXPECT(tr_write_tetgen(&v, tpath(tmp, "ex"), 1) == TR_OK, "%s", tr_last_error());
   char *buf;
   size_t len;
