@@ -3,7 +3,12 @@
  * Each answer is compared with an oracle that computes the sphere's centre and squared
  * radius in rationals (GMP) and compares squared distances, on points exactly on the
  * sphere (where the double filter cannot decide and the exact stage answers), one ulp off
- * it, rational points (thirds), and random points at very different scales. */
+ * it, rational points (thirds), and random points at very different scales. The volume
+ * bound (rf_volume_above) against the rational determinant, with bounds one ulp and
+ * 0.1% around the tet's volume. Rational points a few dozen ulps from double points, as refinement's
+ * points on constraints are, in small tets far from the origin: the filters decide most
+ * of those (their error bound grows with the points' rounding over the differences) and
+ * must agree with the oracles. */
 #include <gmp.h>
 #include <math.h>
 #include <stdlib.h>
@@ -112,6 +117,64 @@ static int oracle_equatorial(const tr_point *a, const tr_point *b, const tr_poin
   return r;
 }
 
+/* 6 V < the exact 6 x volume of abcd, by the rational determinant */
+static int oracle_volume_above(const tr_point *a, const tr_point *b, const tr_point *c,
+                               const tr_point *d, double V)
+{
+  mpq_t A[3], B[3], C[3], D[3], N[3], t, s;
+  for (int i = 0; i < 3; i++)
+    mpq_inits(A[i], B[i], C[i], D[i], N[i], NULL);
+  mpq_inits(t, s, NULL);
+  get(a, A);
+  get(b, B);
+  get(c, C);
+  get(d, D);
+  for (int i = 0; i < 3; i++) {
+    mpq_sub(B[i], B[i], A[i]);
+    mpq_sub(C[i], C[i], A[i]);
+    mpq_sub(D[i], D[i], A[i]);
+  }
+  cross(N, C, D, t);
+  dot(s, B, N, t);
+  mpq_set_d(t, V);
+  mpq_mul_2exp(A[0], t, 1);
+  mpq_add(t, t, A[0]);
+  mpq_mul_2exp(t, t, 1); /* 6 V */
+  int r = mpq_cmp(s, t) > 0;
+  for (int i = 0; i < 3; i++)
+    mpq_clears(A[i], B[i], C[i], D[i], N[i], NULL);
+  mpq_clears(t, s, NULL);
+  return r;
+}
+
+/* The exact volume of abcd rounded to a double. */
+static double volume_d(const tr_point *a, const tr_point *b, const tr_point *c,
+                       const tr_point *d)
+{
+  mpq_t A[3], B[3], C[3], D[3], N[3], t, s;
+  for (int i = 0; i < 3; i++)
+    mpq_inits(A[i], B[i], C[i], D[i], N[i], NULL);
+  mpq_inits(t, s, NULL);
+  get(a, A);
+  get(b, B);
+  get(c, C);
+  get(d, D);
+  for (int i = 0; i < 3; i++) {
+    mpq_sub(B[i], B[i], A[i]);
+    mpq_sub(C[i], C[i], A[i]);
+    mpq_sub(D[i], D[i], A[i]);
+  }
+  cross(N, C, D, t);
+  dot(s, B, N, t);
+  mpq_set_ui(t, 1, 6);
+  mpq_mul(s, s, t);
+  double v = mpq_get_d(s);
+  for (int i = 0; i < 3; i++)
+    mpq_clears(A[i], B[i], C[i], D[i], N[i], NULL);
+  mpq_clears(t, s, NULL);
+  return v;
+}
+
 static int checks;
 static void both(const char *what, const tr_point *a, const tr_point *b, const tr_point *c,
                  const tr_point *p)
@@ -206,6 +269,66 @@ int main(void)
     if (collinear(x[0], x[1], x[2]))
       continue; /* no equatorial sphere */
     both("random", &P[0], &P[1], &P[2], &P[3]);
+  }
+  /* rational points: each a double point moved by a rational offset of 1..64 ulps with a
+   * denominator that is no power of two (so it is no double), the fourth point at times
+   * on the equatorial sphere of the three others moved the same way; volume bounds one
+   * ulp around the exact volume */
+  for (int n = 0; n < 3000; n++) {
+    /* a small tet far from the origin (o up to 2^14 of its size): its differences are
+     * 2^-38 to 2^-52 of its coordinates, the range the filters are for */
+    double s = ldexp(1, (n % 41) - 20), o = s * ldexp(1, n % 15), x[4][3];
+    for (int k = 0; k < 4; k++)
+      for (int i = 0; i < 3; i++)
+        x[k][i] = o + s * frand();
+    if (n % 2 == 0) { /* a right angle at 0 in a z = const plane, p opposite it */
+      x[1][2] = x[2][2] = x[3][2] = x[0][2];
+      x[1][1] = x[0][1];
+      x[2][0] = x[0][0];
+      x[3][0] = x[1][0];
+      x[3][1] = x[2][1];
+    }
+    if (collinear(x[0], x[1], x[2]))
+      continue;
+    tr_point P[4];
+    for (int k = 0; k < 4; k++) {
+      for (int i = 0; i < 3; i++) {
+        double ulp = nextafter(fabs(x[k][i]), INFINITY) - fabs(x[k][i]);
+        if (x[k][i] == 0)
+          ulp = ldexp(1, -60) * s;
+        mpq_t off, f;
+        mpq_inits(off, f, NULL);
+        mpq_set_d(q[k].c[i], x[k][i]);
+        mpq_set_d(off, ulp * (double)(1 + rand() % 64));
+        /* times +-1/odd: no double */
+        mpq_set_si(f, rand() % 2 ? 1 : -1, (unsigned long)(3 + rand() % 97) | 1u);
+        mpq_canonicalize(f);
+        if (!(n % 5 == 0 && k == 3)) { /* else p stays on the sphere in this coordinate */
+          mpq_mul(off, off, f);
+          mpq_add(q[k].c[i], q[k].c[i], off);
+        }
+        mpq_clears(off, f, NULL);
+      }
+      tr_qpoint_update(&q[k]);
+      P[k] = tr_pt_q(&q[k]);
+    }
+    both("rational, ulps off", &P[0], &P[1], &P[2], &P[3]);
+    double v = volume_d(&P[0], &P[1], &P[2], &P[3]);
+    if (v < 0) { /* the bound is on positive tets */
+      tr_point t = P[1];
+      P[1] = P[2];
+      P[2] = t;
+      v = -v;
+    }
+    double bounds[5] = {0.999 * v, nextafter(v, 0), v, nextafter(v, INFINITY), 1.001 * v};
+    for (int j = 0; j < 5; j++) {
+      if (!(bounds[j] > 0))
+        continue;
+      int r = rf_volume_above(&P[0], &P[1], &P[2], &P[3], bounds[j]);
+      int o = oracle_volume_above(&P[0], &P[1], &P[2], &P[3], bounds[j]);
+      EXPECT(r == o, "rational tet: volume above %.17g: %d, oracle %d", bounds[j], r, o);
+      checks++;
+    }
   }
   for (int k = 0; k < 4; k++)
     tr_qpoint_clear(&q[k]);
