@@ -52,9 +52,17 @@ static tr_status copy_plc(const tr_plc *in, tr_plc **out)
   return st;
 }
 
+/* A stage's time, and the process's peak memory so far: the stage that raises it is the
+ * one to look at when a mesh does not fit (issue 48: bytes per tet). */
 static void say(const tr_options *opt, int stage, double secs)
 {
-  if (opt->verbose >= 2)
+  if (opt->verbose < 2)
+    return;
+  struct rusage ru;
+  if (getrusage(RUSAGE_SELF, &ru) == 0)
+    fprintf(stderr, "tetrec: %-22s %.3f s  peak %.1f MB\n", tr_stage_name(stage), secs,
+            (double)ru.ru_maxrss / 1024); /* Linux: kilobytes */
+  else
     fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(stage), secs);
 }
 

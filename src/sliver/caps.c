@@ -174,6 +174,12 @@ static tr_status trial_ctx(const tr_sliver_ctx *c, const tr_subfaces *sub, uint3
                            tr_sliver_ctx *tc)
 {
   TR_CHECK(tr_sliver_ctx_init(tc, c->m, sub, NULL, 0, c->bound));
+  /* The trial measures into c's cache (lent): the old tets' entries hold, since no old
+   * vertex moves, and a cache of its own, as long as the slots, was the largest block of
+   * memory the whole run held (CGAL's elephant under -a 4e-7: 8.4 of 54 MB at the peak).
+   * Undone, the entries naming its vertices are forgotten (tr_sliver_forget_from). */
+  free(tc->shapes);
+  tc->shapes = c->shapes;
   memset(tc->movable, 0, nv0 < c->m->nv ? nv0 : c->m->nv);
   tc->insert_bound = c->insert_bound;
   tc->point_budget = c->point_budget;
@@ -382,9 +388,7 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
       /* and c's measures and failed insertions: keyed by vertex ids, and no old vertex
        * moved (the polish's rounds would measure every tet and try every insertion that
        * failed again, the bulk of the cost) */
-      struct tr_sliver_shapes *sh = tc.shapes;
-      tc.shapes = c->shapes;
-      c->shapes = sh;
+      c->shapes = NULL; /* lent to tc, which keeps it */
       tr_vtmap f = tc.failed;
       tc.failed = c->failed;
       c->failed = f;
@@ -396,10 +400,14 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
       st->on_constraints += rs.on_segments + rs.on_facets;
       *done = 1;
     } else {
+      if (tc.shapes == c->shapes)
+        tc.shapes = NULL; /* c's, lent */
       tr_sliver_ctx_free(&tc);
       if (c->memo && c->memo->n > z.nv) /* the trial's vertex ids go to other points */
         c->memo->n = z.nv;
-      snap_restore(m, sub, &z); /* c's measures hold: the trial measured with tc only */
+      snap_restore(m, sub, &z);
+      /* c's other measures hold: the trial moved no old vertex */
+      tr_sliver_forget_from(c, z.nv);
     }
   }
   return s;

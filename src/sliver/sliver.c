@@ -158,6 +158,17 @@ void tr_sliver_forget(const tr_sliver_ctx *c, uint32_t t)
     memset(c->shapes->e[t].v, 0xff, sizeof c->shapes->e[t].v);
 }
 
+void tr_sliver_forget_from(const tr_sliver_ctx *c, uint32_t nv)
+{
+  if (!c->shapes)
+    return;
+  for (uint32_t t = 0; t < c->shapes->cap; t++) {
+    uint32_t *v = c->shapes->e[t].v;
+    if (v[0] != TR_NONE && (v[0] >= nv || v[1] >= nv || v[2] >= nv || v[3] >= nv))
+      memset(v, 0xff, 4 * sizeof *v);
+  }
+}
+
 void tr_sliver_forget_all(const tr_sliver_ctx *c)
 {
   if (c->shapes && c->shapes->cap)

@@ -197,6 +197,9 @@ double tr_sliver_ratio_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t
 double tr_sliver_tet_min(const tr_sliver_ctx *c, uint32_t t, double *ratio);
 void tr_sliver_forget(const tr_sliver_ctx *c, uint32_t t);
 void tr_sliver_forget_all(const tr_sliver_ctx *c);
+/* Forgets the entries that name a vertex id from nv on: ids given back (a trial undone)
+ * go to other points. */
+void tr_sliver_forget_from(const tr_sliver_ctx *c, uint32_t nv);
 
 /* 1 iff tet p (positive, exact points; vertex v at the double x when v is one of them) of
  * region `region` keeps c->keep: its exact volume at most the region's bound, and its ratio

@@ -208,12 +208,49 @@ static void a_refined_sphere_keeps_nearly_every_tet_under_the_bound(void)
   tr_plc_destroy(p);
 }
 
+/* The per-slot measures (tr_sliver_tet_min) name their vertex ids: a trial undone gives its
+ * ids back, and tr_sliver_forget_from(c, nv) must forget every measure naming an id from nv
+ * on, and no other. Vertex 8 of the off-centre box stands for a given-back id: moved
+ * without tr_sliver_forget, its tets keep their old measure until it is forgotten, and
+ * forgetting from 9 on leaves them. */
+static void forgetting_given_back_ids_measures_their_tets_again(void)
+{
+  double x[27];
+  tr_mesh *m = off_centre_box(x);
+  if (!m)
+    return;
+  tr_subfaces none = {0, NULL, NULL};
+  tr_sliver_ctx c;
+  tr_status s = tr_sliver_ctx_init(&c, m, &none, NULL, 8, TR_SLIVER_BOUND);
+  EXPECT(s == TR_OK, "sliver context: %s", tr_last_error());
+  uint32_t with8 = TR_NONE; /* every tet of the box has 8: the corners are cospherical */
+  for (uint32_t t = 0; s == TR_OK && t < m->nt && with8 == TR_NONE; t++)
+    if (tr_tet_is_real(m, t) && tr_ncode(m, t, 8) >= 0)
+      with8 = t;
+  EXPECT(with8 != TR_NONE, "the box has no tet at 8");
+  if (s == TR_OK && with8 != TR_NONE) {
+    double r, a8 = tr_sliver_tet_min(&c, with8, &r);
+    m->xyz[24] = 0.5; /* another point under id 8: the box's centre */
+    EXPECT(tr_sliver_tet_min(&c, with8, &r) == a8, "the measure was not remembered");
+    tr_sliver_forget_from(&c, 9);
+    EXPECT(tr_sliver_tet_min(&c, with8, &r) == a8, "forget_from(9) forgot a tet of 8");
+    tr_sliver_forget_from(&c, 8);
+    double now = tr_sliver_min_dihedral_at(m, m->tv + 4 * (size_t)with8, TR_NONE, NULL, &r);
+    EXPECT(tr_sliver_tet_min(&c, with8, &r) == now && now != a8,
+           "after forget_from(8) the tet of 8 measures %g, not its new %g (old %g)",
+           tr_sliver_tet_min(&c, with8, &r), now, a8);
+  }
+  tr_sliver_ctx_free(&c);
+  tr_mesh_destroy(m);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
       {"box", an_off_centre_point_moves_and_its_star_comes_under_the_bound, NULL},
       {"no_bound", no_ratio_bound_no_move, NULL},
       {"sphere", a_refined_sphere_keeps_nearly_every_tet_under_the_bound, NULL},
+      {"forget_from", forgetting_given_back_ids_measures_their_tets_again, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
