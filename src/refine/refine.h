@@ -95,6 +95,12 @@ typedef struct tr_refine_params {
   int sub_exported;
   tr_refine_memo *memo; /* NULL, or the caller's memo: read and extended by the set-up */
   int verbose;
+  /* the size field (sizing.h; NULL: none) and the sizes of the mesh's first nvsize
+   * vertices (the others are taken from the field): tets and pieces over it are refined
+   * (tr_refine only; sizing.c) */
+  const struct tr_sizing *sizing;
+  const double *vsize;
+  uint32_t nvsize;
 } tr_refine_params;
 
 typedef struct tr_refine_stats {
