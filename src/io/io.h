@@ -61,9 +61,8 @@ tr_status tr_read_ele_buf(const char *buf, size_t len, const char *name, struct 
 
 /* TetGen .mtr: one target edge length per point (read_mtr.c). npoints: the count the file
  * must announce (UINT32_MAX: any); *out = *count values (malloc'ed), each >= 0. A count
- * that does not match is TR_ERR_INPUT, a value that is negative TR_ERR_INPUT, one that is
- * no finite number or a malformed file TR_ERR_PARSE, more than one value per point
- * TR_ERR_UNSUPPORTED, all with file:line. */
+ * that does not match, a negative value or NaN/Inf is TR_ERR_INPUT, a malformed file
+ * TR_ERR_PARSE, more than one value per point TR_ERR_UNSUPPORTED, all with file:line. */
 tr_status tr_read_mtr_buf(const char *buf, size_t len, const char *name, uint32_t npoints,
                           double **out, uint32_t *count);
 tr_status tr_read_mtr_file(const char *path, uint32_t npoints, double **out);

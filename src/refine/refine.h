@@ -101,6 +101,8 @@ typedef struct tr_refine_params {
   const struct tr_sizing *sizing;
   const double *vsize;
   uint32_t nvsize;
+  uint64_t size_points; /* the points the field is expected to ask for (raises the point
+                           cap of spacing_radii; refine.c, spacing_cap) */
 } tr_refine_params;
 
 typedef struct tr_refine_stats {

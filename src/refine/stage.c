@@ -179,6 +179,8 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   uint64_t budget = opt->refine_budget ? opt->refine_budget
                     : vh ? tr_refine_default_budget(plc->npoints, need, 1)
                          : tr_refine_default_budget(plc->npoints, vol, least);
+  /* about 5.5 tets per point in a refined mesh */
+  par.size_points = (uint64_t)fmin(4 * need_size / 5.5, 1e15);
   if (vh && opt->verbose >= 2)
     fprintf(stderr, "tetrec: the size field asks for about %.3g tets (at least %.3g; point "
             "budget %llu)\n", 4 * need_size, need_size, (unsigned long long)budget);
