@@ -4,7 +4,8 @@
  * bound and the volume bound, or is exempt (see below), or the point budget is spent.
  *
  * Points and where they lie:
- *  - a bad tet (radius-edge ratio > R, or volume > V) gets its circumcentre, computed in
+ *  - a bad tet (radius-edge ratio > R, volume > V, or longest edge over the size field,
+ *    sizing.c) gets its circumcentre, computed in
  *    doubles from the tet's nearest doubles and inserted as an exact double point;
  *  - a point that would lie in the diametral sphere of a sub-segment or the equatorial
  *    sphere of a sub-face (exact tests, encroach.c) is not inserted: the constraint is

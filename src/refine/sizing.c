@@ -47,7 +47,10 @@ static double det3(const double *a, const double *b, const double *c, const doub
 double tr_sizing_at(const tr_sizing *s, const double p[3], uint32_t *hint)
 {
   const struct tr_mesh *m = s->bg;
-  uint32_t t = *hint < m->nt && tr_tet_is_real(m, *hint) ? *hint : 0;
+  uint32_t t = *hint;
+  if (!(t < m->nt && tr_tet_is_real(m, t)))
+    for (t = 0; t + 1 < m->nt && !tr_tet_is_real(m, t); t++)
+      ; /* the canonical store has its real tets first: t = 0 */
   /* a visibility walk: on a Delaunay tetrahedralization it cannot cycle (Edelsbrunner
    * 1990); the bound only guards against a mistake */
   for (uint64_t step = 0, limit = 4 * (uint64_t)m->nt + 64; step < limit; step++) {
@@ -157,8 +160,8 @@ static int over(const rf_ctx *c, const uint32_t *v, int n)
 {
   double mean = 0, l2 = 0;
   for (int i = 0; i < n; i++) {
-    if (!(c->vh[v[i]] > 0))
-      return 0;
+    if (v[i] >= c->capvh || !(c->vh[v[i]] > 0))
+      return 0; /* a vertex with no size (none came through rf_sizing_vertex) */
     mean += c->vh[v[i]] / n;
     for (int j = i + 1; j < n; j++) {
       double d = rf_dist2(c->m->xyz + 3 * (size_t)v[i], c->m->xyz + 3 * (size_t)v[j]);
