@@ -263,6 +263,18 @@ typedef struct tr_options {
                          the bounds not met everywhere (tr_stats.refine_budget_reached = 1,
                          tets_over_bounds counts the tets left over them). The CLI sets it,
                          writes that mesh and exits 8 */
+  /* A size field for refinement (src/refine/sizing.c): sizing[i] > 0 is the target edge
+   * length at input point i (the plc's points as passed to tr_mesh_plc: after
+   * tr_plc_validate's merges when the caller validated it, as given otherwise; exact
+   * duplicates merged later keep the smaller value), 0 no bound there. nsizing must be
+   * tr_plc_num_points. The size at any other point is interpolated linearly over the
+   * Delaunay tetrahedralization of the input points; a tet whose longest edge is over
+   * the mean of its vertices' sizes is refined, and so are the boundary pieces (edges,
+   * triangles) whose longest edge is over the mean of theirs (except under
+   * keep_surface). It turns refinement on by itself and composes with the other bounds.
+   * NULL / 0 (default): none. The array is read during the call only */
+  const double *sizing;
+  uint32_t nsizing;
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);

@@ -213,3 +213,29 @@ def test_stats_report_the_bytes_a_tet_costs_at_the_peak(unit_cube):
     st = mesh.stats
     assert st["volume_elements"] > 0
     assert st["bytes_per_tet"] == pytest.approx(st["peak_memory_bytes"] / st["volume_elements"])
+
+
+def test_sizing_grades_the_mesh_and_bad_arrays_are_refused(unit_cube):
+    pts, tris = unit_cube
+    h = 0.04 + 0.1 * pts.sum(axis=1)  # linear: interpolated exactly
+    mesh = tetrec.tetrahedralize(pts, tris, sizing=h, optimize=0)
+    check_mesh(mesh, pts, tris)
+    assert mesh.stats["points_added_for_quality"] > 100
+    p = mesh.points
+    t = mesh.tets
+    hv = 0.04 + 0.1 * p.sum(axis=1)
+    longest = np.zeros(len(t))
+    for i in range(4):
+        for j in range(i + 1, 4):
+            longest = np.maximum(longest, np.linalg.norm(p[t[:, i]] - p[t[:, j]], axis=1))
+    assert np.all(longest <= hv[t].mean(axis=1) * (1 + 1e-9))
+    # same field, fewer tets for a coarser one
+    coarse = tetrec.tetrahedralize(pts, tris, sizing=2 * h, optimize=0)
+    assert len(coarse.tets) < len(mesh.tets)
+    with pytest.raises(ValueError):
+        tetrec.tetrahedralize(pts, tris, sizing=h[:7])
+    bad = h.copy()
+    bad[3] = -1
+    with pytest.raises(tetrec.Error) as e:
+        tetrec.tetrahedralize(pts, tris, sizing=bad)
+    assert e.value.status == "TR_ERR_USAGE" and "sizing[3]" in e.value.message

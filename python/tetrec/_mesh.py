@@ -182,7 +182,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
                    keep_surface=False, keep_steiner=False, quality=None, max_volume=None,
                    optimize=None, keep_edges=False, subface_quality=None,
                    refine_budget=None, refine_partial=False, spacing_radii=True, exact=False,
-                   smooth=True, round_budget=None, verbose=0, progress=None, threads=0):
+                   smooth=True, round_budget=None, verbose=0, progress=None, threads=0,
+                   sizing=None):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
     points (n,3) floats and triangles (m,3) 0-based indices, or a Surface from read()
@@ -222,6 +223,12 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     a UserWarning and stats["refine_budget_reached"] = 1; stats["tets_over_bounds"]
     counts its tets over the radius-edge or volume bound (the CLI writes such a mesh and
     exits 8).
+    sizing: a size field, one target edge length per point of points (a float array of
+    length n; 0: no bound at that point), interpolated linearly in between: refinement
+    (on by itself) splits every tet whose longest edge is over the mean of its vertices'
+    sizes, and every boundary edge and triangle that is (not under keep_surface); it
+    composes with quality and max_volume. A field asking for more points than the
+    budget raises TR_ERR_NOMEM before refinement starts.
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: Mesh.write() defaults to writing exact rational Steiner points.
@@ -267,7 +274,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     if threads:
         options["threads"] = int(threads)
     # the refinement options act only when refinement runs: say so rather than drop them
-    refined = quality is not None or (max_volume is not None and max_volume > 0)
+    refined = (quality is not None or (max_volume is not None and max_volume > 0) or
+               sizing is not None)
     if regions is not None and not refined:
         try:
             r = np.asarray(regions, dtype=float)
@@ -283,6 +291,12 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
                           "refinement (quality, max_volume or a region's max_volume)",
                           stacklevel=2)
     pts, tris, mk = _prepare(points, triangles, markers)
+    if sizing is not None:
+        h = np.ascontiguousarray(sizing, dtype=np.float64)
+        if h.ndim != 1 or len(h) != len(pts):
+            raise ValueError(f"sizing: {h.shape} values for {len(pts)} points: one target "
+                             "edge length per point")
+        options["sizing"] = h
     handle, stats = _tetrec.tetrahedralize(pts, tris, mk, options)
     if stats.get("refine_budget_reached"):
         warnings.warn(f"tetrahedralize: refinement stopped at its point budget: the mesh is "

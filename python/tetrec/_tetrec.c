@@ -148,7 +148,7 @@ static int progress_hook(void *user, const char *stage, double fraction)
 static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
     "max_volume", "optimize", "keep_edges", "subface_quality", "refine_budget",
-    "spacing_radii", "refine_partial", "holes", "regions", "threads", NULL};
+    "spacing_radii", "refine_partial", "holes", "regions", "threads", "sizing", NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
 static double positive(PyObject *value, const char *name)
@@ -284,6 +284,22 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
     } else if (!strcmp(k, "max_volume")) {
       if ((opt->max_volume = positive(value, "max_volume")) < 0)
         return -1;
+    } else if (!strcmp(k, "sizing")) {
+      /* a C-contiguous float64 array (_mesh.py makes it), one value per point: the library
+       * checks the count and the values; the options dict keeps the array alive for the
+       * call, so its buffer is only borrowed */
+      Py_buffer view;
+      if (PyObject_GetBuffer(value, &view, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        return -1;
+      int ok = view.itemsize == sizeof(double) && view.format && !strcmp(view.format, "d") &&
+               (size_t)view.len / sizeof(double) <= UINT32_MAX;
+      opt->sizing = (const double *)view.buf;
+      opt->nsizing = (uint32_t)((size_t)view.len / sizeof(double));
+      PyBuffer_Release(&view);
+      if (!ok) {
+        PyErr_SetString(PyExc_TypeError, "sizing must be a contiguous float64 array");
+        return -1;
+      }
     } else if (!strcmp(k, "holes") || !strcmp(k, "regions")) {
       /* added to the PLC by py_tetrahedralize (add_points) */
     } else {

@@ -144,6 +144,18 @@ static const struct option {
      "refinement until every tet's volume is at most V (check:\n"
      "count the tets over V)"},
     {"-a", "V", C_MESH | C_CHECK, "the same as --max-volume (TetGen's switch)"},
+    {"--sizing", "FILE", C_MESH,
+     "a size field: FILE (TetGen .mtr: first line the point\n"
+     "count and 1, then one target edge length per input point,\n"
+     "in the input's point order; 0: no bound there). The size\n"
+     "elsewhere is interpolated linearly between the input\n"
+     "points; refinement (on by itself) splits every tet whose\n"
+     "longest edge is over the mean of its vertices' sizes, and\n"
+     "every boundary edge and triangle that is (not under\n"
+     "--keep-surface); with --quality and -a all bounds hold"},
+    {"-m", "FILE", C_MESH,
+     "the same as --sizing (TetGen's -m names no file: it reads\n"
+     "IN.mtr; here FILE is given, e.g. -m IN.mtr)"},
     {"--refine-budget", "N", C_MESH,
      "points refinement may add; at N it stops, the mesh made so\n"
      "far (valid and conforming, the bounds not met everywhere)\n"
@@ -273,6 +285,8 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
       return tr_error(TR_ERR_USAGE, "%s needs a positive volume, not '%s'", name, v);
     a->max_volume = x;
   }
+  else if (!strcmp(name, "--sizing") || !strcmp(name, "-m"))
+    a->sizing = v;
   else if (!strcmp(name, "--optimize") || !strcmp(name, "-O")) {
     if (strlen(v) != 1 || v[0] < '0' || v[0] > '3')
       return tr_error(TR_ERR_USAGE, "%s needs a level 0, 1, 2 or 3, not '%s'", name, v);

@@ -15,6 +15,7 @@ enum { C_MESH = 1, C_DELAUNAY = 2, C_CHECK = 4, C_CONVERT = 8, C_CHECK_SURFACE =
 /* What the command line asked for (args.c). */
 typedef struct {
   const char *cmd, *in, *in2, *out, *stats;
+  const char *sizing; /* --sizing / -m FILE, or NULL */
   unsigned cmd_bit;
   int quiet, verbose, exact, allow_open, check_only, no_smooth, strict_doubles;
   int keep_surface, keep_steiner, progress, keep_edges;

@@ -218,6 +218,9 @@ static int cmd_mesh(const tr_cli_args *a)
   if (s == TR_OK)
     s = a->check_only ? (a->stats ? tr_io_check_file_writable(a->stats) : TR_OK)
                       : check_writable(a, path);
+  /* the sizes index the points as read: validation's merges carry them (plc.h) */
+  if (s == TR_OK && a->sizing)
+    s = tr_read_mtr_file(a->sizing, plc->npoints, &plc->vsize);
   if (s == TR_OK) {
     warn_nonplanar(a, plc);
     progress("validating", a->in);
@@ -246,7 +249,7 @@ static int cmd_mesh(const tr_cli_args *a)
     return finish(a, &stats, t0, s);
   }
   /* sliver removal follows refinement: without a bound there is nothing it runs after */
-  int bounded = a->quality > 0 || a->max_volume > 0;
+  int bounded = a->quality > 0 || a->max_volume > 0 || a->sizing;
   for (uint32_t i = 0; i < plc->nregions; i++)
     bounded |= plc->region_maxvol[i] > 0;
   if (a->optimize > 1 && !bounded && !a->quiet)
@@ -272,6 +275,8 @@ static int cmd_mesh(const tr_cli_args *a)
     opt.progress = stage_progress;
     opt.progress_user = &line;
   }
+  opt.sizing = plc->vsize;
+  opt.nsizing = plc->vsize ? plc->npoints : 0;
   unsigned flags = (a->exact ? TR_PIPE_KEEP_EXACT : 0) |
                    (a->keep_steiner ? TR_PIPE_KEEP_STEINER : 0);
   double t_read = stats.stage_seconds[TR_STAGE_READ];

@@ -23,6 +23,7 @@ void tr_plc_clear(struct tr_plc *plc)
   free(plc->region_maxvol);
   free(plc->source);
   free(plc->report);
+  free(plc->vsize);
   memset(plc, 0, sizeof *plc);
 }
 

@@ -45,6 +45,9 @@ struct tr_plc {
   char *report;          /* repairs made by tr_plc_validate, one per line, or NULL */
   double validate_seconds[3]; /* the last tr_plc_validate: whole, of which
                                  self-intersection, and nesting (shells, cells) */
+  double *vsize;         /* NULL, or npoints target edge lengths (tr_options.sizing, the
+                            command's --sizing), >= 0, 0 none: carried through the merges of
+                            tr_plc_validate (the smaller of duplicates' values) */
   uint8_t validated;     /* 1 + allow_open of the last successful tr_plc_validate, 0 if
                             none: the struct is opaque and every setter builds a new one,
                             so a validated PLC stays valid and the pipeline skips a second

@@ -102,10 +102,17 @@ static tr_status merge_vertices(struct tr_plc *plc, uint32_t *orig, tr_report *r
   for (uint32_t i = 0; i < n; i++) {
     if (map[i] == i) {
       memmove(plc->xyz + 3 * (size_t)m, plc->xyz + 3 * (size_t)i, 3 * sizeof(double));
+      if (plc->vsize)
+        plc->vsize[m] = plc->vsize[i];
       orig[m] = i;
       map[i] = m++;
-    } else
+    } else {
       map[i] = map[map[i]]; /* the representative has a lower index: already renumbered */
+      /* one point, two target sizes: the finer one holds (0 is no bound) */
+      double *h = plc->vsize ? plc->vsize + map[i] : NULL;
+      if (h && plc->vsize[i] > 0 && (!(*h > 0) || plc->vsize[i] < *h))
+        *h = plc->vsize[i];
+    }
   }
   for (size_t t = 0; t < 3 * (size_t)plc->ntris; t++)
     plc->tris[t] = map[plc->tris[t]];

@@ -59,6 +59,14 @@ tr_status tr_read_tetgen_buf_threads(enum tr_tetgen_kind kind, const char *buf, 
 /* .ele on top of already-read points: appends plc->tets. */
 tr_status tr_read_ele_buf(const char *buf, size_t len, const char *name, struct tr_plc *plc);
 
+/* TetGen .mtr: one target edge length per point (read_mtr.c). npoints: the count the file
+ * must announce (UINT32_MAX: any); *out = *count values (malloc'ed), each >= 0. A count
+ * that does not match, a negative value or NaN/Inf is TR_ERR_INPUT, a malformed file
+ * TR_ERR_PARSE, more than one value per point TR_ERR_UNSUPPORTED, all with file:line. */
+tr_status tr_read_mtr_buf(const char *buf, size_t len, const char *name, uint32_t npoints,
+                          double **out, uint32_t *count);
+tr_status tr_read_mtr_file(const char *path, uint32_t npoints, double **out);
+
 /* Loads a whole file (binary-safe, NUL-terminated for convenience). */
 tr_status tr_io_load(const char *path, char **buf, size_t *len);
 /* Reads any supported file chosen by its extension (tr_io_in_format: .off .stl .obj .ply

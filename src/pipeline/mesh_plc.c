@@ -42,6 +42,12 @@ static tr_status copy_plc(const tr_plc *in, tr_plc **out)
       p->nsegs = in->nsegs;
     }
   }
+  if (st == TR_OK && in->vsize) {
+    if (!(p->vsize = malloc(sizeof *p->vsize * (in->npoints ? in->npoints : 1))))
+      st = tr_error(TR_ERR_NOMEM, "out of memory copying %u point sizes", in->npoints);
+    else
+      memcpy(p->vsize, in->vsize, sizeof *p->vsize * in->npoints);
+  }
   if (st != TR_OK) {
     tr_plc_destroy(p);
     *out = NULL;
@@ -50,6 +56,30 @@ static tr_status copy_plc(const tr_plc *in, tr_plc **out)
     memcpy(p->validate_seconds, in->validate_seconds, sizeof p->validate_seconds);
   }
   return st;
+}
+
+/* The caller's size field (tr_options.sizing) onto p, its copy of the caller's PLC, before
+ * validation: the merges of duplicates carry it. */
+static tr_status attach_sizing(tr_plc *p, const tr_options *opt)
+{
+  if (!opt->sizing)
+    return opt->nsizing ? tr_error(TR_ERR_USAGE, "tr_options.sizing is NULL with nsizing %u",
+                                   opt->nsizing)
+                        : TR_OK;
+  if (opt->nsizing != p->npoints)
+    return tr_error(TR_ERR_USAGE, "tr_options.sizing has %u values for %u points: one target "
+                    "edge length per input point", opt->nsizing, p->npoints);
+  for (uint32_t i = 0; i < p->npoints; i++)
+    if (!(opt->sizing[i] >= 0) || !isfinite(opt->sizing[i]))
+      return tr_error(TR_ERR_USAGE, "tr_options.sizing[%u] is %g: a target edge length is > 0, "
+                      "or 0 for no bound at that point", i, opt->sizing[i]);
+  double *h = malloc(sizeof *h * (p->npoints ? p->npoints : 1));
+  if (!h)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u point sizes", p->npoints);
+  memcpy(h, opt->sizing, sizeof *h * p->npoints);
+  free(p->vsize);
+  p->vsize = h;
+  return TR_OK;
 }
 
 /* A stage's time, and the process's peak memory so far: the stage that raises it is the
@@ -169,6 +199,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
                   "and smoothing) or 3 (flips, smoothing and new points)", opt.optimize);
   if (st == TR_OK)
     st = copy_plc(plc, &p);
+  if (st == TR_OK)
+    st = attach_sizing(p, &opt);
   /* Validation works on a copy: the caller's PLC is const. One the caller validated
    * (tetrec mesh does, to print its report) is not validated twice, unless it was
    * validated as open and this call wants a closed surface. */
@@ -287,7 +319,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   for (uint32_t i = 0; p && i < p->nregions; i++)
     region_bounds |= p->region_maxvol[i] > 0;
   int refined = opt.quality_ratio != 0 || opt.max_volume != 0 ||
-                opt.quality_min_dihedral != 0 || region_bounds;
+                opt.quality_min_dihedral != 0 || region_bounds || (p && p->vsize);
   if (st == TR_OK && refined) {
     PROGRESS(TR_STAGE_REFINE, 0);
     uint32_t nv0 = m->nv;

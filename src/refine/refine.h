@@ -4,7 +4,8 @@
  * bound and the volume bound, or is exempt (see below), or the point budget is spent.
  *
  * Points and where they lie:
- *  - a bad tet (radius-edge ratio > R, or volume > V) gets its circumcentre, computed in
+ *  - a bad tet (radius-edge ratio > R, volume > V, or longest edge over the size field,
+ *    sizing.c) gets its circumcentre, computed in
  *    doubles from the tet's nearest doubles and inserted as an exact double point;
  *  - a point that would lie in the diametral sphere of a sub-segment or the equatorial
  *    sphere of a sub-face (exact tests, encroach.c) is not inserted: the constraint is
@@ -95,6 +96,14 @@ typedef struct tr_refine_params {
   int sub_exported;
   tr_refine_memo *memo; /* NULL, or the caller's memo: read and extended by the set-up */
   int verbose;
+  /* the size field (sizing.h; NULL: none) and the sizes of the mesh's first nvsize
+   * vertices (the others are taken from the field): tets and pieces over it are refined
+   * (tr_refine only; sizing.c) */
+  const struct tr_sizing *sizing;
+  const double *vsize;
+  uint32_t nvsize;
+  uint64_t size_points; /* the points the field is expected to ask for (raises the point
+                           cap of spacing_radii; refine.c, spacing_cap) */
 } tr_refine_params;
 
 typedef struct tr_refine_stats {

@@ -5,7 +5,8 @@
  *   refine.c    the queues, the main loop and the bad tets
  *   split.c     splitting a queued sub-segment or sub-face
  *   longs.c     the long sub-segments near a point (a close circumcentre's shortcut)
- *   memo.c      what a caller's tr_refine_memo keeps from one set-up for the next */
+ *   memo.c      what a caller's tr_refine_memo keeps from one set-up for the next
+ *   sizing.c    the size field: vertex sizes, the tets and pieces over it */
 #ifndef TR_REFINE_IMPL_H
 #define TR_REFINE_IMPL_H
 
@@ -107,6 +108,11 @@ typedef struct rf_ctx {
    * input edge of the vertex foot it is split at, NAN for none */
   double *ssfoot;
   uint32_t nssfoot;
+  /* the size field (sizing.c), with par.sizing: per vertex slot below capvh its size (0:
+   * none), the background tet last found, and the sub-segments and sub-faces from
+   * size_ss / size_sf on not checked against it yet */
+  double *vh;
+  uint32_t capvh, vh_hint, size_ss, size_sf;
 } rf_ctx;
 
 /* Squared distance of two points in doubles (a measure for the rules, never a decision
@@ -241,6 +247,21 @@ tr_status rf_flat_scan(rf_ctx *c, int *pushed);
  * input edge: t = its split parameter, an exact rational inside (lo, hi); returns 1, else
  * 0 (g is split as any other). */
 int rf_flat_split_param(const rf_ctx *c, uint32_t g, const mpq_t lo, const mpq_t hi, mpq_t t);
+
+/* ---- sizing.c ---- */
+/* The sizes of the vertices of c->m (par.vsize, then the field). */
+tr_status rf_sizing_init(rf_ctx *c);
+/* The size of vertex pid, just inserted, from the field. */
+tr_status rf_sizing_vertex(rf_ctx *c, uint32_t pid);
+/* 1 iff tet t's longest edge is over the mean of its vertices' sizes (none: 0). */
+int rf_sizing_tet_over(const rf_ctx *c, uint32_t t);
+/* The radius within which a vertex refuses tet t's circumcentre, at most (refine.c,
+ * too_close): half the mean of t's vertices' sizes when t is over the field, INFINITY
+ * otherwise. */
+double rf_sizing_cap(const rf_ctx *c, uint32_t t);
+/* Queues the sub-segments and sub-faces made since the last call that are over the
+ * field (their longest edge over the mean of their vertices' sizes). */
+tr_status rf_sizing_scan(rf_ctx *c);
 
 /* ---- cavity.c ---- */
 /* Straight walk from tet t towards p; *found = tet whose closure holds p, or TR_NONE; if

@@ -7,6 +7,7 @@
 
 #include "refine/quality.h"
 #include "refine/refine_stage.h"
+#include "refine/sizing.h"
 
 tr_status tr_refine_check_options(const tr_options *opt)
 {
@@ -130,9 +131,34 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   /* the smallest of all bounds sizes the default budget */
   double least, *bound;
   uint32_t *id;
-  TR_CHECK(volume_bounds(plc, opt, &par, &id, &bound, &least));
-  /* each tet holds at most its bound: the bounds alone ask for at least `need` tets */
-  double vol = 0, need = 0;
+  tr_sizing field;
+  memset(&field, 0, sizeof field);
+  double *vh = NULL;
+  if (plc && plc->vsize) {
+    tr_status s = tr_sizing_build(plc, opt->threads, &field);
+    if (s == TR_OK && !(vh = malloc(sizeof *vh * (m->nv ? m->nv : 1))))
+      s = tr_error(TR_ERR_NOMEM, "out of memory for the sizes of %u vertices", m->nv);
+    if (s != TR_OK) {
+      tr_sizing_free(&field);
+      return s;
+    }
+    uint32_t hint = 0;
+    for (uint32_t v = 0; v < m->nv; v++)
+      vh[v] = v < plc->npoints ? plc->vsize[v] : tr_sizing_at(&field, m->xyz + 3 * (size_t)v, &hint);
+    par.sizing = &field;
+    par.vsize = vh;
+    par.nvsize = m->nv;
+  }
+  tr_status vs = volume_bounds(plc, opt, &par, &id, &bound, &least);
+  if (vs != TR_OK) {
+    tr_sizing_free(&field);
+    free(vh);
+    return vs;
+  }
+  /* each tet holds at most its bound: the bounds alone ask for at least `need` tets. A
+   * tet whose edges are at most h has a volume of at most h^3 / (6 sqrt 2), the regular
+   * tet's, so the field asks for at least 6 sqrt 2 times the integral of h^-3 */
+  double vol = 0, need = 0, need_size = 0;
   for (uint32_t t = 0; t < m->nt; t++)
     if (tr_tet_is_real(m, t) && !(m->flags[t] & TR_TF_OUTER)) {
       const uint32_t *v = m->tv + 4 * (size_t)t;
@@ -140,19 +166,35 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
       tr_tet_shape(m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
                    m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3], &r, &w, d, NULL);
       vol += w;
-      double b = tr_refine_tet_bound(&par, m, t);
-      if (b > 0)
-        need += w / b;
+      double b = tr_refine_tet_bound(&par, m, t), nb = b > 0 ? w / b : 0, ns = 0;
+      if (vh && vh[v[0]] > 0 && vh[v[1]] > 0 && vh[v[2]] > 0 && vh[v[3]] > 0) {
+        double h4[4] = {vh[v[0]], vh[v[1]], vh[v[2]], vh[v[3]]};
+        ns = 6 * sqrt(2) * tr_sizing_inverse_cube(w, h4);
+      }
+      need += nb > ns ? nb : ns;
+      need_size += ns;
     }
+  /* with a field, the default budget counts the tets it and the volume bounds ask for as
+   * tr_refine_default_budget counts a volume bound's (20 points per bound volume) */
   uint64_t budget = opt->refine_budget ? opt->refine_budget
-                                       : tr_refine_default_budget(plc->npoints, vol, least);
+                    : vh ? tr_refine_default_budget(plc->npoints, need, 1)
+                         : tr_refine_default_budget(plc->npoints, vol, least);
+  /* about 5.5 tets per point in a refined mesh */
+  par.size_points = (uint64_t)fmin(4 * need_size / 5.5, 1e15);
+  if (vh && opt->verbose >= 2)
+    fprintf(stderr, "tetrec: the size field asks for about %.3g tets (at least %.3g; point "
+            "budget %llu)\n", 4 * need_size, need_size, (unsigned long long)budget);
   /* a refined mesh has about 6 tets per point (8 taken, to refuse only what cannot fit):
    * what the budget cannot reach is refused now, not after hours of refinement */
   if (need / 8 > (double)budget) {
     free(id);
     free(bound);
+    tr_sizing_free(&field);
+    free(vh);
     char what[64];
-    if (opt->max_volume > 0)
+    if (need_size / 8 > (double)budget)
+      snprintf(what, sizeof what, "the size field (--sizing)");
+    else if (opt->max_volume > 0)
       snprintf(what, sizeof what, "-a %g%s", opt->max_volume,
                par.nregion_bounds ? " with the regions' bounds" : "");
     else
@@ -170,6 +212,8 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   *budget_reached = (uint64_t)rs.budget_reached;
   free(id);
   free(bound);
+  tr_sizing_free(&field);
+  free(vh);
   return s;
 }
 
