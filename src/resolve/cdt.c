@@ -40,16 +40,12 @@ struct rs_cdt {
   size_t cout;
   uint32_t *st; /* the stack of the Lawson flips after an insertion */
   size_t cst;
-  mpq_t m[9], s, u;
 };
 
 tr_status rs_cdt_create(rs_cdt **c)
 {
   if (!(*c = calloc(1, sizeof **c)))
     return tr_error(TR_ERR_NOMEM, "arrangement: out of memory");
-  for (int i = 0; i < 9; i++)
-    mpq_init((*c)->m[i]);
-  mpq_inits((*c)->s, (*c)->u, NULL);
   return TR_OK;
 }
 
@@ -57,9 +53,6 @@ void rs_cdt_destroy(rs_cdt *c)
 {
   if (!c)
     return;
-  for (int i = 0; i < 9; i++)
-    mpq_clear(c->m[i]);
-  mpq_clears(c->s, c->u, NULL);
   free(c->t);
   free(c->q);
   free(c->out);
@@ -74,44 +67,9 @@ static int o2(const rs_cdt *c, uint32_t a, uint32_t b, uint32_t d)
 
 /* Exact sign of incircle(a, b, c, d) in the frame (> 0: d inside the circle of the
  * counterclockwise a, b, c), before perturbation. */
-static int incircle_exact(rs_cdt *c, uint32_t a, uint32_t b, uint32_t cc, uint32_t d)
+static int incircle_exact(const rs_cdt *c, uint32_t a, uint32_t b, uint32_t cc, uint32_t d)
 {
-  const tr_point *P[4] = {c->pts + a, c->pts + b, c->pts + cc, c->pts + d};
-  int x = (c->drop + 1) % 3, y = (c->drop + 2) % 3;
-  if (!P[0]->q && !P[1]->q && !P[2]->q && !P[3]->q) {
-    double p2[4][2];
-    for (int i = 0; i < 4; i++) {
-      p2[i][0] = P[i]->d[x];
-      p2[i][1] = P[i]->d[y];
-    }
-    return c->sgn * tr_sign(tr_incircle(p2[0], p2[1], p2[2], p2[3]));
-  }
-  /* rows (p - d, |p - d|^2) for p = a, b, c: m[3r], m[3r+1], m[3r+2] */
-  for (int r = 0; r < 3; r++) {
-    tr_point_get_q(P[r], x, c->m[3 * r]);
-    tr_point_get_q(P[3], x, c->s);
-    mpq_sub(c->m[3 * r], c->m[3 * r], c->s);
-    tr_point_get_q(P[r], y, c->m[3 * r + 1]);
-    tr_point_get_q(P[3], y, c->s);
-    mpq_sub(c->m[3 * r + 1], c->m[3 * r + 1], c->s);
-    mpq_mul(c->m[3 * r + 2], c->m[3 * r], c->m[3 * r]);
-    mpq_mul(c->s, c->m[3 * r + 1], c->m[3 * r + 1]);
-    mpq_add(c->m[3 * r + 2], c->m[3 * r + 2], c->s);
-  }
-  /* det by the first column */
-  mpq_t det;
-  mpq_init(det);
-  for (int r = 0; r < 3; r++) {
-    int r1 = (r + 1) % 3, r2 = (r + 2) % 3;
-    mpq_mul(c->s, c->m[3 * r1 + 1], c->m[3 * r2 + 2]);
-    mpq_mul(c->u, c->m[3 * r1 + 2], c->m[3 * r2 + 1]);
-    mpq_sub(c->s, c->s, c->u);
-    mpq_mul(c->s, c->s, c->m[3 * r]);
-    mpq_add(det, det, c->s);
-  }
-  int sg = mpq_sgn(det);
-  mpq_clear(det);
-  return c->sgn * sg;
+  return c->sgn * tr_incircle_proj_p(c->pts + a, c->pts + b, c->pts + cc, c->pts + d, c->drop);
 }
 
 /* incircle with the lift of point i raised by eps^(rank of i), the least prio first:

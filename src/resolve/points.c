@@ -3,6 +3,7 @@
  * rational coordinates are all doubles hashes as those doubles), so a cut through an
  * input point, or the same crossing found from two pairs, gives one vertex. The hash
  * only finds candidates; equality is exact (tr_equal_p). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -161,7 +162,10 @@ tr_status rs_points_init(rs_points *ps, const struct tr_plc *plc, uint32_t *of_i
   *ndup = 0;
   TR_CHECK(tr_vtmap_reserve(&ps->map, 2, plc->npoints));
   for (uint32_t i = 0; i < plc->npoints; i++) {
-    tr_point p = tr_pt_d(plc->xyz + 3 * (size_t)i);
+    const double *x = plc->xyz + 3 * (size_t)i;
+    if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2]))
+      return tr_error(TR_ERR_INPUT, "arrangement: point %u is not finite", i);
+    tr_point p = tr_pt_d(x);
     uint32_t k[2], id;
     lookup(ps, &p, k, &id);
     if (id != TR_ARR_NONE) {

@@ -317,6 +317,107 @@ static void t_determinism(void)
   free(d[1]);
 }
 
+/* Random soups on a small integer grid, where coplanar overlaps, collinear cuts, cuts
+ * through vertices and three cuts through one point are the rule: every arrangement
+ * must pass the validator. Coordinates are mapped onto a tilted plane or kept axis
+ * aligned (exact either way: small integers). */
+static void t_random(void)
+{
+  uint64_t r = 0x2545f4914f6cdd1dull;
+  for (int it = 0; it < (getenv("RS_ITER") ? atoi(getenv("RS_ITER")) : 300); it++) {
+    int big = it % 5 == 4; /* a larger soup on a larger grid */
+    uint32_t nt = big ? 12 + (uint32_t)(it % 13) : 2 + (uint32_t)(it % 9), n = 3 * nt;
+    double xyz[3 * 3 * 24];
+    uint32_t tris[3 * 24];
+    int grid = big ? 6 : it % 3 == 0 ? 2 : 4, flat = it % 4 == 1;
+    for (uint32_t i = 0; i < n; i++) {
+      for (int d = 0; d < 3; d++) {
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        xyz[3 * i + d] = (double)(r % (uint64_t)(grid + 1));
+      }
+      if (flat) /* most triangles coplanar: z = x + y - 2 */
+        xyz[3 * i + 2] = xyz[3 * i] + xyz[3 * i + 1] - 2;
+      tris[i] = i;
+    }
+    char name[64];
+    snprintf(name, sizeof name, "random_%d", it);
+    struct tr_plc *p = make(xyz, n, tris, nt);
+    expect(name, p, -1, -1, -1, -1, NULL);
+    tr_plc_destroy(p);
+  }
+}
+
+/* tr_incircle_proj_p (the CDT's predicate) against rational arithmetic, on rational
+ * points near and on common circles (Pythagorean points of the unit circle, scaled and
+ * moved), in every projection, mixed with double points. */
+static void t_incircle(void)
+{
+  static const long pyth[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {20, 21, 29},
+                                 {0, 1, 1}, {1, 0, 1}, {-3, 4, 5}, {-5, -12, 13}, {15, -8, 17}};
+  uint64_t r = 88172645463325252ull;
+  tr_qpoint q[4];
+  for (int k = 0; k < 4; k++)
+    tr_qpoint_init(&q[k]);
+  mpq_t m[3][3], t, det;
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      mpq_init(m[i][j]);
+  mpq_inits(t, det, NULL);
+  int zero = 0;
+  for (int it = 0; it < 4000; it++) {
+    int drop = it % 3, u = (drop + 1) % 3, v = (drop + 2) % 3;
+    for (int k = 0; k < 4; k++) {
+      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      const long *py = pyth[r % 10];
+      long den = (long)(r >> 8 & 7) + 1;
+      for (int i = 0; i < 3; i++) /* off-plane axis: any value */
+        mpq_set_si(q[k].c[i], (long)(r >> (12 + 4 * i) & 15) - 7, (unsigned long)den);
+      /* (1/3, -2/7) + (py0, py1) / py2 * 11/3, or slightly off it */
+      mpq_set_si(q[k].c[u], 11 * py[0] * 7 + py[2] * 7, (unsigned long)(3 * py[2] * 7));
+      mpq_set_si(q[k].c[v], 11 * py[1] * 21 - 6 * py[2] * 3, (unsigned long)(63 * py[2]));
+      mpq_canonicalize(q[k].c[u]);
+      mpq_canonicalize(q[k].c[v]);
+      if (it % 4 == 3 && k == 3) { /* off the circle by 1/2^40 */
+        mpq_set_si(t, 1, 1ul << 40);
+        mpq_add(q[k].c[u], q[k].c[u], t);
+      }
+      tr_qpoint_update(&q[k]);
+    }
+    tr_point P[4];
+    for (int k = 0; k < 4; k++)
+      P[k] = tr_pt_q(&q[k]);
+    for (int k = 0; k < 3; k++) {
+      mpq_sub(m[k][0], q[k].c[u], q[3].c[u]);
+      mpq_sub(m[k][1], q[k].c[v], q[3].c[v]);
+      mpq_mul(m[k][2], m[k][0], m[k][0]);
+      mpq_mul(t, m[k][1], m[k][1]);
+      mpq_add(m[k][2], m[k][2], t);
+    }
+    mpq_set_ui(det, 0, 1);
+    for (int k = 0; k < 3; k++) {
+      int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      mpq_mul(t, m[k1][1], m[k2][2]);
+      mpq_t w;
+      mpq_init(w);
+      mpq_mul(w, m[k1][2], m[k2][1]);
+      mpq_sub(t, t, w);
+      mpq_mul(t, t, m[k][0]);
+      mpq_add(det, det, t);
+      mpq_clear(w);
+    }
+    int got = tr_incircle_proj_p(&P[0], &P[1], &P[2], &P[3], drop);
+    zero += mpq_sgn(det) == 0;
+    EXPECT(got == mpq_sgn(det), "incircle %d: %d, exact %d", it, got, mpq_sgn(det));
+  }
+  EXPECT(zero > 100, "incircle: only %d cocircular cases", zero);
+  for (int k = 0; k < 4; k++)
+    tr_qpoint_clear(&q[k]);
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++)
+      mpq_clear(m[i][j]);
+  mpq_clears(t, det, NULL);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -329,6 +430,8 @@ int main(int argc, char **argv)
     {"cubes", NULL, t_cubes},
     {"dupshell", t_dupshell, NULL},
     {"determinism", t_determinism, NULL},
+    {"random", t_random, NULL},
+    {"incircle", t_incircle, NULL},
   };
   int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
   tr_thread_cleanup();
