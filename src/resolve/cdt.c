@@ -40,6 +40,11 @@ struct rs_cdt {
   size_t cout;
   uint32_t *st; /* the stack of the Lawson flips after an insertion */
   size_t cst;
+  uint32_t *lw; /* the stack of the final Lawson flips: edges, 2 points each */
+  size_t clw;
+  uint32_t *vt; /* a triangle holding each point, kept by set_tri */
+  size_t cvt;
+  uint32_t last; /* where the last point location ended */
 };
 
 tr_status rs_cdt_create(rs_cdt **c)
@@ -57,6 +62,8 @@ void rs_cdt_destroy(rs_cdt *c)
   free(c->q);
   free(c->out);
   free(c->st);
+  free(c->vt);
+  free(c->lw);
   free(c);
 }
 
@@ -128,6 +135,7 @@ static void set_tri(rs_cdt *c, uint32_t t, uint32_t a, uint32_t b, uint32_t d, u
   c->t[t].v[1] = b;
   c->t[t].v[2] = d;
   c->t[t].con = con;
+  c->vt[a] = c->vt[b] = c->vt[d] = t;
 }
 
 static tr_status new_tri(rs_cdt *c, uint32_t *id)
@@ -195,24 +203,45 @@ static tr_status legalize(rs_cdt *c, uint32_t p, size_t ns)
   return TR_OK;
 }
 
+/* Triangle k holds p (closed): 1, with *zero = the edge p lies on or -1; 0 if not, with
+ * *out = an edge p lies strictly beyond. -1: p is a corner of k. */
+static int holds(const rs_cdt *c, uint32_t k, uint32_t p, int *zero, int *out)
+{
+  const ctri *T = c->t + k;
+  int nz = 0;
+  *zero = *out = -1;
+  for (int i = 0; i < 3; i++) {
+    int s = o2(c, T->v[(i + 1) % 3], T->v[(i + 2) % 3], p);
+    if (s < 0) {
+      *out = i;
+      return 0;
+    }
+    if (!s)
+      nz++, *zero = i;
+  }
+  return nz >= 2 ? -1 : 1;
+}
+
 static tr_status insert(rs_cdt *c, uint32_t p)
 {
   uint32_t t = NONE;
-  int zero = -1;
-  for (size_t k = 0; k < c->nt && t == NONE; k++) {
-    const ctri *T = c->t + k;
-    int nz = 0, z = -1, in = 1;
-    for (int i = 0; i < 3 && in; i++) {
-      int s = o2(c, T->v[(i + 1) % 3], T->v[(i + 2) % 3], p);
-      in = s >= 0;
-      if (!s)
-        nz++, z = i;
+  int zero = -1, out, h = 0;
+  /* a visibility walk from the last triangle found (it ends in a Delaunay triangulation);
+   * a scan of every triangle if it takes too long */
+  uint32_t k = c->last < c->nt ? c->last : 0;
+  for (size_t steps = 0; steps < 4 * c->nt + 16 && k != NONE; steps++) {
+    if ((h = holds(c, k, p, &zero, &out)) != 0) {
+      t = k;
+      break;
     }
-    if (in && nz >= 2)
-      return tr_error(TR_ERR_INTERNAL, "arrangement: a point repeated in a triangulation");
-    if (in)
-      t = (uint32_t)k, zero = z;
+    k = c->t[k].nb[out];
   }
+  for (size_t j = 0; j < c->nt && t == NONE; j++)
+    if ((h = holds(c, (uint32_t)j, p, &zero, &out)) != 0)
+      t = (uint32_t)j;
+  if (h < 0)
+    return tr_error(TR_ERR_INTERNAL, "arrangement: a point repeated in a triangulation");
+  c->last = t;
   if (t == NONE)
     return tr_error(TR_ERR_INTERNAL, "arrangement: a point outside its triangle");
   size_t ns = 0;
@@ -279,28 +308,78 @@ static int crosses(const rs_cdt *c, uint32_t a, uint32_t b, uint32_t u, uint32_t
   return o2(c, a, b, u) * o2(c, a, b, v) < 0 && o2(c, u, v, a) * o2(c, u, v, b) < 0;
 }
 
-/* The triangle holding edge (u, v) with a neighbour across it, and the edge's index. */
-static uint32_t find_edge(const rs_cdt *c, uint32_t u, uint32_t v, int *i)
+/* The triangle holding edge (u, v) and the edge's index, or NONE: a turn around u. */
+static uint32_t find_edge(const rs_cdt *c, uint32_t u, uint32_t v, int *e)
 {
-  for (size_t k = 0; k < c->nt; k++)
-    if ((*i = edge_in(c->t + k, u, v)) >= 0)
-      return (uint32_t)k;
+  uint32_t t0 = c->vt[u];
+  for (int dir = 0; dir < 2; dir++) {
+    uint32_t t = t0;
+    do {
+      const ctri *T = c->t + t;
+      if ((*e = edge_in(T, u, v)) >= 0)
+        return t;
+      int i = T->v[0] == u ? 0 : T->v[1] == u ? 1 : 2;
+      t = T->nb[dir ? (i + 1) % 3 : (i + 2) % 3];
+    } while (t != NONE && t != t0);
+    if (t == t0)
+      break; /* a full turn: u is inside */
+  }
   return NONE;
+}
+
+/* Queues the edges crossing the open segment ab, walking from a to b (no point lies
+ * inside ab and no constraint crosses it). *tail = their number. */
+static tr_status crossing_edges(rs_cdt *c, uint32_t a, uint32_t b, size_t *tail, size_t *cap)
+{
+  /* the triangle (a, x, y) of a's star whose wedge holds b */
+  uint32_t t0 = c->vt[a], t = NONE, l = NONE, r = NONE;
+  for (int dir = 0; dir < 2 && t == NONE; dir++) {
+    uint32_t k = t0;
+    do {
+      const ctri *T = c->t + k;
+      int i = T->v[0] == a ? 0 : T->v[1] == a ? 1 : 2;
+      uint32_t x = T->v[(i + 1) % 3], y = T->v[(i + 2) % 3];
+      if (o2(c, a, x, b) > 0 && o2(c, a, y, b) < 0) {
+        t = k, r = x, l = y;
+        break;
+      }
+      k = T->nb[dir ? (i + 1) % 3 : (i + 2) % 3];
+    } while (k != NONE && k != t0);
+    if (k == t0)
+      break;
+  }
+  if (t == NONE)
+    return tr_error(TR_ERR_INTERNAL, "arrangement: a constraint leaves its triangle");
+  *tail = 0;
+  for (;;) {
+    TR_CHECK(rs_grow((void **)&c->q, 2 * sizeof *c->q, *tail + 1, cap));
+    c->q[2 * *tail] = l;
+    c->q[2 * (*tail)++ + 1] = r;
+    const ctri *T = c->t + t;
+    uint32_t n = T->nb[edge_in(T, l, r)];
+    if (n == NONE)
+      return tr_error(TR_ERR_INTERNAL, "arrangement: a constraint leaves its triangle");
+    const ctri *N = c->t + n;
+    uint32_t z = N->v[edge_in(N, l, r)];
+    if (z == b)
+      return TR_OK;
+    int s = o2(c, a, b, z);
+    if (!s)
+      return tr_error(TR_ERR_INTERNAL, "arrangement: a point inside a constraint");
+    if (s > 0)
+      l = z;
+    else
+      r = z;
+    t = n;
+  }
 }
 
 static tr_status constrain(rs_cdt *c, uint32_t a, uint32_t b)
 {
   size_t head = 0, tail = 0, cap = c->cq / 2, steps = 0;
-  for (size_t k = 0; k < c->nt; k++)
-    for (int i = 0; i < 3; i++) {
-      const ctri *T = c->t + k;
-      uint32_t u = T->v[(i + 1) % 3], v = T->v[(i + 2) % 3];
-      if (T->nb[i] == NONE || T->nb[i] < k || !crosses(c, a, b, u, v))
-        continue;
-      TR_CHECK(rs_grow((void **)&c->q, 2 * sizeof *c->q, tail + 1, &cap));
-      c->q[2 * tail] = u;
-      c->q[2 * tail++ + 1] = v;
-    }
+  int e0;
+  if (find_edge(c, a, b, &e0) == NONE)
+    TR_CHECK(crossing_edges(c, a, b, &tail, &cap));
   c->cq = 2 * cap;
   /* a queue in the array: taken at head, put back at tail; compacted when full */
   size_t limit = 64 + 16 * c->nt * c->nt;
@@ -345,27 +424,45 @@ static tr_status constrain(rs_cdt *c, uint32_t a, uint32_t b)
   return TR_OK;
 }
 
-/* Lawson flips of unconstrained edges until every one is locally Delaunay. */
+/* Lawson flips of unconstrained edges until every one is locally Delaunay: every edge
+ * checked once, and the four outer edges of each flip again (the stack holds edges by
+ * their points, looked up when taken: flips move edges between triangles). */
 static tr_status lawson(rs_cdt *c)
 {
-  size_t limit = 64 + 16 * c->nt * c->nt, steps = 0;
-  for (int changed = 1; changed;) {
-    changed = 0;
-    for (size_t k = 0; k < c->nt; k++)
-      for (int i = 0; i < 3; i++) {
-        const ctri *T = c->t + k;
-        uint32_t n = T->nb[i];
-        if (n == NONE || cbit(T, i))
-          continue;
-        const ctri *N = c->t + n;
-        uint32_t q = N->v[edge_in(N, T->v[(i + 1) % 3], T->v[(i + 2) % 3])];
-        if (incircle(c, T->v[0], T->v[1], T->v[2], q) <= 0)
-          continue;
-        if (++steps > limit)
-          return tr_error(TR_ERR_INTERNAL, "arrangement: Lawson flips do not end");
-        flip(c, (uint32_t)k, i);
-        changed = 1;
-      }
+  size_t ns = 0, limit = 64 + 16 * c->nt * c->nt, steps = 0;
+  for (size_t k = 0; k < c->nt; k++)
+    for (int i = 0; i < 3; i++) {
+      const ctri *T = c->t + k;
+      if (T->nb[i] == NONE || T->nb[i] < k || cbit(T, i))
+        continue;
+      TR_CHECK(rs_grow((void **)&c->lw, 2 * sizeof *c->lw, ns + 1, &c->clw));
+      c->lw[2 * ns] = T->v[(i + 1) % 3];
+      c->lw[2 * ns++ + 1] = T->v[(i + 2) % 3];
+    }
+  while (ns) {
+    ns--;
+    uint32_t u = c->lw[2 * ns], v = c->lw[2 * ns + 1];
+    int i;
+    uint32_t k = find_edge(c, u, v, &i);
+    if (k == NONE)
+      continue; /* flipped away */
+    const ctri *T = c->t + k;
+    uint32_t n = T->nb[i];
+    if (n == NONE || cbit(T, i))
+      continue;
+    const ctri *N = c->t + n;
+    uint32_t p = T->v[i], q = N->v[edge_in(N, u, v)];
+    if (incircle(c, T->v[0], T->v[1], T->v[2], q) <= 0)
+      continue;
+    if (++steps > limit)
+      return tr_error(TR_ERR_INTERNAL, "arrangement: Lawson flips do not end");
+    flip(c, k, i);
+    TR_CHECK(rs_grow((void **)&c->lw, 2 * sizeof *c->lw, ns + 4, &c->clw));
+    uint32_t w[4][2] = {{u, q}, {p, u}, {v, p}, {q, v}};
+    for (int j = 0; j < 4; j++) {
+      c->lw[2 * ns] = w[j][0];
+      c->lw[2 * ns++ + 1] = w[j][1];
+    }
   }
   return TR_OK;
 }
@@ -379,6 +476,8 @@ tr_status rs_cdt_run(rs_cdt *c, const tr_point *pts, const uint32_t *prio, uint3
   c->drop = drop;
   c->sgn = sgn;
   c->nt = 0;
+  c->last = 0;
+  TR_CHECK(rs_grow((void **)&c->vt, sizeof *c->vt, n, &c->cvt));
   uint32_t t0;
   TR_CHECK(new_tri(c, &t0));
   set_tri(c, t0, 0, 1, 2, 0);
