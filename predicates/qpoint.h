@@ -91,6 +91,10 @@ void tr_point_get_hom(const tr_point *p, mpz_t X[3], mpz_t W);
  * `drop` of the normal (b-a)x(c-a). */
 int tr_orient3d_p(const tr_point *a, const tr_point *b, const tr_point *c, const tr_point *d);
 int tr_orient2d_proj_p(const tr_point *a, const tr_point *b, const tr_point *c, int drop);
+/* incircle of the projections dropping axis `drop` (kept axes as in tr_orient2d_proj_p):
+ * > 0 iff d lies inside the circle of a, b, c when tr_orient2d_proj_p(a, b, c) > 0. */
+int tr_incircle_proj_p(const tr_point *a, const tr_point *b, const tr_point *c,
+                       const tr_point *d, int drop);
 int tr_insphere_p(const tr_point *a, const tr_point *b, const tr_point *c, const tr_point *d,
                   const tr_point *e);
 /* Compare coordinate i of a and b: -1, 0, +1. */

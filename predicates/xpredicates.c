@@ -333,6 +333,81 @@ int tr_orient2d_proj_p(const tr_point *a, const tr_point *b, const tr_point *c, 
   return mpz_sgn(z[37]);
 }
 
+/* incircle of the projections (the arrangement's triangulation in a triangle's plane,
+ * src/resolve/cdt.c): doubles -> the adaptive predicate; else intervals on the boxes;
+ * else exact on the homogeneous forms X_k / W_k. Row k of the determinant, taken from d,
+ * is (D_k / S_k, |D_k|^2 / S_k^2) with D_k = X_k W_d - X_d W_k and S_k = W_k W_d > 0;
+ * scaled by S_k^2 it is the integer row (D_k S_k, |D_k|^2), of the same sign. */
+int tr_incircle_proj_p(const tr_point *a, const tr_point *b, const tr_point *c,
+                       const tr_point *d, int drop)
+{
+  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+  const tr_point *p[4] = {a, b, c, d};
+  double dd[4][3];
+  if (!a->q && !b->q && !c->q && !d->q) {
+    double q[4][2];
+    for (int k = 0; k < 4; k++)
+      q[k][0] = p[k]->d[u], q[k][1] = p[k]->d[v];
+    return tr_sign(tr_incircle(q[0], q[1], q[2], q[3]));
+  }
+  iv bx[4][2];
+  int ok = 1;
+  for (int k = 0; k < 4; k++) {
+    ok &= box(p[k], u, &bx[k][0]);
+    ok &= box(p[k], v, &bx[k][1]);
+  }
+  if (ok) {
+    iv r[3][3];
+    for (int k = 0; k < 3; k++) {
+      r[k][0] = iv_sub(bx[k][0], bx[3][0]);
+      r[k][1] = iv_sub(bx[k][1], bx[3][1]);
+      r[k][2] = iv_add(iv_mul(r[k][0], r[k][0]), iv_mul(r[k][1], r[k][1]));
+    }
+    int s = iv_sign(iv_det3(r[0], r[1], r[2]));
+    if (s != 2)
+      return s;
+  }
+  if (as_double(a, dd[0]) && as_double(b, dd[1]) && as_double(c, dd[2]) && as_double(d, dd[3])) {
+    double q[4][2];
+    for (int k = 0; k < 4; k++)
+      q[k][0] = dd[k][u], q[k][1] = dd[k][v];
+    return tr_sign(tr_incircle(q[0], q[1], q[2], q[3]));
+  }
+  mpz_t X[4][3], W[4], m[3][3], s, t;
+  for (int k = 0; k < 4; k++) {
+    mpz_inits(X[k][0], X[k][1], X[k][2], W[k], NULL);
+    tr_point_get_hom(p[k], X[k], W[k]);
+  }
+  mpz_inits(s, t, NULL);
+  for (int k = 0; k < 3; k++) {
+    mpz_inits(m[k][0], m[k][1], m[k][2], NULL);
+    mpz_mul(s, W[k], W[3]); /* S_k */
+    for (int j = 0; j < 2; j++) {
+      int ax = j ? v : u;
+      mpz_mul(m[k][j], X[k][ax], W[3]);
+      mpz_submul(m[k][j], X[3][ax], W[k]); /* D_k */
+    }
+    mpz_mul(m[k][2], m[k][0], m[k][0]);
+    mpz_addmul(m[k][2], m[k][1], m[k][1]);
+    mpz_mul(m[k][0], m[k][0], s);
+    mpz_mul(m[k][1], m[k][1], s);
+  }
+  mpz_set_ui(s, 0);
+  for (int k = 0; k < 3; k++) {
+    int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    mpz_mul(t, m[k1][1], m[k2][2]);
+    mpz_submul(t, m[k1][2], m[k2][1]);
+    mpz_addmul(s, t, m[k][0]);
+  }
+  int sg = mpz_sgn(s);
+  for (int k = 0; k < 4; k++)
+    mpz_clears(X[k][0], X[k][1], X[k][2], W[k], NULL);
+  for (int k = 0; k < 3; k++)
+    mpz_clears(m[k][0], m[k][1], m[k][2], NULL);
+  mpz_clears(s, t, NULL);
+  return sg;
+}
+
 /* ---- stage 2a for insphere: the same static filter ----
  * D~ = tr_insphere_det_(N) on the nearest doubles, differences taken from e (the fifth
  * point) as tr_insphere takes them; P_k the exact points, U_kj = P_kj - P_ej and

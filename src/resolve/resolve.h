@@ -1,0 +1,80 @@
+/* The exact arrangement of a triangle soup (issue 49, step 1; docs/resolve.md).
+ *
+ * Every pair of input triangles that meets improperly (src/input/selfint.c finds the
+ * pairs) is cut along its exact intersection, each triangle is triangulated exactly in
+ * its plane along every cut it carries, and identical pieces from several triangles
+ * become one piece that remembers all of them. The result is a surface complex: two
+ * pieces meet only in a shared vertex or a shared edge. No tolerance anywhere: every new
+ * vertex is an exact rational point, identified by its exact value.
+ *
+ * Split by concern:
+ *   points.c   the vertices: input points and new rational points, one per exact value
+ *   pairs.c    the input's cleanup (duplicate points, zero-area triangles) and the exact
+ *              intersection of each improper pair: points and segments per triangle
+ *   subdiv.c   per triangle: the crossings of its segments, the split segments
+ *   cdt.c      the exact constrained Delaunay triangulation in a triangle's plane
+ *   arrange.c  the driver, identical pieces merged, the result */
+#ifndef TR_RESOLVE_RESOLVE_H
+#define TR_RESOLVE_RESOLVE_H
+
+#include <stdint.h>
+
+#include "core/plc.h"
+#include "core/status.h"
+#include "qpoint.h"
+
+#define TR_ARR_NONE UINT32_MAX
+
+/* What a vertex lies on, the feature of least dimension it was found on (ties: the least
+ * index), so that a later stage can insert it where the input has it. */
+enum { TR_ARR_ON_VERTEX = 0, TR_ARR_ON_EDGE = 1, TR_ARR_ON_TRI = 2 };
+
+typedef struct tr_arr_vertex {
+  uint32_t input;  /* the input point (the first of its exact value), TR_ARR_NONE if new */
+  tr_qpoint *q;    /* new vertices: the exact point, owned; NULL for input points */
+  uint8_t on;      /* TR_ARR_ON_*: an input point (a = this vertex), inside the input edge
+                      of vertices (a, b), a < b, or inside input triangle a */
+  uint32_t a, b;
+} tr_arr_vertex;
+
+typedef struct tr_arr_source {
+  uint32_t tri; /* input triangle */
+  int32_t sign; /* +1: the piece is oriented as the triangle, -1: opposite */
+} tr_arr_source;
+
+typedef struct tr_arr_piece {
+  uint32_t v[3];      /* vertex ids, oriented as its first source */
+  uint32_t src, nsrc; /* its sources: arr->src[src .. src + nsrc), by triangle */
+  int32_t marker;     /* the first source's marker (the least input triangle) */
+} tr_arr_piece;
+
+typedef struct tr_arrangement {
+  uint32_t nverts, npieces, nsrc;
+  tr_arr_vertex *verts;
+  tr_arr_piece *pieces;
+  tr_arr_source *src;
+  uint32_t *of_input; /* npoints of the input: the vertex of each input point */
+  /* counts for reports: improper pairs, of which coplanar; input triangles dropped as
+   * zero-area; input points that repeat an earlier one; crossings of two cuts inside a
+   * triangle */
+  uint64_t npairs, ncoplanar, ndropped, ndup_points, ncrossings;
+} tr_arrangement;
+
+/* arr = the arrangement of plc's triangles (arr zeroed by the call; free with
+ * tr_arrangement_free, also after a failure). Input points of equal value are one vertex;
+ * zero-area triangles (collinear or repeated corners) give no piece. Vertices: every
+ * input point of a new value in input order, then the new points in the order they are
+ * found (pairs in increasing order, then triangles in increasing order); pieces by their
+ * first source triangle; all independent of hash order and addresses. */
+tr_status tr_arrangement_build(const struct tr_plc *plc, tr_arrangement *arr);
+void tr_arrangement_free(tr_arrangement *arr);
+
+/* The point of vertex v (d: the input's coordinates). */
+static inline tr_point tr_arr_point(const tr_arrangement *arr, const struct tr_plc *plc,
+                                    uint32_t v)
+{
+  const tr_arr_vertex *x = arr->verts + v;
+  return x->q ? tr_pt_q(x->q) : tr_pt_d(plc->xyz + 3 * (size_t)x->input);
+}
+
+#endif
