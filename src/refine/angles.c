@@ -107,12 +107,27 @@ static const double *X(const rf_ctx *c, uint32_t v)
   return c->plc->xyz + 3 * (size_t)v;
 }
 
+/* The differences are scaled by a power of two each (exact, so the cosine is the same
+ * double wherever their squares neither overflow nor underflow): at an input scale of 1e200
+ * or 1e-200 the squares did, and every angle came out 90 degrees or 0 (no cap, no small
+ * angle found). */
 double rf_cos_angle(const double *o, const double *p, const double *q)
 {
-  double a[3], b[3];
+  double a[3], b[3], ma = 0, mb = 0;
   for (int i = 0; i < 3; i++) {
     a[i] = p[i] - o[i];
     b[i] = q[i] - o[i];
+    ma = fmax(ma, fabs(a[i]));
+    mb = fmax(mb, fabs(b[i]));
+  }
+  int ea = 0, eb = 0;
+  if (ma > 0 && isfinite(ma))
+    frexp(ma, &ea);
+  if (mb > 0 && isfinite(mb))
+    frexp(mb, &eb);
+  for (int i = 0; i < 3; i++) {
+    a[i] = ldexp(a[i], -ea);
+    b[i] = ldexp(b[i], -eb);
   }
   double n = sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
   return n > 0 ? (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / n : 1;

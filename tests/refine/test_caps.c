@@ -29,6 +29,19 @@ static tr_plc *cap_strip(void)
   return tm_plc(x, 6, t, 8);
 }
 
+/* A tetrahedron A-Z-D-U whose bottom face is cut at C, 1e-15 beside A-D at x = 0.6 (and
+ * 3e-16 off the plane): the cap D-A-C, alone, flat but for the last bits of the doubles
+ * (the two caps of 93703.stl are 2e-15 and 1e-14 of their edge's length off it), coordinates
+ * times `scale`. */
+static tr_plc *flat_cap(double scale)
+{
+  double x[15] = {0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, 0.3, 1, 0.6, 1e-15, -3e-16};
+  for (int i = 0; i < 15; i++)
+    x[i] *= scale;
+  static const uint32_t t[18] = {A, Z, 4, 4, Z, D, D, A, 4, A, D, U, D, Z, U, Z, A, U};
+  return tm_plc(x, 5, t, 6);
+}
+
 /* The two caps make one cluster named by the smaller (triangle 3); its five edges map to
  * it, the fan's edges at Z and the side faces' to none; the copy made for the set-up
  * memo answers the same. A lone cap and a tetrahedron make none. */
@@ -70,6 +83,17 @@ static void clusters(void)
   EXPECT(s == TR_OK && k.n == 0 && !k.tri && !k.vert, "a lone cap makes a cluster (%u)", k.n);
   rf_caps_free(&k);
   tr_plc_destroy(one);
+  /* a flat lone cap (its apex 1e-15 of its edge's length off it) is a cluster of its own,
+   * at any scale */
+  static const double sc[3] = {1, 1e200, 1e-200};
+  for (int i = 0; i < 3; i++) {
+    tr_plc *flat = flat_cap(sc[i]);
+    s = rf_caps_build(&k, flat);
+    EXPECT(s == TR_OK && k.n == 1 && k.tri && k.tri[2] == 2 && rf_caps_edge(&k, A, D) == 2,
+           "scale %g: a flat lone cap makes no cluster of its own (%u)", sc[i], k.n);
+    rf_caps_free(&k);
+    tr_plc_destroy(flat);
+  }
   /* a regular tetrahedron: no cap, nothing allocated */
   static const double x[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   static const uint32_t t[12] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3};
@@ -116,6 +140,27 @@ static void strip_refines(void)
   tr_plc_destroy(plc);
 }
 
+/* The flat lone cap under R = 1.414, the whole pipeline: its long edge is not split down
+ * toward the apex's height (before the rule, 415 refinement and 318 sliver points and
+ * 3,614 tets for these 6 triangles; with it 0 and 3, 11 tets). */
+static void flat_cap_pipeline(void)
+{
+  tr_plc *p = flat_cap(1);
+  tr_options opt = tm_options();
+  opt.quality_ratio = 1.414;
+  tm_run r;
+  if (tm_mesh(&r, "flat lone cap", p, &opt, TR_CHK_TOPOLOGY)) {
+    uint64_t added = r.st.points_added_for_quality + r.st.points_added_for_sliver;
+    EXPECT(added <= 50, "%llu points added for 6 triangles",
+           (unsigned long long)added);
+    fprintf(stderr, "flat lone cap: %llu quality and %llu sliver points, %u tets\n",
+            (unsigned long long)r.st.points_added_for_quality,
+            (unsigned long long)r.st.points_added_for_sliver, tr_mesh_num_tets(r.m));
+  }
+  tm_free(&r);
+  tr_plc_destroy(p);
+}
+
 /* The whole pipeline on the data file, sliver removal included. */
 static void strip_pipeline(const char *path)
 {
@@ -140,6 +185,7 @@ int main(int argc, char **argv)
       {"clusters", clusters, NULL},
       {"strip_refines", strip_refines, NULL},
       {"strip_pipeline", NULL, strip_pipeline},
+      {"flat_cap_pipeline", flat_cap_pipeline, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
