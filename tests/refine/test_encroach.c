@@ -117,14 +117,14 @@ static int oracle_equatorial(const tr_point *a, const tr_point *b, const tr_poin
   return r;
 }
 
-/* 6 V < the exact 6 x volume of abcd, by the rational determinant */
-static int oracle_volume_above(const tr_point *a, const tr_point *b, const tr_point *c,
-                               const tr_point *d, double V)
+/* out = 6 x the exact volume of abcd (the rational determinant) */
+static void six_volume(const tr_point *a, const tr_point *b, const tr_point *c,
+                       const tr_point *d, mpq_t out)
 {
-  mpq_t A[3], B[3], C[3], D[3], N[3], t, s;
+  mpq_t A[3], B[3], C[3], D[3], N[3], t;
   for (int i = 0; i < 3; i++)
     mpq_inits(A[i], B[i], C[i], D[i], N[i], NULL);
-  mpq_inits(t, s, NULL);
+  mpq_init(t);
   get(a, A);
   get(b, B);
   get(c, C);
@@ -135,15 +135,24 @@ static int oracle_volume_above(const tr_point *a, const tr_point *b, const tr_po
     mpq_sub(D[i], D[i], A[i]);
   }
   cross(N, C, D, t);
-  dot(s, B, N, t);
-  mpq_set_d(t, V);
-  mpq_mul_2exp(A[0], t, 1);
-  mpq_add(t, t, A[0]);
-  mpq_mul_2exp(t, t, 1); /* 6 V */
-  int r = mpq_cmp(s, t) > 0;
+  dot(out, B, N, t);
   for (int i = 0; i < 3; i++)
     mpq_clears(A[i], B[i], C[i], D[i], N[i], NULL);
-  mpq_clears(t, s, NULL);
+  mpq_clear(t);
+}
+
+/* 6 V < the exact 6 x volume of abcd */
+static int oracle_volume_above(const tr_point *a, const tr_point *b, const tr_point *c,
+                               const tr_point *d, double V)
+{
+  mpq_t s, t, six;
+  mpq_inits(s, t, six, NULL);
+  six_volume(a, b, c, d, s);
+  mpq_set_d(t, V);
+  mpq_set_ui(six, 6, 1);
+  mpq_mul(t, t, six);
+  int r = mpq_cmp(s, t) > 0;
+  mpq_clears(s, t, six, NULL);
   return r;
 }
 
@@ -151,27 +160,13 @@ static int oracle_volume_above(const tr_point *a, const tr_point *b, const tr_po
 static double volume_d(const tr_point *a, const tr_point *b, const tr_point *c,
                        const tr_point *d)
 {
-  mpq_t A[3], B[3], C[3], D[3], N[3], t, s;
-  for (int i = 0; i < 3; i++)
-    mpq_inits(A[i], B[i], C[i], D[i], N[i], NULL);
-  mpq_inits(t, s, NULL);
-  get(a, A);
-  get(b, B);
-  get(c, C);
-  get(d, D);
-  for (int i = 0; i < 3; i++) {
-    mpq_sub(B[i], B[i], A[i]);
-    mpq_sub(C[i], C[i], A[i]);
-    mpq_sub(D[i], D[i], A[i]);
-  }
-  cross(N, C, D, t);
-  dot(s, B, N, t);
+  mpq_t s, t;
+  mpq_inits(s, t, NULL);
+  six_volume(a, b, c, d, s);
   mpq_set_ui(t, 1, 6);
   mpq_mul(s, s, t);
   double v = mpq_get_d(s);
-  for (int i = 0; i < 3; i++)
-    mpq_clears(A[i], B[i], C[i], D[i], N[i], NULL);
-  mpq_clears(t, s, NULL);
+  mpq_clears(s, t, NULL);
   return v;
 }
 
