@@ -5,24 +5,14 @@ documents the exit codes, --version, usage errors, default output names, --stats
 import json
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 
+from clitest import Cli
+
 tetrec, data, table = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
-fails = 0
-
-
-def run(args, cwd=None):
-    p = subprocess.run([tetrec] + args, capture_output=True, text=True, cwd=cwd)
-    return p.returncode, p.stdout, p.stderr
-
-
-def expect(cond, what):
-    global fails
-    if not cond:
-        print("FAILED:", what, file=sys.stderr)
-        fails += 1
+cli = Cli(tetrec)
+run, expect = cli.run, cli.expect
 
 
 n = 0
@@ -114,4 +104,4 @@ with tempfile.TemporaryDirectory() as d:
         rc, _, err = run(["check", name, name + ".mesh"], cwd=d)
         expect(rc == 0, f"{name}: check: {rc} {err}")
 
-sys.exit(1 if fails else 0)
+cli.finish()

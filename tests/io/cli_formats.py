@@ -12,20 +12,11 @@ import sys
 import tempfile
 from fractions import Fraction as F
 
+from clitest import Cli
+
 tetrec, data = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
-fails = 0
-
-
-def run(args, cwd):
-    p = subprocess.run([tetrec] + args, capture_output=True, text=True, cwd=cwd)
-    return p.returncode, p.stdout, p.stderr
-
-
-def expect(cond, what):
-    global fails
-    if not cond:
-        print("FAILED:", what, file=sys.stderr)
-        fails += 1
+cli = Cli(tetrec)
+run, expect = cli.run, cli.expect
 
 
 def read_off(path):
@@ -314,4 +305,4 @@ with tempfile.TemporaryDirectory() as d:
     rc, err = run_bytes(["mesh", "c.off", "-o", "p.mesh"])
     expect(rc == 0 and "\r" not in err, f"a progress line without a terminal: {err!r}")
 
-sys.exit(1 if fails else 0)
+cli.finish()

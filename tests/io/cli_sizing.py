@@ -3,12 +3,14 @@
 meshes, validates and is the same byte for byte on 1 and 2 threads; every kind of bad .mtr
 gives its exit code (= tr_status) and a message naming the file and line."""
 import os
-import subprocess
 import sys
 import tempfile
 
+from clitest import Cli
+
 tetrec = os.path.abspath(sys.argv[1])
-fails = 0
+cli = Cli(tetrec)
+run, expect = cli.run, cli.expect
 
 CUBE = """OFF
 8 12 0
@@ -34,18 +36,6 @@ CUBE = """OFF
 3 3 4 7
 """
 SUMS = [0, 1, 2, 1, 1, 2, 3, 2]  # x + y + z of each corner
-
-
-def run(args, cwd):
-    p = subprocess.run([tetrec] + args, capture_output=True, text=True, cwd=cwd)
-    return p.returncode, p.stdout, p.stderr
-
-
-def expect(cond, what):
-    global fails
-    if not cond:
-        print("FAILED:", what, file=sys.stderr)
-        fails += 1
 
 
 with tempfile.TemporaryDirectory() as d:
@@ -95,5 +85,4 @@ with tempfile.TemporaryDirectory() as d:
     rc, _, err = run(["mesh", "cube.off", "--sizing", "tiny.mtr", "-o", "x.mesh"], d)
     expect(rc == 8 and "size field" in err, f"a field over the budget: {rc} {err}")
 
-print("cli_sizing: %d failures" % fails)
-sys.exit(1 if fails else 0)
+cli.finish("cli_sizing")
