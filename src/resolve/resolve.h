@@ -98,6 +98,26 @@ void tr_solid_free(tr_solid *sol);
 tr_status tr_solid_volume6(const struct tr_plc *plc, const tr_arrangement *arr,
                            const tr_solid *sol, mpq_t out);
 
+/* ---- surface.c: what the pipeline meshes under --resolve ---- */
+typedef struct tr_resolve_info {
+  uint64_t npairs;                  /* improper pairs of input triangles */
+  uint32_t npieces, nkept, ninternal, ncomponents;
+  uint32_t nnew;                    /* new vertices on the solid's boundary */
+  int identity;                     /* 1: the input as given bounds its solid */
+  double seconds;                   /* wall-clock time of the arrangement and the solid */
+} tr_resolve_info;
+
+/* *out = the boundary of in's solid (mode 1: winding number >= 1, the pieces inside it
+ * dropped; mode 2: kept as internal facets) as a new PLC: the pieces' vertices (input
+ * points in input order, then new ones), the pieces oriented outward, each with its
+ * marker, tri_source naming its first source's input element, vsize carried (0 at new
+ * points), hole and region points copied. *out = NULL when in itself is that boundary
+ * (every triangle one piece, kept as given): the caller meshes in unchanged. The solid's
+ * boundary having a vertex that is no double is TR_ERR_UNSUPPORTED naming it, input
+ * segments with a changed surface too; an empty solid is TR_ERR_INPUT. */
+tr_status tr_resolve_plc(const struct tr_plc *in, int mode, struct tr_plc **out,
+                         tr_resolve_info *info);
+
 /* The point of vertex v (d: the input's coordinates). */
 static inline tr_point tr_arr_point(const tr_arrangement *arr, const struct tr_plc *plc,
                                     uint32_t v)
