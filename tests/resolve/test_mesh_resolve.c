@@ -247,6 +247,43 @@ static void t_errors(const char *data)
   tr_plc_destroy(c);
 }
 
+/* Random unions of 2 to 5 cubes of side 2 at integer positions in [0, 3]^3 (as
+ * test_solid's random_cubes, whose solids have the volume of their voxels): every new
+ * vertex is a double, so each union meshes; validated with the solid's volume. Shared
+ * faces, edges and corners make non-manifold boundaries. RS_ITER=N runs N (default 40). */
+static void t_random_cubes(void)
+{
+  static const uint32_t t[] = {1, 3, 7, 1, 7, 5, 0, 4, 6, 0, 6, 2, 2, 6, 7, 2, 7, 3,
+                               0, 1, 5, 0, 5, 4, 4, 5, 7, 4, 7, 6, 0, 2, 3, 0, 3, 1};
+  const char *e = getenv("RS_ITER");
+  long iters = e ? atol(e) : 40;
+  uint64_t seed = 0x2545f4914f6cdd1du;
+  double xyz[8 * 24];
+  uint32_t tris[36 * 8];
+  for (long it = 0; it < iters; it++) {
+    seed = seed * 6364136223846793005u + 1442695040888963407u;
+    int n = 2 + (int)((seed >> 33) % 4);
+    for (int c = 0; c < n; c++) {
+      seed = seed * 6364136223846793005u + 1442695040888963407u;
+      double off[3] = {(double)((seed >> 20) % 4), (double)((seed >> 30) % 4),
+                       (double)((seed >> 40) % 4)};
+      for (int i = 0; i < 8; i++)
+        for (int d = 0; d < 3; d++)
+          xyz[24 * c + 3 * i + d] = 2.0 * (double)(i >> d & 1) + off[d];
+      for (int i = 0; i < 36; i++)
+        tris[36 * c + i] = t[i] + 8 * (uint32_t)c;
+    }
+    tr_plc *p = from_arrays(xyz, 8 * (uint32_t)n, tris, 12 * (uint32_t)n);
+    tr_options opt = tm_options();
+    opt.resolve = 1 + (int)(it % 2);
+    opt.quality_ratio = it % 3 == 0 ? 1.414 : 0;
+    char name[64];
+    snprintf(name, sizeof name, "random_cubes_%ld", it);
+    mesh_resolved(name, p, &opt);
+    tr_plc_destroy(p);
+  }
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -254,6 +291,7 @@ int main(int argc, char **argv)
     {"cubes", NULL, t_cubes},
     {"rational", t_rational, NULL},
     {"errors", NULL, t_errors},
+    {"random_cubes", t_random_cubes, NULL},
   };
   int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
   tr_thread_cleanup();

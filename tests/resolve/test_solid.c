@@ -242,6 +242,45 @@ static void t_errors(void)
   expect_error("open_box_and_cube_ulp", xyz, 16, tris, 22, "not defined");
 }
 
+/* Random unions of cubes of side 2 at integer positions in [0, 3]^3 (duplicates, shared
+ * faces, edges and corners included): all such cubes' face diagonals have one direction
+ * per plane, so every new vertex is an integer or half-integer point. The solid's volume
+ * must be the number of unit voxels some cube covers, counted directly. RS_ITER=N runs N
+ * (default 300). */
+static void t_random_cubes(void)
+{
+  const char *e = getenv("RS_ITER");
+  long iters = e ? atol(e) : 300;
+  uint64_t seed = 0x9e3779b97f4a7c15u;
+  double xyz[8 * 24];
+  uint32_t tris[36 * 8];
+  for (long it = 0; it < iters; it++) {
+    seed = seed * 6364136223846793005u + 1442695040888963407u;
+    int n = 2 + (int)((seed >> 33) % 4), cov[5][5][5];
+    memset(cov, 0, sizeof cov);
+    for (int c = 0; c < n; c++) {
+      seed = seed * 6364136223846793005u + 1442695040888963407u;
+      double off[3] = {(double)((seed >> 20) % 4), (double)((seed >> 30) % 4),
+                       (double)((seed >> 40) % 4)};
+      cube(xyz + 24 * c, tris + 36 * c, off, 2, 8 * (uint32_t)c);
+      for (int x = 0; x < 2; x++)
+        for (int y = 0; y < 2; y++)
+          for (int z = 0; z < 2; z++)
+            cov[(int)off[0] + x][(int)off[1] + y][(int)off[2] + z] = 1;
+    }
+    long vox = 0;
+    for (int x = 0; x < 5; x++)
+      for (int y = 0; y < 5; y++)
+        for (int z = 0; z < 5; z++)
+          vox += cov[x][y][z];
+    char name[64], want[32];
+    snprintf(name, sizeof name, "random_cubes_%ld", it);
+    snprintf(want, sizeof want, "%ld", 6 * vox);
+    expect_solid(name, xyz, 8 * (uint32_t)n, tris, 12 * (uint32_t)n, it % 2, -1, -1, want,
+                 NULL);
+  }
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -250,6 +289,7 @@ int main(int argc, char **argv)
     {"dupshell", t_dupshell, NULL},
     {"nested", t_nested, NULL},
     {"errors", t_errors, NULL},
+    {"random_cubes", t_random_cubes, NULL},
   };
   int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
   tr_thread_cleanup();
