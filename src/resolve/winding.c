@@ -12,6 +12,7 @@
  * One exact ray per connected part then fixes the unknown: the signed count of the
  * pieces it crosses. No tolerance anywhere: the angular order and the crossings are
  * orientation signs of exact points. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -217,13 +218,19 @@ static tr_status relate_edges(const ctx *c, wuf *u, const int64_t *wt)
       int64_t off;
       if (!wuf_relate(u, x->p, y->p, oy - ox, &off)) {
         tr_point A = vpt(c, x->lo), B = vpt(c, x->hi);
+        char who[64];
+        if (n == 1)
+          snprintf(who, sizeof who, "1 piece, of input triangle %u", src_name(c, x->p));
+        else
+          snprintf(who, sizeof who, "%u pieces, of input triangles %u and %u", n,
+                   src_name(c, x->p), src_name(c, y->p));
         st = tr_error(TR_ERR_OPEN,
-                      "--resolve: the winding number is not defined: around the edge from "
-                      "(%.17g %.17g %.17g) to (%.17g %.17g %.17g) (%u piece%s, of input "
-                      "triangles %u and %u) the numbers of the cells disagree by %lld: an "
-                      "open surface or triangles oriented against their neighbours",
-                      A.d[0], A.d[1], A.d[2], B.d[0], B.d[1], B.d[2], n, n > 1 ? "s" : "",
-                      src_name(c, x->p), src_name(c, y->p),
+                      "%s%s--resolve: the winding number is not defined: around the edge "
+                      "from (%.17g %.17g %.17g) to (%.17g %.17g %.17g) (%s) the numbers of "
+                      "the cells disagree by %lld: an open surface or triangles oriented "
+                      "against their neighbours",
+                      c->plc->source ? c->plc->source : "", c->plc->source ? ": " : "",
+                      A.d[0], A.d[1], A.d[2], B.d[0], B.d[1], B.d[2], who,
                       (long long)((oy - ox) - off));
         break;
       }

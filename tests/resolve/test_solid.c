@@ -235,7 +235,7 @@ static void t_errors(void)
   flip(tris + 3); /* the whole face */
   expect_error("one_face_flipped", xyz, 8, tris, 12, "not defined");
   cube(xyz, tris, zero, 1, 0);
-  expect_error("open_box", xyz, 8, tris, 10, "input triangles"); /* no bottom z = 0 face */
+  expect_error("open_box", xyz, 8, tris, 10, "(1 piece, of input triangle 6)"); /* no z = 0 face */
   /* the same with a second cube moved by one ulp overlapping it */
   double ulp[3] = {0x1p-52, 0x1p-52, 0};
   cube(xyz + 24, tris + 30, ulp, 1, 8);
