@@ -201,6 +201,45 @@ static void t_rational(void)
   tr_plc_destroy(p);
 }
 
+/* Defects validation refuses, absorbed by --resolve: a zero-area triangle (three collinear
+ * points on an edge), a repeated point, a triangle given again and once reversed (the
+ * piece's weight stays 1). The solid is the unit cube: 6V = 6, validated. One more copy
+ * of that triangle is a sheet of its own: the winding number is not defined. */
+static void t_defects(const char *data)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/resolve_cube.off", data);
+  tr_plc *c = tm_read(path);
+  double xyz[3 * 10];
+  memcpy(xyz, c->xyz, sizeof(double) * 24);
+  xyz[24] = 0.5, xyz[25] = 0, xyz[26] = 0; /* point 8: the midpoint of edge (0, 1) */
+  memcpy(xyz + 27, c->xyz + 3, sizeof(double) * 3); /* point 9 repeats point 1 */
+  uint32_t tris[3 * 16];
+  memcpy(tris, c->tris, sizeof(uint32_t) * 36);
+  uint32_t extra[] = {0, 8, 1,   /* zero area */
+                      0, 9, 5,   /* triangle (0, 1, 5) again, through the repeated point */
+                      0, 5, 9,   /* and reversed */
+                      0, 9, 5};  /* and again */
+  memcpy(tris + 36, extra, sizeof extra);
+  tr_plc *p = from_arrays(xyz, 10, tris, 15);
+  tr_options opt = tm_options();
+  tr_mesh *m = NULL;
+  tr_status st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st != TR_OK, "the defective cube meshed without --resolve");
+  tr_mesh_destroy(m);
+  opt.resolve = 1;
+  mesh_resolved("defects", p, &opt);
+  opt.quality_ratio = 1.414;
+  mesh_resolved("defects_quality", p, &opt);
+  tr_plc_destroy(p);
+  p = from_arrays(xyz, 10, tris, 16);
+  opt.quality_ratio = 0;
+  st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_OPEN, "a triangle given twice more: %s", tr_status_name(st));
+  tr_plc_destroy(p);
+  tr_plc_destroy(c);
+}
+
 /* Errors of the soup: open, badly oriented, empty solid, bad option value. */
 static void t_errors(const char *data)
 {
@@ -291,6 +330,7 @@ int main(int argc, char **argv)
     {"cubes", NULL, t_cubes},
     {"rational", t_rational, NULL},
     {"errors", NULL, t_errors},
+    {"defects", NULL, t_defects},
     {"random_cubes", t_random_cubes, NULL},
   };
   int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
