@@ -94,7 +94,9 @@ tr_status tr_solid_classify(const struct tr_plc *plc, const tr_arrangement *arr,
                             int keep_internal, tr_solid *sol);
 void tr_solid_free(tr_solid *sol);
 /* out (initialised) = 6 times the exact volume of the solid: the signed volumes of the
- * boundary pieces, oriented outward, against the origin. */
+ * boundary pieces, oriented outward, against the origin. A check for tests: the sum's
+ * denominator is the lcm of the pieces', which grows with every rational corner (minutes
+ * on 300k pieces with thousands of them). */
 tr_status tr_solid_volume6(const struct tr_plc *plc, const tr_arrangement *arr,
                            const tr_solid *sol, mpq_t out);
 
