@@ -275,6 +275,17 @@ typedef struct tr_options {
    * NULL / 0 (default): none. The array is read during the call only */
   const double *sizing;
   uint32_t nsizing;
+  /* Self-intersecting or defective input (issue 49, docs/resolve.md): 1 meshes the solid
+   * of the input's winding number (the cells where it is >= 1: the union of the
+   * positively oriented parts) bounded by the exact arrangement of the input triangles;
+   * pieces between two solid cells are dropped, or kept as internal facets with 2. An
+   * input whose winding number is not defined (open, or triangles oriented against their
+   * neighbours) is TR_ERR_OPEN naming the edge and triangles. An input that already
+   * bounds its solid as given (a valid closed surface; an outward shell nested in
+   * another is an internal facet, kept only with 2) is meshed unchanged: the same mesh
+   * as with 0. Not implemented yet: a solid whose boundary has vertices that are
+   * rational points and no doubles (TR_ERR_UNSUPPORTED naming one). 0 (default): off */
+  int resolve;
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);

@@ -183,7 +183,7 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
                    optimize=None, keep_edges=False, subface_quality=None,
                    refine_budget=None, refine_partial=False, spacing_radii=True, exact=False,
                    smooth=True, round_budget=None, verbose=0, progress=None, threads=0,
-                   sizing=None):
+                   sizing=None, resolve=False):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
     points (n,3) floats and triangles (m,3) 0-based indices, or a Surface from read()
@@ -229,6 +229,13 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     sizes, and every boundary edge and triangle that is (not under keep_surface); it
     composes with quality and max_volume. A field asking for more points than the
     budget raises TR_ERR_NOMEM before refinement starts.
+    resolve: True meshes the solid of a self-intersecting or defective surface, the cells
+    where the input's winding number is >= 1, bounded by the exact arrangement of its
+    triangles; "internal" also keeps the pieces between two solid cells as internal
+    facets. A surface whose winding number is not defined (open, or triangles oriented
+    against their neighbours) raises tetrec.Error (TR_ERR_OPEN) naming the edge; one that
+    already bounds its solid is meshed as without resolve. Not implemented yet: a solid
+    whose boundary has a vertex that is a rational point and no double (TR_ERR_UNSUPPORTED).
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: Mesh.write() defaults to writing exact rational Steiner points.
@@ -265,6 +272,13 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
             raise TypeError(f"{name} must be True or False, not {type(flag).__name__}")
         if bool(flag) != default:
             options[name] = bool(flag)
+    if resolve is not False:
+        if resolve is True or (isinstance(resolve, np.bool_) and resolve):
+            options["resolve"] = 1
+        elif resolve == "internal":
+            options["resolve"] = 2
+        elif not (resolve is None or (isinstance(resolve, np.bool_) and not resolve)):
+            raise ValueError(f"resolve is True, False or 'internal', not {resolve!r}")
     if not smooth:
         options["smooth"] = 0
     if verbose:

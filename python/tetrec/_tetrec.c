@@ -148,7 +148,8 @@ static int progress_hook(void *user, const char *stage, double fraction)
 static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
     "max_volume", "optimize", "keep_edges", "subface_quality", "refine_budget",
-    "spacing_radii", "refine_partial", "holes", "regions", "threads", "sizing", NULL};
+    "spacing_radii", "refine_partial", "holes", "regions", "threads", "sizing", "resolve",
+    NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
 static double positive(PyObject *value, const char *name)
@@ -210,6 +211,16 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         return -1;
       }
       opt->round_budget = (uint64_t)x;
+    } else if (!strcmp(k, "resolve")) {
+      /* 1: the solid by winding number, 2: with its internal facets (tr_options.resolve) */
+      long x = PyLong_AsLong(value);
+      if (x == -1 && PyErr_Occurred())
+        return -1;
+      if (x < 1 || x > 2) {
+        PyErr_Format(PyExc_ValueError, "resolve is 1 or 2 here, not %ld", x);
+        return -1;
+      }
+      opt->resolve = (int)x;
     } else if (!strcmp(k, "threads")) {
       long x = PyLong_AsLong(value);
       if (x == -1 && PyErr_Occurred())

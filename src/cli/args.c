@@ -117,6 +117,14 @@ static const struct option {
      "leave the recovery's Steiner points where they are (by\n"
      "default the ones on the surface are removed or moved inside\n"
      "where that can be done exactly)"},
+    {"--resolve", NULL, C_MESH | C_CHECK,
+     "mesh the solid of a self-intersecting or defective surface:\n"
+     "the cells where its winding number is >= 1, bounded by the\n"
+     "exact arrangement of its triangles (docs/resolve.md); with\n"
+     "check, validate against that surface"},
+    {"--resolve-internal", NULL, C_MESH | C_CHECK,
+     "--resolve, keeping the pieces between two solid cells as\n"
+     "internal facets"},
     {"--recovery", "MODE", C_MESH,
      "default: every recovery step; paper: the published\n"
      "algorithm only (Swap23/Swap44 and pipels for edges, Swap32\n"
@@ -302,6 +310,10 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
     a->spacing_radii = 1;
   else if (!strcmp(name, "--keep-steiner"))
     a->keep_steiner = 1;
+  else if (!strcmp(name, "--resolve"))
+    a->resolve = 1;
+  else if (!strcmp(name, "--resolve-internal"))
+    a->resolve = 2;
   else if (!strcmp(name, "--recovery")) {
     if (!strcmp(v, "paper"))
       a->recovery = 1;

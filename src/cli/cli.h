@@ -27,6 +27,7 @@ typedef struct {
   uint64_t refine_budget;                  /* 0: the default */
   uint64_t round_budget; /* 0: the default */
   int recovery;          /* tr_options.recovery */
+  int resolve;           /* tr_options.resolve: --resolve 1, --resolve-internal 2 */
 } tr_cli_args;
 
 /* Parses argv into *a: TR_ERR_USAGE with a message for an unknown or misplaced option, a

@@ -69,6 +69,57 @@ typedef struct tr_arrangement {
 tr_status tr_arrangement_build(const struct tr_plc *plc, tr_arrangement *arr);
 void tr_arrangement_free(tr_arrangement *arr);
 
+/* ---- winding.c: the solid (issue 49 step 2) ---- */
+/* What becomes of a piece: dropped (both sides in the solid or both out, or its sources
+ * cancel), kept as oriented (its back is in the solid), kept flipped (its front is),
+ * or kept as an internal facet (both sides in the solid, on request). */
+enum { TR_SOLID_DROP = 0, TR_SOLID_KEEP = 1, TR_SOLID_FLIP = 2, TR_SOLID_INTERNAL = 3 };
+
+typedef struct tr_solid {
+  uint32_t npieces;
+  int64_t *front;  /* per piece: the winding number on its front (where its normal points) */
+  int64_t *weight; /* per piece: the sum of its sources' signs; back = front + weight */
+  uint8_t *keep;   /* per piece: TR_SOLID_* */
+  uint32_t nkept, ninternal; /* pieces on the boundary (kept or flipped), internal ones */
+  uint32_t ncomponents, nrays; /* connected parts (by edges), rays cast */
+} tr_solid;
+
+/* sol = the solid of arr (the arrangement of plc): the cells with winding number >= 1.
+ * Pieces between two solid cells are TR_SOLID_INTERNAL when keep_internal, else dropped.
+ * An input whose winding number is not defined (an open soup, or triangles oriented
+ * against their neighbours) is TR_ERR_OPEN naming the edge and the input triangles
+ * (plc->tri_source's numbering when the reader set it). Free with tr_solid_free (also
+ * after a failure). */
+tr_status tr_solid_classify(const struct tr_plc *plc, const tr_arrangement *arr,
+                            int keep_internal, tr_solid *sol);
+void tr_solid_free(tr_solid *sol);
+/* out (initialised) = 6 times the exact volume of the solid: the signed volumes of the
+ * boundary pieces, oriented outward, against the origin. A check for tests: the sum's
+ * denominator is the lcm of the pieces', which grows with every rational corner (minutes
+ * on 300k pieces with thousands of them). */
+tr_status tr_solid_volume6(const struct tr_plc *plc, const tr_arrangement *arr,
+                           const tr_solid *sol, mpq_t out);
+
+/* ---- surface.c: what the pipeline meshes under --resolve ---- */
+typedef struct tr_resolve_info {
+  uint64_t npairs;                  /* improper pairs of input triangles */
+  uint32_t npieces, nkept, ninternal, ncomponents;
+  uint32_t nnew;                    /* new vertices on the solid's boundary */
+  int identity;                     /* 1: the input as given bounds its solid */
+  double seconds;                   /* wall-clock time of the arrangement and the solid */
+} tr_resolve_info;
+
+/* *out = the boundary of in's solid (mode 1: winding number >= 1, the pieces inside it
+ * dropped; mode 2: kept as internal facets) as a new PLC: the pieces' vertices (input
+ * points in input order, then new ones), the pieces oriented outward, each with its
+ * marker, tri_source naming its first source's input element, vsize carried (0 at new
+ * points), hole and region points copied. *out = NULL when in itself is that boundary
+ * (every triangle one piece, kept as given): the caller meshes in unchanged. The solid's
+ * boundary having a vertex that is no double is TR_ERR_UNSUPPORTED naming it, input
+ * segments with a changed surface too; an empty solid is TR_ERR_INPUT. */
+tr_status tr_resolve_plc(const struct tr_plc *in, int mode, struct tr_plc **out,
+                         tr_resolve_info *info);
+
 /* The point of vertex v (d: the input's coordinates). */
 static inline tr_point tr_arr_point(const tr_arrangement *arr, const struct tr_plc *plc,
                                     uint32_t v)

@@ -1,0 +1,339 @@
+/* --resolve through the whole pipeline (tr_options.resolve, src/resolve/surface.c): every
+ * mesh through the mesh validator and the exact conformity validator against the
+ * resolved surface, with the solid's exact volume (tr_solid_volume6 on the input as
+ * given) as the volume the tets must add up to. Valid inputs give the same output byte
+ * for byte as without --resolve. Usage: test_mesh_resolve CASE [tests/data] */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "resolve/resolve.h"
+#include "../pipeline/tmesh.h"
+
+static tr_plc *from_arrays(const double *xyz, uint32_t n, const uint32_t *tris, uint32_t nt)
+{
+  tr_plc *p;
+  tr_plc_create(&p);
+  EXPECT(tr_plc_set(p, xyz, n, tris, nt, NULL) == TR_OK, "tr_plc_set: %s", tr_last_error());
+  return p;
+}
+
+/* Two files' surfaces as one soup. */
+static tr_plc *two_files(const char *data, const char *a, const char *b)
+{
+  char pa[1024], pb[1024];
+  snprintf(pa, sizeof pa, "%s/%s", data, a);
+  snprintf(pb, sizeof pb, "%s/%s", data, b);
+  tr_plc *x = tm_read(pa), *y = tm_read(pb);
+  uint32_t n = x->npoints + y->npoints, nt = x->ntris + y->ntris;
+  double *xyz = malloc(sizeof *xyz * 3 * n);
+  uint32_t *tris = malloc(sizeof *tris * 3 * nt);
+  memcpy(xyz, x->xyz, sizeof *xyz * 3 * x->npoints);
+  memcpy(xyz + 3 * x->npoints, y->xyz, sizeof *xyz * 3 * y->npoints);
+  memcpy(tris, x->tris, sizeof *tris * 3 * x->ntris);
+  for (uint32_t i = 0; i < 3 * y->ntris; i++)
+    tris[3 * x->ntris + i] = y->tris[i] + x->npoints;
+  tr_plc *p = from_arrays(xyz, n, tris, nt);
+  free(xyz);
+  free(tris);
+  tr_plc_destroy(x);
+  tr_plc_destroy(y);
+  return p;
+}
+
+/* Meshes plc with opt (resolve set) and validates: the mesh validator, exact conformity
+ * to the resolved surface and the tets' exact volume equal to the solid's. */
+static void mesh_resolved(const char *name, const tr_plc *plc, const tr_options *opt)
+{
+  tr_arrangement a;
+  tr_solid s;
+  memset(&s, 0, sizeof s);
+  mpq_t v6;
+  mpq_init(v6);
+  tr_status st = tr_arrangement_build(plc, &a);
+  if (st == TR_OK)
+    st = tr_solid_classify(plc, &a, opt->resolve == 2, &s);
+  if (st == TR_OK)
+    st = tr_solid_volume6(plc, &a, &s, v6);
+  EXPECT(st == TR_OK, "%s: solid: %s", name, tr_last_error());
+  tr_solid_free(&s);
+  tr_arrangement_free(&a);
+  tm_run r;
+  memset(&r, 0, sizeof r);
+  r.st.size = sizeof r.st;
+  st = tr_mesh_plc_ex(plc, opt, &r.m, &r.st, &r.used);
+  EXPECT(st == TR_OK, "%s: %s: %s", name, tr_status_name(st), tr_last_error());
+  if (st == TR_OK) {
+    EXPECT(tr_check_mesh(r.m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, NULL) == TR_OK, "%s: mesh validator: %s", name,
+           tr_last_error());
+    EXPECT(tr_check_conformity(r.m, r.used, v6, opt->keep_edges ? TR_CONF_KEEP_EDGES : 0) ==
+               TR_OK,
+           "%s: conformity to the resolved surface, volume = the solid's: %s", name,
+           tr_last_error());
+  }
+  mpq_clear(v6);
+  tm_free(&r);
+}
+
+static long file_bytes(const char *path, char **buf)
+{
+  FILE *f = fopen(path, "rb");
+  if (!f)
+    return -1;
+  fseek(f, 0, SEEK_END);
+  long n = ftell(f);
+  fseek(f, 0, SEEK_SET);
+  *buf = malloc(n > 0 ? (size_t)n : 1);
+  if (fread(*buf, 1, (size_t)n, f) != (size_t)n)
+    n = -1;
+  fclose(f);
+  return n;
+}
+
+/* The written meshes under options o[0] and o[1] are the same byte for byte. */
+static void same_bytes(const char *name, const tr_plc *plc, const tr_options o[2])
+{
+  char path[2][256];
+  for (int k = 0; k < 2; k++) {
+    tr_options opt = o[k];
+    tm_run r;
+    /* no Euler check: some inputs are several balls */
+    tr_mesh *m = tm_mesh(&r, name, plc, &opt, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T);
+    snprintf(path[k], sizeof path[k], "resolve_same_%s_%d.mesh", name, k);
+    EXPECT(m && tr_mesh_write(m, path[k], 0) == TR_OK, "%s: write: %s", name, tr_last_error());
+    tm_free(&r);
+  }
+  char *a = NULL, *b = NULL;
+  long na = file_bytes(path[0], &a), nb = file_bytes(path[1], &b);
+  EXPECT(na > 0 && na == nb && !memcmp(a, b, (size_t)na),
+         "%s: the two meshes differ (%ld and %ld bytes)", name, na, nb);
+  free(a);
+  free(b);
+  remove(path[0]);
+  remove(path[1]);
+}
+
+/* A valid input (closed, oriented consistently: inputs whose orientation validation
+ * repairs are errors under --resolve, see t_errors): the written mesh with --resolve is the one without, byte for byte. */
+static void same_output(const char *name, const tr_plc *plc, tr_options opt)
+{
+  tr_options o[2] = {opt, opt};
+  o[0].resolve = 0;
+  o[1].resolve = 1;
+  same_bytes(name, plc, o);
+}
+
+static void t_same(const char *data)
+{
+  static const char *files[] = {"tet.off", "two_cubes.off", "resolve_cube.off",
+                                "schoenhardt.off", "edge_touching_boxes.off",
+                                "hexprism_fan.off"};
+  for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
+    char p[1024];
+    snprintf(p, sizeof p, "%s/%s", data, files[i]);
+    tr_plc *plc = tm_read(p);
+    tr_options opt = tm_options();
+    same_output(files[i], plc, opt);
+    opt.quality_ratio = 1.414;
+    same_output(files[i], plc, opt);
+    tr_plc_destroy(plc);
+  }
+}
+
+/* Two overlapping unit cubes: the union (6V = 45/4), also with its internal facets, under
+ * quality refinement and --keep-surface, and moved by one ulp (new vertices then rational
+ * points that are no doubles: a clear TR_ERR_UNSUPPORTED, nothing meshed). */
+static void t_cubes(const char *data)
+{
+  tr_plc *p = two_files(data, "resolve_cube.off", "resolve_cube_moved.off");
+  tr_options opt = tm_options();
+  tr_status st = TR_OK;
+  tr_mesh *m = NULL;
+  EXPECT((st = tr_mesh_plc(p, &opt, &m, NULL)) == TR_ERR_SELF_INTERSECT,
+         "without --resolve: %s", tr_status_name(st));
+  tr_mesh_destroy(m);
+  opt.resolve = 1;
+  mesh_resolved("cubes", p, &opt);
+  opt.resolve = 2;
+  mesh_resolved("cubes_internal", p, &opt);
+  opt.resolve = 1;
+  opt.keep_surface = 1;
+  mesh_resolved("cubes_keep_surface", p, &opt);
+  opt.keep_surface = 0;
+  opt.quality_ratio = 1.414;
+  mesh_resolved("cubes_quality", p, &opt);
+  opt.quality_ratio = 0;
+  tr_options o[2] = {opt, opt};
+  o[0].threads = 1;
+  o[1].threads = 2;
+  same_bytes("cubes_threads_1_and_2", p, o);
+  tr_plc_destroy(p);
+}
+
+/* A tetrahedron piercing the unit cube's bottom: its edge from (0.2, 0.3, -1) to
+ * (0.7, 0.9, 2) crosses z = 0 at x = 0.2 + 0.5 / 3, no double. */
+static void t_rational(void)
+{
+  double xyz[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1,
+                  0.2, 0.3, -1, 0.7, 0.9, 2, 0.9, 0.1, 0.5, 0.1, 0.8, 0.4};
+  uint32_t tris[] = {1, 3, 7, 1, 7, 5, 0, 4, 6, 0, 6, 2, 2, 6, 7, 2, 7, 3,
+                     0, 1, 5, 0, 5, 4, 4, 5, 7, 4, 7, 6, 0, 2, 3, 0, 3, 1,
+                     8, 9, 10, 8, 10, 11, 8, 11, 9, 9, 11, 10};
+  /* orient the tetrahedron outward: its face (8, 9, 10) away from 11 */
+  tr_point P[4];
+  for (int i = 0; i < 4; i++)
+    P[i] = tr_pt_d(xyz + 3 * (8 + i));
+  if (tr_orient3d_p(&P[0], &P[1], &P[2], &P[3]) > 0)
+    for (int t = 12; t < 16; t++) {
+      uint32_t x = tris[3 * t + 1];
+      tris[3 * t + 1] = tris[3 * t + 2];
+      tris[3 * t + 2] = x;
+    }
+  tr_plc *p = from_arrays(xyz, 12, tris, 16);
+  tr_options opt = tm_options();
+  opt.resolve = 1;
+  tr_mesh *m = NULL;
+  tr_status st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_UNSUPPORTED && m == NULL && strstr(tr_last_error(), "no doubles"),
+         "rational boundary vertices: %s: %s", tr_status_name(st), tr_last_error());
+  tr_mesh_destroy(m);
+  tr_plc_destroy(p);
+}
+
+/* Defects validation refuses, absorbed by --resolve: a zero-area triangle (three collinear
+ * points on an edge), a repeated point, a triangle given again and once reversed (the
+ * piece's weight stays 1). The solid is the unit cube: 6V = 6, validated. One more copy
+ * of that triangle is a sheet of its own: the winding number is not defined. */
+static void t_defects(const char *data)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/resolve_cube.off", data);
+  tr_plc *c = tm_read(path);
+  double xyz[3 * 10];
+  memcpy(xyz, c->xyz, sizeof(double) * 24);
+  xyz[24] = 0.5, xyz[25] = 0, xyz[26] = 0; /* point 8: the midpoint of edge (0, 1) */
+  memcpy(xyz + 27, c->xyz + 3, sizeof(double) * 3); /* point 9 repeats point 1 */
+  uint32_t tris[3 * 16];
+  memcpy(tris, c->tris, sizeof(uint32_t) * 36);
+  uint32_t extra[] = {0, 8, 1,   /* zero area */
+                      0, 9, 5,   /* triangle (0, 1, 5) again, through the repeated point */
+                      0, 5, 9,   /* and reversed */
+                      0, 9, 5};  /* and again */
+  memcpy(tris + 36, extra, sizeof extra);
+  tr_plc *p = from_arrays(xyz, 10, tris, 15);
+  tr_options opt = tm_options();
+  tr_mesh *m = NULL;
+  tr_status st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st != TR_OK, "the defective cube meshed without --resolve");
+  tr_mesh_destroy(m);
+  opt.resolve = 1;
+  mesh_resolved("defects", p, &opt);
+  opt.quality_ratio = 1.414;
+  mesh_resolved("defects_quality", p, &opt);
+  tr_plc_destroy(p);
+  p = from_arrays(xyz, 10, tris, 16);
+  opt.quality_ratio = 0;
+  st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_OPEN, "a triangle given twice more: %s", tr_status_name(st));
+  tr_plc_destroy(p);
+  tr_plc_destroy(c);
+}
+
+/* Errors of the soup: open, badly oriented, empty solid, bad option value. */
+static void t_errors(const char *data)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/resolve_cube.off", data);
+  tr_plc *c = tm_read(path);
+  tr_options opt = tm_options();
+  opt.resolve = 1;
+  tr_mesh *m = NULL;
+  tr_plc *open = from_arrays(c->xyz, 8, c->tris, 10);
+  tr_status st = tr_mesh_plc(open, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_OPEN && strstr(tr_last_error(), "winding number is not defined"),
+         "open box: %s: %s", tr_status_name(st), tr_last_error());
+  uint32_t tris[36];
+  memcpy(tris, c->tris, sizeof tris);
+  for (int t = 0; t < 12; t++) {
+    uint32_t x = tris[3 * t + 1];
+    tris[3 * t + 1] = tris[3 * t + 2];
+    tris[3 * t + 2] = x;
+  }
+  tr_plc *inv = from_arrays(c->xyz, 8, tris, 12);
+  st = tr_mesh_plc(inv, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_INPUT && strstr(tr_last_error(), "empty"), "inside out: %s: %s",
+         tr_status_name(st), tr_last_error());
+  uint32_t x = tris[1];
+  tris[1] = tris[2];
+  tris[2] = x; /* one triangle back: badly oriented */
+  tr_plc *bad = from_arrays(c->xyz, 8, tris, 12);
+  st = tr_mesh_plc(bad, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_OPEN, "one triangle against its neighbours: %s: %s", tr_status_name(st),
+         tr_last_error());
+  /* validation repairs a reversed shell; the winding number has no solid there */
+  snprintf(path, sizeof path, "%s/cavity.off", data);
+  tr_plc *cav = tm_read(path);
+  st = tr_mesh_plc(cav, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_INPUT, "cavity.off (outer shell reversed): %s", tr_status_name(st));
+  tr_plc_destroy(cav);
+  opt.resolve = 3;
+  st = tr_mesh_plc(c, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_USAGE, "resolve = 3: %s", tr_status_name(st));
+  tr_plc_destroy(open);
+  tr_plc_destroy(inv);
+  tr_plc_destroy(bad);
+  tr_plc_destroy(c);
+}
+
+/* Random unions of 2 to 5 cubes of side 2 at integer positions in [0, 3]^3 (as
+ * test_solid's random_cubes, whose solids have the volume of their voxels): every new
+ * vertex is a double, so each union meshes; validated with the solid's volume. Shared
+ * faces, edges and corners make non-manifold boundaries. RS_ITER=N runs N (default 40). */
+static void t_random_cubes(void)
+{
+  static const uint32_t t[] = {1, 3, 7, 1, 7, 5, 0, 4, 6, 0, 6, 2, 2, 6, 7, 2, 7, 3,
+                               0, 1, 5, 0, 5, 4, 4, 5, 7, 4, 7, 6, 0, 2, 3, 0, 3, 1};
+  const char *e = getenv("RS_ITER");
+  long iters = e ? atol(e) : 40;
+  uint64_t seed = 0x2545f4914f6cdd1du;
+  double xyz[8 * 24];
+  uint32_t tris[36 * 8];
+  for (long it = 0; it < iters; it++) {
+    seed = seed * 6364136223846793005u + 1442695040888963407u;
+    int n = 2 + (int)((seed >> 33) % 4);
+    for (int c = 0; c < n; c++) {
+      seed = seed * 6364136223846793005u + 1442695040888963407u;
+      double off[3] = {(double)((seed >> 20) % 4), (double)((seed >> 30) % 4),
+                       (double)((seed >> 40) % 4)};
+      for (int i = 0; i < 8; i++)
+        for (int d = 0; d < 3; d++)
+          xyz[24 * c + 3 * i + d] = 2.0 * (double)(i >> d & 1) + off[d];
+      for (int i = 0; i < 36; i++)
+        tris[36 * c + i] = t[i] + 8 * (uint32_t)c;
+    }
+    tr_plc *p = from_arrays(xyz, 8 * (uint32_t)n, tris, 12 * (uint32_t)n);
+    tr_options opt = tm_options();
+    opt.resolve = 1 + (int)(it % 2);
+    opt.quality_ratio = it % 3 == 0 ? 1.414 : 0;
+    char name[64];
+    snprintf(name, sizeof name, "random_cubes_%ld", it);
+    mesh_resolved(name, p, &opt);
+    tr_plc_destroy(p);
+  }
+}
+
+int main(int argc, char **argv)
+{
+  static const texpect_case cases[] = {
+    {"same", NULL, t_same},
+    {"cubes", NULL, t_cubes},
+    {"rational", t_rational, NULL},
+    {"errors", NULL, t_errors},
+    {"defects", NULL, t_defects},
+    {"random_cubes", t_random_cubes, NULL},
+  };
+  int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
+  tr_thread_cleanup();
+  return r;
+}
