@@ -38,15 +38,15 @@ int tr_simp_cover(const double *A, const double *B, const double *C,
     *ub = 0;
   if (!st)
     return TR_COVER_UNDECIDED;
-  double *tb = malloc(sizeof *tb * 6 * (size_t)(t->n ? t->n : 1));
-  if (!tb) {
+  tr_simp_tprep *tp = malloc(sizeof *tp * (t->n ? t->n : 1));
+  if (!tp) {
     free(st);
     return TR_COVER_UNDECIDED;
   }
   for (uint32_t s = 0; s < t->n; s++) {
     const uint32_t *tv = t->tri + 3 * (size_t)t->ids[s];
-    tr_simp_tri_box(t->xyz + 3 * (size_t)tv[0], t->xyz + 3 * (size_t)tv[1],
-                    t->xyz + 3 * (size_t)tv[2], tb + 6 * (size_t)s, tb + 6 * (size_t)s + 3);
+    tr_simp_prepare(t->xyz + 3 * (size_t)tv[0], t->xyz + 3 * (size_t)tv[1],
+                    t->xyz + 3 * (size_t)tv[2], tp + s);
   }
   piece root = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
   st[n++] = root;
@@ -70,16 +70,13 @@ int tr_simp_cover(const double *A, const double *B, const double *C,
     unsigned any = 0;
     double best = INFINITY;
     for (uint32_t s = 0; s < t->n; s++) {
-      const uint32_t *tv = t->tri + 3 * (size_t)t->ids[s];
-      const double *a = t->xyz + 3 * (size_t)tv[0], *b = t->xyz + 3 * (size_t)tv[1],
-                   *c = t->xyz + 3 * (size_t)tv[2];
-      if (boxes_apart(lo, hi, tb + 6 * (size_t)s, tb + 6 * (size_t)s + 3, d * (1 + 0x1p-40)))
+      if (boxes_apart(lo, hi, tp[s].lo, tp[s].hi, d * (1 + 0x1p-40)))
         continue;
       unsigned mask = 0;
       double far = 0;
       for (int i = 0; i < 3; i++) {
         double u;
-        if (tr_simp_within(A, B, C, q.v[i], a, b, c, d, &u))
+        if (tr_simp_within(A, B, C, q.v[i], tp + s, d, &u))
           mask |= 1u << i, far = fmax(far, fmin(u, d));
       }
       any |= mask;
@@ -87,6 +84,24 @@ int tr_simp_cover(const double *A, const double *B, const double *C,
         best = far;
         break;
       }
+    }
+    /* Or a ball: every point of the piece is within r of its vertex 0, so the piece is
+     * within d of a target that vertex is within d - r of. Where the covering target
+     * changes (across the edges of a flat fan) this ends the cutting at pieces of about
+     * d instead of ever smaller ones. r: an upper bound, with the doubles' error. */
+    if (best > d && any == 7) {
+      double r = 0;
+      for (int i = 1; i < 3; i++) {
+        double s2 = 0;
+        for (int k = 0; k < 3; k++)
+          s2 += (x[i][k] - x[0][k]) * (x[i][k] - x[0][k]);
+        r = fmax(r, sqrt(s2));
+      }
+      double thr = (d - (r * (1 + 0x1p-50) + 4 * grow)) * (1 - 0x1p-50);
+      for (uint32_t s = 0; s < t->n && thr > 0 && best > d; s++)
+        if (!boxes_apart(lo, hi, tp[s].lo, tp[s].hi, d * (1 + 0x1p-40)) &&
+            tr_simp_within(A, B, C, q.v[0], tp + s, thr, NULL))
+          best = d;
     }
     if (best <= d) {
       worst = fmax(worst, best);
@@ -121,7 +136,7 @@ int tr_simp_cover(const double *A, const double *B, const double *C,
     st[n++] = (piece){{mid[0], mid[1], mid[2]}};
   }
   free(st);
-  free(tb);
+  free(tp);
   if (ub)
     *ub = res == TR_COVER_YES ? worst : INFINITY;
   return res;

@@ -103,54 +103,64 @@ static double near_double(const double *p, const double *a, const double *b, con
   return sqrt(r2);
 }
 
-/* The distance of p~ to the slab of the triangle across direction w: the triangle lies
- * between the planes through its lowest and highest vertex along w, whatever w is, so
- * no accuracy of w is needed, only the rounding of the dot products: each is a sum of
- * three products of differences of doubles, within 8 u |x|_1 |w|_1 of its value. */
-static double slab(const double *p, const double *a, const double *b, const double *c,
-                   const double *w)
+/* The slabs of the triangle: across direction w it lies between the planes through its
+ * lowest and highest vertex along w, whatever w is, so no accuracy of w is needed, only
+ * the rounding of the dot products: each is a sum of three products of differences of
+ * doubles, within 8 u |x|_1 |w|_1 of its value (the bounds below use 2^-48 = 32 u). The
+ * directions: (roughly) the normal and the in-plane normals of the edges. */
+void tr_simp_prepare(const double *a, const double *b, const double *c, tr_simp_tprep *t)
 {
-  double x[4][3];
+  t->a = a, t->b = b, t->c = c;
+  tr_simp_tri_box(a, b, c, t->lo, t->hi);
+  t->m = 0;
   for (int k = 0; k < 3; k++)
-    x[0][k] = p[k] - a[k], x[1][k] = b[k] - a[k], x[2][k] = c[k] - a[k];
-  double wn = norm1(w), t[3], e[3];
-  for (int i = 0; i < 3; i++)
-    t[i] = dot(x[i], w), e[i] = 0x1p-48 * norm1(x[i]) * wn;
-  double hi = fmax(0, fmax(t[1] + e[1], t[2] + e[2])) * (1 + 0x1p-50);
-  double lo = fmin(0, fmin(t[1] - e[1], t[2] - e[2])) * (1 + 0x1p-50);
-  double g = t[0] - e[0] > hi ? (t[0] - e[0] - hi) * (1 - 0x1p-50)
-             : t[0] + e[0] < lo ? (lo - t[0] - e[0]) * (1 - 0x1p-50) : 0;
-  double len = sqrt(dot(w, w)) * (1 + 0x1p-50);
-  return g > 0 && len > 0 ? g / len * (1 - 0x1p-50) : 0;
-}
-
-/* A lower bound of the distance of p~ to the triangle: the gap to its box, and to its
- * slabs across (roughly) its normal and the in-plane normals of its edges (see slab). */
-static double lower_double(const double *p, const double *a, const double *b, const double *c)
-{
-  double lo[3], hi[3], g2 = 0;
-  tr_simp_tri_box(a, b, c, lo, hi);
-  for (int k = 0; k < 3; k++) {
-    double g = lo[k] - p[k] > 0 ? lo[k] - p[k] : p[k] - hi[k] > 0 ? p[k] - hi[k] : 0;
-    g2 += g * g;
-  }
-  double best = sqrt(g2) * (1 - 0x1p-50);
-  double u[3], v[3], n[3], e[3][3];
+    t->m = fmax(t->m, fmax(fabs(t->lo[k]), fabs(t->hi[k])));
+  double u[3], v[3], *n = t->w[0];
   for (int k = 0; k < 3; k++)
     u[k] = b[k] - a[k], v[k] = c[k] - a[k];
   n[0] = u[1] * v[2] - u[2] * v[1];
   n[1] = u[2] * v[0] - u[0] * v[2];
   n[2] = u[0] * v[1] - u[1] * v[0];
-  best = fmax(best, slab(p, a, b, c, n));
   const double *q[3] = {a, b, c};
   for (int i = 0; i < 3; i++) {
-    double ed[3];
+    double ed[3], *e = t->w[i + 1];
     for (int k = 0; k < 3; k++)
       ed[k] = q[(i + 1) % 3][k] - q[i][k];
-    e[i][0] = n[1] * ed[2] - n[2] * ed[1];
-    e[i][1] = n[2] * ed[0] - n[0] * ed[2];
-    e[i][2] = n[0] * ed[1] - n[1] * ed[0];
-    best = fmax(best, slab(p, a, b, c, e[i]));
+    e[0] = n[1] * ed[2] - n[2] * ed[1];
+    e[1] = n[2] * ed[0] - n[0] * ed[2];
+    e[2] = n[0] * ed[1] - n[1] * ed[0];
+  }
+  for (int s = 0; s < 4; s++) {
+    const double *w = t->w[s];
+    t->wn1[s] = norm1(w);
+    t->wlen[s] = sqrt(dot(w, w)) * (1 + 0x1p-50);
+    double tb = dot(u, w), tc = dot(v, w);
+    double eb = 0x1p-48 * norm1(u) * t->wn1[s], ec = 0x1p-48 * norm1(v) * t->wn1[s];
+    t->hi_t[s] = fmax(0, fmax(tb + eb, tc + ec)) * (1 + 0x1p-50);
+    t->lo_t[s] = fmin(0, fmin(tb - eb, tc - ec)) * (1 + 0x1p-50);
+  }
+}
+
+/* A lower bound of the distance of p~ to the triangle: the gap to its box, then to its
+ * slabs (stopping once one is over d). */
+static double lower_double(const double *p, const tr_simp_tprep *t, double d)
+{
+  double g2 = 0;
+  for (int k = 0; k < 3; k++) {
+    double g = t->lo[k] - p[k] > 0 ? t->lo[k] - p[k] : p[k] - t->hi[k] > 0 ? p[k] - t->hi[k] : 0;
+    g2 += g * g;
+  }
+  double best = sqrt(g2) * (1 - 0x1p-50);
+  double x[3];
+  for (int k = 0; k < 3; k++)
+    x[k] = p[k] - t->a[k];
+  double xn = norm1(x);
+  for (int s = 0; s < 4 && best <= d; s++) {
+    double v = dot(x, t->w[s]), e = 0x1p-48 * xn * t->wn1[s];
+    double g = v - e > t->hi_t[s] ? (v - e - t->hi_t[s]) * (1 - 0x1p-50)
+               : v + e < t->lo_t[s] ? (t->lo_t[s] - v - e) * (1 - 0x1p-50) : 0;
+    if (g > 0 && t->wlen[s] > 0)
+      best = fmax(best, g / t->wlen[s] * (1 - 0x1p-50));
   }
   return best;
 }
@@ -265,18 +275,17 @@ static int within_exact(const double *A, const double *B, const double *C, tr_si
 }
 
 int tr_simp_within(const double *A, const double *B, const double *C, tr_simp_pt pt,
-                   const double *a, const double *b, const double *c, double d, double *ub)
+                   const tr_simp_tprep *t, double d, double *ub)
 {
   double p[3];
   tr_simp_point(A, B, C, pt, p);
-  double m = amax(A, B, C), mt = amax(a, b, c);
+  double m = amax(A, B, C), mt = t->m;
   double E = 0x1p-44 * (m > mt ? m : mt) * 2;
-  double lb = lower_double(p, a, b, c) - E;
   if (ub)
     *ub = INFINITY;
-  if (lb > d * (1 + 0x1p-50))
+  if (lower_double(p, t, d + E) - E > d * (1 + 0x1p-50))
     return 0;
-  double r = near_double(p, a, b, c);
+  double r = near_double(p, t->a, t->b, t->c);
   if (!isnan(r)) {
     double up = (r * (1 + 0x1p-50) + E) * (1 + 0x1p-50);
     if (ub)
@@ -284,5 +293,5 @@ int tr_simp_within(const double *A, const double *B, const double *C, tr_simp_pt
     if (up <= d)
       return 1;
   }
-  return within_exact(A, B, C, pt, a, b, c, d);
+  return within_exact(A, B, C, pt, t->a, t->b, t->c, d);
 }
