@@ -6,14 +6,10 @@
  * within 10 u M of p; q~, the nearest point the filter finds, a + v (b - a) + w (c - a)
  * with v, w >= 0, v + w <= 1 + 2u, within 10 u M of a point of the triangle; |p~ - q~| is
  * computed with a relative error under 4u on a value under 4 M. So the exact distance is
- * at most |p~ - q~| (1 + 2^-50) + E with E = 2^-44 M, far above the 40 u M these add up
- * to. Lower bounds: the gap between p~ and the triangle's box (exact corners), and the
- * distance of p~ to the plane, |n.(p~ - a)| / |n| with n = (b - a) x (c - a) computed in
- * doubles: each term of the dot product and the cross product is a sum of at most six
- * products of differences, so the error of n~.w~ is under 32 u |b-a|_1 |c-a|_1 |w|_1 and
- * that of |n~| under 8 u |b-a|_1 |c-a|_1; both bounds below are 2^3 to 2^5 times larger.
- * Both lower bounds are at most the distance of p~ to the triangle, which is within E of
- * p's. */
+ * at most |p~ - q~| (1 + 2^-50) + E with E = 2^-43 M, far above the 40 u M these add up
+ * to. Lower bounds: the gap between p~ and the triangle's box (exact corners), and to
+ * its slabs (tr_simp_prepare). Both are at most the distance of p~ to the triangle, which
+ * is within E of p's. */
 #include <gmp.h>
 #include <math.h>
 
