@@ -347,9 +347,9 @@ while read -r _ src path _ tris note <&3; do
   printf '%s\t' "$name" "$tris" "$note" "$a_out" "$a_cpu" "$a_st" "$a_e" "$a_f" "$a_i" "$a_tets" \
     "$a_n10" "$a_valid" "$b_out" "$b_cpu" "$b_st" "$b_e" "$b_f" "$b_i" "$b_tets" "$b_n10" \
     "$b_valid" "$target" >>"$rows"
-  a_min=$(sed -n 's/.*dihedral min \([0-9.e+-]*\).*/\1/p' "$w/tetrec.check" 2>/dev/null | head -n 1)
-  b_min=$(sed -n 's/.*dihedral min \([0-9.e+-]*\).*/\1/p' "$w/tetgen.check" 2>/dev/null | head -n 1)
-  a_bound=$(field surface_tolerance_bound "$w/tetrec.json")
+  a_min=$(sed -n 's/.*dihedral min \([0-9.e+-]*\).*/\1/p' "$w/tetrec.check" 2>/dev/null | head -n 1 || true)
+  b_min=$(sed -n 's/.*dihedral min \([0-9.e+-]*\).*/\1/p' "$w/tetgen.check" 2>/dev/null | head -n 1 || true)
+  a_bound=$(field surface_tolerance_bound "$w/tetrec.json" || true)
   printf '%s\t' "$a_r" "${a_min:--}" "${b_min:--}" >>"$rows"
   printf '%s\n' "${a_bound:--}" >>"$rows"
   if [ "$KEEP" != 1 ]; then
