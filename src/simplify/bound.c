@@ -10,6 +10,7 @@
 
 /* pieces a triangle may be cut into before its answer is "undecided" */
 #define BOUND_BUDGET (1u << 16)
+#define BOUND_MAX (1u << 24)
 
 static tr_status one_side(const double *xs, const uint32_t *ts, uint32_t ns,
                           const double *xt, const uint32_t *tt, uint32_t nt, double d,
@@ -32,7 +33,16 @@ static tr_status one_side(const double *xs, const uint32_t *ts, uint32_t ns,
       break;
     tr_simp_targets tg = {xt, tt, cand, ncand};
     double ub;
-    int r = tr_simp_cover(A, B, C, &tg, d, NULL, NULL, BOUND_BUDGET, &ub);
+    /* a triangle tiled by many small ones of the other side is proven in pieces of
+     * about d (the ball test of cover.c): room for (longest edge / d)^2 of them */
+    double l2 = 0;
+    for (int k = 0; k < 3; k++)
+      l2 = fmax(l2, fmax((A[k] - B[k]) * (A[k] - B[k]),
+                         fmax((B[k] - C[k]) * (B[k] - C[k]), (C[k] - A[k]) * (C[k] - A[k]))));
+    double want = d > 0 ? 48 * l2 / (d * d) : 0;
+    uint32_t budget = want > BOUND_MAX ? BOUND_MAX : want > BOUND_BUDGET ? (uint32_t)want
+                                                                         : BOUND_BUDGET;
+    int r = tr_simp_cover(A, B, C, &tg, d, NULL, NULL, budget, &ub);
     if (r != TR_COVER_YES) {
       *res = r;
       *bad = s;
