@@ -10,7 +10,7 @@
 
 /* pieces a triangle may be cut into before its answer is "undecided" */
 #define BOUND_BUDGET (1u << 16)
-#define BOUND_MAX (1u << 24)
+#define BOUND_MAX (1u << 20)
 
 static tr_status one_side(const double *xs, const uint32_t *ts, uint32_t ns,
                           const double *xt, const uint32_t *tt, uint32_t nt, double d,
@@ -34,7 +34,8 @@ static tr_status one_side(const double *xs, const uint32_t *ts, uint32_t ns,
     tr_simp_targets tg = {xt, tt, cand, ncand};
     double ub;
     /* a triangle tiled by many small ones of the other side is proven in pieces of
-     * about d (the ball test of cover.c): room for (longest edge / d)^2 of them */
+     * about d (the ball test of cover.c): room for (longest edge / d)^2 of them, at
+     * most 2^20 (then undecided: not proven) */
     double l2 = 0;
     for (int k = 0; k < 3; k++)
       l2 = fmax(l2, fmax((A[k] - B[k]) * (A[k] - B[k]),
