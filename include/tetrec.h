@@ -286,6 +286,14 @@ typedef struct tr_options {
    * as with 0. Not implemented yet: a solid whose boundary has vertices that are
    * rational points and no doubles (TR_ERR_UNSUPPORTED naming one). 0 (default): off */
   int resolve;
+  /* > 0: the surface may be re-triangulated before recovery (src/simplify,
+   * docs/simplify.md) so that every point of the meshed boundary lies within
+   * surface_tolerance times the input's bounding box diagonal of the input surface and
+   * every point of the input within that distance of the boundary, proven and measured
+   * (tr_stats.surface_tolerance_bound). Sharp edges, marker boundaries, open edges and
+   * segments stay chains of edges; vertices keep their input coordinates. 0 (default):
+   * the input surface exactly. Negative or not finite: TR_ERR_USAGE */
+  double surface_tolerance;
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
@@ -342,6 +350,13 @@ typedef struct tr_stats {
    * peak, the figure that says how large a mesh fits in a given memory. The command
    * measures the peak again after writing, so there it covers the whole run */
   double bytes_per_tet;
+  /* tr_options.surface_tolerance: the two-sided distance between the input surface and
+   * the simplified one, measured (an upper bound, divided by the diagonal; 0 without
+   * the option or when nothing changed), the edge collapses made and the time taken
+   * (part of the validation row of stage_seconds) */
+  double surface_tolerance_bound;
+  uint64_t surface_collapses;
+  double surface_tolerance_seconds;
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

@@ -65,6 +65,10 @@
 #   R=1.414    the radius-edge bound of quality mode, and of the check's figures
 #   TR_FLAGS="..."  more tetrec options; TG_FLAGS="..." TetGen's switches instead of the
 #              mode's
+#   TOL=EPS    tetrec meshes with --surface-tolerance EPS (issue 47, docs/simplify.md)
+#              and its output is checked with `tetrec check --surface-tolerance EPS`
+#              (the proven two-sided bound instead of exact conformity); rows.tsv then
+#              also holds the bound tetrec reports (--stats surface_tolerance_bound)
 #   TG_DETAIL=0     no untimed TetGen statistics run (see steiner above)
 #   KEEP=1     keep the output meshes (default: deleted once measured)
 #   RESULTS=dir     where the results go (default BUILD_DIR/bench-realworld-MODE, with
@@ -79,6 +83,9 @@ MODE=${2:-plain}
 R=${R:-1.414}
 TIMEOUT=${TIMEOUT:-300}
 TR_FLAGS=${TR_FLAGS:-}
+TOL=${TOL:-}
+tol_flags=()
+[ -z "$TOL" ] || tol_flags=(--surface-tolerance "$TOL")
 TG_DETAIL=${TG_DETAIL:-1}
 KEEP=${KEEP:-0}
 case $MODE in
@@ -151,8 +158,10 @@ under10() {
 # validate IN MESH LOG WHO: "yes", "yes*" or "NO" by `tetrec check` (also writes the
 # figures); why a mesh is invalid goes to the notes
 validate() {
-  if again timeout "$TIMEOUT" "$TETREC" check "$1" "$2" --quality "$R" >"$3" 2>&1; then
-    if grep -q 'rounded doubles' "$3"; then echo 'yes*'; else echo yes; fi
+  local extra=()
+  [ "$4" != tetrec ] || extra=("${tol_flags[@]}")
+  if again timeout "$TIMEOUT" "$TETREC" check "$1" "$2" --quality "$R" "${extra[@]}" >"$3" 2>&1; then
+    if grep -q 'rounded doubles\|surface are within' "$3"; then echo 'yes*'; else echo yes; fi
   else
     echo NO
     echo "$name: $4 output invalid: $(grep -m1 'error' "$3" | cut -c1-200)" >>"$notes"
@@ -179,7 +188,7 @@ notes=$OUT/notes.txt
 : >"$rows"
 {
   echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); timeout ${TIMEOUT}s; mode $MODE"
-  echo "tetrec ($TR_VERSION): mesh IN -o OUT.node --stats S.json -q ${tr_mode[*]} $TR_FLAGS"
+  echo "tetrec ($TR_VERSION): mesh IN -o OUT.node --stats S.json -q ${tr_mode[*]} ${tol_flags[*]} $TR_FLAGS"
   echo "tetgen ${TG_VERSION:-(version unknown)} $TG_FLAGS; corpus $CORPUS"
   echo "steiner: total (on edges/facets/interior); <10deg: share of tets with a dihedral angle under 10 degrees (tetrec check --quality $R on both)"
   printf '%-46s %6s | %-8s %6s %-26s %8s %7s %-4s | %-8s %6s %-26s %8s %7s %-4s | %s\n' \
@@ -238,7 +247,7 @@ while read -r _ src path _ tris note <&3; do
     tr_rc=0
     # shellcheck disable=SC2086
     again timed "$w/tetrec.time" "$TETREC" mesh "$model" -o "$w/tetrec.node" \
-      --stats "$w/tetrec.json" -q "${tr_mode[@]}" $TR_FLAGS >"$w/tetrec.log" 2>&1 || tr_rc=$?
+      --stats "$w/tetrec.json" -q "${tr_mode[@]}" "${tol_flags[@]}" $TR_FLAGS >"$w/tetrec.log" 2>&1 || tr_rc=$?
   }
   run_tetgen() {
     tg_rc=0
@@ -338,7 +347,11 @@ while read -r _ src path _ tris note <&3; do
   printf '%s\t' "$name" "$tris" "$note" "$a_out" "$a_cpu" "$a_st" "$a_e" "$a_f" "$a_i" "$a_tets" \
     "$a_n10" "$a_valid" "$b_out" "$b_cpu" "$b_st" "$b_e" "$b_f" "$b_i" "$b_tets" "$b_n10" \
     "$b_valid" "$target" >>"$rows"
-  printf '%s\n' "$a_r" >>"$rows"
+  a_min=$(sed -n 's/.*dihedral min \([0-9.e+-]*\).*/\1/p' "$w/tetrec.check" 2>/dev/null | head -n 1 || true)
+  b_min=$(sed -n 's/.*dihedral min \([0-9.e+-]*\).*/\1/p' "$w/tetgen.check" 2>/dev/null | head -n 1 || true)
+  a_bound=$(field surface_tolerance_bound "$w/tetrec.json" || true)
+  printf '%s\t' "$a_r" "${a_min:--}" "${b_min:--}" >>"$rows"
+  printf '%s\n' "${a_bound:--}" >>"$rows"
   if [ "$KEEP" != 1 ]; then
     rm -f "$w"/tetrec.node "$w"/tetrec.ele "$w"/tetrec.face "$w"/tg/*.1.* "$w"/input.*
   fi
@@ -346,7 +359,8 @@ done 3< <(awk '$1 == "file"' "$MANIFEST")
 
 # rows: 1 name 2 tris 3 note, tetrec 4 out 5 cpu 6 steiner 7 e 8 f 9 i 10 tets 11 n10
 # 12 valid, TetGen 13 out 14 cpu 15 steiner 16 e 17 f 18 i 19 tets 20 n10 21 valid, 22 target,
-# 23 tetrec's points added by refinement
+# 23 tetrec's points added by refinement, 24 tetrec's and 25 TetGen's smallest dihedral
+# angle (tetrec check), 26 the surface bound tetrec reports (TOL)
 awk -F'\t' -v absent="$absent" '
   function sh(n, t) { return t > 0 ? sprintf("%.2f%%", 100 * n / t) : "-" }
   function ratio(a, b) { return b > 0 ? sprintf("%.2fx", a / b) : "-" }
@@ -361,6 +375,9 @@ awk -F'\t' -v absent="$absent" '
     be += ($16 == "-" ? 0 : $16); bf += ($17 == "-" ? 0 : $17); bi += ($18 == "-" ? 0 : $18)
     bt += $19; bn += $20
     if ($22 == "ok") met++
+    if ($24 != "-" && $25 != "-" && $24 + 0 >= ($25 + 0 > 10 ? $25 + 0 : 10)) mindih++
+    if ($19 > 0 && $10 > 0 && $11 / $10 <= 0.5 * $20 / $19) half++
+    if ($26 != "-" && $26 + 0 > bound) bound = $26 + 0
   }
   function outcomes(o,   k, s) { s = ""; for (k in o) s = s (s == "" ? "" : ", ") o[k] " " k; return s }
   END {
@@ -369,6 +386,8 @@ awk -F'\t' -v absent="$absent" '
     printf "  tetgen: cpu %.2f s, steiner %d (%d/%d/%d), %d tets, <10deg %s\n", bc, bs, be, bf, bi, bt, sh(bn, bt)
     printf "  ratios tetrec/tetgen: cpu %s, steiner %s, tets %s\n", ratio(ac, bc), ratio(as, bs), ratio(at, bt)
     printf "  cpu target (tetrec <= max(1.5x TetGen, TetGen + 0.05 s)) met on %d of %d\n", met, n
+    printf "  smallest dihedral >= max(TetGen'"'"'s, 10 deg) on %d of %d; share <10deg <= half TetGen'"'"'s on %d of %d\n", mindih, n, half, n
+    if (bound > 0) printf "  largest surface bound tetrec reported: %.6g of the diagonal\n", bound
     printf "outcomes over the %d models run:\n  tetrec: %s; valid: %s\n  tetgen: %s; valid: %s\n", models, outcomes(ao), outcomes(av), outcomes(bo), outcomes(bv)
     if (absent) printf "%d models of the manifest are not in the corpus (notes.txt)\n", absent
   }' "$rows" | tee -a "$table"

@@ -183,7 +183,7 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
                    optimize=None, keep_edges=False, subface_quality=None,
                    refine_budget=None, refine_partial=False, spacing_radii=True, exact=False,
                    smooth=True, round_budget=None, verbose=0, progress=None, threads=0,
-                   sizing=None, resolve=False):
+                   sizing=None, resolve=False, surface_tolerance=None):
     """Tetrahedralizes the volume enclosed by a triangulated surface.
 
     points (n,3) floats and triangles (m,3) 0-based indices, or a Surface from read()
@@ -246,6 +246,10 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     tetrec.Error with status TR_ERR_CANCELLED, or the exception). Ctrl-C cancels too.
     threads: threads for the Delaunay stage, 0 (default) every core; the mesh is the
     same for any value.
+    surface_tolerance: EPS > 0, the surface may be re-triangulated (edge collapses)
+    within EPS times the bounding box diagonal of the input, both ways, proven
+    (stats["surface_tolerance_bound"] measures it); sharp edges, marker boundaries and
+    segments stay (docs/simplify.md). The mesh's boundary is then that surface.
 
     Returns a Mesh; raises tetrec.Error (.status, .code, .message) when the library
     refuses the input (open surface, self-intersection, ...).
@@ -258,7 +262,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
                                                ("optimize", optimize),
                                                ("subface_quality", subface_quality),
                                                ("refine_budget", refine_budget),
-                                               ("round_budget", round_budget))
+                                               ("round_budget", round_budget),
+                                               ("surface_tolerance", surface_tolerance))
                if value is not None}
     if keep_surface:
         options["keep_surface"] = keep_surface

@@ -149,7 +149,7 @@ static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
     "max_volume", "optimize", "keep_edges", "subface_quality", "refine_budget",
     "spacing_radii", "refine_partial", "holes", "regions", "threads", "sizing", "resolve",
-    NULL};
+    "surface_tolerance", NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
 static double positive(PyObject *value, const char *name)
@@ -221,6 +221,10 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         return -1;
       }
       opt->resolve = (int)x;
+    } else if (!strcmp(k, "surface_tolerance")) {
+      /* a fraction of the bounding box diagonal (tr_options.surface_tolerance) */
+      if ((opt->surface_tolerance = positive(value, "surface_tolerance")) < 0)
+        return -1;
     } else if (!strcmp(k, "threads")) {
       long x = PyLong_AsLong(value);
       if (x == -1 && PyErr_Occurred())
@@ -379,7 +383,8 @@ static PyObject *stats_dict(const tr_stats *s)
                 {"refine_budget_reached", s->refine_budget_reached},
                 {"tets_over_bounds", s->tets_over_bounds},
                 {"tets_dihedral_below_10_on_thin_input", s->tets_dihedral_below_10_on_thin_input},
-                {"thin_input_triangles", s->thin_input_triangles}};
+                {"thin_input_triangles", s->thin_input_triangles},
+                {"surface_collapses", s->surface_collapses}};
   const struct {
     const char *name;
     double value;
@@ -387,7 +392,9 @@ static PyObject *stats_dict(const tr_stats *s)
                {"max_dihedral", s->max_dihedral},
                {"max_radius_edge", s->max_radius_edge},
                {"double_deviation", s->double_deviation},
-               {"bytes_per_tet", s->bytes_per_tet}};
+               {"bytes_per_tet", s->bytes_per_tet},
+               {"surface_tolerance_bound", s->surface_tolerance_bound},
+               {"surface_tolerance_seconds", s->surface_tolerance_seconds}};
   size_t nc = sizeof counts / sizeof *counts, nr = sizeof reals / sizeof *reals;
   for (size_t i = 0; i < nc + nr; i++) {
     PyObject *x = i < nc ? PyLong_FromUnsignedLongLong((unsigned long long)counts[i].value)

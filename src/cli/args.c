@@ -101,6 +101,13 @@ static const struct option {
      "fails naming the point where this cannot be done; --quality\n"
      "and --max-volume then add interior points only"},
     {"-Y", NULL, C_MESH, "the same as --keep-surface (TetGen's switch)"},
+    {"--surface-tolerance", "EPS", C_MESH | C_CHECK,
+     "let the surface move within EPS (> 0) times the input's\n"
+     "bounding box diagonal, both ways, for better tets on thin\n"
+     "triangles (edge collapses; sharp edges, marker boundaries\n"
+     "and segments stay; the bound is proven and goes to --stats).\n"
+     "check: verify that bound between IN and MESH's boundary\n"
+     "instead of exact conformity"},
     {"--keep-edges", NULL, C_MESH,
      "under refinement, keep every input edge a chain of mesh\n"
      "edges (by default edges between exactly coplanar input\n"
@@ -302,6 +309,14 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
   }
   else if (!strcmp(name, "--keep-surface") || !strcmp(name, "-Y"))
     a->keep_surface = 1;
+  else if (!strcmp(name, "--surface-tolerance")) {
+    char *end;
+    double x = strtod(v, &end);
+    if (!*v || *end || !(x > 0) || !isfinite(x))
+      return tr_error(TR_ERR_USAGE, "%s needs a finite number > 0 (a fraction of the "
+                      "bounding box diagonal, e.g. 1e-3), not '%s'", name, v);
+    a->surface_tolerance = x;
+  }
   else if (!strcmp(name, "--keep-edges"))
     a->keep_edges = 1;
   else if (!strcmp(name, "--spacing-radii"))

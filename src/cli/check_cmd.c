@@ -4,6 +4,8 @@
  * as rationals), the exact conformity validator of src/mesh/conform.h and the exact
  * volume comparison with the volume enclosed by the surface IN. */
 #include <gmp.h>
+#include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -226,11 +228,23 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
   /* The full exact check first, also on doubles: Steiner points strictly inside the
    * domain (--keep-surface, suppressed surface points) are plain doubles, and then nothing
    * is left unverified. Only doubles that fail it are taken as rounded. */
-  if (st == TR_OK)
+  /* --surface-tolerance: the mesh bounds a surface near the input, not the input:
+   * links and orientation, then the two-sided bound instead of conformity */
+  double tol = bounds && bounds->size >= offsetof(tr_options, surface_tolerance) +
+                                             sizeof(double) ? bounds->surface_tolerance : 0;
+  if (st == TR_OK && tol > 0) {
+    st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, NULL);
+    if (st == TR_OK && verbose)
+      fprintf(stderr, "tetrec: check: %u tets, links and orientation are valid\n",
+              vol->ntets);
+    if (st == TR_OK)
+      st = tr_cli_check_tolerance(m, surface, vol, tol, verbose);
+  }
+  if (st == TR_OK && tol <= 0)
     st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, vol6);
-  if (st == TR_OK)
+  if (st == TR_OK && tol <= 0)
     st = conformity(m, surface, vol6, allow_open ? TR_CONF_OPEN : 0, &smoothed);
-  int rounded = st == TR_ERR_INVALID_MESH && nsteiner && !exact_file;
+  int rounded = st == TR_ERR_INVALID_MESH && nsteiner && !exact_file && tol <= 0;
   if (rounded)
     st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, NULL);
   int with_volume = !rounded && !allow_open;
@@ -248,7 +262,7 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
             "the bounding box diagonal from it%s\n", dev,
             dev > 0x1p-40 ? " (above 2^-40: write the mesh with --exact to have them exactly)"
                           : "");
-  if (st == TR_OK && verbose) {
+  if (st == TR_OK && verbose && tol <= 0) {
     if (rounded)
       fprintf(stderr, "tetrec: check: %u tets, links and orientation are valid\n", vol->ntets);
     else

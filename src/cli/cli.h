@@ -28,6 +28,7 @@ typedef struct {
   uint64_t round_budget; /* 0: the default */
   int recovery;          /* tr_options.recovery */
   int resolve;           /* tr_options.resolve: --resolve 1, --resolve-internal 2 */
+  double surface_tolerance; /* --surface-tolerance, 0: off */
 } tr_cli_args;
 
 /* Parses argv into *a: TR_ERR_USAGE with a message for an unknown or misplaced option, a
@@ -45,6 +46,13 @@ tr_status tr_cli_parse_args(int argc, char **argv, tr_cli_args *a);
  * tets over or under each bound given, on the file's doubles. */
 tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, tr_qpoint **exact,
                        int exact_file, int allow_open, int verbose, const tr_options *bounds);
+
+/* `check --surface-tolerance EPS` (check_tol.c): the two-sided bound between surface and
+ * the boundary of m (built from vol: its faces without a neighbour and vol's triangles),
+ * proven; TR_ERR_INVALID_MESH naming a triangle where it does not hold. */
+struct tr_mesh;
+tr_status tr_cli_check_tolerance(const struct tr_mesh *m, const struct tr_plc *surface,
+                                 const struct tr_plc *vol, double eps, int verbose);
 
 /* `check-surface`: prints every defect of the surface in to stdout (check_surface.c),
  * writes them to out (.vtk or .msh; may be NULL), and fails with the status of the worst

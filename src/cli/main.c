@@ -215,6 +215,7 @@ static int cmd_mesh(const tr_cli_args *a)
   if (a->optimize)
     opt.optimize = a->optimize - 1;
   opt.threads = a->threads;
+  opt.surface_tolerance = a->surface_tolerance;
   tr_stats stats;
   memset(&stats, 0, sizeof stats);
   double t0 = now();
@@ -475,6 +476,7 @@ static int cmd_check(const tr_cli_args *a)
   opt.quality_ratio = a->quality;
   opt.quality_min_dihedral = a->quality_dih;
   opt.max_volume = a->max_volume;
+  opt.surface_tolerance = a->surface_tolerance;
   if (s == TR_OK)
     s = tr_cli_check(surf, vol, exact, exact_file, a->allow_open, !a->quiet, &opt);
   for (uint32_t i = 0; exact && i < vol->npoints; i++)

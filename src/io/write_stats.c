@@ -28,12 +28,14 @@ static const field counts[] = {
     FIELD(points_added_for_quality), FIELD(tets_dihedral_below_5), FIELD(tets_dihedral_below_10),
     FIELD(points_added_for_sliver), FIELD(sliver_flips), FIELD(sliver_points_smoothed),
     FIELD(input_edges_merged), FIELD(refine_budget_reached), FIELD(tets_over_bounds),
-    FIELD(tets_dihedral_below_10_on_thin_input), FIELD(thin_input_triangles)};
+    FIELD(tets_dihedral_below_10_on_thin_input), FIELD(thin_input_triangles),
+    FIELD(surface_collapses)};
 /* double fields */
 static const field reals[] = {FIELD(total_seconds), FIELD(recovery_seconds),
                               FIELD(double_deviation), FIELD(min_dihedral),
                               FIELD(max_dihedral), FIELD(max_radius_edge),
-                              FIELD(bytes_per_tet)};
+                              FIELD(bytes_per_tet), FIELD(surface_tolerance_bound),
+                              FIELD(surface_tolerance_seconds)};
 #undef FIELD
 
 /* The message as a JSON string: quotes, backslashes and control bytes escaped. */

@@ -25,6 +25,7 @@
 #include "refine/refine_stage.h"
 #include "resolve/resolve.h"
 #include "sliver/sliver.h"
+#include "simplify/simplify.h"
 #include "smooth/smooth.h"
 
 static tr_status copy_plc(const tr_plc *in, tr_plc **out)
@@ -239,6 +240,20 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   }
   if (st == TR_OK && p->ntris == 0 && p->nsegs == 0)
     st = tr_error(TR_ERR_INPUT, "the input has no triangles to recover");
+  /* --surface-tolerance: a simplified surface within the proven bound replaces p */
+  if (st == TR_OK && opt.surface_tolerance != 0) {
+    double ts = tr_pipeline_now();
+    tr_simp_stats ss;
+    st = tr_simplify_surface(&p, opt.surface_tolerance, &opt, &ss);
+    stats->surface_tolerance_bound = ss.bound;
+    stats->surface_collapses = ss.collapses;
+    stats->surface_tolerance_seconds = tr_pipeline_now() - ts;
+    stage[TR_STAGE_VALIDATE] += stats->surface_tolerance_seconds;
+    if (st == TR_OK && opt.verbose >= 2)
+      fprintf(stderr, "tetrec: surface tolerance: %llu collapses, %u triangles left, bound "
+              "%.3g of the diagonal, %.3f s\n", (unsigned long long)ss.collapses, p->ntris,
+              ss.bound, stats->surface_tolerance_seconds);
+  }
   PROGRESS(TR_STAGE_VALIDATE, 1);
   say(&opt, TR_STAGE_VALIDATE, stage[TR_STAGE_VALIDATE]);
   say(&opt, TR_STAGE_SELFINT, stage[TR_STAGE_SELFINT]);
