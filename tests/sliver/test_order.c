@@ -1,5 +1,5 @@
 /* The tet store renumbered along a Hilbert curve before the sliver stage
- * (src/sliver/order.c, tr_mesh_permute_tets): the same tets with the same regions, links
+ * (src/sliver/order.c, renumbered in place): the same tets with the same regions, links
  * and exact volume afterwards, no free slot, and neighbours in the store close in space. */
 #include <gmp.h>
 #include <math.h>
