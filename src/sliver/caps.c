@@ -23,10 +23,15 @@
  * old ones keep their coordinates. The neighbour links are not copied (16 bytes a slot,
  * the largest part of the run's peak in this stage on CGAL's elephant at 2.1 million
  * tets): a trial changes the slots of a few cavities, and snap_restore links their old
- * tets again by their faces; only the free slots' links (the free list) are kept. */
+ * tets again by their faces; only the free slots' links (the free list) are kept. Nor
+ * are the slots' vertices, as a rule: the shape cache of the polish's context holds them
+ * (tr_sliver_shape_keys), and the trial measures without it. */
 typedef struct snap {
   uint32_t nv, nt, free_head, nfree;
-  uint32_t *tv, *region, *v2t;
+  const uint32_t *tv; /* slot t's vertices at tv + stride * t */
+  size_t stride;
+  uint32_t *tv_own; /* tv when it is a copy (no cache to lend it) */
+  uint32_t *region, *v2t;
   uint8_t *flags;
   uint32_t *free_tn; /* 5 per free slot: the slot, then its 4 links */
   uint32_t nfree_slots;
@@ -35,7 +40,7 @@ typedef struct snap {
 
 static void snap_free(snap *z)
 {
-  free(z->tv);
+  free(z->tv_own);
   free(z->region);
   free(z->v2t);
   free(z->flags);
@@ -44,9 +49,11 @@ static void snap_free(snap *z)
   memset(z, 0, sizeof *z);
 }
 
-static tr_status snap_take(const struct tr_mesh *m, const tr_subfaces *sub, snap *z)
+static tr_status snap_take(const tr_sliver_ctx *c, const tr_subfaces *sub, snap *z)
 {
+  const struct tr_mesh *m = c->m;
   memset(z, 0, sizeof *z);
+  z->tv = tr_sliver_shape_keys(c, &z->stride);
   z->nv = m->nv;
   z->nt = m->nt;
   z->free_head = m->free_head;
@@ -55,7 +62,10 @@ static tr_status snap_take(const struct tr_mesh *m, const tr_subfaces *sub, snap
   for (uint32_t t = 0; t < m->nt; t++)
     nfree += tr_tet_is_free(m, t);
   size_t nt = m->nt ? m->nt : 1, nv = m->nv ? m->nv : 1, ns = sub->n ? sub->n : 1;
-  z->tv = malloc(sizeof *z->tv * 4 * nt);
+  if (!z->tv) {
+    z->tv = z->tv_own = malloc(sizeof *z->tv * 4 * nt);
+    z->stride = 4;
+  }
   z->flags = malloc(nt);
   z->region = m->region ? malloc(sizeof *z->region * nt) : NULL;
   z->v2t = malloc(sizeof *z->v2t * nv);
@@ -67,7 +77,8 @@ static tr_status snap_take(const struct tr_mesh *m, const tr_subfaces *sub, snap
     snap_free(z);
     return tr_error(TR_ERR_NOMEM, "out of memory for a snapshot of %u tets", m->nt);
   }
-  memcpy(z->tv, m->tv, sizeof *z->tv * 4 * (size_t)m->nt);
+  if (z->tv_own)
+    memcpy(z->tv_own, m->tv, sizeof *z->tv * 4 * (size_t)m->nt);
   memcpy(z->flags, m->flags, m->nt);
   if (m->region)
     memcpy(z->region, m->region, sizeof *z->region * (size_t)m->nt);
@@ -132,7 +143,7 @@ static tr_status snap_restore(struct tr_mesh *m, tr_subfaces *sub, snap *z)
   for (uint32_t t = 0; t < z->nt && s == TR_OK; t++) {
     if (!slot_changed(m, z, t))
       continue;
-    memcpy(m->tv + 4 * (size_t)t, z->tv + 4 * (size_t)t, 4 * sizeof *z->tv);
+    memcpy(m->tv + 4 * (size_t)t, z->tv + z->stride * (size_t)t, 4 * sizeof *z->tv);
     if (tr_tet_is_free(m, t))
       continue; /* its links: below */
     for (int k = 0; k < 4; k++)
@@ -178,7 +189,7 @@ static tr_status snap_restore(struct tr_mesh *m, tr_subfaces *sub, snap *z)
 
 static int snap_real(const snap *z, uint32_t t)
 {
-  const uint32_t *v = z->tv + 4 * (size_t)t;
+  const uint32_t *v = z->tv + z->stride * (size_t)t;
   return v[0] != TR_NONE && v[3] != TR_GHOST;
 }
 
@@ -195,11 +206,11 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
   *better = 0;
   tr_vtmap old = {0};
   uint32_t key[4], tkey[4];
-  tr_sliver_tet_key(z->tv + 4 * (size_t)t, tkey);
+  tr_sliver_tet_key(z->tv + z->stride * (size_t)t, tkey);
   tr_status s = TR_OK;
   for (uint32_t u = 0; u < z->nt && s == TR_OK; u++)
     if (snap_real(z, u) && slot_changed(m, z, u)) {
-      tr_sliver_tet_key(z->tv + 4 * (size_t)u, key);
+      tr_sliver_tet_key(z->tv + z->stride * (size_t)u, key);
       s = tr_vtmap_set(&old, 4, key, u);
     }
   double newmin = INFINITY, newratio = 0;
@@ -228,11 +239,11 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
   for (uint32_t u = 0; u < z->nt && s == TR_OK; u++) {
     if (!snap_real(z, u) || !slot_changed(m, z, u))
       continue;
-    tr_sliver_tet_key(z->tv + 4 * (size_t)u, key);
+    tr_sliver_tet_key(z->tv + z->stride * (size_t)u, key);
     if (tr_vtmap_get(&old, 4, key) == TR_NONE - 1)
       continue;
     gone += !memcmp(key, tkey, sizeof key);
-    double r, q = tr_sliver_min_dihedral_at(m, z->tv + 4 * (size_t)u, TR_NONE, NULL, &r);
+    double r, q = tr_sliver_min_dihedral_at(m, z->tv + z->stride * (size_t)u, TR_NONE, NULL, &r);
     nold = q < oldmin ? 1 : nold + (q == oldmin);
     oldmin = fmin(oldmin, q);
     was = fmax(was, r);
@@ -252,12 +263,12 @@ static tr_status trial_ctx(const tr_sliver_ctx *c, const tr_subfaces *sub, uint3
                            tr_sliver_ctx *tc)
 {
   TR_CHECK(tr_sliver_ctx_init(tc, c->m, sub, NULL, 0, c->bound));
-  /* The trial measures into c's cache (lent): the old tets' entries hold, since no old
-   * vertex moves, and a cache of its own, as long as the slots, was the largest block of
-   * memory the whole run held (CGAL's elephant under -a 4e-7: 8.4 of 54 MB at the peak).
-   * Undone, the entries naming its vertices are forgotten (tr_sliver_forget_from). */
+  /* The trial measures without a cache: one of its own, as long as the slots, was the
+   * largest block of memory the whole run held (CGAL's elephant under -a 4e-7: 8.4 of
+   * 54 MB at the peak), and c's holds the snapshot's slots (snap_take). It measures
+   * only the few tets around its points, each a few times. */
   free(tc->shapes);
-  tc->shapes = c->shapes;
+  tc->shapes = NULL;
   memset(tc->movable, 0, nv0 < c->m->nv ? nv0 : c->m->nv);
   tc->insert_bound = c->insert_bound;
   tc->point_budget = c->point_budget;
@@ -270,7 +281,7 @@ static tr_status trial_ctx(const tr_sliver_ctx *c, const tr_subfaces *sub, uint3
 static int slot_changed(const struct tr_mesh *m, const snap *z, uint32_t u)
 {
   return u >= z->nt || u >= m->nt ||
-         memcmp(m->tv + 4 * (size_t)u, z->tv + 4 * (size_t)u, 4 * sizeof *z->tv);
+         memcmp(m->tv + 4 * (size_t)u, z->tv + z->stride * (size_t)u, 4 * sizeof *z->tv);
 }
 
 /* The trial's new tets under the bound get the polish's steps (a split leaves slivers
@@ -436,7 +447,7 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
     if (refused && tr_vtmap_get(refused, 3, key) != TR_VTMAP_NONE)
       continue;
     snap z;
-    s = snap_take(m, sub, &z);
+    s = snap_take(c, sub, &z);
     if (s != TR_OK)
       break;
     tr_refine_stats rs;
@@ -466,7 +477,8 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
       /* and c's measures and failed insertions: keyed by vertex ids, and no old vertex
        * moved (the polish's rounds would measure every tet and try every insertion that
        * failed again, the bulk of the cost) */
-      c->shapes = NULL; /* lent to tc, which keeps it */
+      tc.shapes = c->shapes; /* its entries of changed slots name other tets: measured again */
+      c->shapes = NULL;
       tr_vtmap f = tc.failed;
       tc.failed = c->failed;
       c->failed = f;
@@ -478,8 +490,6 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
       st->on_constraints += rs.on_segments + rs.on_facets;
       *done = 1;
     } else {
-      if (tc.shapes == c->shapes)
-        tc.shapes = NULL; /* c's, lent */
       tr_sliver_ctx_free(&tc);
       if (c->memo && c->memo->n > z.nv) /* the trial's vertex ids go to other points */
         c->memo->n = z.nv;

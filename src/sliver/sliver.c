@@ -175,6 +175,28 @@ void tr_sliver_forget_all(const tr_sliver_ctx *c)
     memset(c->shapes->e, 0xff, sizeof *c->shapes->e * (size_t)c->shapes->cap);
 }
 
+const uint32_t *tr_sliver_shape_keys(const tr_sliver_ctx *c, size_t *stride)
+{
+  const struct tr_mesh *m = c->m;
+  struct tr_sliver_shapes *S = c->shapes;
+  if (!S || S->cap < m->nt)
+    return NULL;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)t;
+    uint32_t *k = S->e[t].v;
+    if (!memcmp(k, tv, sizeof S->e[t].v))
+      continue;
+    if (tr_tet_is_real(m, t))
+      tr_sliver_tet_min(c, t, NULL); /* measured again: the same double */
+    else if (tv[0] == TR_NONE || tv[1] == TR_NONE || tv[2] == TR_NONE || tv[3] == TR_NONE)
+      memcpy(k, tv, sizeof S->e[t].v); /* an entry that holds nothing */
+    else
+      return NULL; /* a ghost tet: an entry with its ids would claim a measure */
+  }
+  *stride = sizeof *S->e / sizeof *S->e[0].v;
+  return S->e[0].v;
+}
+
 void tr_sliver_ctx_free(tr_sliver_ctx *c)
 {
   tr_vtmap_free(&c->faces);
