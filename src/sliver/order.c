@@ -25,7 +25,10 @@ static uint32_t grid(double x, double lo, double span)
 
 /* Slot t's content (tets, neighbours, flags, region) to slot newid[t], in place: newid
  * is a permutation of [0, m->nt), which this turns into the identity. Each swap puts one
- * slot's content where it belongs, so at most nt swaps in all. */
+ * slot's content where it belongs, so at most nt swaps in all. The swaps cost time: on
+ * elephant -a 4e-8 (2.2 million slots) the sort took 0.82 s, against 0.52 s with a
+ * second store; a copy of one array at a time (freed and trimmed before the next) was
+ * as fast but left the peak at 301 MB, against 294 MB in place. */
 static void permute_in_place(struct tr_mesh *m, uint32_t *newid)
 {
   for (uint32_t t = 0; t < m->nt; t++)
