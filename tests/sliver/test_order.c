@@ -174,6 +174,11 @@ static void the_shape_cache_keys_are_a_copy_of_the_tet_store(void)
          tr_last_error());
   size_t stride = 0;
   EXPECT(!tr_sliver_shape_keys(&c, &stride), "keys of a mesh with ghost tets");
+  for (uint32_t t = 0; t < m->nt; t++) /* every real slot measured */
+    if (tr_tet_is_real(m, t))
+      tr_sliver_tet_min(&c, t, NULL);
+  punch_holes(m); /* then a third of the tets moved, their slots freed */
+  EXPECT(m->nfree > 0, "no free slot");
   for (uint32_t t = 0; t < m->nt; t++) /* the ghosts out, the hull faces unlinked */
     if (!tr_tet_is_free(m, t) && tr_tet_is_ghost(m, t)) {
       uint32_t n = m->tn[4 * (size_t)t + 3];
@@ -184,16 +189,6 @@ static void the_shape_cache_keys_are_a_copy_of_the_tet_store(void)
   for (uint32_t t = 0; t < m->nt; t++)
     if (!tr_tet_is_free(m, t) && tr_tet_is_ghost(m, t))
       tr_tet_free(m, t);
-  for (uint32_t v = 0; v < m->nv; v++)
-    m->v2t[v] = TR_NONE;
-  for (uint32_t t = 0; t < m->nt; t++)
-    for (int k = 0; k < 4 && !tr_tet_is_free(m, t); k++)
-      m->v2t[m->tv[4 * (size_t)t + k]] = t;
-  for (uint32_t t = 0; t < m->nt; t++) /* every real slot measured */
-    if (tr_tet_is_real(m, t))
-      tr_sliver_tet_min(&c, t, NULL);
-  punch_holes(m); /* then a third of the tets moved, their slots freed */
-  EXPECT(m->nfree > 0, "no free slot");
   const uint32_t *k = tr_sliver_shape_keys(&c, &stride);
   EXPECT(k != NULL, "no keys on a mesh without ghosts");
   for (uint32_t t = 0; k && t < m->nt; t++) {
