@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/memtrim.h"
 #include "refine/quality.h"
 #include "refine/refine_stage.h"
 #include "refine/sizing.h"
@@ -214,6 +215,9 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   free(bound);
   tr_sizing_free(&field);
   free(vh);
+  /* refinement's queues and scratch are gone: their pages back to the system before
+   * the sliver stage allocates (core/memtrim.h) */
+  tr_release_free_memory();
   return s;
 }
 

@@ -123,23 +123,29 @@ struct tr_sliver_shapes {
   uint32_t cap;
 };
 
+/* S's entries up to slot t at least (and m->nt), empty ones added; left as they were
+ * when out of memory */
+static void shapes_grow(struct tr_sliver_shapes *S, uint32_t t, uint32_t nt)
+{
+  uint32_t cap = S->cap ? S->cap : 1024;
+  while (cap <= t && cap < UINT32_MAX / 2)
+    cap *= 2;
+  if (cap < nt)
+    cap = nt;
+  sl_shape *e = realloc(S->e, sizeof *e * (size_t)cap);
+  if (e) {
+    memset(e + S->cap, 0xff, sizeof *e * (size_t)(cap - S->cap));
+    S->e = e;
+    S->cap = cap;
+  }
+}
+
 double tr_sliver_tet_min(const tr_sliver_ctx *c, uint32_t t, double *ratio)
 {
   const uint32_t *tv = c->m->tv + 4 * (size_t)t;
   struct tr_sliver_shapes *S = c->shapes;
-  if (S && t >= S->cap) {
-    uint32_t cap = S->cap ? S->cap : 1024;
-    while (cap <= t && cap < UINT32_MAX / 2)
-      cap *= 2;
-    if (cap < c->m->nt)
-      cap = c->m->nt;
-    sl_shape *e = realloc(S->e, sizeof *e * (size_t)cap);
-    if (e) {
-      memset(e + S->cap, 0xff, sizeof *e * (size_t)(cap - S->cap));
-      S->e = e;
-      S->cap = cap;
-    }
-  }
+  if (S && t >= S->cap)
+    shapes_grow(S, t, c->m->nt);
   if (!S || t >= S->cap) /* no memory for the cache: measured every time */
     return tr_sliver_min_dihedral_at(c->m, tv, TR_NONE, NULL, ratio);
   sl_shape *e = S->e + t;
@@ -173,6 +179,30 @@ void tr_sliver_forget_all(const tr_sliver_ctx *c)
 {
   if (c->shapes && c->shapes->cap)
     memset(c->shapes->e, 0xff, sizeof *c->shapes->e * (size_t)c->shapes->cap);
+}
+
+const uint32_t *tr_sliver_shape_keys(const tr_sliver_ctx *c, size_t *stride)
+{
+  const struct tr_mesh *m = c->m;
+  struct tr_sliver_shapes *S = c->shapes;
+  if (S && m->nt && S->cap < m->nt)
+    shapes_grow(S, m->nt - 1, m->nt);
+  if (!S || S->cap < m->nt)
+    return NULL;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)t;
+    uint32_t *k = S->e[t].v;
+    if (!memcmp(k, tv, sizeof S->e[t].v))
+      continue;
+    if (tr_tet_is_real(m, t))
+      tr_sliver_tet_min(c, t, NULL); /* measured again: the same double */
+    else if (tv[0] == TR_NONE || tv[1] == TR_NONE || tv[2] == TR_NONE || tv[3] == TR_NONE)
+      memcpy(k, tv, sizeof S->e[t].v); /* an entry that holds nothing */
+    else
+      return NULL; /* a ghost tet: an entry with its ids would claim a measure */
+  }
+  *stride = sizeof *S->e / sizeof *S->e[0].v;
+  return S->e[0].v;
 }
 
 void tr_sliver_ctx_free(tr_sliver_ctx *c)

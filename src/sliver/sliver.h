@@ -200,6 +200,12 @@ void tr_sliver_forget_all(const tr_sliver_ctx *c);
 /* Forgets the entries that name a vertex id from nv on: ids given back (a trial undone)
  * go to other points. */
 void tr_sliver_forget_from(const tr_sliver_ctx *c, uint32_t nv);
+/* The cache's vertex ids as a copy of the tet store: afterwards slot t's entry holds
+ * m->tv[4t..4t+4) at key + stride * t, for every t < m->nt (stale entries are measured
+ * again, free slots' entries set to their ids), until the next call that measures on c.
+ * NULL when c has no cache (or no memory to extend it to every slot), or the mesh has
+ * ghost tets. caps.c's trials use it as their snapshot of the slots. */
+const uint32_t *tr_sliver_shape_keys(const tr_sliver_ctx *c, size_t *stride);
 
 /* 1 iff tet p (positive, exact points; vertex v at the double x when v is one of them) of
  * region `region` keeps c->keep: its exact volume at most the region's bound, and its ratio

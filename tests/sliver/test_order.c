@@ -1,5 +1,5 @@
 /* The tet store renumbered along a Hilbert curve before the sliver stage
- * (src/sliver/order.c, tr_mesh_permute_tets): the same tets with the same regions, links
+ * (src/sliver/order.c, renumbered in place): the same tets with the same regions, links
  * and exact volume afterwards, no free slot, and neighbours in the store close in space. */
 #include <gmp.h>
 #include <math.h>
@@ -161,10 +161,54 @@ static void the_sort_keeps_the_mesh_and_brings_neighbours_together(void)
   tr_mesh_destroy(m);
 }
 
+/* The cap trials' snapshot (caps.c): after tr_sliver_shape_keys the shape cache's entry
+ * of every slot holds that slot's vertices, the free ones and the ones whose tets moved
+ * since they were measured included, and a real slot's measure is the fresh one. On a
+ * mesh with ghost tets there is none (an entry with a ghost's ids would claim a measure). */
+static void the_shape_cache_keys_are_a_copy_of_the_tet_store(void)
+{
+  tr_mesh *m = mesh_with_holes();
+  tr_subfaces none = {0, NULL, NULL};
+  tr_sliver_ctx c;
+  EXPECT(tr_sliver_ctx_init(&c, m, &none, NULL, 8, TR_SLIVER_BOUND) == TR_OK, "ctx: %s",
+         tr_last_error());
+  size_t stride = 0;
+  EXPECT(!tr_sliver_shape_keys(&c, &stride), "keys of a mesh with ghost tets");
+  for (uint32_t t = 0; t < m->nt; t++) /* every real slot measured */
+    if (tr_tet_is_real(m, t))
+      tr_sliver_tet_min(&c, t, NULL);
+  punch_holes(m); /* then a third of the tets moved, their slots freed */
+  EXPECT(m->nfree > 0, "no free slot");
+  for (uint32_t t = 0; t < m->nt; t++) /* the ghosts out, the hull faces unlinked */
+    if (!tr_tet_is_free(m, t) && tr_tet_is_ghost(m, t)) {
+      uint32_t n = m->tn[4 * (size_t)t + 3];
+      if (n != TR_NONE)
+        m->tn[n] = TR_NONE;
+      m->tn[4 * (size_t)t + 3] = TR_NONE;
+    }
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (!tr_tet_is_free(m, t) && tr_tet_is_ghost(m, t))
+      tr_tet_free(m, t);
+  const uint32_t *k = tr_sliver_shape_keys(&c, &stride);
+  EXPECT(k != NULL, "no keys on a mesh without ghosts");
+  for (uint32_t t = 0; k && t < m->nt; t++) {
+    EXPECT(!memcmp(k + stride * t, m->tv + 4 * (size_t)t, 4 * sizeof *k),
+           "slot %u: the entry's ids are not the slot's", t);
+    if (tr_tet_is_real(m, t)) {
+      const uint32_t *v = m->tv + 4 * (size_t)t;
+      double q = tr_sliver_min_dihedral(m, v[0], v[1], v[2], v[3]);
+      EXPECT(tr_sliver_tet_min(&c, t, NULL) == q, "slot %u: a stale measure", t);
+    }
+  }
+  tr_sliver_ctx_free(&c);
+  tr_mesh_destroy(m);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
       {"sort", the_sort_keeps_the_mesh_and_brings_neighbours_together, NULL},
+      {"keys", the_shape_cache_keys_are_a_copy_of_the_tet_store, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
