@@ -173,25 +173,6 @@ static void warn_nonplanar(const tr_cli_args *a, const tr_plc *plc)
   free(np);
 }
 
-/* --resolve: *plc replaced by the boundary of its solid (src/resolve/surface.c), before
- * validation, which would refuse the self-intersections it resolves. */
-static tr_status resolve_input(const tr_cli_args *a, tr_plc **plc)
-{
-  tr_plc *r = NULL;
-  tr_resolve_info ri;
-  TR_CHECK(tr_resolve_plc(*plc, a->resolve, &r, &ri));
-  if (a->verbose)
-    fprintf(stderr, "tetrec: resolve: %llu improper pairs, %u pieces, %u on the boundary, %u "
-            "internal, %u new vertices on it, %u connected parts%s, %.3f s\n",
-            (unsigned long long)ri.npairs, ri.npieces, ri.nkept, ri.ninternal, ri.nnew,
-            ri.ncomponents, ri.identity ? ": the input as given" : "", ri.seconds);
-  if (r) {
-    tr_plc_destroy(*plc);
-    *plc = r;
-  }
-  return TR_OK;
-}
-
 static int cmd_mesh(const tr_cli_args *a)
 {
   tr_options opt;
@@ -244,7 +225,7 @@ static int cmd_mesh(const tr_cli_args *a)
     s = tr_read_mtr_file(a->sizing, plc->npoints, &plc->vsize);
   if (s == TR_OK && a->resolve) {
     progress("resolving", a->in);
-    s = resolve_input(a, &plc);
+    s = tr_resolve_replace(&plc, a->resolve, a->verbose);
   }
   if (s == TR_OK) {
     warn_nonplanar(a, plc);
@@ -450,7 +431,7 @@ static int cmd_check(const tr_cli_args *a)
   opt.allow_open = a->allow_open;
   tr_status s = tr_plc_read(a->in, &surf);
   if (s == TR_OK && a->resolve) /* the surface the mesh was made for */
-    s = resolve_input(a, &surf);
+    s = tr_resolve_replace(&surf, a->resolve, a->verbose);
   if (s == TR_OK) {
     warn_nonplanar(a, surf);
     s = tr_plc_validate(surf, &opt);

@@ -169,25 +169,6 @@ static tr_status suppress(struct tr_mesh *m, tr_subfaces *sub, const tr_plc *p,
   return st;
 }
 
-/* --resolve (tr_options.resolve): *p replaced by the boundary of its solid, unless it
- * bounds it as given (src/resolve/surface.c). */
-static tr_status resolve(tr_plc **p, const tr_options *opt)
-{
-  tr_plc *r = NULL;
-  tr_resolve_info ri;
-  TR_CHECK(tr_resolve_plc(*p, opt->resolve, &r, &ri));
-  if (opt->verbose >= 2)
-    fprintf(stderr, "tetrec: resolve: %llu improper pairs, %u pieces, %u on the boundary, %u "
-            "internal, %u new vertices on it, %u connected parts%s, %.3f s\n",
-            (unsigned long long)ri.npairs, ri.npieces, ri.nkept, ri.ninternal, ri.nnew,
-            ri.ncomponents, ri.identity ? ": the input as given" : "", ri.seconds);
-  if (r) {
-    tr_plc_destroy(*p);
-    *p = r;
-  }
-  return TR_OK;
-}
-
 tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh **out,
                             tr_stats *statsout, tr_plc **used, unsigned flags)
 {
@@ -223,7 +204,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   if (st == TR_OK)
     st = attach_sizing(p, &opt);
   if (st == TR_OK && opt.resolve)
-    st = resolve(&p, &opt);
+    st = tr_resolve_replace(&p, opt.resolve, opt.verbose >= 2);
   /* Validation works on a copy: the caller's PLC is const. One the caller validated
    * (tetrec mesh does, to print its report) is not validated twice, unless it was
    * validated as open and this call wants a closed surface. */

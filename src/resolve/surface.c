@@ -9,6 +9,7 @@
  * have to enter the mesh as an exact Steiner point (the plan in docs/resolve.md); until
  * then that is a clear TR_ERR_UNSUPPORTED naming it, never a rounded surface. */
 #define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -202,4 +203,21 @@ done:
   tr_arrangement_free(&arr);
   info->seconds = now() - c0;
   return st;
+}
+
+tr_status tr_resolve_replace(struct tr_plc **p, int mode, int report)
+{
+  struct tr_plc *r = NULL;
+  tr_resolve_info ri;
+  TR_CHECK(tr_resolve_plc(*p, mode, &r, &ri));
+  if (report)
+    fprintf(stderr, "tetrec: resolve: %llu improper pairs, %u pieces, %u on the boundary, %u "
+            "internal, %u new vertices on it, %u connected parts%s, %.3f s\n",
+            (unsigned long long)ri.npairs, ri.npieces, ri.nkept, ri.ninternal, ri.nnew,
+            ri.ncomponents, ri.identity ? ": the input as given" : "", ri.seconds);
+  if (r) {
+    tr_plc_destroy(*p);
+    *p = r;
+  }
+  return TR_OK;
 }

@@ -14,7 +14,9 @@
 
 #include <gmp.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "classify.h"
 #include "core/plc.h"
@@ -105,6 +107,30 @@ static int tc_cmp_lox(const void *ctx, uint32_t x, uint32_t y)
 {
   const double *b = ctx;
   return (b[6 * (size_t)x] > b[6 * (size_t)y]) - (b[6 * (size_t)x] < b[6 * (size_t)y]);
+}
+
+/* The soup of tests/data/resolve_cube.off and resolve_cube_moved.off (a unit cube and
+ * the same moved by (0.5, 0.5, 0.5)): 16 points into xyz, 24 triangles into tris, the
+ * second cube's after the first's. 0 when a file cannot be read. */
+static inline int tc_two_cubes(const char *data, double xyz[48], uint32_t tris[72])
+{
+  char a[1024], b[1024];
+  snprintf(a, sizeof a, "%s/resolve_cube.off", data);
+  snprintf(b, sizeof b, "%s/resolve_cube_moved.off", data);
+  struct tr_plc *pa = NULL, *pb = NULL;
+  int ok = tr_plc_read(a, &pa) == TR_OK && tr_plc_read(b, &pb) == TR_OK;
+  if (ok) {
+    memcpy(xyz, pa->xyz, 24 * sizeof *xyz);
+    memcpy(xyz + 24, pb->xyz, 24 * sizeof *xyz);
+    memcpy(tris, pa->tris, 36 * sizeof *tris);
+    for (int i = 0; i < 36; i++)
+      tris[36 + i] = pb->tris[i] + 8;
+  }
+  if (pa)
+    tr_plc_destroy(pa);
+  if (pb)
+    tr_plc_destroy(pb);
+  return ok;
 }
 
 /* Checks every property above; returns the number of violations (also counted in

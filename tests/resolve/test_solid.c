@@ -143,21 +143,9 @@ static void t_one(void)
  * by one ulp more (u = 0.5 + 2^-53): its far corner 1 + u rounds to 1.5. */
 static void t_cubes(const char *data)
 {
-  char a[1024], b[1024];
-  snprintf(a, sizeof a, "%s/resolve_cube.off", data);
-  snprintf(b, sizeof b, "%s/resolve_cube_moved.off", data);
-  tr_plc *pa, *pb;
-  EXPECT(tr_plc_read(a, &pa) == TR_OK && tr_plc_read(b, &pb) == TR_OK, "read: %s",
-         tr_last_error());
   double xyz[48];
   uint32_t tris[72];
-  memcpy(xyz, pa->xyz, 24 * sizeof *xyz);
-  memcpy(xyz + 24, pb->xyz, 24 * sizeof *xyz);
-  memcpy(tris, pa->tris, 36 * sizeof *tris);
-  for (int i = 0; i < 36; i++)
-    tris[36 + i] = pb->tris[i] + 8;
-  tr_plc_destroy(pa);
-  tr_plc_destroy(pb);
+  EXPECT(tc_two_cubes(data, xyz, tris), "read: %s", tr_last_error());
   expect_solid("cubes", xyz, 16, tris, 24, 0, 36, 0, "45/4", NULL);
   expect_solid("cubes_internal", xyz, 16, tris, 24, 1, 36, 12, "45/4", "3/4");
   double u = nextafter(0.5, 1), off[3] = {u, u, u}, zero[3] = {0, 0, 0};
