@@ -1,6 +1,6 @@
 """surface_tolerance (docs/simplify.md): the surface may move within EPS times the
 bounding box diagonal, both ways, proven. A cube whose sides are fans around raised
-centres: the centres go, the reported bound is within EPS, every tet is positive exactly,
+points near a corner: those points go, the reported bound is within EPS, every tet is positive exactly,
 every vertex of the mesh's boundary is an input point (collapses keep coordinates), and
 bad values raise."""
 from fractions import Fraction
@@ -13,15 +13,17 @@ from conftest import cube
 from exact import det, frac_points
 
 
-def bumped_fan_cube(bump=1e-4):
-    """The unit cube, each side four triangles around its centre raised by bump."""
+def bumped_fan_cube(bump=1e-4, near=0.04):
+    """The unit cube, each side four triangles around a point raised by bump, `near` of the
+    way from a corner to the side's centre: two of its triangles have angles of a degree or
+    so, which the collapse of that point into the corner removes."""
     pts, tris = cube()
     quads = [(0, 4, 6, 2), (1, 3, 7, 5), (0, 1, 5, 4), (2, 6, 7, 3), (0, 2, 3, 1),
              (4, 5, 7, 6)]
     pts = [list(p) for p in pts]
     out = []
     for q in quads:
-        c = np.mean([pts[i] for i in q], axis=0)
+        c = np.array(pts[q[0]]) + near * (np.mean([pts[i] for i in q], axis=0) - pts[q[0]])
         n = np.cross(np.array(pts[q[1]]) - pts[q[0]], np.array(pts[q[2]]) - pts[q[0]])
         c = c + bump * n / np.linalg.norm(n)
         pts.append(list(c))
