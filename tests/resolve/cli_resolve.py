@@ -5,6 +5,7 @@ cubes refused without it (exit 7), meshed with it and validated by `check --reso
 --resolve-internal; a valid file gives the same bytes with and without it; an open box
 exits 6 naming the edge; a rational corner of the union exits 11.
 Usage: cli_resolve.py TETREC tests/data"""
+import json
 import os
 import subprocess
 import sys
@@ -55,6 +56,19 @@ with tempfile.TemporaryDirectory() as d:
     # without --resolve, check validates the soup itself and refuses it
     rc, _, err = run(["check", "two.off", "r.mesh"], d)
     expect(rc == 7, f"check without --resolve: exit {rc}: {err}")
+    # --surface-tolerance composes: the resolved surface is the one simplified, and check
+    # proves the bound against it
+    rc, _, err = run(["mesh", "two.off", "--resolve", "--surface-tolerance", "1e-3",
+                      "--quality", "1.414", "-o", "s.mesh", "--stats", "s.json"], d)
+    expect(rc == 0, f"mesh --resolve --surface-tolerance: exit {rc}: {err}")
+    if rc == 0:
+        st = json.load(open(os.path.join(d, "s.json")))
+        expect(0 <= st["surface_tolerance_bound"] <= 1e-3, f"bound {st['surface_tolerance_bound']}")
+        rc, out, err = run(["check", "--resolve", "--surface-tolerance", "1e-3", "two.off",
+                            "s.mesh"], d)
+        # under the tolerance check proves the bound, not exact conformity
+        expect(rc == 0 and "links and orientation are valid" in err and "proven" in err,
+               f"check --resolve --surface-tolerance: exit {rc}: {out}{err}")
     write_off(os.path.join(d, "one.off"), pa, ta)
     # a valid input: the same bytes with and without --resolve
     for args in ([], ["--quality", "1.414"]):
