@@ -330,10 +330,6 @@ tr_status tr_mesh_replace_open(struct tr_mesh *m, const uint32_t *old, uint32_t 
 /* ---- export ---- */
 /* Number of live non-ghost tets (O(slots)). */
 uint32_t tr_mesh_count_real(const struct tr_mesh *m);
-/* The store renumbered (reorder.c): new slot i holds old slot order[i] (n live tets, each
- * once, every live tet among them), neighbours, flags, regions and v2t follow; free
- * slots dropped. */
-tr_status tr_mesh_permute_tets(struct tr_mesh *m, const uint32_t *order, uint32_t n);
 /* The real tets as a compact malloc'ed array of 4 * *ntets vertex ids, in slot order. */
 tr_status tr_mesh_export_tets(const struct tr_mesh *m, uint32_t **tets, uint32_t *ntets);
 
