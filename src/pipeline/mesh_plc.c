@@ -150,16 +150,7 @@ static void read_options(const tr_options *in, tr_options *opt)
 static tr_status exact_modes(const tr_plc *p, const tr_options *opt)
 {
   const char *mode = NULL;
-  int region_bounds = 0;
-  for (uint32_t i = 0; i < p->nregions; i++)
-    region_bounds |= p->region_maxvol[i] > 0;
-  if (opt->keep_surface)
-    mode = "--keep-surface";
-  else if (opt->quality_ratio != 0 || opt->quality_min_dihedral != 0)
-    mode = "quality refinement (--quality)";
-  else if (opt->max_volume != 0 || region_bounds)
-    mode = "a volume bound (--max-volume, region volumes)";
-  else if (p->vsize)
+  if (p->vsize)
     mode = "a size field (--sizing)";
   else if (opt->surface_tolerance != 0)
     mode = "--surface-tolerance";

@@ -4,8 +4,8 @@ cubes refused without it (exit 7), meshed with it and validated by `check --reso
 (exact conformity to the resolved surface, volume equal to the union's), also with
 --resolve-internal; a valid file gives the same bytes with and without it; an open box
 exits 6 naming the edge; a union with rational corners meshes (exactly with --exact,
-checked; the same bytes twice and with 1 and 2 threads), and exits 11 naming the mode
-under --keep-surface and --quality.
+checked; the same bytes twice and with 1 and 2 threads; also --keep-surface and
+--quality), and exits 11 naming the mode under --surface-tolerance.
 Usage: cli_resolve.py TETREC tests/data"""
 import json
 import os
@@ -112,11 +112,18 @@ with tempfile.TemporaryDirectory() as d:
     expect(rc == 0 and "rational corners read as rounded doubles" in err and
            "links and orientation are valid" in err,
            f"check --resolve of the rounded mesh: exit {rc}: {err}")
+    # --keep-surface and quality refinement on them, proved exactly
+    for args in (["--keep-surface"], ["--quality", "1.414"]):
+        rc, _, err = run(["mesh", "third.off", "--resolve", "--exact", "-o", "k.node"] + args,
+                         d)
+        expect(rc == 0, f"rational corners {args}: exit {rc}: {err}")
+        rc, _, err = run(["check", "--resolve", "third.off", "k.node", "-v"], d)
+        expect(rc == 0 and "conforms exactly" in err and "volume equals" in err,
+               f"check --resolve of the exact mesh {args}: exit {rc}: {err}")
     # a mode not done on exact corners yet: exit 11 naming it
-    for args, name in ((["--keep-surface"], "--keep-surface"),
-                       (["--quality", "1.414"], "--quality")):
-        rc, _, err = run(["mesh", "third.off", "--resolve", "-o", "k.mesh"] + args, d)
-        expect(rc == 11 and name in err and "not implemented yet" in err,
-               f"rational corners {args}: exit {rc}: {err}")
+    rc, _, err = run(["mesh", "third.off", "--resolve", "-o", "k.mesh", "--surface-tolerance",
+                      "1e-3"], d)
+    expect(rc == 11 and "--surface-tolerance" in err and "not implemented yet" in err,
+           f"rational corners --surface-tolerance: exit {rc}: {err}")
 
 sys.exit(1 if fails else 0)

@@ -171,8 +171,9 @@ static void t_cubes(const char *data)
 }
 
 /* A soup whose union has rational corners: the resolved surface carries nxq of them
- * (nxq = 0: some), meshed plainly and with internal facets, validated exactly; the same
- * bytes twice and with 1 and 2 threads; modes not done on exact corners exit 11 by name. */
+ * (nxq = 0: some), meshed plainly, with internal facets, --keep-surface, quality
+ * refinement and a volume bound, each validated exactly; the same bytes twice and with 1
+ * and 2 threads (also refined); modes not done on exact corners exit 11 by name. */
 static void rational_cases(const char *name, const tr_plc *p, uint32_t nxq)
 {
   char n[128];
@@ -212,24 +213,44 @@ static void rational_cases(const char *name, const tr_plc *p, uint32_t nxq)
   snprintf(n, sizeof n, "%s_internal", name);
   mesh_resolved(n, p, &opt);
   opt.resolve = 1;
+  opt.keep_surface = 1;
+  snprintf(n, sizeof n, "%s_keep_surface", name);
+  mesh_resolved(n, p, &opt);
+  opt.keep_surface = 0;
+  opt.quality_ratio = 1.414;
+  snprintf(n, sizeof n, "%s_quality", name);
+  mesh_resolved(n, p, &opt);
+  opt.quality_ratio = 0;
+  opt.max_volume = 0.01;
+  snprintf(n, sizeof n, "%s_max_volume", name);
+  mesh_resolved(n, p, &opt);
+  opt.quality_ratio = 1.414;
   tr_options o[2] = {opt, opt};
+  snprintf(n, sizeof n, "%s_quality_threads_1_and_2", name);
+  o[0].threads = 1;
+  o[1].threads = 2;
+  same_bytes(n, p, o);
+  opt.quality_ratio = 0;
+  opt.max_volume = 0;
+  o[0] = o[1] = opt;
   snprintf(n, sizeof n, "%s_twice", name);
   same_bytes(n, p, o);
   o[0].threads = 1;
   o[1].threads = 2;
   snprintf(n, sizeof n, "%s_threads_1_and_2", name);
   same_bytes(n, p, o);
-  const char *mode[] = {"--keep-surface", "--quality", "--max-volume", "--surface-tolerance"};
-  for (int k = 0; k < 4; k++) {
+  const char *mode[] = {"--sizing", "--surface-tolerance"};
+  double *h = malloc(sizeof *h * p->npoints);
+  for (int k = 0; k < 2; k++) {
     tr_options x = opt;
-    if (k == 0)
-      x.keep_surface = 1;
-    else if (k == 1)
-      x.quality_ratio = 1.414;
-    else if (k == 2)
-      x.max_volume = 0.01;
-    else
+    if (k == 0) {
+      for (uint32_t i = 0; i < p->npoints; i++)
+        h[i] = 0.25;
+      x.sizing = h;
+      x.nsizing = p->npoints;
+    } else {
       x.surface_tolerance = 1e-3;
+    }
     tr_mesh *m = NULL;
     tr_status st = tr_mesh_plc(p, &x, &m, NULL);
     EXPECT(st == TR_ERR_UNSUPPORTED && !m && strstr(tr_last_error(), mode[k]) &&
@@ -237,6 +258,7 @@ static void rational_cases(const char *name, const tr_plc *p, uint32_t nxq)
            "%s %s: %s: %s", name, mode[k], tr_status_name(st), tr_last_error());
     tr_mesh_destroy(m);
   }
+  free(h);
 }
 
 /* A tetrahedron piercing the unit cube's bottom: its edge from (0.2, 0.3, -1) to
