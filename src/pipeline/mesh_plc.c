@@ -150,9 +150,7 @@ static void read_options(const tr_options *in, tr_options *opt)
 static tr_status exact_modes(const tr_plc *p, const tr_options *opt)
 {
   const char *mode = NULL;
-  if (p->vsize)
-    mode = "a size field (--sizing)";
-  else if (opt->surface_tolerance != 0)
+  if (opt->surface_tolerance != 0)
     mode = "--surface-tolerance";
   else if (p->nholes || p->nregions)
     mode = "hole and region points";

@@ -172,7 +172,7 @@ static void t_cubes(const char *data)
 
 /* A soup whose union has rational corners: the resolved surface carries nxq of them
  * (nxq = 0: some), meshed plainly, with internal facets, --keep-surface, quality
- * refinement and a volume bound, each validated exactly; the same bytes twice and with 1
+ * refinement, a volume bound and a size field, each validated exactly; the same bytes twice and with 1
  * and 2 threads (also refined); modes not done on exact corners exit 11 by name. */
 static void rational_cases(const char *name, const tr_plc *p, uint32_t nxq)
 {
@@ -239,18 +239,20 @@ static void rational_cases(const char *name, const tr_plc *p, uint32_t nxq)
   o[1].threads = 2;
   snprintf(n, sizeof n, "%s_threads_1_and_2", name);
   same_bytes(n, p, o);
-  const char *mode[] = {"--sizing", "--surface-tolerance"};
+  /* a size field on the input points; the exact corners have none (no bound there) */
   double *h = malloc(sizeof *h * p->npoints);
-  for (int k = 0; k < 2; k++) {
+  for (uint32_t i = 0; i < p->npoints; i++)
+    h[i] = 0.25;
+  opt.sizing = h;
+  opt.nsizing = p->npoints;
+  snprintf(n, sizeof n, "%s_sizing", name);
+  mesh_resolved(n, p, &opt);
+  opt.sizing = NULL;
+  opt.nsizing = 0;
+  const char *mode[] = {"--surface-tolerance"};
+  for (int k = 0; k < 1; k++) {
     tr_options x = opt;
-    if (k == 0) {
-      for (uint32_t i = 0; i < p->npoints; i++)
-        h[i] = 0.25;
-      x.sizing = h;
-      x.nsizing = p->npoints;
-    } else {
-      x.surface_tolerance = 1e-3;
-    }
+    x.surface_tolerance = 1e-3;
     tr_mesh *m = NULL;
     tr_status st = tr_mesh_plc(p, &x, &m, NULL);
     EXPECT(st == TR_ERR_UNSUPPORTED && !m && strstr(tr_last_error(), mode[k]) &&
