@@ -37,6 +37,8 @@ static tr_status copy_plc(const tr_plc *in, tr_plc **out)
     st = tr_plc_copy_points(p, in);
   if (st == TR_OK)
     st = tr_plc_copy_exact(p, in);
+  if (st == TR_OK && in->source && !(p->source = strdup(in->source)))
+    st = tr_error(TR_ERR_NOMEM, "out of memory copying the PLC");
   if (st == TR_OK && in->nsegs) {
     p->segs = malloc(sizeof *p->segs * 2 * (size_t)in->nsegs);
     if (!p->segs)
@@ -159,9 +161,9 @@ static tr_status exact_modes(const tr_plc *p, const tr_options *opt)
   if (!mode)
     return TR_OK;
   return tr_error(TR_ERR_UNSUPPORTED, "%s: --resolve: %u vertices of the solid's boundary are "
-                  "rational points that are no doubles; they are meshed exactly by the "
-                  "plain pipeline (and --exact), but %s on such a surface is not implemented "
-                  "yet (docs/resolve.md)", p->source ? p->source : "input", p->nxq, mode);
+                  "rational points that are no doubles; they are meshed exactly, but %s "
+                  "on such a surface is not implemented yet (docs/resolve.md)",
+                  p->source ? p->source : "input", p->nxq, mode);
 }
 
 /* tr_pipeline_suppress, and the origins (vkind, from the recovery) of the boundary Steiner
