@@ -284,6 +284,15 @@ static void t_rational(void)
     }
   tr_plc *p = from_arrays(xyz, 12, tris, 16);
   rational_cases("tet_pierces_cube", p, 10);
+  /* hole points on such a surface: not done yet, said by name */
+  EXPECT(tr_plc_add_hole(p, 0.5, 0.5, 0.5) == TR_OK, "add hole: %s", tr_last_error());
+  tr_options opt = tm_options();
+  opt.resolve = 1;
+  tr_mesh *m = NULL;
+  tr_status st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_UNSUPPORTED && !m && strstr(tr_last_error(), "hole and region points"),
+         "hole point: %s: %s", tr_status_name(st), tr_last_error());
+  tr_mesh_destroy(m);
   tr_plc_destroy(p);
 }
 
