@@ -283,8 +283,10 @@ typedef struct tr_options {
    * neighbours) is TR_ERR_OPEN naming the edge and triangles. An input that already
    * bounds its solid as given (a valid closed surface; an outward shell nested in
    * another is an internal facet, kept only with 2) is meshed unchanged: the same mesh
-   * as with 0. Not implemented yet: a solid whose boundary has vertices that are
-   * rational points and no doubles (TR_ERR_UNSUPPORTED naming one). 0 (default): off */
+   * as with 0. Boundary vertices that are rational points and no doubles are mesh
+   * vertices with exact points (written exactly by the exact writers, rounded like Steiner
+   * points otherwise); on such a surface surface_tolerance, hole and region points are
+   * not implemented yet (TR_ERR_UNSUPPORTED naming the mode). 0 (default): off */
   int resolve;
   /* > 0: the surface may be re-triangulated before recovery (src/simplify,
    * docs/simplify.md) so that every point of the meshed boundary lies within

@@ -58,3 +58,22 @@ def test_resolve_takes_true_false_or_internal(unit_cube):
     pts, tris = unit_cube
     with pytest.raises(ValueError):
         tetrec.tetrahedralize(pts, tris, resolve="yes")
+
+
+def test_rational_corners_are_exact_mesh_vertices():
+    # the second box [0.5, 2] x [0.5, 1.5]^2: the diagonals of its faces y = 0.5, 1.5 and
+    # z = 0.5, 1.5 cross the first cube's face x = 1 at 0.5 + 1/3, no double
+    a, ta = cube(0.0, 1.0)
+    b, tb = cube(0.0, 1.0)
+    b = b * np.array([1.5, 1.0, 1.0]) + 0.5
+    pts, tris = np.vstack([a, b]), np.vstack([ta, tb + 8]).astype(np.uint32)
+    m = tetrec.tetrahedralize(pts, tris, resolve=True)
+    xp = m.exact_points()
+    third = [p for p in xp if any(c.denominator % 3 == 0 for c in p)]
+    assert third and all(p[0] == 1 for p in third)
+    for t in m.tets:
+        assert det(*(xp[v] for v in t)) > 0
+    faces = faces_of_tets(m.tets)
+    hull = {f for f, k in faces.items() if k == 1}
+    assert hull == {face_key(f) for f in m.boundary_faces}
+    assert tets_volume6(xp, m.tets) == Fraction(57, 4)  # 6 x (1 + 1.5 - 1/8)

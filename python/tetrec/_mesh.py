@@ -234,8 +234,9 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     triangles; "internal" also keeps the pieces between two solid cells as internal
     facets. A surface whose winding number is not defined (open, or triangles oriented
     against their neighbours) raises tetrec.Error (TR_ERR_OPEN) naming the edge; one that
-    already bounds its solid is meshed as without resolve. Not implemented yet: a solid
-    whose boundary has a vertex that is a rational point and no double (TR_ERR_UNSUPPORTED).
+    already bounds its solid is meshed as without resolve. Boundary vertices that are
+    rational points are meshed exactly; with them, surface_tolerance and hole and region
+    points are not implemented yet (TR_ERR_UNSUPPORTED naming the mode).
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: Mesh.write() defaults to writing exact rational Steiner points.

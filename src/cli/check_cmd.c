@@ -133,7 +133,9 @@ static tr_status conformity(const struct tr_mesh *m, const struct tr_plc *surfac
 {
   *smoothed = 0;
   tr_status st = tr_check_conformity(m, surface, v6, flags);
-  if (st != TR_ERR_INVALID_MESH)
+  /* no swaps on exact corners (the pipeline makes none there): a copy in doubles would
+   * check a rounded surface */
+  if (st != TR_ERR_INVALID_MESH || surface->xq)
     return st;
   char first[512];
   snprintf(first, sizeof first, "%s", tr_last_error());
@@ -244,15 +246,17 @@ tr_status tr_cli_check(const struct tr_plc *surface, const struct tr_plc *vol, t
     st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, vol6);
   if (st == TR_OK && tol <= 0)
     st = conformity(m, surface, vol6, allow_open ? TR_CONF_OPEN : 0, &smoothed);
-  int rounded = st == TR_ERR_INVALID_MESH && nsteiner && !exact_file && tol <= 0;
+  /* --resolve's rational corners are input vertices that a file of doubles rounds too */
+  int rounded = st == TR_ERR_INVALID_MESH && (nsteiner || surface->nxq) && !exact_file &&
+                tol <= 0;
   if (rounded)
     st = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, NULL);
   int with_volume = !rounded && !allow_open;
   if (st == TR_OK && rounded)
-    fprintf(stderr, "tetrec: check: %u Steiner points read as rounded doubles: exact "
+    fprintf(stderr, "tetrec: check: %u Steiner points%s read as rounded doubles: exact "
             "conformity and the exact volume cannot be verified on them (write the mesh with "
             "--exact for that); links and orientation checked exactly on the doubles\n",
-            nsteiner);
+            nsteiner, surface->nxq ? " and the surface's rational corners" : "");
   double dev = 0;
   uint32_t far = 0;
   if (st == TR_OK && rounded)

@@ -15,6 +15,14 @@
 int tr_plc_tri_axis(const struct tr_plc *plc, uint32_t t)
 {
   const uint32_t *T = plc->tris + 3 * (size_t)t;
+  if (plc->xq) {
+    tr_point a = tr_plc_point(plc, T[0]), b = tr_plc_point(plc, T[1]),
+             c = tr_plc_point(plc, T[2]);
+    for (int k = 0; k < 3; k++)
+      if (tr_orient2d_proj_p(&a, &b, &c, k) != 0)
+        return k;
+    return -1;
+  }
   const double *x = plc->xyz;
   for (int k = 0; k < 3; k++)
     if (tr_orient2d_proj(x + 3 * (size_t)T[0], x + 3 * (size_t)T[1], x + 3 * (size_t)T[2], k) !=
@@ -26,8 +34,7 @@ int tr_plc_tri_axis(const struct tr_plc *plc, uint32_t t)
 int tr_plc_tri_holds(const struct tr_plc *plc, uint32_t t, int k, const tr_point *p)
 {
   const uint32_t *T = plc->tris + 3 * (size_t)t;
-  tr_point a = tr_pt_d(plc->xyz + 3 * (size_t)T[0]), b = tr_pt_d(plc->xyz + 3 * (size_t)T[1]),
-           d = tr_pt_d(plc->xyz + 3 * (size_t)T[2]);
+  tr_point a = tr_plc_point(plc, T[0]), b = tr_plc_point(plc, T[1]), d = tr_plc_point(plc, T[2]);
   int s = tr_orient2d_proj_p(&a, &b, &d, k);
   return s * tr_orient2d_proj_p(&a, &b, p, k) >= 0 && s * tr_orient2d_proj_p(&b, &d, p, k) >= 0 &&
          s * tr_orient2d_proj_p(&d, &a, p, k) >= 0;
@@ -50,9 +57,11 @@ uint32_t tr_facets_triangle_of(const tr_facets *F, const struct tr_plc *plc, uin
     for (int j = 0; j < 3 && !out; j++) {
       double mn = INFINITY, mx = -INFINITY;
       for (int v = 0; v < 3; v++) {
-        double x = plc->xyz[3 * (size_t)U[v] + j];
-        mn = x < mn ? x : mn;
-        mx = x > mx ? x : mx;
+        const tr_qpoint *q = plc->xq ? plc->xq[U[v]] : NULL;
+        double x0 = q ? q->lo[j] : plc->xyz[3 * (size_t)U[v] + j];
+        double x1 = q ? q->hi[j] : x0;
+        mn = x0 < mn ? x0 : mn;
+        mx = x1 > mx ? x1 : mx;
       }
       out = hi[j] < mn || lo[j] > mx;
     }
@@ -71,6 +80,17 @@ static int mergeable(const struct tr_plc *plc, uint32_t s, int i, uint32_t t, in
     return 0;
   if (plc->tri_marker && plc->tri_marker[s] != plc->tri_marker[t])
     return 0;
+  if (plc->xq) { /* exact corners: the same tests on tr_point */
+    tr_point qa = tr_plc_point(plc, a), qb = tr_plc_point(plc, b), qc = tr_plc_point(plc, c),
+             qd = tr_plc_point(plc, d);
+    if (tr_orient3d_p(&qa, &qb, &qc, &qd) != 0)
+      return 0;
+    int ax = tr_plc_tri_axis(plc, s);
+    if (ax < 0 || tr_plc_tri_axis(plc, t) < 0)
+      return 0;
+    int sc = tr_orient2d_proj_p(&qa, &qb, &qc, ax), sd = tr_orient2d_proj_p(&qa, &qb, &qd, ax);
+    return sc * sd < 0;
+  }
   const double *x = plc->xyz;
   const double *pa = x + 3 * (size_t)a, *pb = x + 3 * (size_t)b, *pc = x + 3 * (size_t)c,
                *pd = x + 3 * (size_t)d;

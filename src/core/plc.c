@@ -24,7 +24,38 @@ void tr_plc_clear(struct tr_plc *plc)
   free(plc->source);
   free(plc->report);
   free(plc->vsize);
+  for (uint32_t i = 0; plc->xq && i < plc->npoints; i++)
+    if (plc->xq[i]) {
+      tr_qpoint_clear(plc->xq[i]);
+      free(plc->xq[i]);
+    }
+  free(plc->xq);
+  free(plc->tri_inner);
   memset(plc, 0, sizeof *plc);
+}
+
+tr_status tr_plc_copy_exact(struct tr_plc *dst, const struct tr_plc *src)
+{
+  if (!src->xq)
+    return TR_OK;
+  if (!(dst->xq = calloc(dst->npoints ? dst->npoints : 1, sizeof *dst->xq)))
+    return tr_error(TR_ERR_NOMEM, "out of memory copying %u exact points", src->nxq);
+  for (uint32_t i = 0; i < src->npoints && i < dst->npoints; i++) {
+    if (!src->xq[i])
+      continue;
+    if (!(dst->xq[i] = malloc(sizeof *dst->xq[i])))
+      return tr_error(TR_ERR_NOMEM, "out of memory copying %u exact points", src->nxq);
+    tr_qpoint_init(dst->xq[i]);
+    tr_point q = tr_pt_q(src->xq[i]);
+    tr_qpoint_set_point(dst->xq[i], &q);
+  }
+  dst->nxq = src->nxq;
+  if (src->tri_inner && dst->ntris == src->ntris) {
+    if (!(dst->tri_inner = malloc(dst->ntris ? dst->ntris : 1)))
+      return tr_error(TR_ERR_NOMEM, "out of memory copying %u triangle sides", dst->ntris);
+    memcpy(dst->tri_inner, src->tri_inner, dst->ntris);
+  }
+  return TR_OK;
 }
 
 tr_status tr_plc_create(tr_plc **out)

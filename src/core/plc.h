@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "tetrec.h"
+#include "qpoint.h"
 
 /* Values of tr_plc.hole_cavity. */
 enum { TR_HOLE_EMPTIED = 1, TR_HOLE_IN_CAVITY = 2 };
@@ -48,11 +49,33 @@ struct tr_plc {
   double *vsize;         /* NULL, or npoints target edge lengths (tr_options.sizing, the
                             command's --sizing), >= 0, 0 none: carried through the merges of
                             tr_plc_validate (the smaller of duplicates' values) */
+  /* Exact points (--resolve's new vertices that are no doubles, src/resolve/surface.c):
+   * NULL, or npoints entries, the exact point of point i or NULL when it is the double
+   * xyz[3i..]; an exact point's xyz is its nearest double. They are the last nxq points,
+   * so the Delaunay stage triangulates the doubles before it and inserts them after
+   * (src/delaunay/qinsert.c). Stages that read a triangle's corners read tr_plc_point. */
+  tr_qpoint **xq;
+  uint32_t nxq;
+  uint8_t *tri_inner;    /* with xq: NULL, or ntris, 1 for an internal facet (--resolve-
+                            internal: the solid on both sides), else the solid lies behind
+                            the triangle; what the cell analysis finds in doubles otherwise */
   uint8_t validated;     /* 1 + allow_open of the last successful tr_plc_validate, 0 if
                             none: the struct is opaque and every setter builds a new one,
                             so a validated PLC stays valid and the pipeline skips a second
                             validation (its repairs are idempotent anyway) */
 };
+
+/* Point v as an exact point (its rational when it has one, else its double). */
+static inline tr_point tr_plc_point(const struct tr_plc *plc, uint32_t v)
+{
+  if (plc->xq && plc->xq[v])
+    return tr_pt_q(plc->xq[v]);
+  return tr_pt_d(plc->xyz + 3 * (size_t)v);
+}
+
+/* dst->xq = copies of src's exact points, and its tri_inner (dst has src's points and
+ * triangles). */
+tr_status tr_plc_copy_exact(struct tr_plc *dst, const struct tr_plc *src);
 
 /* Frees the arrays and zeroes the struct (not the struct itself). */
 void tr_plc_clear(struct tr_plc *plc);

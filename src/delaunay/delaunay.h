@@ -48,6 +48,11 @@ tr_status tr_delaunay_build_ex(const double *xyz, uint32_t n, int nthreads, uint
 /* Threads for an option value: threads itself (at most 64), or 0: the online cores. */
 int tr_delaunay_thread_count(int threads);
 
+/* Inserts n exact points (copied) into a Delaunay mesh m as its next vertices, in order,
+ * by Bowyer-Watson with exact predicates (qinsert.c), then puts the store in canonical
+ * order. Each point must lie in the closed hull of m's points and differ from them. */
+tr_status tr_delaunay_insert_exact(struct tr_mesh *m, tr_qpoint *const *q, uint32_t n);
+
 /* Puts the tet store in canonical order (canon.c): real tets first, sorted by vertex
  * tuple, each rotated (orientation kept) to its smallest vertex first, then the ghosts;
  * free slots dropped, neighbours renumbered, flags cleared, v2t[v] the last slot with v

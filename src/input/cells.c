@@ -715,6 +715,11 @@ tr_status tr_input_orient_cells(struct tr_plc *plc, const uint32_t *tnum, const 
 
 tr_status tr_input_side_domains(const struct tr_plc *plc, uint8_t *sides)
 {
+  if (plc->xq) { /* a resolved surface: its sides are known exactly (tri_inner) */
+    for (uint32_t t = 0; t < plc->ntris; t++)
+      sides[t] = plc->tri_inner && plc->tri_inner[t] ? 3 : 2;
+    return TR_OK;
+  }
   struct tr_plc copy = *plc; /* the analysis may turn triangles: on a copy of them */
   uint32_t n = plc->ntris;
   copy.tris = malloc(sizeof *copy.tris * 3 * (size_t)(n ? n : 1));

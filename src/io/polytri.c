@@ -445,6 +445,9 @@ tr_status tr_plc_nonplanar(const struct tr_plc *plc, tr_nonplanar **out, uint32_
   uint32_t cap = 0;
   if (!plc->tri_source)
     return TR_OK; /* one triangle per input facet: nothing to be non-planar */
+  if (plc->xq)
+    return TR_OK; /* --resolve's pieces of one input triangle: in its plane exactly, where
+                     the nearest doubles of their rational corners are not */
   const double *x = plc->xyz;
   for (uint32_t t0 = 0, t1; t0 < plc->ntris; t0 = t1) {
     for (t1 = t0 + 1; t1 < plc->ntris && plc->tri_source[t1] == plc->tri_source[t0]; t1++)

@@ -60,11 +60,14 @@ static int cell(const grid *G, double x, int k)
 static void tri_box(const struct tr_plc *plc, uint32_t t, double lo[3], double hi[3])
 {
   for (int k = 0; k < 3; k++) {
-    lo[k] = hi[k] = plc->xyz[3 * (size_t)plc->tris[3 * (size_t)t] + k];
-    for (int j = 1; j < 3; j++) {
-      double x = plc->xyz[3 * (size_t)plc->tris[3 * (size_t)t + j] + k];
-      lo[k] = x < lo[k] ? x : lo[k];
-      hi[k] = x > hi[k] ? x : hi[k];
+    lo[k] = INFINITY;
+    hi[k] = -INFINITY;
+    for (int j = 0; j < 3; j++) { /* an exact corner: the box of its rational */
+      uint32_t v = plc->tris[3 * (size_t)t + j];
+      const tr_qpoint *q = plc->xq ? plc->xq[v] : NULL;
+      double x0 = q ? q->lo[k] : plc->xyz[3 * (size_t)v + k], x1 = q ? q->hi[k] : x0;
+      lo[k] = x0 < lo[k] ? x0 : lo[k];
+      hi[k] = x1 > hi[k] ? x1 : hi[k];
     }
   }
 }
@@ -129,8 +132,7 @@ static tr_status grid_build(const struct tr_plc *plc, grid *G)
 static int in_tri(const struct tr_plc *plc, uint32_t t, int ax, const tr_point *p)
 {
   const uint32_t *v = plc->tris + 3 * (size_t)t;
-  tr_point a = tr_pt_d(plc->xyz + 3 * (size_t)v[0]), b = tr_pt_d(plc->xyz + 3 * (size_t)v[1]),
-           c = tr_pt_d(plc->xyz + 3 * (size_t)v[2]);
+  tr_point a = tr_plc_point(plc, v[0]), b = tr_plc_point(plc, v[1]), c = tr_plc_point(plc, v[2]);
   if (tr_orient3d_p(&a, &b, &c, p) != 0)
     return 0;
   int s = tr_orient2d_proj_p(&a, &b, &c, ax);
@@ -395,11 +397,34 @@ static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *
       ord[nd++].v = v;
     }
   qsort(ord, nd, sizeof *ord, cmp_vkey);
+  /* the exact mesh vertices after them, by nearest double: an exact input point
+   * (--resolve's rational corners) is found among those by exact equality */
+  uint32_t nq = 0;
+  for (uint32_t v = 0; plc->xq && v < nv; v++)
+    if (used[v] && m->vq && m->vq[v]) {
+      memcpy(ord[nd + nq].x, m->vq[v]->near, sizeof ord[0].x);
+      ord[nd + nq++].v = v;
+    }
+  qsort(ord + nd, nq, sizeof *ord, cmp_vkey);
   for (uint32_t i = 0; i < np; i++) {
     pv[i] = TR_NONE;
     if (!need[i])
       continue;
     const double *x = plc->xyz + 3 * (size_t)i;
+    if (plc->xq && plc->xq[i]) {
+      tr_point want = tr_pt_q(plc->xq[i]);
+      for (uint32_t j = nd; j < nd + nq && pv[i] == TR_NONE; j++) {
+        tr_point have = tr_mesh_point(m, ord[j].v);
+        if (cmp_pt(ord[j].x, x) == 0 && tr_equal_p(&have, &want))
+          pv[i] = ord[j].v;
+      }
+      if (pv[i] == TR_NONE) {
+        st = tr_error(TR_ERR_INVALID_MESH, "conformity: exact input vertex %u (near %.17g, "
+                      "%.17g, %.17g) is not a mesh vertex", i, x[0], x[1], x[2]);
+        goto done;
+      }
+      continue;
+    }
     uint32_t lo = 0, hi = nd;
     while (lo < hi) {
       uint32_t mid = lo + (hi - lo) / 2;
@@ -565,8 +590,8 @@ static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *
   }
   for (uint32_t t = 0; t < ntri; t++) {
     const uint32_t *v = plc->tris + 3 * (size_t)t;
-    tr_point p0 = tr_pt_d(plc->xyz + 3 * (size_t)v[0]), p1 = tr_pt_d(plc->xyz + 3 * (size_t)v[1]),
-             p2 = tr_pt_d(plc->xyz + 3 * (size_t)v[2]);
+    tr_point p0 = tr_plc_point(plc, v[0]), p1 = tr_plc_point(plc, v[1]),
+             p2 = tr_plc_point(plc, v[2]);
     if (axes[t] < 0) {
       st = tr_error(TR_ERR_INVALID_MESH, "conformity: input triangle %u is degenerate", t);
       goto done;
@@ -578,9 +603,8 @@ static tr_status check_conformity(const struct tr_mesh *m, const struct tr_plc *
       mpq_set_ui(want, 0, 1);
       for (uint32_t i = F.start[t]; i < F.start[t + 1]; i++) {
         const uint32_t *u = plc->tris + 3 * (size_t)F.member[i];
-        tr_point q0 = tr_pt_d(plc->xyz + 3 * (size_t)u[0]),
-                 q1 = tr_pt_d(plc->xyz + 3 * (size_t)u[1]),
-                 q2 = tr_pt_d(plc->xyz + 3 * (size_t)u[2]);
+        tr_point q0 = tr_plc_point(plc, u[0]), q1 = tr_plc_point(plc, u[1]),
+                 q2 = tr_plc_point(plc, u[2]);
         area2(&q0, &q1, &q2, axes[t], a2, tmp);
         mpq_add(want, want, a2);
       }

@@ -134,8 +134,8 @@ static void on_triangle(void *ud, uint32_t i)
   asker *q = ud;
   const uint32_t *v = q->plc->tris + 3 * (size_t)q->cur;
   tr_point P = tr_pt_d(q->g->p[i]);
-  tr_point A = tr_pt_d(q->plc->xyz + 3 * (size_t)v[0]), B = tr_pt_d(q->plc->xyz + 3 * (size_t)v[1]),
-           C = tr_pt_d(q->plc->xyz + 3 * (size_t)v[2]);
+  tr_point A = tr_plc_point(q->plc, v[0]), B = tr_plc_point(q->plc, v[1]),
+           C = tr_plc_point(q->plc, v[2]);
   if (tr_classify_segment_triangle(&P, &P, &A, &B, &C).n)
     q->found[i] = q->cur;
 }

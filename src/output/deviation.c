@@ -79,6 +79,11 @@ static int box_holds(const struct tr_plc *plc, const uint32_t *v, int nv, const 
 {
   double lo[3], hi[3];
   tr_box_of(plc->xyz, v, nv, lo, hi);
+  for (int i = 0; plc->xq && i < nv; i++) /* an exact corner: its box, not its double */
+    for (int k = 0; plc->xq[v[i]] && k < 3; k++) {
+      lo[k] = plc->xq[v[i]]->lo[k] < lo[k] ? plc->xq[v[i]]->lo[k] : lo[k];
+      hi[k] = plc->xq[v[i]]->hi[k] > hi[k] ? plc->xq[v[i]]->hi[k] : hi[k];
+    }
   for (int k = 0; k < 3; k++)
     if (q->hi[k] < lo[k] || q->lo[k] > hi[k])
       return 0;
@@ -95,7 +100,8 @@ static double from_constraint(const struct tr_plc *plc, const uint32_t *cand, ui
     const uint32_t *t = plc->tris + 3 * (size_t)cand[i];
     if (!box_holds(plc, t, 3, q))
       continue;
-    tr_point A = tr_pt_d(X(plc, t[0])), B = tr_pt_d(X(plc, t[1])), C = tr_pt_d(X(plc, t[2]));
+    /* exact corners decide where q lies; the distance is measured to their doubles */
+    tr_point A = tr_plc_point(plc, t[0]), B = tr_plc_point(plc, t[1]), C = tr_plc_point(plc, t[2]);
     tr_hit h = tr_classify_point_triangle(&Q, &A, &B, &C);
     if (h.type == TR_FAC)
       return dist2(p, X(plc, t[0]), X(plc, t[1]), X(plc, t[2]));

@@ -35,6 +35,10 @@ static tr_status copy_plc(const tr_plc *in, tr_plc **out)
   tr_status st = tr_plc_set(p, in->xyz, in->npoints, in->tris, in->ntris, in->tri_marker);
   if (st == TR_OK)
     st = tr_plc_copy_points(p, in);
+  if (st == TR_OK)
+    st = tr_plc_copy_exact(p, in);
+  if (st == TR_OK && in->source && !(p->source = strdup(in->source)))
+    st = tr_error(TR_ERR_NOMEM, "out of memory copying the PLC");
   if (st == TR_OK && in->nsegs) {
     p->segs = malloc(sizeof *p->segs * 2 * (size_t)in->nsegs);
     if (!p->segs)
@@ -143,6 +147,25 @@ static void read_options(const tr_options *in, tr_options *opt)
       st = tr_pipeline_progress(&opt, (stage), (fraction));       \
   } while (0)
 
+/* What the pipeline does not do yet on a surface with exact points (--resolve's rational
+ * corners, docs/resolve.md): said by name, never a mesh made on their doubles. */
+static tr_status exact_modes(const tr_plc *p, const tr_options *opt)
+{
+  const char *mode = NULL;
+  if (opt->surface_tolerance != 0)
+    mode = "--surface-tolerance";
+  else if (p->nholes || p->nregions)
+    mode = "hole and region points";
+  else if (opt->allow_open)
+    mode = "--allow-open";
+  if (!mode)
+    return TR_OK;
+  return tr_error(TR_ERR_UNSUPPORTED, "%s: --resolve: %u vertices of the solid's boundary are "
+                  "rational points that are no doubles; they are meshed exactly, but %s "
+                  "on such a surface is not implemented yet (docs/resolve.md)",
+                  p->source ? p->source : "input", p->nxq, mode);
+}
+
 /* tr_pipeline_suppress, and the origins (vkind, from the recovery) of the boundary Steiner
  * points it relocated set to interior. A point on an input edge or triangle is a vertex of
  * that triangle's sub-faces (they tile it); a relocated point is a vertex of none after
@@ -221,6 +244,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   }
   if (st == TR_OK && p->ntris == 0 && p->nsegs == 0)
     st = tr_error(TR_ERR_INPUT, "the input has no triangles to recover");
+  if (st == TR_OK && p->nxq)
+    st = exact_modes(p, &opt);
   /* --surface-tolerance: a simplified surface within the proven bound replaces p */
   if (st == TR_OK && opt.surface_tolerance != 0) {
     double ts = tr_pipeline_now();
@@ -247,7 +272,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   }
   double t1 = tr_pipeline_now();
   /* --keep-surface: the input triangles are the output's faces, so no diagonal swaps */
-  if (opt.smooth && !opt.keep_surface) {
+  if (opt.smooth && !opt.keep_surface && !(p && p->nxq)) {
     PROGRESS(TR_STAGE_SMOOTH, 0);
     if (st == TR_OK)
       st = tr_smooth_surface(p, &stats->surface_swaps);
@@ -263,7 +288,9 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = opt.threads < 0
              ? tr_error(TR_ERR_USAGE, "tr_options.threads is %d (0: every core, or N > 0)",
                         opt.threads)
-             : tr_delaunay_build_threads(p->xyz, p->npoints, opt.threads, &m);
+             : tr_delaunay_build_threads(p->xyz, p->npoints - p->nxq, opt.threads, &m);
+  if (st == TR_OK && p->nxq)
+    st = tr_delaunay_insert_exact(m, p->xq + (p->npoints - p->nxq), p->nxq);
   PROGRESS(TR_STAGE_DELAUNAY, 1);
   double t3 = tr_pipeline_now();
   stage[TR_STAGE_DELAUNAY] = t3 - t2;
@@ -275,7 +302,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
    * an edge (--keep-edges) */
   double tswap = tr_pipeline_now();
   if (st == TR_OK && opt.smooth && !opt.keep_surface && !opt.keep_edges &&
-      opt.recovery != 1) {
+      opt.recovery != 1 && !p->nxq) {
     uint64_t n2 = 0;
     st = tr_surface_swaps_to_mesh(p, m, edges, ne, &n2);
     if (st == TR_OK && n2) {

@@ -66,8 +66,8 @@ static uint32_t edge_index(const uint32_t *edges, uint32_t ne, uint32_t a, uint3
 static int in_triangle(const struct tr_plc *plc, uint32_t t, const tr_point *p)
 {
   const uint32_t *T = plc->tris + 3 * (size_t)t;
-  tr_point a = tr_pt_d(plc->xyz + 3 * (size_t)T[0]), b = tr_pt_d(plc->xyz + 3 * (size_t)T[1]),
-           c = tr_pt_d(plc->xyz + 3 * (size_t)T[2]);
+  tr_point a = tr_plc_point(plc, T[0]), b = tr_plc_point(plc, T[1]),
+           c = tr_plc_point(plc, T[2]);
   if (tr_orient3d_p(&a, &b, &c, p) != 0)
     return 0;
   for (int k = 0; k < 3; k++) {
@@ -127,8 +127,8 @@ tr_status tr_pipeline_origins_extend(const struct tr_mesh *m, const struct tr_pl
       k[v] = TR_VERTEX_ON_TRIANGLE;
       x[v] = t;
       for (int e = 0; e < 3; e++) {
-        tr_point a = tr_pt_d(plc->xyz + 3 * (size_t)T[e]);
-        tr_point b = tr_pt_d(plc->xyz + 3 * (size_t)T[(e + 1) % 3]);
+        tr_point a = tr_plc_point(plc, T[e]);
+        tr_point b = tr_plc_point(plc, T[(e + 1) % 3]);
         uint32_t ei = edge_index(edges, ne, T[e], T[(e + 1) % 3]);
         if (ei != UINT32_MAX && tr_classify_point_segment(&p, &a, &b).type == TR_EDG) {
           k[v] = TR_VERTEX_ON_EDGE;

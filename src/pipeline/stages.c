@@ -249,7 +249,8 @@ tr_status tr_pipeline_recover(struct tr_mesh *m, const struct tr_plc *plc,
   tr_facet_recovery_opts fo = {0};
   eo.no_flips = eo.no_midpoints = eo.no_lawson = fo.paper = recovery == 1;
   fo.no_flips = recovery == 2;
-  eo.surface = recovery == 1 ? NULL : plc; /* its flat edges after the others */
+  /* its flat edges after the others (read in doubles: not for exact points) */
+  eo.surface = recovery == 1 || plc->nxq ? NULL : plc;
   tr_status st = tr_recover_edges_ex(m, edges, ne, &eo, &chains, &es);
   double t1 = tr_pipeline_now();
   secs[0] = t1 - t0;

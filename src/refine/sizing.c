@@ -23,7 +23,9 @@ tr_status tr_sizing_build(const struct tr_plc *plc, int threads, tr_sizing *s)
 {
   memset(s, 0, sizeof *s);
   s->h = plc->vsize;
-  return tr_delaunay_build_threads(plc->xyz, plc->npoints, threads, &s->bg);
+  /* the doubles only: --resolve's exact corners (the last nxq points) have no size of
+   * their own (0), and they lie in the hull of the others */
+  return tr_delaunay_build_threads(plc->xyz, plc->npoints - plc->nxq, threads, &s->bg);
 }
 
 void tr_sizing_free(tr_sizing *s)

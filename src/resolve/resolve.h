@@ -105,6 +105,7 @@ typedef struct tr_resolve_info {
   uint64_t npairs;                  /* improper pairs of input triangles */
   uint32_t npieces, nkept, ninternal, ncomponents;
   uint32_t nnew;                    /* new vertices on the solid's boundary */
+  uint32_t nexact;                  /* of which rational points that are no doubles */
   int identity;                     /* 1: the input as given bounds its solid */
   double seconds;                   /* wall-clock time of the arrangement and the solid */
 } tr_resolve_info;

@@ -1,13 +1,11 @@
 /* The surface the pipeline meshes under --resolve (tr_options.resolve; docs/resolve.md):
  * the boundary of the solid by winding number, as a PLC.
  *
- * What is hooked up, and why only that: the PLC holds doubles. An input whose solid is
- * bounded by its own triangles as given (every valid closed input) goes through
- * unchanged, so its mesh is the one without --resolve. When the arrangement's new
- * vertices on the boundary are all doubles, the kept pieces are an exact PLC of doubles
- * and mesh as any input. A boundary vertex that is a rational point and no double would
- * have to enter the mesh as an exact Steiner point (the plan in docs/resolve.md); until
- * then that is a clear TR_ERR_UNSUPPORTED naming it, never a rounded surface. */
+ * An input whose solid is bounded by its own triangles as given (every valid closed
+ * input) goes through unchanged, so its mesh is the one without --resolve. Otherwise the
+ * kept pieces are the PLC; a vertex that is a rational point and no double carries its
+ * exact point (tr_plc.xq) and comes after the doubles, and the pipeline inserts it into
+ * the Delaunay mesh exactly (src/delaunay/qinsert.c): never a rounded surface. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
@@ -42,37 +40,26 @@ static int on_boundary(int keep)
   return keep == TR_SOLID_KEEP || keep == TR_SOLID_FLIP || keep == TR_SOLID_INTERNAL;
 }
 
-static tr_status unsupported(const struct tr_plc *in, const tr_arrangement *arr, uint32_t v,
-                             uint32_t n)
+static int is_rational(const tr_qpoint *q)
 {
-  const tr_arr_vertex *x = arr->verts + v;
-  const char *s = in->source ? in->source : "input";
-  if (x->on == TR_ARR_ON_EDGE)
-    return tr_error(TR_ERR_UNSUPPORTED, "%s: --resolve: %u vertices of the solid's boundary "
-                    "are rational points that are no doubles (the first, near %.17g %.17g "
-                    "%.17g, on the edge of input points %u and %u); meshing them as exact "
-                    "Steiner points is not implemented yet (docs/resolve.md)", s, n,
-                    x->q->near[0], x->q->near[1], x->q->near[2], x->a, x->b);
-  uint32_t t = in->tri_source ? in->tri_source[x->a] : x->a;
-  return tr_error(TR_ERR_UNSUPPORTED, "%s: --resolve: %u vertices of the solid's boundary are "
-                  "rational points that are no doubles (the first, near %.17g %.17g %.17g, "
-                  "inside input triangle %u); meshing them as exact Steiner points is not "
-                  "implemented yet (docs/resolve.md)", s, n, x->q->near[0], x->q->near[1],
-                  x->q->near[2], t);
+  return q && (q->err[0] != 0 || q->err[1] != 0 || q->err[2] != 0);
 }
 
-/* The kept pieces as a PLC of doubles (every vertex used is one). */
+/* The kept pieces as a PLC; a vertex that is no double gets its exact point in xq. */
 static tr_status build(const struct tr_plc *in, const tr_arrangement *arr, const tr_solid *sol,
-                       const uint32_t *vid, uint32_t nv, uint32_t nt, struct tr_plc **out)
+                       const uint32_t *vid, uint32_t nv, uint32_t nt, uint32_t nrat,
+                       struct tr_plc **out)
 {
   double *xyz = malloc(sizeof *xyz * 3 * (size_t)(nv ? nv : 1));
   uint32_t *tris = malloc(sizeof *tris * 3 * (size_t)(nt ? nt : 1));
   int32_t *mk = malloc(sizeof *mk * (nt ? nt : 1));
   uint32_t *srcs = malloc(sizeof *srcs * (nt ? nt : 1));
   double *vs = in->vsize ? malloc(sizeof *vs * (nv ? nv : 1)) : NULL;
+  tr_qpoint **xq = nrat ? calloc(nv, sizeof *xq) : NULL;
+  uint8_t *inner = nrat ? calloc(nt ? nt : 1, 1) : NULL;
   struct tr_plc *p = NULL;
   tr_status st = TR_OK;
-  if (!xyz || !tris || !mk || !srcs || (in->vsize && !vs)) {
+  if (!xyz || !tris || !mk || !srcs || (in->vsize && !vs) || (nrat && (!xq || !inner))) {
     st = tr_error(TR_ERR_NOMEM, "--resolve: out of memory for %u triangles", nt);
     goto done;
   }
@@ -84,6 +71,17 @@ static tr_status build(const struct tr_plc *in, const tr_arrangement *arr, const
     memcpy(xyz + 3 * (size_t)vid[v], d, 3 * sizeof *d);
     if (vs) /* a new point has no size of its own: no bound there */
       vs[vid[v]] = x->q ? 0 : in->vsize[x->input];
+    if (is_rational(x->q)) {
+      tr_qpoint *q = malloc(sizeof *q);
+      if (!q) {
+        st = tr_error(TR_ERR_NOMEM, "--resolve: out of memory for %u exact points", nrat);
+        goto done;
+      }
+      tr_qpoint_init(q);
+      tr_point pq = tr_pt_q(x->q);
+      tr_qpoint_set_point(q, &pq);
+      xq[vid[v]] = q;
+    }
   }
   uint32_t j = 0;
   for (uint32_t i = 0; i < arr->npieces; i++) {
@@ -95,6 +93,8 @@ static tr_status build(const struct tr_plc *in, const tr_arrangement *arr, const
     tris[3 * j + 1] = vid[v[f ? 2 : 1]];
     tris[3 * j + 2] = vid[v[f ? 1 : 2]];
     mk[j] = arr->pieces[i].marker;
+    if (inner)
+      inner[j] = sol->keep[i] == TR_SOLID_INTERNAL;
     uint32_t t = arr->src[arr->pieces[i].src].tri;
     srcs[j++] = in->tri_source ? in->tri_source[t] : t;
   }
@@ -109,6 +109,11 @@ static tr_status build(const struct tr_plc *in, const tr_arrangement *arr, const
     srcs = NULL;
     p->vsize = vs;
     vs = NULL;
+    p->xq = xq;
+    p->nxq = nrat;
+    xq = NULL;
+    p->tri_inner = inner;
+    inner = NULL;
     *out = p;
     p = NULL;
   }
@@ -119,6 +124,13 @@ done:
   free(mk);
   free(srcs);
   free(vs);
+  for (uint32_t i = 0; xq && i < nv; i++)
+    if (xq[i]) {
+      tr_qpoint_clear(xq[i]);
+      free(xq[i]);
+    }
+  free(xq);
+  free(inner);
   return st;
 }
 
@@ -171,32 +183,25 @@ tr_status tr_resolve_plc(const struct tr_plc *in, int mode, struct tr_plc **out,
   }
   for (uint32_t v = 0; v < arr.nverts; v++)
     vid[v] = TR_ARR_NONE;
-  uint32_t nt = 0, nv = 0, nrat = 0, first = TR_ARR_NONE;
+  uint32_t nt = 0, nv = 0, nrat = 0;
   for (uint32_t i = 0; i < arr.npieces; i++)
     if (on_boundary(sol.keep[i])) {
       nt++;
       for (int k = 0; k < 3; k++)
         vid[arr.pieces[i].v[k]] = 0;
     }
-  /* vertices in arrangement order: input points in input order, then the new ones */
-  for (uint32_t v = 0; v < arr.nverts; v++) {
-    if (vid[v] == TR_ARR_NONE)
-      continue;
-    vid[v] = nv++;
-    const tr_qpoint *q = arr.verts[v].q;
-    if (q) {
-      info->nnew++;
-      if (q->err[0] != 0 || q->err[1] != 0 || q->err[2] != 0) {
-        if (!nrat++)
-          first = v;
-      }
+  /* vertices in arrangement order (input points in input order, then the new ones), the
+   * rational ones last: the Delaunay stage triangulates the doubles first */
+  for (int pass = 0; pass < 2; pass++)
+    for (uint32_t v = 0; v < arr.nverts; v++) {
+      if (vid[v] == TR_ARR_NONE || is_rational(arr.verts[v].q) != pass)
+        continue;
+      vid[v] = nv++;
+      info->nnew += arr.verts[v].q != NULL;
+      nrat += pass;
     }
-  }
-  if (nrat) {
-    st = unsupported(in, &arr, first, nrat);
-    goto done;
-  }
-  st = build(in, &arr, &sol, vid, nv, nt, out);
+  info->nexact = nrat;
+  st = build(in, &arr, &sol, vid, nv, nt, nrat, out);
 done:
   free(vid);
   tr_solid_free(&sol);
@@ -212,9 +217,9 @@ tr_status tr_resolve_replace(struct tr_plc **p, int mode, int report)
   TR_CHECK(tr_resolve_plc(*p, mode, &r, &ri));
   if (report)
     fprintf(stderr, "tetrec: resolve: %llu improper pairs, %u pieces, %u on the boundary, %u "
-            "internal, %u new vertices on it, %u connected parts%s, %.3f s\n",
+            "internal, %u new vertices on it (%u exact rationals), %u connected parts%s, %.3f s\n",
             (unsigned long long)ri.npairs, ri.npieces, ri.nkept, ri.ninternal, ri.nnew,
-            ri.ncomponents, ri.identity ? ": the input as given" : "", ri.seconds);
+            ri.nexact, ri.ncomponents, ri.identity ? ": the input as given" : "", ri.seconds);
   if (r) {
     tr_plc_destroy(*p);
     *p = r;

@@ -34,7 +34,7 @@ tr_status tr_sup_plane(const tr_plc *plc, uint32_t tri, int *drop, int *sign)
         order[i] = order[j];
         order[j] = x;
       }
-  tr_point pa = tr_pt_d(a), pb = tr_pt_d(b), pc = tr_pt_d(c);
+  tr_point pa = tr_plc_point(plc, t[0]), pb = tr_plc_point(plc, t[1]), pc = tr_plc_point(plc, t[2]);
   for (int i = 0; i < 3; i++) {
     int s = tr_orient2d_proj_p(&pa, &pb, &pc, order[i]);
     if (s) {

@@ -72,9 +72,11 @@ tr_status sup_is_sub(const sup_ctx *c, const uint32_t w0[3], tr_u32buf *tmp, int
   return TR_OK;
 }
 
-static int steiner(const struct tr_mesh *m, uint32_t v)
+/* Input points come first: an exact one (--resolve's rational corners) is no Steiner
+ * point and stays. */
+static int steiner(const struct tr_mesh *m, const tr_plc *plc, uint32_t v)
 {
-  return m->vq && m->vq[v];
+  return v >= plc->npoints && m->vq && m->vq[v];
 }
 
 static int kept(const struct tr_mesh *m, uint32_t t)
@@ -247,7 +249,7 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
                  sub->v[3 * (size_t)i + 2], sub->tri[i]);
   int any = 0;
   for (uint32_t p = 0; p < m->nv && st == TR_OK && !any && m->vq; p++)
-    if (steiner(m, p) && (st = sup_faces_of(&c, p, &f)) == TR_OK)
+    if (steiner(m, plc, p) && (st = sup_faces_of(&c, p, &f)) == TR_OK)
       any = f.n > 0 || (flags & TR_SUP_INTERIOR);
   unsigned act = flags & (TR_SUP_REMOVE | TR_SUP_RELOCATE);
   /* the interior points are counted among those to look at only when asked */
@@ -274,7 +276,7 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
       for (int pass = 0; pass < 16 && changed && st == TR_OK; pass++) {
         changed = 0;
         for (uint32_t p = 0; p < m->nv && st == TR_OK; p++) {
-          if (!steiner(m, p) || m->v2t[p] == TR_NONE)
+          if (!steiner(m, plc, p) || m->v2t[p] == TR_NONE)
             continue;
           int done = 0;
           st = sup_point(&c, p, rounds[r] | (flags & TR_SUP_REQUIRE), &done);
@@ -309,7 +311,7 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
       for (int k = 0; k < 4; k++)
         used[m->tv[4 * (size_t)t + k]] = 1;
   for (uint32_t p = 0; p < m->nv && st == TR_OK; p++) {
-    if (!used[p] || !steiner(m, p))
+    if (!used[p] || !steiner(m, plc, p))
       continue;
     if ((st = sup_faces_of(&c, p, &f)) != TR_OK)
       break;

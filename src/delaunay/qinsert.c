@@ -1,0 +1,281 @@
+/* Bowyer-Watson insertion of exact rational points into the Delaunay mesh of the double
+ * points (--resolve's boundary vertices that are no doubles, docs/resolve.md).
+ *
+ * The builder (bw.c) is specialised for doubles (static filters, 32-byte points, local
+ * ids); these points are few (hundreds on CGAL's models) and every predicate on them is
+ * exact on tr_point, so this is the plain algorithm: a visibility walk to the tet that
+ * contains p, the tets whose circumsphere holds p strictly (tr_insphere_p > 0), and the
+ * star of p over the cavity's boundary faces.
+ *
+ * Why the result is a valid tetrahedralization without perturbing p: the mesh is
+ * Delaunay for the unperturbed points in the weak sense (no point strictly inside a
+ * circumsphere), and the tets whose sphere holds p strictly form a region star-shaped
+ * from p. A boundary face between a cavity tet t and an outside tet u cannot have p in
+ * its plane: the spheres of t and u meet that plane in the same circle, so p would be
+ * strictly inside both or neither. The new tets are still checked exactly (orientation
+ * > 0), so a wrong premise is an internal error, never a flat tet.
+ *
+ * Ghosts (the hull, delaunay.h): p lies in the closed hull of the double points (it lies
+ * on a surface whose extreme points are input points), so no hull face sees it strictly;
+ * a ghost joins the cavity when p is in its hull face's plane and the real tet behind
+ * conflicts, as in the builder. Its boundary faces give new ghosts (TR_GHOST stays in
+ * slot 3). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "delaunay.h"
+#include "mesh/orient_memo.h"
+
+typedef struct side {
+  uint32_t a, b; /* the face's two vertices other than p, a < b */
+  uint32_t code; /* 4 * tet + face */
+} side;
+
+static int cmp_side(const void *x, const void *y)
+{
+  const side *s = x, *t = y;
+  if (s->a != t->a)
+    return s->a < t->a ? -1 : 1;
+  if (s->b != t->b)
+    return s->b < t->b ? -1 : 1;
+  return (s->code > t->code) - (s->code < t->code);
+}
+
+static int conflict_real(const struct tr_mesh *m, uint32_t t, const tr_point *p)
+{
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  tr_point a = tr_mesh_point(m, v[0]), b = tr_mesh_point(m, v[1]), c = tr_mesh_point(m, v[2]),
+           d = tr_mesh_point(m, v[3]);
+  return tr_insphere_p(&a, &b, &c, &d, p) > 0;
+}
+
+static int conflict(const struct tr_mesh *m, uint32_t t, const tr_point *p)
+{
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  if (v[3] != TR_GHOST)
+    return conflict_real(m, t, p);
+  tr_point a = tr_mesh_point(m, v[0]), b = tr_mesh_point(m, v[1]), c = tr_mesh_point(m, v[2]);
+  int o = tr_orient3d_p(&a, &b, &c, p);
+  if (o != 0)
+    return o > 0;
+  return conflict_real(m, m->tn[4 * (size_t)t + 3] >> 2, p);
+}
+
+/* Sign of p against face k of real tet t: > 0 on t's side. */
+static int face_side(const struct tr_mesh *m, uint32_t t, int k, const tr_point *p)
+{
+  const uint32_t *v = m->tv + 4 * (size_t)t;
+  tr_point a = tr_mesh_point(m, v[tr_face_vtx[k][0]]), b = tr_mesh_point(m, v[tr_face_vtx[k][1]]),
+           c = tr_mesh_point(m, v[tr_face_vtx[k][2]]);
+  return tr_orient3d_p(&a, &b, &c, p);
+}
+
+/* A real tet whose closed inside holds p: a visibility walk from t0 (the face to leave by
+ * is tried from a rotating start, so the walk cannot cycle on a fixed choice), and after
+ * too many steps a scan of every tet. */
+static tr_status locate(const struct tr_mesh *m, uint32_t t0, const tr_point *p, uint32_t *out)
+{
+  uint32_t t = t0, rot = 0;
+  uint64_t limit = 4 * (uint64_t)m->nt + 64;
+  for (uint64_t step = 0; step < limit; step++) {
+    int moved = 0;
+    for (int j = 0; j < 4 && !moved; j++) {
+      int k = (int)((j + rot) & 3);
+      if (face_side(m, t, k, p) < 0) {
+        uint32_t u = TR_NEIG(m, t, k);
+        if (u == TR_NONE || tr_tet_is_ghost(m, u))
+          break; /* outside the hull: the scan below reports it */
+        t = u;
+        moved = 1;
+      }
+    }
+    rot++;
+    if (!moved) {
+      int in = 1;
+      for (int k = 0; k < 4 && in; k++)
+        in = face_side(m, t, k, p) >= 0;
+      if (in) {
+        *out = t;
+        return TR_OK;
+      }
+      break;
+    }
+  }
+  for (uint32_t u = 0; u < m->nt; u++) {
+    if (!tr_tet_is_real(m, u))
+      continue;
+    int in = 1;
+    for (int k = 0; k < 4 && in; k++)
+      in = face_side(m, u, k, p) >= 0;
+    if (in) {
+      *out = u;
+      return TR_OK;
+    }
+  }
+  return tr_error(TR_ERR_INTERNAL, "exact point near (%.17g, %.17g, %.17g) lies in no tet of "
+                  "the Delaunay mesh of the double points", p->d[0], p->d[1], p->d[2]);
+}
+
+/* Scratch shared by the insertions of one call. */
+typedef struct qctx {
+  tr_u32buf cav;   /* cavity tets; marked with TR_TF_MARK while listed */
+  side *sd;        /* side faces of the new tets */
+  size_t nsd, capsd;
+  tr_u32buf bnd;   /* boundary faces: 4 * cavity tet + face */
+} qctx;
+
+static tr_status push_side(qctx *c, uint32_t a, uint32_t b, uint32_t code)
+{
+  if (c->nsd == c->capsd) {
+    size_t n = c->capsd ? 2 * c->capsd : 64;
+    side *s = realloc(c->sd, n * sizeof *s);
+    if (!s)
+      return tr_error(TR_ERR_NOMEM, "out of memory inserting an exact point");
+    c->sd = s;
+    c->capsd = n;
+  }
+  c->sd[c->nsd].a = a < b ? a : b;
+  c->sd[c->nsd].b = a < b ? b : a;
+  c->sd[c->nsd++].code = code;
+  return TR_OK;
+}
+
+static tr_status insert_one(struct tr_mesh *m, qctx *c, uint32_t pid, uint32_t *hint)
+{
+  tr_point p = tr_mesh_point(m, pid);
+  uint32_t t0 = TR_NONE;
+  TR_CHECK(locate(m, *hint, &p, &t0));
+  c->cav.n = c->bnd.n = 0;
+  c->nsd = 0;
+  TR_CHECK(tr_u32buf_push(&c->cav, t0));
+  m->flags[t0] |= TR_TF_MARK;
+  tr_status st = TR_OK;
+  for (size_t i = 0; st == TR_OK && i < c->cav.n; i++) {
+    uint32_t t = c->cav.a[i];
+    for (int k = 0; st == TR_OK && k < 4; k++) {
+      uint32_t u = TR_NEIG(m, t, k);
+      if (u != TR_NONE && (m->flags[u] & TR_TF_MARK))
+        continue;
+      if (u != TR_NONE && conflict(m, u, &p)) {
+        m->flags[u] |= TR_TF_MARK;
+        st = tr_u32buf_push(&c->cav, u);
+      } else {
+        st = tr_u32buf_push(&c->bnd, 4 * t + (uint32_t)k);
+      }
+    }
+  }
+  /* a boundary face seen by a neighbour that joined the cavity later is no boundary */
+  size_t nb = 0;
+  for (size_t i = 0; i < c->bnd.n; i++) {
+    uint32_t t = c->bnd.a[i] >> 2, u = TR_NEIG(m, t, (int)(c->bnd.a[i] & 3));
+    if (u == TR_NONE || !(m->flags[u] & TR_TF_MARK))
+      c->bnd.a[nb++] = c->bnd.a[i];
+  }
+  c->bnd.n = nb;
+  /* every new real tet must be positive: checked before anything changes */
+  for (size_t i = 0; st == TR_OK && i < c->bnd.n; i++) {
+    uint32_t t = c->bnd.a[i] >> 2;
+    int k = (int)(c->bnd.a[i] & 3);
+    if (tr_tet_is_ghost(m, t) && k == 3)
+      st = tr_error(TR_ERR_INTERNAL, "exact point %u near (%.17g, %.17g, %.17g) lies outside "
+                    "the hull of the double points", pid, p.d[0], p.d[1], p.d[2]);
+    else if (!tr_tet_is_ghost(m, t) && face_side(m, t, k, &p) <= 0)
+      st = tr_error(TR_ERR_INTERNAL, "exact point %u: its Bowyer-Watson cavity is not "
+                    "star-shaped (face %u of tet %u)", pid, (unsigned)k, t);
+  }
+  if (st != TR_OK) {
+    for (size_t i = 0; i < c->cav.n; i++)
+      m->flags[c->cav.a[i]] &= (uint8_t)~TR_TF_MARK;
+    return st;
+  }
+  /* new tets: cavity tet t with vertex k replaced by p, glued outside across face k */
+  uint32_t *nv = malloc(sizeof *nv * 4 * (c->bnd.n ? c->bnd.n : 1));
+  uint32_t *out = malloc(sizeof *out * (c->bnd.n ? c->bnd.n : 1));
+  if (!nv || !out) {
+    free(nv);
+    free(out);
+    for (size_t i = 0; i < c->cav.n; i++)
+      m->flags[c->cav.a[i]] &= (uint8_t)~TR_TF_MARK;
+    return tr_error(TR_ERR_NOMEM, "out of memory inserting an exact point");
+  }
+  for (size_t i = 0; i < c->bnd.n; i++) {
+    uint32_t t = c->bnd.a[i] >> 2;
+    int k = (int)(c->bnd.a[i] & 3);
+    memcpy(nv + 4 * i, m->tv + 4 * (size_t)t, 4 * sizeof *nv);
+    nv[4 * i + (size_t)k] = pid;
+    out[i] = m->tn[4 * (size_t)t + (size_t)k];
+  }
+  for (size_t i = 0; i < c->cav.n; i++) {
+    m->flags[c->cav.a[i]] = 0;
+    tr_tet_free(m, c->cav.a[i]);
+  }
+  for (size_t i = 0; st == TR_OK && i < c->bnd.n; i++) {
+    uint32_t t, k = c->bnd.a[i] & 3;
+    const uint32_t *v = nv + 4 * i;
+    st = tr_tet_new(m, v[0], v[1], v[2], v[3], &t);
+    if (st != TR_OK)
+      break;
+    if (out[i] != TR_NONE)
+      tr_glue(m, t, (int)k, out[i] >> 2, (int)(out[i] & 3));
+    for (uint32_t j = 0; st == TR_OK && j < 4; j++) /* faces through p */
+      if (j != k) {
+        uint32_t a = v[tr_face_vtx[j][0]], b = v[tr_face_vtx[j][1]], d = v[tr_face_vtx[j][2]];
+        uint32_t e0 = a == pid ? b : a, e1 = a == pid || b == pid ? d : b;
+        st = push_side(c, e0, e1, 4 * t + j);
+      }
+    if (!tr_tet_is_ghost(m, t))
+      *hint = t;
+  }
+  free(nv);
+  free(out);
+  if (st != TR_OK)
+    return st;
+  /* each side face is in exactly two new tets */
+  qsort(c->sd, c->nsd, sizeof *c->sd, cmp_side);
+  for (size_t i = 0; i < c->nsd; i += 2) {
+    if (i + 1 >= c->nsd || c->sd[i].a != c->sd[i + 1].a || c->sd[i].b != c->sd[i + 1].b)
+      return tr_error(TR_ERR_INTERNAL, "exact point %u: the star of its cavity does not close",
+                      pid);
+    tr_glue(m, c->sd[i].code >> 2, (int)(c->sd[i].code & 3), c->sd[i + 1].code >> 2,
+            (int)(c->sd[i + 1].code & 3));
+  }
+  return TR_OK;
+}
+
+tr_status tr_delaunay_insert_exact(struct tr_mesh *m, tr_qpoint *const *q, uint32_t n)
+{
+  if (!n)
+    return TR_OK;
+  TR_CHECK(tr_mesh_reserve_vertices(m, m->nv + n));
+  uint32_t hint = TR_NONE;
+  for (uint32_t t = 0; t < m->nt && hint == TR_NONE; t++)
+    if (tr_tet_is_real(m, t))
+      hint = t;
+  if (hint == TR_NONE)
+    return tr_error(TR_ERR_DEGENERATE, "no tet to insert exact points into");
+  qctx c;
+  memset(&c, 0, sizeof c);
+  tr_status st = TR_OK;
+  for (uint32_t i = 0; st == TR_OK && i < n; i++) {
+    tr_qpoint *x = malloc(sizeof *x);
+    if (!x) {
+      st = tr_error(TR_ERR_NOMEM, "out of memory for exact point %u", i);
+      break;
+    }
+    tr_qpoint_init(x);
+    tr_point src = tr_pt_q(q[i]);
+    tr_qpoint_set_point(x, &src);
+    uint32_t id;
+    if ((st = tr_mesh_add_steiner(m, x, &id)) != TR_OK) {
+      tr_qpoint_clear(x);
+      free(x);
+      break;
+    }
+    st = insert_one(m, &c, id, &hint);
+  }
+  tr_u32buf_free(&c.cav);
+  tr_u32buf_free(&c.bnd);
+  free(c.sd);
+  tr_mesh_orient_memo_forget(m); /* new vertex ids */
+  return st == TR_OK ? tr_delaunay_canonical(m) : st;
+}
