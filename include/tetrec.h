@@ -359,6 +359,7 @@ typedef struct tr_stats {
   double surface_tolerance_bound;
   uint64_t surface_collapses;
   double surface_tolerance_seconds;
+  uint64_t surface_flips; /* edge flips made by the same stage */
 } tr_stats;
 
 /* Delaunay tetrahedralization of a point set (duplicates merged and reported).

@@ -55,7 +55,7 @@ def test_without_the_option_the_mesh_is_the_same_as_before():
     a = tetrec.tetrahedralize(pts, tris, quality=1.414)
     b = tetrec.tetrahedralize(pts, tris, quality=1.414, surface_tolerance=None)
     assert np.array_equal(a.tets, b.tets) and np.array_equal(a.points, b.points)
-    assert a.stats["surface_collapses"] == 0
+    assert a.stats["surface_collapses"] == 0 and a.stats["surface_flips"] == 0
 
 
 @pytest.mark.parametrize("bad", [0.0, -1e-3, float("nan"), float("inf")])

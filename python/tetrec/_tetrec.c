@@ -384,7 +384,8 @@ static PyObject *stats_dict(const tr_stats *s)
                 {"tets_over_bounds", s->tets_over_bounds},
                 {"tets_dihedral_below_10_on_thin_input", s->tets_dihedral_below_10_on_thin_input},
                 {"thin_input_triangles", s->thin_input_triangles},
-                {"surface_collapses", s->surface_collapses}};
+                {"surface_collapses", s->surface_collapses},
+                {"surface_flips", s->surface_flips}};
   const struct {
     const char *name;
     double value;

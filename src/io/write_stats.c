@@ -29,7 +29,7 @@ static const field counts[] = {
     FIELD(points_added_for_sliver), FIELD(sliver_flips), FIELD(sliver_points_smoothed),
     FIELD(input_edges_merged), FIELD(refine_budget_reached), FIELD(tets_over_bounds),
     FIELD(tets_dihedral_below_10_on_thin_input), FIELD(thin_input_triangles),
-    FIELD(surface_collapses)};
+    FIELD(surface_collapses), FIELD(surface_flips)};
 /* double fields */
 static const field reals[] = {FIELD(total_seconds), FIELD(recovery_seconds),
                               FIELD(double_deviation), FIELD(min_dihedral),

@@ -253,12 +253,13 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = tr_simplify_surface(&p, opt.surface_tolerance, &opt, &ss);
     stats->surface_tolerance_bound = ss.bound;
     stats->surface_collapses = ss.collapses;
+    stats->surface_flips = ss.flips;
     stats->surface_tolerance_seconds = tr_pipeline_now() - ts;
     stage[TR_STAGE_VALIDATE] += stats->surface_tolerance_seconds;
     if (st == TR_OK && opt.verbose >= 2)
-      fprintf(stderr, "tetrec: surface tolerance: %llu collapses, %u triangles left, bound "
-              "%.3g of the diagonal, %.3f s\n", (unsigned long long)ss.collapses, p->ntris,
-              ss.bound, stats->surface_tolerance_seconds);
+      fprintf(stderr, "tetrec: surface tolerance: %llu collapses, %llu flips, %u triangles "
+              "left, bound %.3g of the diagonal, %.3f s\n", (unsigned long long)ss.collapses,
+              (unsigned long long)ss.flips, p->ntris, ss.bound, stats->surface_tolerance_seconds);
   }
   PROGRESS(TR_STAGE_VALIDATE, 1);
   say(&opt, TR_STAGE_VALIDATE, stage[TR_STAGE_VALIDATE]);
@@ -491,17 +492,24 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
                                     &thin)) == TR_OK) {
       stats->tets_dihedral_below_10_on_thin_input = thin.below_on_thin;
       stats->thin_input_triangles = thin.triangles;
+      /* under --surface-tolerance p is the simplified surface: its triangles are the
+       * ones meant, and the advice is a larger tolerance */
+      int simplified = opt.surface_tolerance != 0;
       if (refined && thin.below_on_thin && opt.verbose >= 1)
-        fprintf(stderr, "tetrec: note: %llu of the %llu tets under 10 degrees stand on input "
+        fprintf(stderr, "tetrec: note: %llu of the %llu tets under 10 degrees stand on %s "
                 "triangles with a corner under 10 degrees (%llu such triangles; the thinnest, "
-                "triangle %u of input face %u, has %.3g degrees at vertex %u): tetrec keeps every input "
-                "triangle, and the boundary faces inside such a triangle are thin too; a "
-                "surface without such triangles gives better tets\n",
+                "triangle %u of input face %u, has %.3g degrees at vertex %u): %s, and the "
+                "boundary faces inside such a triangle are thin too; %s\n",
                 (unsigned long long)thin.below_on_thin,
                 (unsigned long long)stats->tets_dihedral_below_10,
-                (unsigned long long)thin.triangles, thin.thinnest,
-                p->tri_source ? p->tri_source[thin.thinnest] : thin.thinnest, thin.thinnest_angle,
-                thin.thinnest_vertex);
+                simplified ? "simplified surface" : "input", (unsigned long long)thin.triangles,
+                thin.thinnest, p->tri_source ? p->tri_source[thin.thinnest] : thin.thinnest,
+                thin.thinnest_angle, thin.thinnest_vertex,
+                simplified ? "tetrec keeps every triangle of the simplified surface"
+                           : "tetrec keeps every input triangle",
+                simplified ? "a larger --surface-tolerance may remove more of them"
+                           : "a surface without such triangles (or --surface-tolerance) gives "
+                             "better tets");
     }
     if (opt.verbose >= 2)
       fprintf(stderr, "tetrec: %u regions\n", nreg);

@@ -22,6 +22,19 @@ static int boxes_apart(const double *lo, const double *hi, const double *lo2,
   return 0;
 }
 
+/* Target s (a near one) ready for tr_simp_within: prepared when a piece first comes
+ * near it (most pieces are decided by the first target tried). */
+static void ready_target(const tr_simp_targets *t, tr_simp_tprep *tp, unsigned char *ready,
+                         uint32_t s)
+{
+  if (!ready[s]) {
+    const uint32_t *tv = t->tri + 3 * (size_t)t->ids[s];
+    tr_simp_prepare(t->xyz + 3 * (size_t)tv[0], t->xyz + 3 * (size_t)tv[1],
+                    t->xyz + 3 * (size_t)tv[2], tp + s);
+    ready[s] = 1;
+  }
+}
+
 int tr_simp_cover(const double *A, const double *B, const double *C,
                   const tr_simp_targets *t, double d, const double *skip_lo,
                   const double *skip_hi, uint32_t budget, double *ub)
@@ -43,10 +56,27 @@ int tr_simp_cover(const double *A, const double *B, const double *C,
     free(st);
     return TR_COVER_UNDECIDED;
   }
-  for (uint32_t s = 0; s < t->n; s++) {
-    const uint32_t *tv = t->tri + 3 * (size_t)t->ids[s];
-    tr_simp_prepare(t->xyz + 3 * (size_t)tv[0], t->xyz + 3 * (size_t)tv[1],
-                    t->xyz + 3 * (size_t)tv[2], tp + s);
+  /* Only the targets near the whole triangle can be near a piece of it: those, in their
+   * order, are the ones each piece tries (a choice of which to test, widened, never
+   * narrowed), each prepared when first needed. */
+  unsigned char *ready = calloc(t->n ? t->n : 1, 1);
+  uint32_t *near = malloc(sizeof *near * (t->n ? t->n : 1)), nnear = 0;
+  if (!ready || !near) {
+    free(st), free(tp), free(ready), free(near);
+    return TR_COVER_UNDECIDED;
+  }
+  {
+    double lo[3], hi[3];
+    tr_simp_tri_box(A, B, C, lo, hi);
+    for (int k = 0; k < 3; k++)
+      lo[k] -= grow, hi[k] += grow;
+    for (uint32_t s = 0; s < t->n; s++) {
+      const uint32_t *tv = t->tri + 3 * (size_t)t->ids[s];
+      tr_simp_tri_box(t->xyz + 3 * (size_t)tv[0], t->xyz + 3 * (size_t)tv[1],
+                      t->xyz + 3 * (size_t)tv[2], tp[s].lo, tp[s].hi);
+      if (!boxes_apart(lo, hi, tp[s].lo, tp[s].hi, d * (1 + 0x1p-40)))
+        near[nnear++] = s;
+    }
   }
   piece root = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
   st[n++] = root;
@@ -69,15 +99,22 @@ int tr_simp_cover(const double *A, const double *B, const double *C,
       continue;
     unsigned any = 0;
     double best = INFINITY;
-    for (uint32_t s = 0; s < t->n; s++) {
+    for (uint32_t r = 0; r < nnear; r++) {
+      uint32_t s = near[r];
       if (boxes_apart(lo, hi, tp[s].lo, tp[s].hi, d * (1 + 0x1p-40)))
         continue;
-      unsigned mask = 0;
+      ready_target(t, tp, ready, s);
+      unsigned mask = 0, all = 1;
       double far = 0;
       for (int i = 0; i < 3; i++) {
         double u;
-        if (tr_simp_within(A, B, C, q.v[i], tp + s, d, &u))
+        /* once a vertex is out, s covers no piece: only what any lacks is asked */
+        if (!all && (any >> i & 1))
+          continue;
+        if (tr_simp_within(A, B, C, q.v[i], x[i], m, tp + s, d, &u))
           mask |= 1u << i, far = fmax(far, fmin(u, d));
+        else
+          all = 0;
       }
       any |= mask;
       if (mask == 7) { /* the first target that covers the piece decides it */
@@ -98,10 +135,14 @@ int tr_simp_cover(const double *A, const double *B, const double *C,
         r = fmax(r, sqrt(s2));
       }
       double thr = (d - (r * (1 + 0x1p-50) + 4 * grow)) * (1 - 0x1p-50);
-      for (uint32_t s = 0; s < t->n && thr > 0 && best > d; s++)
-        if (!boxes_apart(lo, hi, tp[s].lo, tp[s].hi, d * (1 + 0x1p-40)) &&
-            tr_simp_within(A, B, C, q.v[0], tp + s, thr, NULL))
+      for (uint32_t r = 0; r < nnear && thr > 0 && best > d; r++) {
+        uint32_t s = near[r];
+        if (boxes_apart(lo, hi, tp[s].lo, tp[s].hi, d * (1 + 0x1p-40)))
+          continue;
+        ready_target(t, tp, ready, s);
+        if (tr_simp_within(A, B, C, q.v[0], x[0], m, tp + s, thr, NULL))
           best = d;
+      }
     }
     if (best <= d) {
       worst = fmax(worst, best);
@@ -135,8 +176,7 @@ int tr_simp_cover(const double *A, const double *B, const double *C,
     st[n++] = (piece){{mid[2], mid[1], p[2]}};
     st[n++] = (piece){{mid[0], mid[1], mid[2]}};
   }
-  free(st);
-  free(tp);
+  free(st), free(tp), free(ready), free(near);
   if (ub)
     *ub = res == TR_COVER_YES ? worst : INFINITY;
   return res;

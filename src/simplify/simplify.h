@@ -28,7 +28,7 @@ tr_status tr_simplify_bound(const double *xyz_x, const uint32_t *tri_x, uint32_t
 
 /* What the stage did. */
 typedef struct tr_simp_stats {
-  uint64_t collapses, vertices_frozen, rounds;
+  uint64_t collapses, flips, vertices_frozen, rounds;
   double bound; /* the measured two-sided bound divided by the diagonal */
 } tr_simp_stats;
 

@@ -26,19 +26,21 @@ typedef struct tr_simp_pt {
 } tr_simp_pt;
 
 /* A target triangle with what the filter reuses for every point: its box, normal and
- * the in-plane normals of its edges (any accuracy: see dist.c), their norms. */
+ * the in-plane normals of its edges (any accuracy: see dist.c), their norms, and an upper
+ * bound of the cosine between the normal and each in-plane normal (cos0[0] unused). */
 typedef struct tr_simp_tprep {
   const double *a, *b, *c;
   double lo[3], hi[3], m;
-  double w[4][3], wn1[4], wlen[4], lo_t[4], hi_t[4];
+  double w[4][3], wn1[4], wlen[4], lo_t[4], hi_t[4], cos0[4];
 } tr_simp_tprep;
 void tr_simp_prepare(const double *a, const double *b, const double *c, tr_simp_tprep *t);
 
 /* 1 iff the exact point p of (A, B, C) lies within d (>= 0) of the closed triangle t
- * (not degenerate), exactly. *ub (may be NULL) receives an upper bound of that distance
- * (+inf when the filter did not compute one). */
+ * (not degenerate), exactly. px: tr_simp_point of p, m: the largest |coordinate| of A, B
+ * and C (what every test of the same point shares). *ub (may be NULL) receives an upper
+ * bound of that distance (+inf when the filter did not compute one). */
 int tr_simp_within(const double *A, const double *B, const double *C, tr_simp_pt p,
-                   const tr_simp_tprep *t, double d, double *ub);
+                   const double px[3], double m, const tr_simp_tprep *t, double d, double *ub);
 
 /* The double nearest to p's exact position, within 2^-46 max|coord| of it. */
 void tr_simp_point(const double *A, const double *B, const double *C, tr_simp_pt p,

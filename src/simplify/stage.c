@@ -1,15 +1,16 @@
-/* The stage (tr_simplify_surface): collapses within the envelope (collapse.c), the
- * exact self-intersection test of the input stage on the result, and when two triangles
- * of it cross, the vertices that made them frozen and the collapses run again from the
- * input; then the result validated like an input and its two-sided bound measured
- * (bound.c), which must hold: the guarantee does not rest on the local checks alone. */
+/* The stage (tr_simplify_surface): collapses and flips within the envelope
+ * (improve.c), the exact self-intersection test of the input stage on the result, and
+ * when two triangles of it cross, the points that made them frozen and the operations
+ * run again from the input; then the result validated like an input and its two-sided
+ * bound measured (bound.c), which must hold: the guarantee does not rest on the local
+ * checks alone. */
 #define _DEFAULT_SOURCE
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "collapse.h"
+#include "improve.h"
 #include "input/validate.h"
 #include "simplify.h"
 
@@ -40,9 +41,10 @@ static uint32_t root(const uint32_t *into, uint32_t v)
 }
 
 /* The PLC of the surviving triangles: the points that stay, renumbered in order. */
-static tr_status build(const struct tr_plc *in, const uint32_t *into, const uint32_t *tris,
-                       const uint32_t *tri_of, uint32_t nt, uint32_t *newid, tr_plc **out)
+static tr_status build(const struct tr_plc *in, const uint32_t *into, const tr_simp_result *r,
+                       uint32_t *newid, tr_plc **out)
 {
+  const uint32_t *tris = r->tris, *tri_of = r->tri_of, nt = r->ntris;
   uint32_t n = 0;
   for (uint32_t v = 0; v < in->npoints; v++)
     newid[v] = into[v] == v ? n++ : UINT32_MAX;
@@ -119,27 +121,27 @@ tr_status tr_simplify_surface(struct tr_plc **plcp, double eps, const tr_options
     frozen[in->segs[i]] = 1;
   tr_plc *res = NULL;
   for (int round = 0; st == TR_OK && round < MAX_ROUNDS; round++) {
-    uint32_t *tris = NULL, *tri_of = NULL, nt = 0;
-    uint64_t nc = 0;
+    tr_simp_result r;
     stats->rounds++;
-    st = tr_simp_collapse(in, ds, frozen, &tris, &tri_of, &nt, into, &nc);
-    if (st == TR_OK && nc == 0) {
-      free(tris), free(tri_of);
+    st = tr_simp_improve(in, ds, frozen, into, &r);
+    if (st == TR_OK && r.collapses + r.flips == 0) {
+      tr_simp_result_free(&r);
       break; /* nothing moved: the input as it is */
     }
+    uint64_t nc = r.collapses, nf = r.flips;
     if (st == TR_OK)
-      st = build(in, into, tris, tri_of, nt, newid, &res);
-    free(tris), free(tri_of);
+      st = build(in, into, &r, newid, &res);
     uint32_t *pairs = NULL;
     size_t np = 0;
     if (st == TR_OK)
       st = tr_input_self_intersection_pairs(res, TR_SELFINT_AUTO, &pairs, &np);
     if (st == TR_OK && np == 0) {
-      stats->collapses = nc;
+      stats->collapses = nc, stats->flips = nf;
       free(pairs);
+      tr_simp_result_free(&r);
       break;
     }
-    /* freeze every input vertex that went into a vertex of a crossing triangle */
+    /* freeze every input point that went into a point of a crossing triangle */
     for (uint32_t v = 0; v < nv; v++)
       if (newid[v] != UINT32_MAX)
         oldid[newid[v]] = v;
@@ -153,18 +155,20 @@ tr_status tr_simplify_surface(struct tr_plc **plcp, double eps, const tr_options
       if (hit[root(into, v)] && !frozen[v])
         frozen[v] = 1, stats->vertices_frozen++;
     free(hit), free(pairs);
+    tr_simp_result_free(&r);
     tr_plc_destroy(res);
     res = NULL;
     if (opt && opt->verbose >= 2)
-      fprintf(stderr, "tetrec: surface tolerance: %zu crossing pairs after %llu collapses, "
-              "their vertices frozen\n", np, (unsigned long long)nc);
+      fprintf(stderr, "tetrec: surface tolerance: %zu crossing pairs after %llu collapses and "
+              "%llu flips, their vertices frozen\n", np, (unsigned long long)nc,
+              (unsigned long long)nf);
   }
   free(frozen), free(into), free(newid), free(oldid);
   if (st == TR_OK && !res) {
     if (opt && opt->verbose >= 1 && stats->rounds >= MAX_ROUNDS)
       fprintf(stderr, "tetrec: warning: the simplified surface still crossed itself after "
               "%d rounds: the input surface is meshed as it is\n", MAX_ROUNDS);
-    stats->collapses = 0;
+    stats->collapses = stats->flips = 0;
     return TR_OK;
   }
   if (st == TR_OK) {
@@ -189,7 +193,7 @@ tr_status tr_simplify_surface(struct tr_plc **plcp, double eps, const tr_options
       fprintf(stderr, "tetrec: warning: the simplified surface could not be proven within "
               "the tolerance as a whole (%s triangle %u undecided): the input surface is "
               "meshed as it is\n", br.side ? "simplified" : "input", br.tri);
-    stats->collapses = 0;
+    stats->collapses = stats->flips = 0;
     tr_plc_destroy(res);
     return TR_OK;
   }

@@ -4,9 +4,11 @@
  * validator against the simplified surface (tmesh.h), and every simplified output's
  * boundary checked against the input by the bound (tr_simplify_bound, on the mesh's own
  * boundary faces and written doubles). */
+#define _DEFAULT_SOURCE
 #include <math.h>
 
 #include "refine/quality.h"
+#include "simplify/edit.h"
 #include "simplify/simplify.h"
 #include "../pipeline/tmesh.h"
 
@@ -187,6 +189,54 @@ static void fan_box_flat(void) { fan_box_case("fan box", 16, 0, 1e-3, 1); }
 static void fan_box_bump(void) { fan_box_case("fan box, bumps", 16, 1e-4, 1e-3, 1); }
 static void fan_box_plain(void) { fan_box_case("fan box, no refinement", 8, 0, 1e-3, 0); }
 
+/* The unit cube sheared by x += 2 y: its faces z = 0 and z = 1 are parallelograms, each
+ * cut along its long diagonal into a cap (corners 153.4, 18.4 and 8.1 degrees) and its
+ * twin. Every corner is on three sharp edges, so nothing collapses; flipping each long
+ * diagonal into the short one is the only move (the other faces' triangles, 26.6 degrees
+ * at worst, are right triangles, no caps), and it raises the smallest angle to 18.4
+ * degrees without moving the surface at all (the proof of the bound, by pieces, needs
+ * the tolerance: the pieces across the new diagonal shrink to its size). */
+static void sheared_box_flips(void)
+{
+  double x[24];
+  for (int i = 0; i < 8; i++) {
+    x[3 * i] = (i & 1) + 2 * ((i >> 1) & 1);
+    x[3 * i + 1] = (i >> 1) & 1;
+    x[3 * i + 2] = (i >> 2) & 1;
+  }
+  const uint32_t t[36] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                          2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+  tr_plc *in = tm_plc(x, 8, t, 12);
+  tr_options opt = tm_options();
+  opt.surface_tolerance = 1e-3;
+  tm_run a, b;
+  tr_mesh *m1 = tm_mesh(&a, "sheared box", in, &opt, TR_CHK_TOPOLOGY);
+  tr_mesh *m2 = tm_mesh(&b, "sheared box", in, &opt, TR_CHK_TOPOLOGY);
+  if (m1 && m2) {
+    EXPECT(a.st.surface_flips == 2 && a.st.surface_collapses == 0,
+           "sheared box: %llu flips and %llu collapses, not 2 and 0",
+           (unsigned long long)a.st.surface_flips, (unsigned long long)a.st.surface_collapses);
+    double worst = 180;
+    for (uint32_t i = 0; i < a.used->ntris; i++) {
+      const uint32_t *v = a.used->tris + 3 * (size_t)i;
+      worst = fmin(worst, tr_simp_min_angle(a.used->xyz + 3 * (size_t)v[0],
+                                            a.used->xyz + 3 * (size_t)v[1],
+                                            a.used->xyz + 3 * (size_t)v[2]));
+    }
+    EXPECT(fabs(worst - atan(1.0 / 3) * 180 / M_PI) < 1e-9,
+           "sheared box: smallest angle %.12g after the flips, not atan(1/3)", worst);
+    check_output_bound("sheared box", in, m1, 1e-3);
+    EXPECT(a.st.surface_tolerance_bound <= 1e-3, "sheared box: reported bound %g",
+           a.st.surface_tolerance_bound);
+    EXPECT(tr_mesh_num_tets(m1) == tr_mesh_num_tets(m2) &&
+               !memcmp(tr_mesh_tets(m1), tr_mesh_tets(m2),
+                       sizeof(uint32_t) * 4 * tr_mesh_num_tets(m1)),
+           "sheared box: two runs differ");
+  }
+  tm_free(&a), tm_free(&b);
+  tr_plc_destroy(in);
+}
+
 /* Too small to move anything: the mesh is the input's (the bumps are 1e-4, the
  * tolerance 1e-9). */
 static void tiny_tolerance(void)
@@ -243,6 +293,7 @@ int main(int argc, char **argv)
       {"fan_box_flat", fan_box_flat, NULL},
       {"fan_box_bump", fan_box_bump, NULL},
       {"fan_box_plain", fan_box_plain, NULL},
+      {"sheared_box_flips", sheared_box_flips, NULL},
       {"tiny_tolerance", tiny_tolerance, NULL},
       {"bad_values", bad_values, NULL},
   };
