@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "refine/quality.h"
 #include "refine/refine_impl.h"
@@ -793,6 +794,8 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
   if (plc->nsegs)
     return tr_error(TR_ERR_UNSUPPORTED, "quality refinement of inputs with free segments is "
                     "not supported yet (%u segments)", plc->nsegs);
+  struct timespec t0;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t0);
   discard_outer(m);
   rf_ctx c;
   ctx_setup(&c, m, plc, par, st);
@@ -828,6 +831,12 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
   }
   if (s == TR_OK)
     s = rf_subs_export(&c, sub);
+  if (par->verbose >= 2) {
+    struct timespec t1;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t1);
+    fprintf(stderr, "tetrec: refinement CPU (every thread): %.3f s\n",
+            (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+  }
   if (par->verbose >= 1 && st->rounds)
     fprintf(stderr, "tetrec: refinement rounds: %llu, %llu points inserted in them on %d "
             "threads, %llu of their tets left to the serial loop\n",
