@@ -106,8 +106,8 @@ typedef struct tr_refine_params {
                            cap of spacing_radii; refine.c, spacing_cap) */
   int threads;          /* threads for the rounds of parallel insertion (rounds.c); 0 or 1:
                            one. The mesh does not depend on it */
-  uint32_t round_min;   /* bad tets queued before rounds run; 0: RF_ROUND_MIN (tests set
-                           a small one) */
+  uint32_t round_min;   /* bad tets queued (dead entries included) before rounds run;
+                           0: no rounds (tr_options.refine_rounds) */
 } tr_refine_params;
 
 typedef struct tr_refine_stats {

@@ -296,9 +296,7 @@ tr_status rf_push_tet(rf_ctx *c, uint32_t t);
 tr_status rf_refine_tet(rf_ctx *c, uint32_t t);
 
 /* ---- rounds.c ---- */
-/* Bad tets queued before the loop runs rounds (par.round_min 0), and the fewest points a
- * round may add (else the next tet goes the serial way). */
-#define RF_ROUND_MIN 32768u
+/* The fewest points a round may add (else the next tet goes the serial way). */
 #define RF_ROUND_LEAST 64u
 /* Rounds are allowed here and enough bad tets are queued. */
 int rf_round_wanted(const rf_ctx *c);

@@ -2,13 +2,14 @@
  * with deterministic reservations (Blelloch, Fineman, Gibbons, Shun 2012, "Internally
  * deterministic parallel algorithms can be fast").
  *
- * Used only while many bad tets are queued (par.round_min, RF_ROUND_MIN by default) and
- * no encroached piece is, whatever the thread count: the mesh is then the same for any
- * number of threads, and a small mesh never reaches a round, so its refinement stays the
- * serial loop's, byte for byte. A round:
+ * Off by default; with par.round_min (tr_options.refine_rounds, --refine-rounds N) used
+ * while at least that many bad tets are queued and no encroached piece is, whatever the
+ * thread count: the mesh is then the same for any number of threads (not the one made
+ * without rounds). Off, because they cost more CPU than they save so far (elephant.off,
+ * docs/refinement.md "Parallel refinement"). A round:
  *  1. (serial) the next bad tets of the queue, in queue order, up to RF_ROUND_K of them;
- *     a dead or changed tet is dropped as the loop drops it; a tet that touches (itself
- *     or across a face) one taken before it in this round waits for the next round: its
+ *     a dead or changed tet is dropped as the loop drops it; a tet with a vertex within
+ *     two faces of one taken before it in this round waits (at the queue's back): its
  *     cavity would most likely lose to that one's;
  *  2. (parallel, read only) each candidate's circumcentre, its cavity (cavity.c, with
  *     the thread's own scratch) and every test the loop makes before it inserts: a
@@ -24,7 +25,7 @@
  *     their new tets;
  *  5. (serial, candidate order) the surplus cavity slots freed, v2t, the vertices'
  *     insertion radii and spacings, the new bad tets queued; then the candidates left to
- *     the serial loop; the losers and the waiting tets go back to the queue's front.
+ *     the serial loop; the losers and the waiting tets go to the queue's back.
  * A thread only reads what another thread may write in the same phase when that is its
  * own candidate's, so there is no lock; work is handed out in chunks by an atomic
  * counter, and what a candidate computes does not depend on the thread that runs it.
@@ -41,7 +42,7 @@
 #include "refine/quality.h"
 #include "refine/refine_impl.h"
 
-#define RF_ROUND_K 4096u    /* candidates a round takes at most */
+#define RF_ROUND_K 4096u   /* candidates a round takes at most */
 #ifndef RF_ROUND_SCAN
 #define RF_ROUND_SCAN 16384u
 #endif /* queue items a round looks at, at most */
@@ -469,8 +470,8 @@ static tr_status rounds_init(rf_ctx *c)
 
 int rf_round_wanted(const rf_ctx *c)
 {
-  uint32_t min = c->par.round_min ? c->par.round_min : RF_ROUND_MIN;
-  return c->rounds_on && !c->par.sizing && (c->qtet.n - c->htet) / 5 >= min;
+  return c->rounds_on && c->par.round_min && !c->par.sizing &&
+         (c->qtet.n - c->htet) / 5 >= c->par.round_min;
 }
 
 /* Step 1's claim: the vertices of t and of the tets across its faces (flags in R->vmark),

@@ -132,6 +132,7 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   par.partial = opt->refine_partial;
   /* rounds.c: the mesh is the same for any count */
   par.threads = tr_delaunay_thread_count(opt->threads > 0 ? opt->threads : 0);
+  par.round_min = opt->refine_rounds;
   /* the smallest of all bounds sizes the default budget */
   double least, *bound;
   uint32_t *id;
