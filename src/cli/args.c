@@ -199,7 +199,7 @@ static const struct option {
      "terminal and the run takes over a second"},
     {"--threads", "N", C_MESH | C_DELAUNAY | C_CONVERT,
      "threads for the Delaunay tetrahedralization, for reading a\n"
-     "large .node, for the rounds of quality refinement and for\n"
+     "large .node, for the rounds of --refine-rounds and for\n"
      "formatting the output file (default 0: every core); the\n"
      "output is the same for any N, byte for byte"},
     {"-j", "N", C_MESH | C_DELAUNAY | C_CONVERT, "the same as --threads"},
