@@ -237,7 +237,8 @@ typedef struct tr_options {
                    also new points at slivers: interior ones
                    (src/sliver/insert.c) and, under the worst tets, exact ones on their
                    input edges and facets (src/sliver/caps.c, src/sliver/sliver.c) */
-  int threads; /* threads for the Delaunay stage: 0 (default) every online core, N > 0 at
+  int threads; /* threads for the Delaunay stage and refinement's rounds of parallel
+                  insertion (docs/refinement.md): 0 (default) every online core, N > 0 at
                   most N (64 at most are used); the output is the same byte for byte for
                   any value. Negative: TR_ERR_USAGE */
   double quality_subface_ratio; /* with refinement: sub-faces whose radius-edge ratio
@@ -296,6 +297,11 @@ typedef struct tr_options {
    * segments stay chains of edges; vertices keep their input coordinates. 0 (default):
    * the input surface exactly. Negative or not finite: TR_ERR_USAGE */
   double surface_tolerance;
+  /* > 0: quality refinement inserts circumcentres in rounds of parallel insertion on
+   * `threads` threads while at least this many bad tets are queued (docs/refinement.md,
+   * "Parallel refinement"); the mesh is the same for any thread count, but another mesh
+   * than without rounds. 0 (default): off, one thread */
+  uint32_t refine_rounds;
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);

@@ -11,6 +11,8 @@
 #               dir's realworld link: ln -s <corpus> <build>/realworld)
 #   A=v         volume bound (default 8e-9)   R=r  radius-edge bound (default 1.414)
 #   THREADS=n   tetrec --threads (default 1)
+#   ROUNDS=n    tetrec --refine-rounds n: refinement's rounds of parallel insertion from n
+#               queued bad tets (default none: the serial loop; docs/refinement.md)
 #   TETGEN=path TetGen 1.6 (default tetgen on PATH; none: tetrec only)
 #   KEEP=1      keep the output files (1 GB or more at the default size) in bench/out/refine-big
 set -euo pipefail
@@ -20,6 +22,7 @@ MODEL=${MODEL:-$BUILD/realworld/cgal/data/meshes/elephant.off}
 A=${A:-8e-9}
 R=${R:-1.414}
 THREADS=${THREADS:-1}
+ROUNDS=${ROUNDS:-}
 TETGEN=${TETGEN:-$(command -v tetgen || true)}
 OUT=$ROOT/bench/out/refine-big
 mkdir -p "$OUT"
@@ -39,9 +42,9 @@ row() {
       l, w, u + s, r / 1024, (n > 0 ? r * 1024 / n : 0), n }'
 }
 
-echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); $(basename "$MODEL") -q $R -a $A"
+echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); $(basename "$MODEL") -q $R -a $A${ROUNDS:+ --refine-rounds $ROUNDS} --threads $THREADS"
 /usr/bin/time -o "$OUT/time.txt" -f "%e %U %S %M" "$TR" mesh "$MODEL" -o "$OUT/tetrec.mesh" \
-  --quality "$R" -a "$A" --threads "$THREADS" -v --stats "$OUT/stats.json" >"$OUT/tetrec.log" 2>&1 ||
+  --quality "$R" -a "$A" --threads "$THREADS" ${ROUNDS:+--refine-rounds "$ROUNDS"} -v --stats "$OUT/stats.json" >"$OUT/tetrec.log" 2>&1 ||
   { echo "tetrec failed:"; tail -5 "$OUT/tetrec.log"; exit 1; }
 tets=$(sed -n 's/.*"volume_elements": \([0-9]*\).*/\1/p' "$OUT/stats.json")
 row tetrec "$tets"

@@ -179,6 +179,11 @@ static const struct option {
      "domain's volume with --max-volume, at most 2^24 or 8 per\n"
      "input point); a volume bound asking for over 8 tets per\n"
      "budget point is refused (exit 8) before refinement starts"},
+    {"--refine-rounds", "N", C_MESH,
+     "refinement inserts circumcentres in rounds of parallel\n"
+     "insertion on --threads threads while N or more bad tets are\n"
+     "queued (default: off); the mesh is the same for any number\n"
+     "of threads, not the one made without rounds"},
     {"--optimize", "N", C_MESH,
      "sliver removal after quality refinement (runs only with\n"
      "--quality or --max-volume): 0 off, 1 flips that raise the\n"
@@ -194,9 +199,9 @@ static const struct option {
      "terminal and the run takes over a second"},
     {"--threads", "N", C_MESH | C_DELAUNAY | C_CONVERT,
      "threads for the Delaunay tetrahedralization, for reading a\n"
-     "large .node and for formatting the output file (default 0:\n"
-     "every core); the output is the same for any N, byte for\n"
-     "byte"},
+     "large .node, for the rounds of --refine-rounds and for\n"
+     "formatting the output file (default 0: every core); the\n"
+     "output is the same for any N, byte for byte"},
     {"-j", "N", C_MESH | C_DELAUNAY | C_CONVERT, "the same as --threads"},
     {"--strict-doubles", NULL, C_MESH,
      "fail (exit 9) when a written double lies farther than\n"
@@ -355,7 +360,8 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
       a->msh_version = 22 | TR_WRITE_BINARY;
     else
       return tr_error(TR_ERR_USAGE, "--msh-version is 4.1, 2.2, 4.1b or 2.2b, not '%s'", v);
-  } else if (!strcmp(name, "--round-budget") || !strcmp(name, "--refine-budget")) {
+  } else if (!strcmp(name, "--round-budget") || !strcmp(name, "--refine-budget") ||
+             !strcmp(name, "--refine-rounds")) {
     /* digits only, 1 .. 10^15: strtoull alone would take "-1", "+5" and " 7" */
     size_t len = strlen(v);
     int ok = len > 0 && len <= 16 && strspn(v, "0123456789") == len;
@@ -365,7 +371,12 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
                       v);
     if (!strcmp(name, "--round-budget"))
       a->round_budget = n;
-    else
+    else if (!strcmp(name, "--refine-rounds")) {
+      if (n > UINT32_MAX)
+        return tr_error(TR_ERR_USAGE, "%s needs a whole number from 1 to %u, not '%s'", name,
+                        UINT32_MAX, v);
+      a->refine_rounds = n;
+    } else
       a->refine_budget = n;
   } else if (!strcmp(name, "--threads") || !strcmp(name, "-j")) {
     size_t len = strlen(v);

@@ -26,6 +26,7 @@ typedef struct {
   double quality, quality_dih, max_volume, subface_quality; /* 0: off */
   uint64_t refine_budget;                  /* 0: the default */
   uint64_t round_budget; /* 0: the default */
+  uint64_t refine_rounds; /* 0: off */
   int recovery;          /* tr_options.recovery */
   int resolve;           /* tr_options.resolve: --resolve 1, --resolve-internal 2 */
   double surface_tolerance; /* --surface-tolerance, 0: off */

@@ -192,6 +192,7 @@ static int cmd_mesh(const tr_cli_args *a)
   opt.quality_subface_ratio = a->subface_quality;
   opt.max_volume = a->max_volume;
   opt.refine_budget = a->refine_budget;
+  opt.refine_rounds = (uint32_t)a->refine_rounds;
   opt.refine_partial = 1; /* the mesh at the budget is written, then exit 8 */
   if (a->optimize)
     opt.optimize = a->optimize - 1;

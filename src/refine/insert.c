@@ -148,6 +148,25 @@ static int rounding_allows(const struct tr_mesh *m, const uint32_t *nv, size_t n
   return 0;
 }
 
+int rf_cone_admits(const struct tr_mesh *m, const uint32_t *bf, size_t nbf, const double x[3])
+{
+  for (size_t i = 0; i < nbf; i++) {
+    const uint32_t *v = m->tv + 4 * (size_t)(bf[i] >> 2);
+    int k = (int)(bf[i] & 3);
+    for (int j = 0; j < 3; j++)
+      if (v[tr_face_vtx[k][j]] == TR_GHOST || inseparable(rounded(m, v[tr_face_vtx[k][j]]), x))
+        return 0;
+  }
+  for (size_t i = 0; i < nbf; i++) {
+    const uint32_t *v = m->tv + 4 * (size_t)(bf[i] >> 2);
+    int k = (int)(bf[i] & 3);
+    if (tr_orient3d(rounded(m, v[tr_face_vtx[k][0]]), rounded(m, v[tr_face_vtx[k][1]]),
+                    rounded(m, v[tr_face_vtx[k][2]]), x) <= 0)
+      return 0;
+  }
+  return 1;
+}
+
 tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok)
 {
   struct tr_mesh *m = c->m;

@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "refine/quality.h"
 #include "refine/refine_impl.h"
@@ -491,6 +492,31 @@ static tr_status refine_tet(rf_ctx *c, uint32_t t, int at_centroid)
   return TR_OK;
 }
 
+int rf_tet_bad(const rf_ctx *c, uint32_t t)
+{
+  return tet_bad(c, t);
+}
+int rf_too_big(const rf_ctx *c, uint32_t t)
+{
+  return too_big(c, t);
+}
+int rf_forced_by_angle(const rf_ctx *c, uint32_t t)
+{
+  return forced_by_angle(c, t);
+}
+int rf_too_close(const rf_ctx *c, const uint32_t *tets, size_t n, const double *p, double cap)
+{
+  return too_close(c, tets, n, p, cap);
+}
+tr_status rf_push_tet(rf_ctx *c, uint32_t t)
+{
+  return push_tet(c, t);
+}
+tr_status rf_refine_tet(rf_ctx *c, uint32_t t)
+{
+  return refine_tet(c, t, 0);
+}
+
 /* Outer and ghost tets are freed; the faces they shared with inner tets become TR_NONE. */
 static void discard_outer(struct tr_mesh *m)
 {
@@ -521,6 +547,7 @@ static void discard_outer(struct tr_mesh *m)
 
 static void ctx_free(rf_ctx *c)
 {
+  rf_rounds_free(c);
   rf_longs_free(&c->longs);
   free(c->vrad);
   free(c->ssfoot);
@@ -566,6 +593,18 @@ static uint64_t spacing_cap(const rf_ctx *c)
   return cap < c->par.budget / 2 ? cap : c->par.budget / 2;
 }
 
+/* The points a round (rounds.c) may add: the budget's and, while the spacings or the close
+ * splits are on, spacing_cap's, so that the loop switches them off at the same point
+ * count as without rounds. */
+static uint64_t round_room(const rf_ctx *c)
+{
+  uint64_t room = c->par.budget > c->st->points ? c->par.budget - c->st->points : 0;
+  uint64_t cap = spacing_cap(c);
+  if ((c->spacing_on || c->close_splits) && cap - c->st->points < room)
+    room = cap > c->st->points ? cap - c->st->points : 0;
+  return room;
+}
+
 /* Serves the queues until they are empty; the caller seeds them. */
 static tr_status run(rf_ctx *c)
 {
@@ -609,6 +648,13 @@ static tr_status run(rf_ctx *c)
       compact_queue(&c->qface, &c->hface);
       if (!c->sfdead[f] && !c->sfnosplit[f])
         TR_CHECK(rf_split_facet(c, f));
+    } else if (rf_round_wanted(c) && round_room(c) >= RF_ROUND_LEAST) {
+      TR_CHECK(rf_round(c, round_room(c)));
+      if (c->htet > 5 * 4096 && c->htet * 2 > c->qtet.n) {
+        memmove(c->qtet.a, c->qtet.a + c->htet, (c->qtet.n - c->htet) * sizeof *c->qtet.a);
+        c->qtet.n -= c->htet;
+        c->htet = 0;
+      }
     } else if (c->htet < c->qtet.n) {
       uint32_t it[5];
       memcpy(it, c->qtet.a + c->htet, sizeof it);
@@ -748,6 +794,8 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
   if (plc->nsegs)
     return tr_error(TR_ERR_UNSUPPORTED, "quality refinement of inputs with free segments is "
                     "not supported yet (%u segments)", plc->nsegs);
+  struct timespec t0;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t0);
   discard_outer(m);
   rf_ctx c;
   ctx_setup(&c, m, plc, par, st);
@@ -757,6 +805,7 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
   c.shape_on = par->subface_ratio > 0;
   c.spacing_on = par->spacing_radii;
   c.close_splits = 1;
+  c.rounds_on = 1; /* rounds.c: not in the sliver stage's hooks */
   c.shape_bound = par->subface_ratio;
   if (s == TR_OK)
     s = rf_sizing_init(&c);
@@ -782,6 +831,17 @@ tr_status tr_refine(struct tr_mesh *m, const struct tr_plc *plc, tr_subfaces *su
   }
   if (s == TR_OK)
     s = rf_subs_export(&c, sub);
+  if (par->verbose >= 2) {
+    struct timespec t1;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t1);
+    fprintf(stderr, "tetrec: refinement CPU (every thread): %.3f s\n",
+            (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+  }
+  if (par->verbose >= 1 && st->rounds)
+    fprintf(stderr, "tetrec: refinement rounds: %llu, %llu points inserted in them on %d "
+            "threads, %llu of their tets left to the serial loop\n",
+            (unsigned long long)st->rounds, (unsigned long long)st->round_points,
+            par->threads > 1 ? par->threads : 1, (unsigned long long)st->round_serial);
   if (par->verbose >= 1 && (s == TR_OK || s == TR_ERR_NOMEM))
     fprintf(stderr,
             "tetrec: refinement added %llu points (%llu on edges, %llu on facets, %llu "

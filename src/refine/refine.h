@@ -104,6 +104,10 @@ typedef struct tr_refine_params {
   uint32_t nvsize;
   uint64_t size_points; /* the points the field is expected to ask for (raises the point
                            cap of spacing_radii; refine.c, spacing_cap) */
+  int threads;          /* threads for the rounds of parallel insertion (rounds.c); 0 or 1:
+                           one. The mesh does not depend on it */
+  uint32_t round_min;   /* bad tets queued (dead entries included) before rounds run;
+                           0: no rounds (tr_options.refine_rounds) */
 } tr_refine_params;
 
 typedef struct tr_refine_stats {
@@ -118,6 +122,9 @@ typedef struct tr_refine_stats {
   int spacing_stopped;      /* spacing_radii: the radius-edge refinement ended at its point
                                cap (refine.c); tets over a volume bound were still refined */
   int budget_reached;       /* par->partial: refinement stopped at par->budget points */
+  uint64_t rounds;          /* rounds of parallel insertion (rounds.c) */
+  uint64_t round_points;    /* points inserted by them */
+  uint64_t round_serial;    /* their candidates left to the serial loop */
 } tr_refine_stats;
 
 /* Tet t's volume bound under par: the smaller of par->max_volume and its region's

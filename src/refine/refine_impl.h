@@ -113,6 +113,9 @@ typedef struct rf_ctx {
    * size_ss / size_sf on not checked against it yet */
   double *vh;
   uint32_t capvh, vh_hint, size_ss, size_sf;
+  /* rounds of parallel insertion (rounds.c): allowed (tr_refine only), and their state */
+  int rounds_on;
+  struct rround *rounds;
 } rf_ctx;
 
 /* Squared distance of two points in doubles (a measure for the rules, never a decision
@@ -282,6 +285,26 @@ void rf_cavity_release(rf_ctx *c);
  * radius (rad, or its distance to the nearest vertex of its new tets when smaller), and
  * its new tets queued when bad. */
 tr_status rf_after_insert(rf_ctx *c, uint32_t pid, int kind, uint32_t own, double rad);
+/* The loop's own tests and steps, for rounds.c: tet t is bad; over its volume bound; left
+ * for a small input angle; p within the radius of a vertex of the tets (or within cap);
+ * t queued when bad; t refined as the loop does. */
+int rf_tet_bad(const rf_ctx *c, uint32_t t);
+int rf_too_big(const rf_ctx *c, uint32_t t);
+int rf_forced_by_angle(const rf_ctx *c, uint32_t t);
+int rf_too_close(const rf_ctx *c, const uint32_t *tets, size_t n, const double *p, double cap);
+tr_status rf_push_tet(rf_ctx *c, uint32_t t);
+tr_status rf_refine_tet(rf_ctx *c, uint32_t t);
+
+/* ---- rounds.c ---- */
+/* The fewest points a round may add (else the next tet goes the serial way). */
+#define RF_ROUND_LEAST 64u
+/* Rounds are allowed here and enough bad tets are queued. */
+int rf_round_wanted(const rf_ctx *c);
+/* One round: up to `room` circumcentres of queued bad tets inserted on par.threads
+ * threads, the rest of its tets refined by the serial loop, the losers queued first. The
+ * same mesh for any thread count. */
+tr_status rf_round(rf_ctx *c, uint64_t room);
+void rf_rounds_free(rf_ctx *c);
 
 /* ---- split.c ---- */
 /* Splits sub-segment g (queued, live): inserted, or marked ssnosplit. */
@@ -297,5 +320,9 @@ tr_status rf_split_facet(rf_ctx *c, uint32_t f);
  * vertex and in no tet) when the cone would not glue, or when the point is refused for
  * the doubles it and its cone are written as (rounding_allows). */
 tr_status rf_insert(rf_ctx *c, uint32_t pid, int *ok);
+/* The doubles' test of rf_insert for a point at the double x (no exact point of its own)
+ * coned over the faces bf (4 * tet + face): no vertex of them inseparable from x, every
+ * new tet strictly positive. */
+int rf_cone_admits(const struct tr_mesh *m, const uint32_t *bf, size_t nbf, const double x[3]);
 
 #endif

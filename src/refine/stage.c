@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "core/memtrim.h"
+#include "delaunay/delaunay.h"
 #include "refine/quality.h"
 #include "refine/refine_stage.h"
 #include "refine/sizing.h"
@@ -129,6 +130,9 @@ tr_status tr_refine_stage(struct tr_mesh *m, const struct tr_plc *plc, tr_subfac
   par.wedge_grading = 1; /* angles.c */
   par.spacing_radii = opt->refine_spacing_radii;
   par.partial = opt->refine_partial;
+  /* rounds.c: the mesh is the same for any count */
+  par.threads = tr_delaunay_thread_count(opt->threads > 0 ? opt->threads : 0);
+  par.round_min = opt->refine_rounds;
   /* the smallest of all bounds sizes the default budget */
   double least, *bound;
   uint32_t *id;

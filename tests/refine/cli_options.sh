@@ -5,7 +5,8 @@
 # commands are usage errors (exit 1; --subface-quality under 1 too), --subface-quality and
 # --keep-edges without refinement are warned about, the point budget stops a run with exit 8, a
 # message and the mesh made so far written, and --stats carries the quality rows; `check
-# --quality R/D -a V` counts the tets over the bounds. Every mesh written is checked.
+# --quality R/D -a V` counts the tets over the bounds; --refine-rounds gives the same mesh on
+# 1 and 2 threads. Every mesh written is checked.
 # usage: cli_options.sh TETREC SURFACE WORKDIR
 set -u
 T=$1 S=$2 W=$3
@@ -63,4 +64,11 @@ grep -q '"status": "TR_ERR_NOMEM"' "$W/p.json" && grep -q '"refine_budget_reache
   grep -qE '"tets_over_bounds": [1-9]' "$W/p.json" &&
   grep -q '"points_added_for_quality": 130,' "$W/p.json" &&
   grep -q '"points_added_for_sliver": 0,' "$W/p.json" || { echo "FAIL: budget stats rows"; cat "$W/p.json"; fails=$((fails + 1)); }
+# --refine-rounds N: refinement's rounds of parallel insertion (docs/refinement.md), the
+# same files on 1 and 2 threads, conforming exactly; N = 0 is a usage error
+expect 0 "refinement rounds: [1-9][0-9]*, [1-9][0-9]* points inserted in them" -- mesh "$S" -a 0.0005 --refine-rounds 256 -j 1 -v -o "$W/r1.node" --exact
+expect 0 "" -- mesh "$S" -a 0.0005 --refine-rounds 256 -j 2 -q -o "$W/r2.node" --exact
+cmp -s "$W/r1.node" "$W/r2.node" && cmp -s "$W/r1.ele" "$W/r2.ele" || { echo "FAIL: --refine-rounds: 1 and 2 threads differ"; fails=$((fails + 1)); }
+expect 0 "conforms exactly.*volume equals" -- check "$S" "$W/r2.node"
+expect 1 "refine-rounds needs a whole number" -- mesh "$S" --quality 1.414 --refine-rounds 0 -o "$W/r0.node"
 exit $((fails != 0))
