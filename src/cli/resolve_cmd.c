@@ -50,6 +50,11 @@ tr_status tr_cli_resolve(const tr_cli_args *a)
       fprintf(stderr, ", of which the last %u (triangles %u..%u) are internal facets",
               si.ninternal, si.ntris - si.ninternal, si.ntris - 1);
     fprintf(stderr, ": no self-intersection (%.3f s)\n", si.seconds);
+    if (si.left.nonmanifold)
+      fprintf(stderr, "tetrec: note: %s has %u edges of more than two triangles (%s): valid "
+              "for `tetrec mesh`; `tetrec check-surface` lists them as non-manifold\n", a->out,
+              si.left.nonmanifold, si.ninternal ? "internal facets, or parts of the solid "
+              "touching along an edge" : "parts of the solid touching along an edge");
   }
   tr_plc_destroy(out);
   tr_plc_destroy(in);

@@ -267,6 +267,7 @@ static tr_status defects(const surf *s, tr_snap_defects *d, uint32_t first[2])
         break;
     }
     d->open += j - i == 1;
+    d->nonmanifold += j - i > 2;
   }
   struct tr_plc w;
   memset(&w, 0, sizeof w);
@@ -363,21 +364,23 @@ static tr_status to_plc(const surf *s, const struct tr_plc *in, struct tr_plc **
 }
 
 static tr_status not_converged(const struct tr_plc *in, const surf *s, const tr_snap_defects *d,
-                               const uint32_t first[2], int rounds)
+                               const uint32_t first[2], int rounds, int diverges)
 {
   const char *name = in->source ? in->source : "input";
+  const char *why = diverges ? " (it grows instead of settling: the next round would "
+                               "resolve more than twice the first one's triangles)" : "";
   if (first[0] == UINT32_MAX)
-    return tr_error(TR_ERR_SELF_INTERSECT, "%s: resolve: after %d rounds of rounding the "
+    return tr_error(TR_ERR_SELF_INTERSECT, "%s: resolve: after %d rounds of rounding%s the "
                     "surface still has %u zero-area and %u duplicate triangles and "
-                    "%u open edges (no crossing pair); nothing written", name, rounds, d->zero,
+                    "%u open edges (no crossing pair); nothing written", name, rounds, why, d->zero,
                     d->duplicate, d->open);
   const double *x = s->xyz;
   const uint32_t *a = s->tris + 3 * (size_t)first[0], *b = s->tris + 3 * (size_t)first[1];
-  return tr_error(TR_ERR_SELF_INTERSECT, "%s: resolve: after %d rounds of rounding the surface "
-                  "still intersects itself (%llu pairs); nothing written. The "
+  return tr_error(TR_ERR_SELF_INTERSECT, "%s: resolve: after %d rounds of rounding%s the "
+                  "surface still intersects itself (%llu pairs); nothing written. The "
                   "first: triangles %u and %u (of input faces %u and %u), corners (%.17g %.17g "
                   "%.17g) (%.17g %.17g %.17g) (%.17g %.17g %.17g) and (%.17g %.17g %.17g) "
-                  "(%.17g %.17g %.17g) (%.17g %.17g %.17g)", name, rounds,
+                  "(%.17g %.17g %.17g) (%.17g %.17g %.17g)", name, rounds, why,
                   (unsigned long long)d->pairs, first[0], first[1], s->src[first[0]],
                   s->src[first[1]], x[3 * a[0]], x[3 * a[0] + 1], x[3 * a[0] + 2], x[3 * a[1]],
                   x[3 * a[1] + 1], x[3 * a[1] + 2], x[3 * a[2]], x[3 * a[2] + 1],
@@ -412,6 +415,7 @@ tr_status tr_resolve_snap(const struct tr_plc *in, int mode, int to_float, int m
   surf s;
   memset(&s, 0, sizeof s);
   tr_status st = TR_OK;
+  uint32_t first_size = 0; /* triangles of the first rounded soup */
   for (int round = 1;; round++) {
     tr_arrangement arr;
     tr_solid sol;
@@ -442,10 +446,19 @@ tr_status tr_resolve_snap(const struct tr_plc *in, int mode, int to_float, int m
     if ((st = defects(&s, &info->left, first)) != TR_OK)
       break;
     const tr_snap_defects *d = &info->left;
-    if (!d->pairs && !d->zero && !d->duplicate && !d->open)
+    if (!d->pairs && !d->zero && !d->duplicate && !d->open) /* non-manifold edges are fine */
       break;
-    if (round >= max_rounds) {
-      st = not_converged(in, &s, d, first, round);
+    /* A round resolves the previous one's rounded surface, which should stay about its
+     * size: new pieces only where the rounding made crossings. Sheets that the rounding
+     * leaves nearly coplanar (internal facets on a rotated coplanar contact) cross each
+     * other along long cuts instead, and each round multiplies them; stop that before
+     * its arrangement takes minutes. */
+    uint32_t next = s.nt + s.nint;
+    if (round == 1)
+      first_size = next;
+    int diverges = round > 1 && next > 2 * (uint64_t)first_size + 64;
+    if (round >= max_rounds || diverges) {
+      st = not_converged(in, &s, d, first, round, diverges);
       break;
     }
     struct tr_plc *nx = NULL;

@@ -13,10 +13,13 @@
 #define TR_SNAP_ROUNDS 8
 
 /* What the self-intersection test found on a rounded surface: improper pairs,
- * zero-area triangles, duplicate triangles (either orientation), open edges. */
+ * zero-area triangles, duplicate triangles (either orientation), open edges; and, not a
+ * defect, edges of more than two triangles (parts of the solid touching along an edge,
+ * or internal facets: valid for `tetrec mesh`, listed by `check-surface`). */
 typedef struct tr_snap_defects {
   uint64_t pairs;
   uint32_t zero, duplicate, open;
+  uint32_t nonmanifold;
 } tr_snap_defects;
 
 typedef struct tr_snap_info {
