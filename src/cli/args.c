@@ -20,6 +20,7 @@ static const char usage[] =
     "  check IN MESH           validate MESH (.mesh, .meshb, .msh, or .ele/.node) against IN\n"
     "  check-surface IN [-o F] list every defect of the surface IN\n"
     "  convert IN OUT          convert a surface or mesh between formats\n"
+    "  resolve IN -o OUT       the solid of a self-intersecting surface, as a clean surface\n"
     "\n"
     "input formats (by extension): .off .stl .obj .ply .mesh .meshb .msh .node .poly .smesh\n"
     "output: .mesh (Medit), .meshb (binary Medit), .vtu (VTK XML), .vtk (legacy VTK),\n"
@@ -63,6 +64,15 @@ static const struct command {
     {"convert", C_CONVERT, 2, "convert IN OUT [options]",
      "Convert a surface or mesh between formats (OUT: .off .stl .mesh .meshb .vtu .vtk .msh\n"
      "or TetGen).\n"},
+    {"resolve", C_RESOLVE, 1, "resolve IN -o OUT [options]",
+     "Write the boundary of the solid of the surface IN (the cells where its winding\n"
+     "number is >= 1, bounded by the exact arrangement of its triangles: overlapping\n"
+     "parts united, duplicates and zero-area triangles absorbed) to OUT, any surface\n"
+     "format by its extension (.off .stl .mesh .meshb .vtu .vtk .msh or TetGen). Its\n"
+     "corners where input triangles cross are rounded to the nearest doubles; the\n"
+     "rounded surface is tested for self-intersections exactly and, while it has any,\n"
+     "resolved and rounded again (--rounds). If it still has some, nothing is written\n"
+     "and the command exits 7 naming the first pair. What was done goes to stderr.\n"},
 };
 
 static const struct option {
@@ -70,7 +80,8 @@ static const struct option {
   unsigned cmds;
   const char *help;
 } options[] = {
-    {"-o", "OUT", C_MESH | C_DELAUNAY | C_CHECK_SURFACE, "output file or TetGen base name"},
+    {"-o", "OUT", C_MESH | C_DELAUNAY | C_CHECK_SURFACE | C_RESOLVE,
+     "output file or TetGen base name"},
     {"-q", NULL, C_ALL, "quiet: errors only"},
     {"-v", NULL, C_ALL, "verbose"},
     {"--stats", "FILE", C_MESH | C_DELAUNAY,
@@ -84,10 +95,10 @@ static const struct option {
      "nearest double, moved by a few ulps where that is needed to\n"
      "keep every tet strictly positive, so it may lie a hair off\n"
      "its facet (see --strict-doubles)"},
-    {"--msh-version", "V", C_MESH | C_DELAUNAY | C_CONVERT | C_CHECK_SURFACE,
+    {"--msh-version", "V", C_MESH | C_DELAUNAY | C_CONVERT | C_CHECK_SURFACE | C_RESOLVE,
      ".msh output format: 4.1 (default) or 2.2; 4.1b and 2.2b\n"
      "are the binary forms (the same as adding --binary)"},
-    {"--binary", NULL, C_MESH | C_DELAUNAY | C_CONVERT | C_CHECK_SURFACE,
+    {"--binary", NULL, C_MESH | C_DELAUNAY | C_CONVERT | C_CHECK_SURFACE | C_RESOLVE,
      "write the binary form of the output format: .msh (Gmsh\n"
      "binary), .vtu (raw appended data), .vtk (legacy binary);\n"
      ".meshb and .stl are binary anyway; any other format is a\n"
@@ -132,6 +143,12 @@ static const struct option {
     {"--resolve-internal", NULL, C_MESH | C_CHECK,
      "--resolve, keeping the pieces between two solid cells as\n"
      "internal facets"},
+    {"--internal", NULL, C_RESOLVE,
+     "also write the pieces between two solid cells (internal\n"
+     "facets), after the boundary's triangles; stderr says which"},
+    {"--rounds", "N", C_RESOLVE,
+     "resolve and round at most N times (1 to 100, default 8)\n"
+     "until the doubles are free of intersections"},
     {"--recovery", "MODE", C_MESH,
      "default: every recovery step; paper: the published\n"
      "algorithm only (Swap23/Swap44 and pipels for edges, Swap32\n"
@@ -332,8 +349,16 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
     a->keep_steiner = 1;
   else if (!strcmp(name, "--resolve"))
     a->resolve = 1;
-  else if (!strcmp(name, "--resolve-internal"))
+  else if (!strcmp(name, "--resolve-internal") || !strcmp(name, "--internal"))
     a->resolve = 2;
+  else if (!strcmp(name, "--rounds")) {
+    size_t len = strlen(v);
+    int ok = len > 0 && len <= 3 && strspn(v, "0123456789") == len;
+    long n = ok ? strtol(v, NULL, 10) : 0;
+    if (!ok || n < 1 || n > 100)
+      return tr_error(TR_ERR_USAGE, "--rounds needs a whole number from 1 to 100, not '%s'", v);
+    a->rounds = (int)n;
+  }
   else if (!strcmp(name, "--recovery")) {
     if (!strcmp(v, "paper"))
       a->recovery = 1;

@@ -10,7 +10,8 @@
 #include "qpoint.h"
 
 /* The commands, as bits of an option's set of commands. */
-enum { C_MESH = 1, C_DELAUNAY = 2, C_CHECK = 4, C_CONVERT = 8, C_CHECK_SURFACE = 16, C_ALL = 31 };
+enum { C_MESH = 1, C_DELAUNAY = 2, C_CHECK = 4, C_CONVERT = 8, C_CHECK_SURFACE = 16,
+       C_RESOLVE = 32, C_ALL = 63 };
 
 /* What the command line asked for (args.c). */
 typedef struct {
@@ -30,6 +31,7 @@ typedef struct {
   int recovery;          /* tr_options.recovery */
   int resolve;           /* tr_options.resolve: --resolve 1, --resolve-internal 2 */
   double surface_tolerance; /* --surface-tolerance, 0: off */
+  int rounds;               /* resolve --rounds, 0: the default (TR_SNAP_ROUNDS) */
 } tr_cli_args;
 
 /* Parses argv into *a: TR_ERR_USAGE with a message for an unknown or misplaced option, a
@@ -60,6 +62,10 @@ tr_status tr_cli_check_tolerance(const struct tr_mesh *m, const struct tr_plc *s
  * kind (7 self-intersection, 6 open or non-manifold edge, 4 non-planar polygon,
  * zero-area or duplicate triangle) when there is any. */
 tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version, int quiet);
+
+/* `resolve IN -o OUT` (resolve_cmd.c): the boundary of IN's solid by winding number in
+ * doubles, free of intersections, written to OUT (any surface format). */
+tr_status tr_cli_resolve(const tr_cli_args *a);
 
 /* The command's heap policy, first thing in main (heap.c): freed memory is kept for reuse
  * and the heap asks for transparent huge pages, because page faults were a fifth of the

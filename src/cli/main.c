@@ -507,6 +507,9 @@ int main(int argc, char **argv)
   case C_MESH: return cmd_mesh(&a);
   case C_DELAUNAY: return cmd_delaunay(&a);
   case C_CHECK: return cmd_check(&a);
+  case C_RESOLVE:
+    s = tr_cli_resolve(&a);
+    return s == TR_OK ? 0 : fail(s);
   case C_CHECK_SURFACE: {
     /* check-surface writes its .vtk as text (check_surface.c): --binary is for its .msh */
     s = TR_OK;
