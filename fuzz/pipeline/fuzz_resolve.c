@@ -9,9 +9,10 @@
  *    shape was given with a triangle left out (a reversed shape is closed: it subtracts); when every shape is an axis
  *    box and nothing is turned, its exact volume equals the count of unit voxels whose
  *    winding number (boxes containing it, reversed ones counting -1) is >= 1;
- *  - --resolve through the pipeline (tr_mesh_plc) when the boundary's corners are doubles
- *    (TR_ERR_UNSUPPORTED otherwise, expected): the mesh validator and the exact
- *    conformity validator against the resolved surface, the tets' volume the solid's;
+ *  - --resolve through the pipeline (tr_mesh_plc), rational corners included
+ *    (TR_ERR_UNSUPPORTED, a limit said by name such as coordinates too large for the
+ *    rays, is expected): the mesh validator and the exact conformity validator against
+ *    the resolved surface, the tets' volume the solid's;
  *  - `tetrec resolve` (tr_resolve_snap, doubles or floats): no improper pair in the
  *    result by the all-pairs test (not the grid the rounding loop used), and the result
  *    valid for tr_plc_validate; not converging (TR_ERR_SELF_INTERSECT naming the pair)
@@ -261,7 +262,7 @@ static void mesh(const tr_plc *p, int mode, const mpq_t v6)
   tr_plc *used = NULL;
   /* the exact mesh: doubles that keep every tet positive may not exist at 2^-600 */
   tr_status st = tr_mesh_plc_flags(p, &opt, &m, NULL, &used, TR_PIPE_KEEP_EXACT);
-  if (st == TR_ERR_UNSUPPORTED) /* corners that are no doubles: expected */
+  if (st == TR_ERR_UNSUPPORTED) /* a limit said by name */
     return;
   if (st != TR_OK)
     finding("tr_mesh_plc --resolve");

@@ -15,11 +15,12 @@
  * strictly inside both or neither. The new tets are still checked exactly (orientation
  * > 0), so a wrong premise is an internal error, never a flat tet.
  *
- * Ghosts (the hull, delaunay.h): p lies in the closed hull of the double points (it lies
- * on a surface whose extreme points are input points), so no hull face sees it strictly;
- * a ghost joins the cavity when p is in its hull face's plane and the real tet behind
- * conflicts, as in the builder. Its boundary faces give new ghosts (TR_GHOST stays in
- * slot 3). */
+ * Ghosts (the hull, delaunay.h), as in the builder: a ghost joins the cavity when p sees
+ * its hull face strictly, or lies in its plane and the real tet behind conflicts. p may lie
+ * outside the hull of the double points: a solid's extreme points are input points when
+ * it is a union, but not when a part given inside out cuts a corner away (fuzz_resolve);
+ * the walk then stops at a ghost that sees p. A ghost's hull face with p makes a real tet,
+ * its other faces new ghosts (TR_GHOST stays in slot 3). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -70,9 +71,9 @@ static int face_side(const struct tr_mesh *m, uint32_t t, int k, const tr_point 
   return tr_orient3d_p(&a, &b, &c, p);
 }
 
-/* A real tet whose closed inside holds p: a visibility walk from t0 (the face to leave by
- * is tried from a rotating start, so the walk cannot cycle on a fixed choice), and after
- * too many steps a scan of every tet. */
+/* A real tet whose closed inside holds p, or a ghost whose hull face p sees strictly: a
+ * visibility walk from t0 (the face to leave by is tried from a rotating start, so the
+ * walk cannot cycle on a fixed choice), and after too many steps a scan of every tet. */
 static tr_status locate(const struct tr_mesh *m, uint32_t t0, const tr_point *p, uint32_t *out)
 {
   uint32_t t = t0, rot = 0;
@@ -83,8 +84,13 @@ static tr_status locate(const struct tr_mesh *m, uint32_t t0, const tr_point *p,
       int k = (int)((j + rot) & 3);
       if (face_side(m, t, k, p) < 0) {
         uint32_t u = TR_NEIG(m, t, k);
-        if (u == TR_NONE || tr_tet_is_ghost(m, u))
-          break; /* outside the hull: the scan below reports it */
+        if (u != TR_NONE && tr_tet_is_ghost(m, u)) {
+          /* p is strictly beyond this hull face: the ghost on it conflicts */
+          *out = u;
+          return TR_OK;
+        }
+        if (u == TR_NONE)
+          break;
         t = u;
         moved = 1;
       }
@@ -108,6 +114,16 @@ static tr_status locate(const struct tr_mesh *m, uint32_t t0, const tr_point *p,
     for (int k = 0; k < 4 && in; k++)
       in = face_side(m, u, k, p) >= 0;
     if (in) {
+      *out = u;
+      return TR_OK;
+    }
+  }
+  for (uint32_t u = 0; u < m->nt; u++) { /* outside the hull: a ghost that sees p */
+    if (tr_tet_is_free(m, u) || !tr_tet_is_ghost(m, u))
+      continue;
+    const uint32_t *v = m->tv + 4 * (size_t)u;
+    tr_point a = tr_mesh_point(m, v[0]), b = tr_mesh_point(m, v[1]), c = tr_mesh_point(m, v[2]);
+    if (tr_orient3d_p(&a, &b, &c, p) > 0) {
       *out = u;
       return TR_OK;
     }
@@ -176,10 +192,17 @@ static tr_status insert_one(struct tr_mesh *m, qctx *c, uint32_t pid, uint32_t *
   for (size_t i = 0; st == TR_OK && i < c->bnd.n; i++) {
     uint32_t t = c->bnd.a[i] >> 2;
     int k = (int)(c->bnd.a[i] & 3);
-    if (tr_tet_is_ghost(m, t) && k == 3)
-      st = tr_error(TR_ERR_INTERNAL, "exact point %u near (%.17g, %.17g, %.17g) lies outside "
-                    "the hull of the double points", pid, p.d[0], p.d[1], p.d[2]);
-    else if (!tr_tet_is_ghost(m, t) && face_side(m, t, k, &p) <= 0)
+    if (tr_tet_is_ghost(m, t) && k == 3) {
+      /* p beyond the hull: the hull face and p make a real tet, positive iff p sees the
+       * face strictly (a ghost that joined for p in its plane has its real tet in the
+       * cavity too, so its face 3 is no boundary) */
+      const uint32_t *v = m->tv + 4 * (size_t)t;
+      tr_point a = tr_mesh_point(m, v[0]), b = tr_mesh_point(m, v[1]),
+               cc = tr_mesh_point(m, v[2]);
+      if (tr_orient3d_p(&a, &b, &cc, &p) <= 0)
+        st = tr_error(TR_ERR_INTERNAL, "exact point %u near (%.17g, %.17g, %.17g): a flat tet "
+                      "on the hull", pid, p.d[0], p.d[1], p.d[2]);
+    } else if (!tr_tet_is_ghost(m, t) && face_side(m, t, k, &p) <= 0)
       st = tr_error(TR_ERR_INTERNAL, "exact point %u: its Bowyer-Watson cavity is not "
                     "star-shaped (face %u of tet %u)", pid, (unsigned)k, t);
   }

@@ -325,6 +325,20 @@ static void t_tilted(const char *data)
   tr_plc_destroy(c);
 }
 
+/* fuzz_resolve's first finding (tests/data/resolve_corner_cut.off, 6 shapes, some given
+ * inside out): a part given inside out cuts a corner off a box, so the solid has an exact
+ * corner (7/3, 1/3, -3) outside the hull of the double points left on its boundary. The
+ * exact insertion assumed every corner inside that hull ("lies in no tet", an internal
+ * error); it now walks to the ghost that sees the point and grows the hull. */
+static void t_corner_cut(const char *data)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/resolve_corner_cut.off", data);
+  tr_plc *c = tm_read(path);
+  rational_cases("corner_cut", c, 0);
+  tr_plc_destroy(c);
+}
+
 /* Defects validation refuses, absorbed by --resolve: a zero-area triangle (three collinear
  * points on an edge), a repeated point, a triangle given again and once reversed (the
  * piece's weight stays 1). The solid is the unit cube: 6V = 6, validated. One more copy
@@ -454,6 +468,7 @@ int main(int argc, char **argv)
     {"cubes", NULL, t_cubes},
     {"rational", t_rational, NULL},
     {"tilted", NULL, t_tilted},
+    {"corner_cut", NULL, t_corner_cut},
     {"errors", NULL, t_errors},
     {"defects", NULL, t_defects},
     {"random_cubes", t_random_cubes, NULL},
