@@ -4,7 +4,9 @@
 //
 //   cgal_resolve_volume corpus DIR     the resolve corpus (tests/data/resolve_*.off; each
 //                                      connected part of a file is one closed shape)
-//   cgal_resolve_volume random [N]     N random unions (default 200, $TETREC_CROSSCHECK_N)
+//   cgal_resolve_volume random [N]     N random unions (default 200, $TETREC_RESOLVE_CROSSCHECK_N;
+//                                      not the predicates' $TETREC_CROSSCHECK_N, which CI sets
+//                                      to 100000: a Nef union costs thousands of those)
 //                                      of 2 to 4 boxes and tetrahedra on a small integer
 //                                      grid: duplicates, shared faces, edges and corners
 //                                      are common; every third union turned by a rational
@@ -260,7 +262,7 @@ int main(int argc, char **argv)
   if (argc >= 3 && !std::strcmp(argv[1], "corpus"))
     run_corpus(argv[2]);
   else if (argc >= 2 && !std::strcmp(argv[1], "random")) {
-    const char *e = std::getenv("TETREC_CROSSCHECK_N");
+    const char *e = std::getenv("TETREC_RESOLVE_CROSSCHECK_N");
     uint64_t n = argc >= 3 ? std::strtoull(argv[2], nullptr, 10) : e ? std::strtoull(e, nullptr, 10) : 200;
     run_random(n);
   } else {
