@@ -70,32 +70,12 @@
 #include "output/round.h"
 #include "pipeline/pipeline.h"
 #include "tetrec.h"
+#include "bitrd.h"
 #ifdef TR_FUZZ_QUALITY
 #include "../../tests/refine/tvolume.h"
 #include "../../tests/suppress/keepcheck.h"
 #endif
 
-/* ---- the byte stream: bits in order, zeros once the input is exhausted ---- */
-typedef struct {
-  const uint8_t *d;
-  size_t n, pos;
-  uint32_t acc;
-  int nacc;
-} bitrd;
-
-static uint32_t bits(bitrd *r, int k)
-{
-  while (r->nacc < k) {
-    uint32_t b = r->pos < r->n ? r->d[r->pos] : 0;
-    r->pos++;
-    r->acc |= b << r->nacc;
-    r->nacc += 8;
-  }
-  uint32_t v = r->acc & ((1u << k) - 1u);
-  r->acc >>= k;
-  r->nacc -= k;
-  return v;
-}
 
 /* Recovery under ASan costs about 1 ms per triangle: larger surfaces are skipped so a
  * typical input stays fast and a slow one is a real finding. */

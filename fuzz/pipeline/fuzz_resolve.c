@@ -44,28 +44,9 @@
 #include "resolve/resolve.h"
 #include "resolve/snap.h"
 #include "tetrec.h"
+#include "bitrd.h"
 #include "../../tests/resolve/tcheck.h"
 
-typedef struct {
-  const uint8_t *d;
-  size_t n, pos;
-  uint32_t acc;
-  int nacc;
-} bitrd;
-
-static uint32_t bits(bitrd *r, int k)
-{
-  while (r->nacc < k) {
-    uint32_t b = r->pos < r->n ? r->d[r->pos] : 0;
-    r->pos++;
-    r->acc |= b << r->nacc;
-    r->nacc += 8;
-  }
-  uint32_t v = r->acc & ((1u << k) - 1u);
-  r->acc >>= k;
-  r->nacc -= k;
-  return v;
-}
 
 enum { MAX_SHAPES = 6, GRID = 5 };
 
