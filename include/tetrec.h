@@ -306,6 +306,17 @@ typedef struct tr_options {
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);
 
+/* tr_plc_read as `opt` will mesh the surface (NULL: tr_plc_read). Its threads read a
+ * TetGen point list in parallel. With resolve, a polygon of one loop that cannot be
+ * triangulated in its plane (self-overlapping, or all corners collinear) is read as the
+ * fan of its loop from its first corner, instead of TR_ERR_INPUT: the winding number
+ * that resolve meshes counts any surface the loop bounds, and a planar loop covers each
+ * point of its plane as often as its fan does. tr_plc_num_fans counts them and
+ * tr_plc_fan_notes gives the first ten reasons, one per line ("" when none). */
+tr_status tr_plc_read_options(const char *path, const tr_options *opt, tr_plc **out);
+uint32_t tr_plc_num_fans(const tr_plc *plc);
+const char *tr_plc_fan_notes(const tr_plc *plc);
+
 /* The rows of the seed paper's Table 14, plus memory and per-stage times. */
 typedef struct tr_stats {
   size_t size; /* see "ABI growth" at the top: in, the caller's size; out, bytes filled */

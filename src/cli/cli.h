@@ -66,6 +66,10 @@ tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version,
 /* `resolve IN -o OUT` (resolve_cmd.c): the boundary of IN's solid by winding number in
  * doubles, free of intersections, written to OUT (any surface format). */
 tr_status tr_cli_resolve(const tr_cli_args *a);
+/* Reads a->in as --resolve takes it (tr_plc_read_options: a polygon that cannot be
+ * triangulated in its plane becomes a fan), with a warning per fanned polygon unless
+ * quiet; without --resolve, tr_plc_read_threads. */
+tr_status tr_cli_read_input(const tr_cli_args *a, int threads, tr_plc **out);
 
 /* The command's heap policy, first thing in main (heap.c): freed memory is kept for reuse
  * and the heap asks for transparent huge pages, because page faults were a fifth of the

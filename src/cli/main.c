@@ -155,6 +155,15 @@ static void warn_nonplanar(const tr_cli_args *a, const tr_plc *plc)
   uint32_t n = 0;
   if (a->quiet || tr_plc_nonplanar(plc, &np, &n) != TR_OK)
     return;
+  /* a polygon read as a fan was named when it was read (tr_cli_read_input) */
+  uint32_t kept = 0;
+  for (uint32_t i = 0, f = 0; i < n; i++) {
+    while (f < plc->nfans && plc->fan_facet[f] < np[i].facet)
+      f++;
+    if (f == plc->nfans || plc->fan_facet[f] != np[i].facet)
+      np[kept++] = np[i];
+  }
+  n = kept;
   uint32_t list = a->verbose || n <= TR_NONPLANAR_LIST + 1 ? n : TR_NONPLANAR_LIST;
   double worst = 0;
   for (uint32_t i = 0; i < n; i++) {
@@ -212,7 +221,7 @@ static int cmd_mesh(const tr_cli_args *a)
   tr_plc *plc = NULL;
   if (s == TR_OK) {
     progress("reading", a->in);
-    s = tr_plc_read_threads(a->in, &plc, tr_io_thread_count(a->threads));
+    s = tr_cli_read_input(a, tr_io_thread_count(a->threads), &plc);
   }
   stats.stage_seconds[TR_STAGE_READ] = now() - t0;
   if (s == TR_OK && a->verbose)
@@ -224,12 +233,13 @@ static int cmd_mesh(const tr_cli_args *a)
   /* the sizes index the points as read: validation's merges carry them (plc.h) */
   if (s == TR_OK && a->sizing)
     s = tr_read_mtr_file(a->sizing, plc->npoints, &plc->vsize);
+  if (s == TR_OK)
+    warn_nonplanar(a, plc); /* the polygons as read, before --resolve replaces them */
   if (s == TR_OK && a->resolve) {
     progress("resolving", a->in);
     s = tr_resolve_replace(&plc, a->resolve, a->verbose);
   }
   if (s == TR_OK) {
-    warn_nonplanar(a, plc);
     progress("validating", a->in);
     s = tr_plc_validate(plc, &opt);
     print_report(a, plc);
@@ -430,13 +440,13 @@ static int cmd_check(const tr_cli_args *a)
   tr_options opt;
   tr_options_default(&opt);
   opt.allow_open = a->allow_open;
-  tr_status s = tr_plc_read(a->in, &surf);
+  tr_status s = tr_cli_read_input(a, 1, &surf);
+  if (s == TR_OK)
+    warn_nonplanar(a, surf);
   if (s == TR_OK && a->resolve) /* the surface the mesh was made for */
     s = tr_resolve_replace(&surf, a->resolve, a->verbose);
-  if (s == TR_OK) {
-    warn_nonplanar(a, surf);
+  if (s == TR_OK)
     s = tr_plc_validate(surf, &opt);
-  }
   if (s == TR_OK) {
     /* MESH.node alone has no tets: read its .ele. */
     if (tr_io_has_ext(a->in2, ".node")) {

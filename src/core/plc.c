@@ -23,6 +23,8 @@ void tr_plc_clear(struct tr_plc *plc)
   free(plc->region_maxvol);
   free(plc->source);
   free(plc->report);
+  free(plc->fan_notes);
+  free(plc->fan_facet);
   free(plc->vsize);
   for (uint32_t i = 0; plc->xq && i < plc->npoints; i++)
     if (plc->xq[i]) {
@@ -250,4 +252,11 @@ const uint32_t *tr_plc_triangles(const tr_plc *plc) { return plc ? plc->tris : N
 const char *tr_plc_report(const tr_plc *plc)
 {
   return plc && plc->report ? plc->report : "";
+}
+
+uint32_t tr_plc_num_fans(const tr_plc *plc) { return plc ? plc->nfans : 0; }
+
+const char *tr_plc_fan_notes(const tr_plc *plc)
+{
+  return plc && plc->fan_notes ? plc->fan_notes : "";
 }

@@ -9,6 +9,9 @@
 #include "tetrec.h"
 #include "qpoint.h"
 
+/* How many fanned polygons tr_plc.fan_notes names. */
+#define TR_PLC_FAN_NOTES 10
+
 /* Values of tr_plc.hole_cavity. */
 enum { TR_HOLE_EMPTIED = 1, TR_HOLE_IN_CAVITY = 2 };
 
@@ -59,6 +62,18 @@ struct tr_plc {
   uint8_t *tri_inner;    /* with xq: NULL, or ntris, 1 for an internal facet (--resolve-
                             internal: the solid on both sides), else the solid lies behind
                             the triangle; what the cell analysis finds in doubles otherwise */
+  /* Polygons that cannot be triangulated in their plane (self-overlapping, or all
+   * corners collinear). read_fans, set before reading: such a polygon of one loop and no
+   * hole points becomes the fan of its loop from its first corner, for --resolve, whose
+   * winding number counts any surface that the loop bounds (a planar self-overlapping
+   * loop covers each point of its plane as often as its fan does), instead of an error.
+   * nfans of them were fanned, the input facets fan_facet[0..nfans-1] in increasing
+   * order; fan_notes: the first TR_PLC_FAN_NOTES of the reasons, one per line (NULL if
+   * none). */
+  uint8_t read_fans;
+  uint32_t nfans;
+  uint32_t *fan_facet;
+  char *fan_notes;
   uint8_t validated;     /* 1 + allow_open of the last successful tr_plc_validate, 0 if
                             none: the struct is opaque and every setter builds a new one,
                             so a validated PLC stays valid and the pipeline skips a second

@@ -76,6 +76,9 @@ tr_status tr_io_read_file(const char *path, struct tr_plc *plc);
  * list), and tr_plc_read (include/tetrec.h) with them: the command passes --threads. */
 tr_status tr_io_read_file_threads(const char *path, struct tr_plc *plc, int threads);
 tr_status tr_plc_read_threads(const char *path, tr_plc **out, int threads);
+/* The same; fans != 0 sets tr_plc.read_fans (--resolve): a one-loop polygon that cannot
+ * be triangulated in its plane is read as a fan, counted in nfans and named in fan_notes. */
+tr_status tr_plc_read_fans(const char *path, tr_plc **out, int threads, int fans);
 
 /* A polygon of the input that is not planar (polytri.c): plc triangles first_tri ..
  * first_tri + ntris - 1 came from input facet `facet`; deviation = the largest distance

@@ -7,7 +7,9 @@
 #include <sys/stat.h>
 
 #include "core/hugepage.h"
+#include "input/options.h"
 #include "io.h"
+#include "write.h"
 
 tr_status tr_io_load(const char *path, char **buf, size_t *len)
 {
@@ -73,10 +75,28 @@ tr_status tr_io_read_file(const char *path, struct tr_plc *plc)
 
 tr_status tr_plc_read_threads(const char *path, tr_plc **out, int threads)
 {
+  return tr_plc_read_fans(path, out, threads, 0);
+}
+
+tr_status tr_plc_read_options(const char *path, const tr_options *opt, tr_plc **out)
+{
+  tr_options o;
+  tr_options_read(opt, &o);
+  if (o.threads < 0) {
+    *out = NULL;
+    tr_error_clear();
+    return tr_error(TR_ERR_USAGE, "threads must be >= 0 (0: every core), not %d", o.threads);
+  }
+  return tr_plc_read_fans(path, out, tr_io_thread_count(o.threads), o.resolve != 0);
+}
+
+tr_status tr_plc_read_fans(const char *path, tr_plc **out, int threads, int fans)
+{
   tr_error_clear();
   *out = NULL;
   tr_plc *p;
   TR_CHECK(tr_plc_create(&p));
+  p->read_fans = (uint8_t)(fans != 0);
   tr_status st = tr_io_read_file_threads(path, p, threads);
   if (st != TR_OK) {
     tr_plc_destroy(p);

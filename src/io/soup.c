@@ -105,10 +105,42 @@ tr_status tr_soup_add_hole(tr_soup *s, const double p[3])
   return TR_OK;
 }
 
+/* Appends line to *notes (malloc'ed, one line each). */
+static tr_status add_note(char **notes, const char *line)
+{
+  size_t a = *notes ? strlen(*notes) : 0, b = strlen(line);
+  char *n = realloc(*notes, a + b + 2);
+  if (!n)
+    return tr_error(TR_ERR_NOMEM, "out of memory");
+  memcpy(n + a, line, b);
+  n[a + b] = '\n', n[a + b + 1] = 0;
+  *notes = n;
+  return TR_OK;
+}
+
+/* tr_plc.read_fans: the fan of the loop idx[0..n-1] from its first corner, after the
+ * exact triangulation refused it for `why` (TR_ERR_INPUT's message). */
+static tr_status fan(const uint32_t *idx, uint32_t n, tr_u32vec *tris, const char *why,
+                     uint32_t facet, tr_u32vec *fans, char **notes)
+{
+  if (fans->n < TR_PLC_FAN_NOTES)
+    TR_CHECK(add_note(notes, why));
+  TR_CHECK(tr_u32vec_push(fans, facet));
+  for (uint32_t k = 1; k + 1 < n; k++) {
+    TR_CHECK(tr_u32vec_push(tris, idx[0]));
+    TR_CHECK(tr_u32vec_push(tris, idx[k]));
+    TR_CHECK(tr_u32vec_push(tris, idx[k + 1]));
+  }
+  return TR_OK;
+}
+
 tr_status tr_soup_to_plc(tr_soup *s, struct tr_plc *plc)
 {
   tr_u32vec tris = {0}, src = {0}, mark = {0};
   tr_status st = TR_OK;
+  int read_fans = plc->read_fans;
+  tr_u32vec fans = {0};
+  char *notes = NULL;
   uint32_t nf = s->facet_loop.n;
   for (uint32_t i = 0; i < s->idx.n; i++)
     if (s->idx.a[i] >= s->npoints) {
@@ -151,6 +183,11 @@ tr_status tr_soup_to_plc(tr_soup *s, struct tr_plc *plc)
       st = tr_triangulate_facet(s->xyz, s->idx.a + i0, lfp, nl, i1 - i0,
                                 s->holes ? s->holes + 3 * (size_t)h0 : NULL,
                                 h1 - h0, &tris, what);
+      if (st == TR_ERR_INPUT && read_fans && nl == 1 && h1 == h0 && i1 - i0 >= 3) {
+        tris.n = before; /* whatever the refused triangulation had pushed */
+        st = fan(s->idx.a + i0, i1 - i0, &tris, tr_last_error(), f, &fans, &notes);
+        tr_error_clear();
+      }
       if (lfp != lf)
         free(lfp);
     }
@@ -164,9 +201,15 @@ tr_status tr_soup_to_plc(tr_soup *s, struct tr_plc *plc)
     tr_u32vec_free(&tris);
     tr_u32vec_free(&src);
     tr_u32vec_free(&mark);
+    tr_u32vec_free(&fans);
+    free(notes);
     return st;
   }
   tr_plc_clear(plc);
+  plc->read_fans = (uint8_t)read_fans;
+  plc->nfans = fans.n;
+  plc->fan_facet = fans.a;
+  plc->fan_notes = notes;
   plc->npoints = s->npoints;
   plc->xyz = s->xyz;
   s->xyz = NULL;

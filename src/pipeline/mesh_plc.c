@@ -14,6 +14,7 @@
 #include <sys/resource.h>
 
 #include "delaunay/delaunay.h"
+#include "input/options.h"
 #include "input/validate.h"
 #include "outer/color.h"
 #include "outer/points.h"
@@ -102,7 +103,6 @@ static void say(const tr_options *opt, int stage, double secs)
     fprintf(stderr, "tetrec: %-22s %.3f s\n", tr_stage_name(stage), secs);
 }
 
-/* The caller's options, read up to its opt->size (ABI growth, include/tetrec.h). */
 /* An input point on no triangle is meshed as an isolated vertex when it lies in the
  * domain; outside it cannot be, and leaving it out silently would look like a lost
  * vertex. */
@@ -130,15 +130,6 @@ static void warn_dropped_points(const struct tr_mesh *res, const tr_plc *p)
   free(in);
 }
 
-static void read_options(const tr_options *in, tr_options *opt)
-{
-  tr_options_default(opt);
-  if (!in)
-    return;
-  size_t n = in->size == 0 || in->size > sizeof *opt ? sizeof *opt : in->size;
-  memcpy(opt, in, n);
-  opt->size = sizeof *opt;
-}
 
 /* Progress at a stage boundary, unless an earlier step failed. */
 #define PROGRESS(stage, fraction)                                 \
@@ -198,7 +189,7 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   tr_error_clear();
   double t0 = tr_pipeline_now();
   tr_options opt;
-  read_options(optin, &opt);
+  tr_options_read(optin, &opt);
   if (opt.keep_steiner)
     flags |= TR_PIPE_KEEP_STEINER;
   tr_stats full, *stats = &full;

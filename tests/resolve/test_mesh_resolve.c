@@ -461,6 +461,60 @@ static void t_random_cubes(void)
   }
 }
 
+/* A one-loop polygon that cannot be triangulated in its plane is an error as read, and
+ * with resolve it is read as its fan (tr_plc_read_options): resolve_skew_quad.obj is the
+ * tetrahedron (0,0,0) (1,0,0) (0,1,1/2) (1,1,2) with two faces given as a skew quad whose
+ * projection along z is a bow-tie. The fan closes the tetrahedron: one tet of volume
+ * 6V = 3/2 (the determinant of its edge vectors), validated exactly. */
+static void t_fans(const char *data)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/resolve_skew_quad.obj", data);
+  tr_plc *p = NULL;
+  tr_status st = tr_plc_read(path, &p);
+  EXPECT(st == TR_ERR_INPUT && strstr(tr_last_error(), ":8: facet 0: polygon"),
+         "read without resolve: %s: %s", tr_status_name(st), tr_last_error());
+  tr_options opt = tm_options();
+  st = tr_plc_read_options(path, &opt, &p);
+  EXPECT(st == TR_ERR_INPUT, "read with options, resolve off: %s", tr_status_name(st));
+  opt.resolve = 1;
+  st = tr_plc_read_options(path, &opt, &p);
+  EXPECT(st == TR_OK, "read with resolve: %s", tr_last_error());
+  if (st != TR_OK)
+    return;
+  EXPECT(tr_plc_num_fans(p) == 1 && tr_plc_num_triangles(p) == 4,
+         "one polygon read as a fan of 2 triangles beside the 2 given: %u fans, %u triangles",
+         tr_plc_num_fans(p), tr_plc_num_triangles(p));
+  EXPECT(strstr(tr_plc_fan_notes(p), ":8: facet 0: polygon") != NULL, "the note names it: %s",
+         tr_plc_fan_notes(p));
+  const uint32_t *t = tr_plc_triangles(p);
+  EXPECT(t[0] == 0 && t[1] == 3 && t[2] == 2 && t[3] == 0 && t[4] == 2 && t[5] == 1,
+         "the fan from the first corner: (%u %u %u) (%u %u %u)", t[0], t[1], t[2], t[3], t[4],
+         t[5]);
+  tr_arrangement a;
+  tr_solid s;
+  memset(&s, 0, sizeof s);
+  mpq_t v6, want;
+  mpq_inits(v6, want, NULL);
+  mpq_set_ui(want, 3, 2);
+  st = tr_arrangement_build(p, &a);
+  if (st == TR_OK)
+    st = tr_solid_classify(p, &a, 0, &s);
+  if (st == TR_OK)
+    st = tr_solid_volume6(p, &a, &s, v6);
+  EXPECT(st == TR_OK && mpq_equal(v6, want), "the solid is the tetrahedron, 6V = 3/2: %s",
+         st == TR_OK ? mpq_get_str(NULL, 10, v6) : tr_last_error());
+  tr_solid_free(&s);
+  tr_arrangement_free(&a);
+  mpq_clears(v6, want, NULL);
+  mesh_resolved("resolve_skew_quad.obj", p, &opt);
+  opt.threads = -1;
+  tr_plc *q = p;
+  st = tr_plc_read_options(path, &opt, &q);
+  EXPECT(st == TR_ERR_USAGE && q == NULL, "negative threads: %s", tr_status_name(st));
+  tr_plc_destroy(p);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -472,6 +526,7 @@ int main(int argc, char **argv)
     {"errors", NULL, t_errors},
     {"defects", NULL, t_defects},
     {"random_cubes", t_random_cubes, NULL},
+    {"fans", NULL, t_fans},
   };
   int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
   tr_thread_cleanup();
