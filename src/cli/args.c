@@ -138,8 +138,10 @@ static const struct option {
     {"--resolve", NULL, C_MESH | C_CHECK,
      "mesh the solid of a self-intersecting or defective surface:\n"
      "the cells where its winding number is >= 1, bounded by the\n"
-     "exact arrangement of its triangles (docs/resolve.md); with\n"
-     "check, validate against that surface"},
+     "exact arrangement of its triangles (docs/resolve.md); a\n"
+     "polygon that cannot be triangulated in its plane is read as\n"
+     "a fan, with a warning; with check, validate against that\n"
+     "surface"},
     {"--resolve-internal", NULL, C_MESH | C_CHECK,
      "--resolve, keeping the pieces between two solid cells as\n"
      "internal facets"},
