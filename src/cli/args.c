@@ -393,17 +393,16 @@ static tr_status set_option(tr_cli_args *a, const char *name, const char *v)
     size_t len = strlen(v);
     int ok = len > 0 && len <= 16 && strspn(v, "0123456789") == len;
     unsigned long long n = ok ? strtoull(v, NULL, 10) : 0;
-    if (!ok || n == 0 || n > 1000000000000000ull)
-      return tr_error(TR_ERR_USAGE, "%s needs a whole number from 1 to 10^15, not '%s'", name,
-                      v);
+    int rounds = !strcmp(name, "--refine-rounds");
+    unsigned long long most = rounds ? UINT32_MAX : 1000000000000000ull;
+    if (!ok || n == 0 || n > most)
+      return tr_error(TR_ERR_USAGE, "%s needs a whole number from 1 to %s, not '%s'", name,
+                      rounds ? "4294967295" : "10^15", v);
     if (!strcmp(name, "--round-budget"))
       a->round_budget = n;
-    else if (!strcmp(name, "--refine-rounds")) {
-      if (n > UINT32_MAX)
-        return tr_error(TR_ERR_USAGE, "%s needs a whole number from 1 to %u, not '%s'", name,
-                        UINT32_MAX, v);
+    else if (rounds)
       a->refine_rounds = n;
-    } else
+    else
       a->refine_budget = n;
   } else if (!strcmp(name, "--threads") || !strcmp(name, "-j")) {
     size_t len = strlen(v);

@@ -70,5 +70,5 @@ expect 0 "refinement rounds: [1-9][0-9]*, [1-9][0-9]* points inserted in them" -
 expect 0 "" -- mesh "$S" -a 0.0005 --refine-rounds 256 -j 2 -q -o "$W/r2.node" --exact
 cmp -s "$W/r1.node" "$W/r2.node" && cmp -s "$W/r1.ele" "$W/r2.ele" || { echo "FAIL: --refine-rounds: 1 and 2 threads differ"; fails=$((fails + 1)); }
 expect 0 "conforms exactly.*volume equals" -- check "$S" "$W/r2.node"
-expect 1 "refine-rounds needs a whole number" -- mesh "$S" --quality 1.414 --refine-rounds 0 -o "$W/r0.node"
+expect 1 "refine-rounds needs a whole number from 1 to 4294967295, not .0." -- mesh "$S" --quality 1.414 --refine-rounds 0 -o "$W/r0.node"
 exit $((fails != 0))
