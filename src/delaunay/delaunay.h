@@ -50,8 +50,15 @@ int tr_delaunay_thread_count(int threads);
 
 /* Inserts n exact points (copied) into a Delaunay mesh m as its next vertices, in order,
  * by Bowyer-Watson with exact predicates (qinsert.c), then puts the store in canonical
- * order. Each point must lie in the closed hull of m's points and differ from them. */
+ * order. Each point must differ from m's points; one outside their hull grows it. */
 tr_status tr_delaunay_insert_exact(struct tr_mesh *m, tr_qpoint *const *q, uint32_t n);
+/* The Delaunay mesh of nd distinct double points and n distinct exact points after them
+ * (copied), every predicate exact (qinsert.c): for when the doubles alone span no tet
+ * (fewer than four, or all in a plane: --resolve of a small solid whose corners are mostly
+ * rational), where tr_delaunay_build cannot start. The first simplex is the first four
+ * points in order that span one; the rest follow in order; canonical store. */
+tr_status tr_delaunay_build_exact(const double *xyz, uint32_t nd, tr_qpoint *const *q,
+                                  uint32_t n, struct tr_mesh **out);
 
 /* Puts the tet store in canonical order (canon.c): real tets first, sorted by vertex
  * tuple, each rotated (orientation kept) to its smallest vertex first, then the ghosts;

@@ -302,3 +302,119 @@ tr_status tr_delaunay_insert_exact(struct tr_mesh *m, tr_qpoint *const *q, uint3
   tr_mesh_orient_memo_forget(m); /* new vertex ids */
   return st == TR_OK ? tr_delaunay_canonical(m) : st;
 }
+
+/* Three points on one line: every coordinate projection of them is degenerate. */
+static int collinear_p(const struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t c)
+{
+  tr_point x = tr_mesh_point(m, a), y = tr_mesh_point(m, b), z = tr_mesh_point(m, c);
+  return tr_orient2d_proj_p(&x, &y, &z, 0) == 0 && tr_orient2d_proj_p(&x, &y, &z, 1) == 0 &&
+         tr_orient2d_proj_p(&x, &y, &z, 2) == 0;
+}
+
+/* s[0..3] = four of m's n vertices that span a positive tet, exactly, the first such in
+ * vertex order (vertices are distinct: validation merged duplicates). */
+static tr_status first_simplex_p(const struct tr_mesh *m, uint32_t n, uint32_t s[4])
+{
+  if (n < 4)
+    return tr_error(TR_ERR_DEGENERATE, "only %u distinct point(s): a tetrahedralization needs "
+                    "at least 4 points not in a plane", n);
+  s[0] = 0, s[1] = 1, s[2] = 2;
+  while (s[2] < n && collinear_p(m, s[0], s[1], s[2]))
+    s[2]++;
+  if (s[2] == n)
+    return tr_error(TR_ERR_DEGENERATE, "all %u points are collinear", n);
+  tr_point a = tr_mesh_point(m, s[0]), b = tr_mesh_point(m, s[1]), c = tr_mesh_point(m, s[2]);
+  int o = 0;
+  for (s[3] = 2; s[3] < n; s[3]++) {
+    if (s[3] == s[2])
+      continue;
+    tr_point d = tr_mesh_point(m, s[3]);
+    if ((o = tr_orient3d_p(&a, &b, &c, &d)) != 0)
+      break;
+  }
+  if (s[3] == n)
+    return tr_error(TR_ERR_DEGENERATE, "all %u points are coplanar", n);
+  if (o < 0) {
+    uint32_t t = s[0];
+    s[0] = s[1], s[1] = t;
+  }
+  return TR_OK;
+}
+
+tr_status tr_delaunay_build_exact(const double *xyz, uint32_t nd, tr_qpoint *const *q,
+                                  uint32_t n, struct tr_mesh **out)
+{
+  *out = NULL;
+  if ((uint64_t)nd + n >= TR_GHOST - 1)
+    return tr_error(TR_ERR_NOMEM, "too many points (%u and %u)", nd, n);
+  struct tr_mesh *m;
+  TR_CHECK(tr_mesh_create(nd + n, 64, &m));
+  tr_status st = TR_OK;
+  /* no duplicates (validation merged them): the identity, which vertex_slot keeps */
+  m->dup_map = malloc(sizeof *m->dup_map * (m->cap_v ? m->cap_v : 1));
+  if (!m->dup_map)
+    st = tr_error(TR_ERR_NOMEM, "out of memory for %u points", nd);
+  for (uint32_t i = 0; st == TR_OK && i < nd; i++) {
+    uint32_t id;
+    st = tr_mesh_add_vertex(m, xyz + 3 * (size_t)i, &id);
+  }
+  for (uint32_t i = 0; st == TR_OK && i < n; i++) {
+    tr_qpoint *x = malloc(sizeof *x);
+    if (!x) {
+      st = tr_error(TR_ERR_NOMEM, "out of memory for exact point %u", i);
+      break;
+    }
+    tr_qpoint_init(x);
+    tr_point src = tr_pt_q(q[i]);
+    tr_qpoint_set_point(x, &src);
+    uint32_t id;
+    if ((st = tr_mesh_add_steiner(m, x, &id)) != TR_OK) {
+      tr_qpoint_clear(x);
+      free(x);
+    }
+  }
+  uint32_t sv[4] = {0, 0, 0, 0}, t0 = TR_NONE, g[4];
+  if (st == TR_OK)
+    st = first_simplex_p(m, nd + n, sv);
+  if (st == TR_OK)
+    st = tr_tet_new(m, sv[0], sv[1], sv[2], sv[3], &t0);
+  for (int k = 0; st == TR_OK && k < 4; k++) {
+    const uint32_t *v = m->tv + 4 * (size_t)t0;
+    const uint8_t *f = tr_face_vtx[k];
+    /* reversed face: the ghost's face 3 looks out of the hull (as bw.c's first simplex) */
+    st = tr_tet_new(m, v[f[0]], v[f[2]], v[f[1]], TR_GHOST, &g[k]);
+    if (st == TR_OK)
+      tr_glue(m, t0, k, g[k], 3);
+  }
+  /* the ghosts meet two by two across the faces through TR_GHOST, one per hull edge */
+  for (int k = 0; st == TR_OK && k < 4; k++)
+    for (int j = 0; j < 3; j++) {
+      const uint32_t *v = m->tv + 4 * (size_t)g[k];
+      uint32_t a = v[(j + 1) % 3], b = v[(j + 2) % 3];
+      for (int k2 = k + 1; k2 < 4; k2++)
+        for (int j2 = 0; j2 < 3; j2++) {
+          const uint32_t *w = m->tv + 4 * (size_t)g[k2];
+          uint32_t c = w[(j2 + 1) % 3], d = w[(j2 + 2) % 3];
+          if ((a == c && b == d) || (a == d && b == c))
+            tr_glue(m, g[k], j, g[k2], j2);
+        }
+    }
+  qctx c;
+  memset(&c, 0, sizeof c);
+  uint32_t hint = t0;
+  for (uint32_t i = 0; st == TR_OK && i < nd + n; i++)
+    if (i != sv[0] && i != sv[1] && i != sv[2] && i != sv[3])
+      st = insert_one(m, &c, i, &hint);
+  tr_u32buf_free(&c.cav);
+  tr_u32buf_free(&c.bnd);
+  free(c.sd);
+  tr_mesh_orient_memo_forget(m);
+  if (st == TR_OK)
+    st = tr_delaunay_canonical(m);
+  if (st != TR_OK) {
+    tr_mesh_destroy(m);
+    return st;
+  }
+  *out = m;
+  return TR_OK;
+}

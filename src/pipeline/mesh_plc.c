@@ -281,7 +281,11 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
              ? tr_error(TR_ERR_USAGE, "tr_options.threads is %d (0: every core, or N > 0)",
                         opt.threads)
              : tr_delaunay_build_threads(p->xyz, p->npoints - p->nxq, opt.threads, &m);
-  if (st == TR_OK && p->nxq)
+  if (st == TR_ERR_DEGENERATE && p->nxq) { /* the doubles alone span no tet */
+    tr_error_clear();
+    st = tr_delaunay_build_exact(p->xyz, p->npoints - p->nxq, p->xq + (p->npoints - p->nxq),
+                                 p->nxq, &m);
+  } else if (st == TR_OK && p->nxq)
     st = tr_delaunay_insert_exact(m, p->xq + (p->npoints - p->nxq), p->nxq);
   PROGRESS(TR_STAGE_DELAUNAY, 1);
   double t3 = tr_pipeline_now();

@@ -24,8 +24,14 @@ tr_status tr_sizing_build(const struct tr_plc *plc, int threads, tr_sizing *s)
   memset(s, 0, sizeof *s);
   s->h = plc->vsize;
   /* the doubles only: --resolve's exact corners (the last nxq points) have no size of
-   * their own (0), and they lie in the hull of the others */
-  return tr_delaunay_build_threads(plc->xyz, plc->npoints - plc->nxq, threads, &s->bg);
+   * their own (0); the walk clamps a point beyond the hull to the tet it leaves by */
+  tr_status st = tr_delaunay_build_threads(plc->xyz, plc->npoints - plc->nxq, threads, &s->bg);
+  if (st != TR_ERR_DEGENERATE || !plc->nxq)
+    return st;
+  /* the doubles alone span no tet (tr_delaunay_build_exact): the exact corners join at
+   * their nearest doubles, with size 0, so the tets at them bound nothing */
+  tr_error_clear();
+  return tr_delaunay_build_threads(plc->xyz, plc->npoints, threads, &s->bg);
 }
 
 void tr_sizing_free(tr_sizing *s)

@@ -461,6 +461,17 @@ static void t_random_cubes(void)
   }
 }
 
+/* A union whose 13 corners are 3 doubles and 10 rationals (found by fuzz_resolve): the
+ * doubles alone span no tet, so the Delaunay stage starts from the exact points. */
+static void t_flat_doubles(const char *data)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/resolve_flat_doubles.off", data);
+  tr_plc *c = tm_read(path);
+  rational_cases("flat_doubles", c, 10);
+  tr_plc_destroy(c);
+}
+
 /* A one-loop polygon that cannot be triangulated in its plane is an error as read, and
  * with resolve it is read as its fan (tr_plc_read_options): resolve_skew_quad.obj is the
  * tetrahedron (0,0,0) (1,0,0) (0,1,1/2) (1,1,2) with two faces given as a skew quad whose
@@ -527,6 +538,7 @@ int main(int argc, char **argv)
     {"defects", NULL, t_defects},
     {"random_cubes", t_random_cubes, NULL},
     {"fans", NULL, t_fans},
+    {"flat_doubles", NULL, t_flat_doubles},
   };
   int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
   tr_thread_cleanup();
