@@ -302,6 +302,15 @@ typedef struct tr_options {
    * "Parallel refinement"); the mesh is the same for any thread count, but another mesh
    * than without rounds. 0 (default): off, one thread */
   uint32_t refine_rounds;
+  /* 1: the caller takes the exact mesh (tr_mesh_point_exact; tr_mesh_write with exact to
+   * a TetGen .node), as the CLI's --exact does. The Steiner points and resolve's rational
+   * corners stay at their nearest doubles in tr_mesh_points, unrepaired: a tet may be
+   * flat or inverted there (a warning counts them; tr_mesh_write then refuses every
+   * output but the exact one), while on the exact points every tet is positive. So a mesh
+   * is returned where no doubles exist for it (two exact corners with one nearest double),
+   * and no time goes to a repair nobody uses. 0 (default): the doubles are repaired until
+   * every tet is positive on them, or the call fails with TR_ERR_INVALID_MESH */
+  int keep_exact;
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);

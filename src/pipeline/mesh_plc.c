@@ -201,6 +201,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   read_options(optin, &opt);
   if (opt.keep_steiner)
     flags |= TR_PIPE_KEEP_STEINER;
+  if (opt.keep_exact)
+    flags |= TR_PIPE_KEEP_EXACT;
   tr_stats full, *stats = &full;
   memset(&full, 0, sizeof full);
   if (out)

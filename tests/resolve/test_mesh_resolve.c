@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "input/validate.h"
+#include "output/round.h"
 #include "resolve/resolve.h"
 #include "../pipeline/tmesh.h"
 
@@ -265,7 +267,7 @@ static void rational_cases(const char *name, const tr_plc *p, uint32_t nxq)
 
 /* A tetrahedron piercing the unit cube's bottom: its edge from (0.2, 0.3, -1) to
  * (0.7, 0.9, 2) crosses z = 0 at x = 0.2 + 0.5 / 3, no double. */
-static void t_rational(void)
+static tr_plc *pierced_cube(void)
 {
   double xyz[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1,
                   0.2, 0.3, -1, 0.7, 0.9, 2, 0.9, 0.1, 0.5, 0.1, 0.8, 0.4};
@@ -282,7 +284,12 @@ static void t_rational(void)
       tris[3 * t + 1] = tris[3 * t + 2];
       tris[3 * t + 2] = x;
     }
-  tr_plc *p = from_arrays(xyz, 12, tris, 16);
+  return from_arrays(xyz, 12, tris, 16);
+}
+
+static void t_rational(void)
+{
+  tr_plc *p = pierced_cube();
   rational_cases("tet_pierces_cube", p, 10);
   /* hole points on such a surface: not done yet, said by name */
   EXPECT(tr_plc_add_hole(p, 0.5, 0.5, 0.5) == TR_OK, "add hole: %s", tr_last_error());
@@ -376,6 +383,104 @@ static void t_defects(const char *data)
   EXPECT(st == TR_ERR_OPEN, "a triangle given twice more: %s", tr_status_name(st));
   tr_plc_destroy(p);
   tr_plc_destroy(c);
+}
+
+/* tr_options.keep_exact (the CLI's --exact, Python's exact=True). On
+ * tests/data/resolve_grid_cycle.off, corners at 2^52 where an ulp is a unit, two exact
+ * corners of the solid share a nearest double: no doubles keep every tet positive, so
+ * the default rounding fails and names the option. With it the exact mesh comes back,
+ * validated exactly (conformity to the resolved surface, the solid's volume); its points
+ * are the nearest doubles, unrepaired, so only the exact .node may be written. On the
+ * tetrahedron piercing the cube, whose doubles the rounding can repair, the option
+ * changes nothing but the doubles: the same tets, the same exact points. */
+static int same_doubles(const void *ctx, uint32_t a, uint32_t b)
+{
+  const double *x = ctx;
+  return memcmp(x + 3 * (size_t)a, x + 3 * (size_t)b, 3 * sizeof *x);
+}
+
+static void t_keep_exact(const char *data)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/resolve_grid_cycle.off", data);
+  tr_plc *p = tm_read(path);
+  tr_options opt = tm_options();
+  opt.resolve = 1;
+  tr_mesh *m = NULL;
+  tr_status st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_INVALID_MESH && !m && strstr(tr_last_error(), "keep_exact"),
+         "grid_cycle without keep_exact: %s: %s", tr_status_name(st), tr_last_error());
+  tr_mesh_destroy(m);
+  opt.keep_exact = 1;
+  mesh_resolved("grid_cycle_keep_exact", p, &opt);
+  m = NULL;
+  st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st == TR_OK && m, "grid_cycle keep_exact: %s: %s", tr_status_name(st),
+         tr_last_error());
+  if (m) {
+    /* the reason there is no mesh in doubles: two vertices, one double, two exact points */
+    uint32_t nv = tr_mesh_num_vertices(m), shared = 0;
+    uint32_t *ord = malloc(sizeof *ord * nv);
+    for (uint32_t v = 0; v < nv; v++)
+      ord[v] = v;
+    tr_sort_ids(ord, nv, same_doubles, tr_mesh_points(m));
+    for (uint32_t i = 1; i < nv; i++)
+      if (!same_doubles(tr_mesh_points(m), ord[i - 1], ord[i])) {
+        char *a = NULL, *b = NULL;
+        EXPECT(tr_mesh_point_exact(m, ord[i - 1], &a) == TR_OK &&
+                   tr_mesh_point_exact(m, ord[i], &b) == TR_OK && strcmp(a, b),
+               "vertices %u and %u: one exact point %s", ord[i - 1], ord[i], a ? a : "?");
+        tr_free(a);
+        tr_free(b);
+        shared++;
+      }
+    EXPECT(shared > 0, "grid_cycle: no two vertices share a double");
+    free(ord);
+    uint64_t flat = tr_round_count_nonpositive(m, NULL);
+    EXPECT(flat > 0, "grid_cycle: every tet positive on the nearest doubles");
+    EXPECT(tr_mesh_write(m, "keep_exact_grid.node", 1) == TR_OK, "exact .node: %s",
+           tr_last_error());
+    st = tr_mesh_write(m, "keep_exact_grid.mesh", 0);
+    EXPECT(st == TR_ERR_INVALID_MESH, "a .mesh in doubles of a mesh flat there: %s",
+           tr_status_name(st));
+    remove("keep_exact_grid.node");
+    remove("keep_exact_grid.ele");
+    remove("keep_exact_grid.face");
+    remove("keep_exact_grid.mesh");
+  }
+  tr_mesh_destroy(m);
+  tr_plc_destroy(p);
+}
+
+static void t_keep_exact_same_mesh(void)
+{
+  tr_plc *p = pierced_cube();
+  tr_mesh *m[2] = {NULL, NULL};
+  for (int k = 0; k < 2; k++) {
+    tr_options opt = tm_options();
+    opt.resolve = 1;
+    opt.keep_exact = k;
+    tr_status st = tr_mesh_plc(p, &opt, &m[k], NULL);
+    EXPECT(st == TR_OK, "pierced cube, keep_exact %d: %s", k, tr_last_error());
+  }
+  if (m[0] && m[1]) {
+    uint32_t nv = tr_mesh_num_vertices(m[0]), nt = tr_mesh_num_tets(m[0]), diff = 0;
+    EXPECT(nv == tr_mesh_num_vertices(m[1]) && nt == tr_mesh_num_tets(m[1]) &&
+               !memcmp(tr_mesh_tets(m[0]), tr_mesh_tets(m[1]), 16 * (size_t)nt),
+           "keep_exact changed the tets");
+    for (uint32_t v = 0; v < nv && nv == tr_mesh_num_vertices(m[1]); v++) {
+      char *a = NULL, *b = NULL;
+      tr_mesh_point_exact(m[0], v, &a);
+      tr_mesh_point_exact(m[1], v, &b);
+      diff += !a || !b || strcmp(a, b);
+      tr_free(a);
+      tr_free(b);
+    }
+    EXPECT(diff == 0, "keep_exact moved %u exact points", diff);
+  }
+  tr_mesh_destroy(m[0]);
+  tr_mesh_destroy(m[1]);
+  tr_plc_destroy(p);
 }
 
 /* Errors of the soup: open, badly oriented, empty solid, bad option value. */
@@ -472,6 +577,8 @@ int main(int argc, char **argv)
     {"errors", NULL, t_errors},
     {"defects", NULL, t_defects},
     {"random_cubes", t_random_cubes, NULL},
+    {"keep_exact", NULL, t_keep_exact},
+    {"keep_exact_same", t_keep_exact_same_mesh, NULL},
   };
   int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
   tr_thread_cleanup();
