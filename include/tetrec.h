@@ -286,8 +286,9 @@ typedef struct tr_options {
    * another is an internal facet, kept only with 2) is meshed unchanged: the same mesh
    * as with 0. Boundary vertices that are rational points and no doubles are mesh
    * vertices with exact points (written exactly by the exact writers, rounded like Steiner
-   * points otherwise); on such a surface surface_tolerance, hole and region points are
-   * not implemented yet (TR_ERR_UNSUPPORTED naming the mode). 0 (default): off */
+   * points otherwise); on such a surface surface_tolerance and hole points are not
+   * implemented yet (TR_ERR_UNSUPPORTED naming the mode; region points work). 0
+   * (default): off */
   int resolve;
   /* > 0: the surface may be re-triangulated before recovery (src/simplify,
    * docs/simplify.md) so that every point of the meshed boundary lies within

@@ -128,3 +128,20 @@ def test_exact_keeps_the_mesh_where_two_exact_corners_share_a_double(tmp_path):
     assert e.value.status == "TR_ERR_INVALID_MESH"
     m.write(tmp_path / "x.node")
     assert "/" in (tmp_path / "x.node").read_text()
+
+
+def test_region_points_work_on_rational_corners_holes_are_refused_by_name():
+    # the stretched box of the test above: its union has corners at 0.5 + 1/3; a region
+    # point names the whole union (no internal facets), a hole point is not done there
+    a, ta = cube(0.0, 1.0)
+    b, tb = cube(0.0, 1.0)
+    b = b * np.array([1.5, 1.0, 1.0]) + 0.5
+    pts, tris = np.vstack([a, b]), np.vstack([ta, tb + 8]).astype(np.uint32)
+    m = tetrec.tetrahedralize(pts, tris, resolve=True, regions=[(0.25, 0.25, 0.25, 3, 0)])
+    xp = m.exact_points()
+    assert any(c.denominator % 3 == 0 for p in xp for c in p)
+    assert (m.regions == 3).all() and m.stats["region_points"] == 1
+    assert tets_volume6(xp, m.tets) == Fraction(57, 4)
+    with pytest.raises(tetrec.Error) as e:
+        tetrec.tetrahedralize(pts, tris, resolve=True, holes=[(0.25, 0.25, 0.25)])
+    assert e.value.status == "TR_ERR_UNSUPPORTED" and "hole points" in e.value.message

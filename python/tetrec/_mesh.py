@@ -238,8 +238,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     facets. A surface whose winding number is not defined (open, or triangles oriented
     against their neighbours) raises tetrec.Error (TR_ERR_OPEN) naming the edge; one that
     already bounds its solid is meshed as without resolve. Boundary vertices that are
-    rational points are meshed exactly; with them, surface_tolerance and hole and region
-    points are not implemented yet (TR_ERR_UNSUPPORTED naming the mode).
+    rational points are meshed exactly; with them, surface_tolerance and holes are not
+    implemented yet (TR_ERR_UNSUPPORTED naming the mode; regions work).
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
     exact: the exact mesh is what is kept (tr_options.keep_exact, the CLI's --exact):

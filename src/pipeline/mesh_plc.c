@@ -154,8 +154,8 @@ static tr_status exact_modes(const tr_plc *p, const tr_options *opt)
   const char *mode = NULL;
   if (opt->surface_tolerance != 0)
     mode = "--surface-tolerance";
-  else if (p->nholes || p->nregions)
-    mode = "hole and region points";
+  else if (p->nholes)
+    mode = "hole points";
   else if (opt->allow_open)
     mode = "--allow-open";
   if (!mode)

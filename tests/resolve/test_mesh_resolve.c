@@ -297,10 +297,92 @@ static void t_rational(void)
   opt.resolve = 1;
   tr_mesh *m = NULL;
   tr_status st = tr_mesh_plc(p, &opt, &m, NULL);
-  EXPECT(st == TR_ERR_UNSUPPORTED && !m && strstr(tr_last_error(), "hole and region points"),
+  EXPECT(st == TR_ERR_UNSUPPORTED && !m && strstr(tr_last_error(), "hole points"),
          "hole point: %s: %s", tr_status_name(st), tr_last_error());
   tr_mesh_destroy(m);
   tr_plc_destroy(p);
+}
+
+/* Region points on a surface with rational corners, located exactly (src/outer/points.c
+ * with the corners' exact bounds in the triangles' boxes). With its internal facets
+ * (resolve = 2) the pierced cube has a cell cube n tetrahedron, convex: a region point at
+ * the tetrahedron's centroid gives attribute 5 to that cell's tets, each with its four
+ * vertices in the closed input tetrahedron exactly, and one at (0.05, 0.05, 0.05)
+ * attribute 9 to the cube's part outside it, none of whose tets has all four there (that
+ * tet would lie in the convex cell). Without internal facets (resolve = 1) the union is
+ * one cell: every tet gets 5. A maximum volume of 0.002 on region 5 refines it until no
+ * tet is over it. Every mesh validated exactly with the solid's volume. */
+static int in_closed_tet(const tr_point *x, const tr_point P[4], int s)
+{
+  for (int k = 0; k < 4; k++) {
+    tr_point W[4] = {P[0], P[1], P[2], P[3]};
+    W[k] = *x;
+    if (tr_orient3d_p(&W[0], &W[1], &W[2], &W[3]) * s < 0)
+      return 0;
+  }
+  return 1;
+}
+
+static void t_regions(void)
+{
+  static const struct {
+    int mode;
+    double maxvol;
+    const char *name;
+  } runs[] = {{1, 0, "regions_union"}, {2, 0, "regions_internal"},
+              {2, 0.002, "regions_internal_max_volume"}};
+  for (size_t r = 0; r < sizeof runs / sizeof *runs; r++) {
+    tr_plc *p = pierced_cube();
+    tr_point P[4];
+    double c[3] = {0, 0, 0};
+    for (int i = 0; i < 4; i++) {
+      P[i] = tr_pt_d(p->xyz + 3 * (8 + i));
+      for (int d = 0; d < 3; d++)
+        c[d] += 0.25 * p->xyz[3 * (8 + i) + d];
+    }
+    int s = tr_orient3d_p(&P[0], &P[1], &P[2], &P[3]);
+    EXPECT(tr_plc_add_region(p, c[0], c[1], c[2], 5, runs[r].maxvol) == TR_OK, "%s",
+           tr_last_error());
+    if (runs[r].mode == 2)
+      EXPECT(tr_plc_add_region(p, 0.05, 0.05, 0.05, 9, 0) == TR_OK, "%s", tr_last_error());
+    tr_options opt = tm_options();
+    opt.resolve = runs[r].mode;
+    mesh_resolved(runs[r].name, p, &opt);
+    tr_mesh *m = NULL;
+    tr_stats st;
+    memset(&st, 0, sizeof st);
+    st.size = sizeof st;
+    tr_status rc = tr_mesh_plc(p, &opt, &m, &st);
+    EXPECT(rc == TR_OK && m, "%s: %s: %s", runs[r].name, tr_status_name(rc), tr_last_error());
+    uint32_t n5 = 0, n9 = 0, other = 0, bad5 = 0, bad9 = 0;
+    for (uint32_t t = 0; m && t < tr_mesh_num_tets(m); t++) {
+      const uint32_t *tv = tr_mesh_tets(m) + 4 * (size_t)t;
+      int all = 1;
+      for (int k = 0; k < 4; k++) {
+        tr_point x = tr_mesh_point(m, tv[k]);
+        all &= in_closed_tet(&x, P, s);
+      }
+      int32_t g = tr_mesh_tet_regions(m)[t];
+      n5 += g == 5, n9 += g == 9, other += g != 5 && g != 9;
+      bad5 += g == 5 && !all;
+      bad9 += g == 9 && all;
+    }
+    if (runs[r].mode == 1) {
+      EXPECT(m && n5 == tr_mesh_num_tets(m) && n5 > 0, "%s: %u of %u tets in region 5",
+             runs[r].name, n5, m ? tr_mesh_num_tets(m) : 0);
+    } else {
+      EXPECT(n5 > 0 && n9 > 0 && other > 0 && bad5 == 0 && bad9 == 0,
+             "%s: regions 5: %u (%u not in the tetrahedron), 9: %u (%u in it), others %u",
+             runs[r].name, n5, bad5, n9, bad9, other);
+    }
+    EXPECT(st.region_points == (runs[r].mode == 2 ? 2u : 1u) && st.tets_over_bounds == 0 &&
+               (runs[r].maxvol == 0) == (st.points_added_for_quality == 0),
+           "%s: %llu region points, %llu tets over the bound, %llu points added", runs[r].name,
+           (unsigned long long)st.region_points, (unsigned long long)st.tets_over_bounds,
+           (unsigned long long)st.points_added_for_quality);
+    tr_mesh_destroy(m);
+    tr_plc_destroy(p);
+  }
 }
 
 /* Two unit cubes, the second turned about z by the angle of cosine 3/5 and moved by 1/3
@@ -579,6 +661,7 @@ int main(int argc, char **argv)
     {"random_cubes", t_random_cubes, NULL},
     {"keep_exact", NULL, t_keep_exact},
     {"keep_exact_same", t_keep_exact_same_mesh, NULL},
+    {"regions", t_regions, NULL},
   };
   int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
   tr_thread_cleanup();
