@@ -286,8 +286,9 @@ typedef struct tr_options {
    * another is an internal facet, kept only with 2) is meshed unchanged: the same mesh
    * as with 0. Boundary vertices that are rational points and no doubles are mesh
    * vertices with exact points (written exactly by the exact writers, rounded like Steiner
-   * points otherwise); on such a surface surface_tolerance, hole and region points are
-   * not implemented yet (TR_ERR_UNSUPPORTED naming the mode). 0 (default): off */
+   * points otherwise); on such a surface surface_tolerance and hole points are not
+   * implemented yet (TR_ERR_UNSUPPORTED naming the mode; region points work). 0
+   * (default): off */
   int resolve;
   /* > 0: the surface may be re-triangulated before recovery (src/simplify,
    * docs/simplify.md) so that every point of the meshed boundary lies within
@@ -302,6 +303,15 @@ typedef struct tr_options {
    * "Parallel refinement"); the mesh is the same for any thread count, but another mesh
    * than without rounds. 0 (default): off, one thread */
   uint32_t refine_rounds;
+  /* 1: the caller takes the exact mesh (tr_mesh_point_exact; tr_mesh_write with exact to
+   * a TetGen .node), as the CLI's --exact does. The Steiner points and resolve's rational
+   * corners stay at their nearest doubles in tr_mesh_points, unrepaired: a tet may be
+   * flat or inverted there (a warning counts them; tr_mesh_write then refuses every
+   * output but the exact one), while on the exact points every tet is positive. So a mesh
+   * is returned where no doubles exist for it (two exact corners with one nearest double),
+   * and no time goes to a repair nobody uses. 0 (default): the doubles are repaired until
+   * every tet is positive on them, or the call fails with TR_ERR_INVALID_MESH */
+  int keep_exact;
 } tr_options;
 /* Sets every field to its default, size included. Thread-safe. */
 void tr_options_default(tr_options *opt);

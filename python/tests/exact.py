@@ -155,3 +155,35 @@ def check_faces_in_their_triangles(mesh, in_points, in_tris):
     for t, s in area.items():
         a, b, c = (ipts[int(v)] for v in in_tris[t])
         assert s == cross(sub(b, a), sub(c, a)), f"triangle {t} not covered exactly"
+
+
+def _sign(x):
+    return (x > 0) - (x < 0)
+
+
+def winding_number(p, points, triangles):
+    """The winding number of the closed soup (points exact, triangles oriented) about p,
+    exactly: signed crossings of a ray from p, each +1 where the ray leaves through a
+    triangle's outer side. A ray through an edge or a vertex, or p on a triangle, is
+    degenerate: the next direction is tried; None if every one is."""
+    for d in ((Fraction(1), Fraction(1, 3), Fraction(1, 7)),
+              (Fraction(-1, 5), Fraction(1), Fraction(2, 11)),
+              (Fraction(3, 13), Fraction(-2, 17), Fraction(1))):
+        w = 0
+        for t in triangles:
+            u, v, x = (sub(points[int(i)], p) for i in t)
+            s = [_sign(dot(cross(u, v), d)), _sign(dot(cross(v, x), d)),
+                 _sign(dot(cross(x, u), d))]
+            if 1 in s and -1 in s:
+                continue  # the ray's line misses the triangle
+            # p's side of the plane: the ray meets it ahead iff that is the sign in s
+            side = _sign(dot(u, cross(v, x)))
+            if 0 in s or side == 0:
+                if side in (0, max(s, key=abs)):
+                    break  # through an edge or a vertex ahead, or p on the plane
+                continue
+            if side == s[0]:
+                w += s[0]
+        else:
+            return w
+    return None

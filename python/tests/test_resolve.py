@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 
 import tetrec
-from conftest import cube
-from exact import check_mesh, faces_of_tets, face_key, det, tets_volume6
+from conftest import DATA, cube
+from exact import (check_mesh, cross, det, face_key, faces_of_tets, frac_points,
+                   in_closed_triangle, oriented_plane, sub, tets_volume6, winding_number)
 
 
 def two_cubes():
@@ -77,3 +78,70 @@ def test_rational_corners_are_exact_mesh_vertices():
     hull = {f for f, k in faces.items() if k == 1}
     assert hull == {face_key(f) for f in m.boundary_faces}
     assert tets_volume6(xp, m.tets) == Fraction(57, 4)  # 6 x (1 + 1.5 - 1/8)
+
+
+def test_exact_keeps_the_mesh_where_two_exact_corners_share_a_double(tmp_path):
+    # tests/data/resolve_grid_cycle.off: six tetrahedra on a grid at 2^52, where one ulp
+    # is a unit, so two exact corners of the union round to one double: no mesh in
+    # doubles exists and the default raises, naming exact output; exact=True keeps the
+    # exact mesh (tr_options.keep_exact), checked here exactly and independently of the
+    # library: every tet positive, its faces a closed boundary listed as such, the tets'
+    # volume the boundary's, every tet's centroid of winding number >= 1 in the input,
+    # and every boundary face on an input triangle, in its plane and oriented like it
+    surface = tetrec.read(DATA / "resolve_grid_cycle.off")
+    with pytest.raises(tetrec.Error) as e:
+        tetrec.tetrahedralize(surface, resolve=True)
+    assert e.value.status == "TR_ERR_INVALID_MESH" and "--exact" in e.value.message
+    m = tetrec.tetrahedralize(surface, resolve=True, exact=True)
+    assert m.exact and len(m.tets) == m.stats["volume_elements"] > 0
+    xp = m.exact_points()
+    # the reason: two vertices with one double and two exact points
+    by_double = {}
+    for v, p in enumerate(m.points.tolist()):
+        by_double.setdefault(tuple(p), []).append(v)
+    shared = [vs for vs in by_double.values() if len(vs) > 1]
+    assert shared and all(len({xp[v] for v in vs}) == len(vs) for vs in shared)
+    for t in m.tets:
+        assert det(*(xp[v] for v in t)) > 0
+    faces = faces_of_tets(m.tets)
+    assert max(faces.values()) <= 2
+    hull = {f for f, k in faces.items() if k == 1}
+    assert hull == {face_key(f) for f in m.boundary_faces}
+    o = (Fraction(0),) * 3
+    assert tets_volume6(xp, m.tets) == sum(det(o, *(xp[v] for v in f))
+                                           for f in m.boundary_faces)
+    ipts = frac_points(surface.points)
+    assert winding_number((Fraction(0),) * 3, ipts, surface.triangles) == 0  # far outside
+    for t in m.tets:
+        g = tuple(sum(xp[v][k] for v in t) / 4 for k in range(3))
+        assert winding_number(g, ipts, surface.triangles) >= 1, list(t)
+    for f in m.boundary_faces:
+        p = [xp[int(v)] for v in f]
+        n = cross(sub(p[1], p[0]), sub(p[2], p[0]))
+        assert any(oriented_plane(*p) == oriented_plane(*(ipts[int(v)] for v in tri)) and
+                   all(in_closed_triangle(q, *(ipts[int(v)] for v in tri), n) for q in p)
+                   for tri in surface.triangles), list(f)
+    # only the exact output is a mesh: a format in doubles is refused, the .node written
+    # exactly (Mesh.write's default under exact=True)
+    with pytest.raises(tetrec.Error) as e:
+        m.write(tmp_path / "x.mesh")
+    assert e.value.status == "TR_ERR_INVALID_MESH"
+    m.write(tmp_path / "x.node")
+    assert "/" in (tmp_path / "x.node").read_text()
+
+
+def test_region_points_work_on_rational_corners_holes_are_refused_by_name():
+    # the stretched box of the test above: its union has corners at 0.5 + 1/3; a region
+    # point names the whole union (no internal facets), a hole point is not done there
+    a, ta = cube(0.0, 1.0)
+    b, tb = cube(0.0, 1.0)
+    b = b * np.array([1.5, 1.0, 1.0]) + 0.5
+    pts, tris = np.vstack([a, b]), np.vstack([ta, tb + 8]).astype(np.uint32)
+    m = tetrec.tetrahedralize(pts, tris, resolve=True, regions=[(0.25, 0.25, 0.25, 3, 0)])
+    xp = m.exact_points()
+    assert any(c.denominator % 3 == 0 for p in xp for c in p)
+    assert (m.regions == 3).all() and m.stats["region_points"] == 1
+    assert tets_volume6(xp, m.tets) == Fraction(57, 4)
+    with pytest.raises(tetrec.Error) as e:
+        tetrec.tetrahedralize(pts, tris, resolve=True, holes=[(0.25, 0.25, 0.25)])
+    assert e.value.status == "TR_ERR_UNSUPPORTED" and "hole points" in e.value.message

@@ -68,11 +68,11 @@ def test_repository_surface_meshes_exactly_or_is_refused_as_open(path):
         except tetrec.Error as r:
             # resolve_grid_*: corners at 2^52, where one ulp is a unit, so two exact
             # corners share a nearest double and no mesh of doubles exists; the message
-            # says so and points to the exact output (`tetrec mesh --resolve --exact`
-            # writes it; tetrahedralize's exact=True does not keep it yet)
+            # says so and points to the exact output, which exact=True keeps
+            # (test_resolve.py checks that mesh in full)
             assert path.name.startswith("resolve_grid_") and r.status == "TR_ERR_INVALID_MESH"
             assert "--exact" in r.message
-            return
+            mesh = tetrec.tetrahedralize(surface, resolve=True, exact=True)
         xp = mesh.exact_points()
         assert all(det(*(xp[v] for v in t)) > 0 for t in mesh.tets)
         assert len(mesh.tets) == mesh.stats["volume_elements"] > 0

@@ -46,7 +46,10 @@ class Mesh:
     points (n,3) float64: the surface's points first (as validate() gives them: the
         input's, in input order, unless exact duplicates were merged), then Steiner
         points (at doubles chosen so that every tet is positive in doubles;
-        exact_points() gives their exact rational positions);
+        exact_points() gives their exact rational positions). Under
+        tetrahedralize(exact=True) the Steiner points and resolve's rational corners are
+        at their nearest doubles, unrepaired: a tet may be flat or inverted there, and
+        exact_points() is the mesh;
     tets (m,4) uint32: positively oriented, det[v1-v0, v2-v0, v3-v0] > 0;
     regions (m,) int32: region id of each tet;
     boundary_faces (f,3) uint32: the mesh faces on input triangles (the boundary and
@@ -235,11 +238,17 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
     facets. A surface whose winding number is not defined (open, or triangles oriented
     against their neighbours) raises tetrec.Error (TR_ERR_OPEN) naming the edge; one that
     already bounds its solid is meshed as without resolve. Boundary vertices that are
-    rational points are meshed exactly; with them, surface_tolerance and hole and region
-    points are not implemented yet (TR_ERR_UNSUPPORTED naming the mode).
+    rational points are meshed exactly; with them, surface_tolerance and holes are not
+    implemented yet (TR_ERR_UNSUPPORTED naming the mode; regions work).
     Options the C library does not offer raise NotImplementedError
     (tetrec.SUPPORTED_OPTIONS lists what it offers).
-    exact: Mesh.write() defaults to writing exact rational Steiner points.
+    exact: the exact mesh is what is kept (tr_options.keep_exact, the CLI's --exact):
+    Mesh.exact_points() holds it, every tet positive on them, and Mesh.write() defaults
+    to writing the exact rationals (to a .node file; other formats refuse a mesh whose
+    tets are not all positive in doubles). Mesh.points are then the nearest doubles,
+    not repaired: a mesh is returned even where no doubles keep every tet positive (with
+    resolve, two exact corners that share a nearest double), and no time goes to the
+    repair.
     smooth: surface diagonal swaps before recovery. round_budget: star checks the
     rounding repair may spend. verbose: 0 quiet, 1 normal, 2 chatty (on stderr).
     progress: called as progress(stage, fraction) at the start (0.0) and end (1.0) of
@@ -270,6 +279,8 @@ def tetrahedralize(points, triangles=None, *, markers=None, holes=None, regions=
         options["keep_surface"] = keep_surface
     if keep_steiner:
         options["keep_steiner"] = keep_steiner
+    if exact:
+        options["exact"] = True
     # flags, not truth values: keep_edges="no" must not turn it on
     for name, flag, default in (("keep_edges", keep_edges, False),
                                 ("spacing_radii", spacing_radii, True),

@@ -149,7 +149,7 @@ static const char *const SUPPORTED_OPTIONS[] = {
     "smooth", "verbose", "round_budget", "progress", "keep_surface", "keep_steiner", "quality",
     "max_volume", "optimize", "keep_edges", "subface_quality", "refine_budget",
     "spacing_radii", "refine_partial", "holes", "regions", "threads", "sizing", "resolve",
-    "surface_tolerance", NULL};
+    "surface_tolerance", "exact", NULL};
 
 /* A positive finite float, or -1 with a Python error set. */
 static double positive(PyObject *value, const char *name)
@@ -236,7 +236,7 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
       opt->threads = (int)x;
     } else if (!strcmp(k, "keep_surface") || !strcmp(k, "keep_steiner") ||
                !strcmp(k, "keep_edges") || !strcmp(k, "spacing_radii") ||
-               !strcmp(k, "refine_partial")) {
+               !strcmp(k, "refine_partial") || !strcmp(k, "exact")) {
       int x = PyObject_IsTrue(value);
       if (x < 0)
         return -1;
@@ -248,6 +248,8 @@ static int set_options(PyObject *opts, tr_options *opt, progress_state *ps)
         opt->refine_spacing_radii = x;
       else if (!strcmp(k, "refine_partial"))
         opt->refine_partial = x;
+      else if (!strcmp(k, "exact")) /* the exact mesh, unrounded (tr_options.keep_exact) */
+        opt->keep_exact = x;
       else
         opt->keep_steiner = x;
     } else if (!strcmp(k, "quality")) {

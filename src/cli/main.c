@@ -202,6 +202,7 @@ static int cmd_mesh(const tr_cli_args *a)
   opt.max_volume = a->max_volume;
   opt.refine_budget = a->refine_budget;
   opt.refine_rounds = (uint32_t)a->refine_rounds;
+  opt.keep_exact = a->exact; /* check_names: its output is a .node */
   opt.refine_partial = 1; /* the mesh at the budget is written, then exit 8 */
   if (a->optimize)
     opt.optimize = a->optimize - 1;
@@ -283,8 +284,8 @@ static int cmd_mesh(const tr_cli_args *a)
     fprintf(stderr, "tetrec: warning: --keep-edges has no effect without quality refinement: "
             "every input edge is kept anyway\n");
   /* The pipeline (src/pipeline): Delaunay, edge and facet recovery, outer removal. With
-   * --exact (checked above to go to a .node), a rounding that cannot be repaired is a
-   * warning, not a failure: the exact points are written. */
+   * --exact (tr_options.keep_exact, checked above to go to a .node), a rounding that
+   * cannot be repaired is a warning, not a failure: the exact points are written. */
   tr_mesh *mesh = NULL;
   progress("meshing", a->in);
   progress_line line = {now(), a->progress ? 0.0 : 1.0, 0};
@@ -294,8 +295,7 @@ static int cmd_mesh(const tr_cli_args *a)
   }
   opt.sizing = plc->vsize;
   opt.nsizing = plc->vsize ? plc->npoints : 0;
-  unsigned flags = (a->exact ? TR_PIPE_KEEP_EXACT : 0) |
-                   (a->keep_steiner ? TR_PIPE_KEEP_STEINER : 0);
+  unsigned flags = a->keep_steiner ? TR_PIPE_KEEP_STEINER : 0;
   double t_read = stats.stage_seconds[TR_STAGE_READ];
   s = tr_mesh_plc_flags(plc, &opt, &mesh, &stats, NULL, flags);
   stats.stage_seconds[TR_STAGE_READ] = t_read; /* the pipeline filled the others */

@@ -3,7 +3,8 @@
  * selfint.c    exact detection of improperly intersecting triangles
  * nesting.c    which closed shells are cavities (inputs where every edge has 2 triangles)
  * cells.c      orientation and openness of any other surface, by its cells
- * report.c     the repair log kept in plc->report */
+ * report.c     the repair log kept in plc->report
+ * defects.c    every defect at once, where validation stops at the first (defects.h) */
 #ifndef TR_INPUT_VALIDATE_H
 #define TR_INPUT_VALIDATE_H
 

@@ -170,6 +170,21 @@ static void tet_box(const struct tr_mesh *m, uint32_t t, double lo[3], double hi
   }
 }
 
+/* The interval box of input triangle t: its corners' doubles, or the exact bounds of
+ * those that are rational points (--resolve's corners, whose doubles are only near). */
+static void tri_box(const struct tr_plc *plc, uint32_t t, double lo[3], double hi[3])
+{
+  const uint32_t *v = plc->tris + 3 * (size_t)t;
+  tr_box_of(plc->xyz, v, 3, lo, hi);
+  for (int k = 0; k < 3; k++) {
+    const tr_qpoint *q = plc->xq ? plc->xq[v[k]] : NULL;
+    for (int d = 0; q && d < 3; d++) {
+      lo[d] = q->lo[d] < lo[d] ? q->lo[d] : lo[d];
+      hi[d] = q->hi[d] > hi[d] ? q->hi[d] : hi[d];
+    }
+  }
+}
+
 /* facet[i]: the first input triangle point i lies on (closed), TR_NONE if none;
  * tet[i]: an inner tet whose closure holds it, TR_NONE if none (outside the domain). */
 static tr_status locate_all(const struct tr_mesh *m, const struct tr_plc *plc,
@@ -182,7 +197,7 @@ static tr_status locate_all(const struct tr_mesh *m, const struct tr_plc *plc,
   asker q = {plc, m, &g, 0, facet};
   for (uint32_t t = 0; t < plc->ntris; t++) {
     double lo[3], hi[3];
-    tr_box_of(plc->xyz, plc->tris + 3 * (size_t)t, 3, lo, hi);
+    tri_box(plc, t, lo, hi);
     q.cur = t;
     pgrid_query(&g, lo, hi, facet, on_triangle, &q);
   }

@@ -551,7 +551,7 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
                     "rounding Steiner points to doubles: %llu tets stay flat or inverted (the "
                     "first: tet %u (%u %u %u %u) near (%.17g, %.17g, %.17g)%s) after %llu star "
                     "checks, the repair's budget; the exact mesh is valid: write it with "
-                    "--exact to a .node file",
+                    "--exact to a .node file (tr_options.keep_exact)",
                     (unsigned long long)left, bad, tv[0], tv[1], tv[2], tv[3],
                     m->xyz[3 * (size_t)tv[0]], m->xyz[3 * (size_t)tv[0] + 1],
                     m->xyz[3 * (size_t)tv[0] + 2], why, (unsigned long long)S.budget);
@@ -563,7 +563,7 @@ tr_status tr_round_steiner(struct tr_mesh *m, uint64_t budget, uint64_t *repaire
                   "Steiner point %u near (%.17g, %.17g, %.17g): no double point within %d "
                   "ulps per axis keeps its %u tets strictly positive (tet %u (%u %u %u %u) "
                   "stays flat or inverted); the exact mesh is valid: write it with --exact to a "
-                  ".node file",
+                  ".node file (tr_options.keep_exact)",
                   fail_v, x[0], x[1], x[2], TR_ROUND_RADIUS,
                   S.start[fail_v + 1] - S.start[fail_v], fail_t, tv[0], tv[1], tv[2], tv[3]);
   }

@@ -145,8 +145,8 @@ static tr_status exact_modes(const tr_plc *p, const tr_options *opt)
   const char *mode = NULL;
   if (opt->surface_tolerance != 0)
     mode = "--surface-tolerance";
-  else if (p->nholes || p->nregions)
-    mode = "hole and region points";
+  else if (p->nholes)
+    mode = "hole points";
   else if (opt->allow_open)
     mode = "--allow-open";
   if (!mode)
@@ -192,6 +192,8 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
   tr_options_read(optin, &opt);
   if (opt.keep_steiner)
     flags |= TR_PIPE_KEEP_STEINER;
+  if (opt.keep_exact)
+    flags |= TR_PIPE_KEEP_EXACT;
   tr_stats full, *stats = &full;
   memset(&full, 0, sizeof full);
   if (out)

@@ -32,7 +32,8 @@ tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *opt, tr_mesh **out
  * next to it that refinement admitted a point at), and when that leaves a tet flat or
  * inverted a warning is printed (the exact points are valid). */
 enum {
-  TR_PIPE_KEEP_EXACT = 1u << 0, /* the caller writes exact coordinates (--exact .node) */
+  TR_PIPE_KEEP_EXACT = 1u << 0, /* the caller writes exact coordinates (--exact .node;
+                                   set by tr_options.keep_exact) */
   TR_PIPE_KEEP_STEINER = 1u << 1 /* the recovery's Steiner points as they are, no
                                     suppression (src/suppress; --keep-steiner) */
 };

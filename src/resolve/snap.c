@@ -22,9 +22,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/edgesort.h"
+#include "input/defects.h"
 #include "input/validate.h"
-#include "predicates.h"
 #include "resolve/resolve_impl.h"
 #include "resolve/snap.h"
 
@@ -191,106 +190,34 @@ done:
   return st;
 }
 
-static int zero_area(const double *x, const uint32_t *t)
-{
-  const double *a = x + 3 * (size_t)t[0], *b = x + 3 * (size_t)t[1], *c = x + 3 * (size_t)t[2];
-  for (int k = 0; k < 3; k++)
-    if (tr_orient2d_proj(a, b, c, k) != 0)
-      return 0;
-  return 1;
-}
-
-static int cmp_key(const void *ctx, uint32_t a, uint32_t b)
-{
-  const uint32_t *k = ctx;
-  for (int i = 0; i < 3; i++)
-    if (k[3 * (size_t)a + i] != k[3 * (size_t)b + i])
-      return k[3 * (size_t)a + i] < k[3 * (size_t)b + i] ? -1 : 1;
-  return 0;
-}
-
-/* What `tetrec check-surface` would find in s, but non-manifold edges (the union of
- * solids touching along an edge has them, and so do internal facets): zero-area and
- * duplicate triangles, open edges, then the improper pairs of the others. The first pair
- * goes to first[2] (UINT32_MAX if none). */
+/* What `tetrec check-surface` would find in s (src/input/defects.c), but non-manifold
+ * edges (the union of solids touching along an edge has them, and so do internal
+ * facets): zero-area and duplicate triangles, open edges, then the improper pairs of the
+ * others. The first pair goes to first[2] (UINT32_MAX if none). */
 static tr_status defects(const surf *s, tr_snap_defects *d, uint32_t first[2])
 {
   memset(d, 0, sizeof *d);
   first[0] = first[1] = UINT32_MAX;
-  uint32_t nt = s->nt;
-  uint32_t *key = malloc(sizeof *key * 3 * (size_t)(nt ? nt : 1));
-  uint32_t *ord = malloc(sizeof *ord * (nt ? nt : 1)), *keep = malloc(sizeof *keep * (nt ? nt : 1));
-  uint32_t *wt = malloc(sizeof *wt * 3 * (size_t)(nt ? nt : 1));
-  uint32_t *slots = malloc(sizeof *slots * 3 * (size_t)(nt ? nt : 1)), *pairs = NULL;
-  uint8_t *bad = calloc(nt ? nt : 1, 1);
-  tr_status st = TR_OK;
-  if (!key || !ord || !keep || !wt || !slots || !bad) {
-    st = tr_error(TR_ERR_NOMEM, "resolve: out of memory checking %u triangles", nt);
-    goto done;
-  }
-  for (uint32_t t = 0; t < nt; t++) {
-    uint32_t *k = key + 3 * (size_t)t;
-    memcpy(k, s->tris + 3 * (size_t)t, 3 * sizeof *k);
-    for (int i = 0; i < 2; i++)
-      for (int j = 0; j < 2 - i; j++)
-        if (k[j] > k[j + 1]) {
-          uint32_t y = k[j];
-          k[j] = k[j + 1];
-          k[j + 1] = y;
-        }
-    ord[t] = t;
-    if (zero_area(s->xyz, s->tris + 3 * (size_t)t)) {
-      bad[t] = 1;
-      d->zero++;
-    }
-  }
-  if ((st = tr_sort_ids(ord, nt, cmp_key, key)) != TR_OK)
-    goto done;
-  for (uint32_t i = 1; i < nt; i++)
-    if (cmp_key(key, ord[i - 1], ord[i]) == 0 && !bad[ord[i]]) {
-      bad[ord[i]] = 1;
-      d->duplicate++;
-    }
-  uint32_t n = 0;
-  for (uint32_t t = 0; t < nt; t++)
-    if (!bad[t]) {
-      memcpy(wt + 3 * (size_t)n, s->tris + 3 * (size_t)t, 3 * sizeof *wt);
-      keep[n++] = t;
-    }
-  if ((st = tr_edge_slots_sorted(wt, n, s->nv, slots)) != TR_OK)
-    goto done;
-  for (uint32_t i = 0, j; i < 3 * n; i = j) {
-    uint32_t sl = slots[i], a = wt[sl], b = wt[sl / 3 * 3 + (sl % 3 + 1) % 3];
-    for (j = i + 1; j < 3 * n; j++) {
-      uint32_t s2 = slots[j], a2 = wt[s2], b2 = wt[s2 / 3 * 3 + (s2 % 3 + 1) % 3];
-      if ((a2 < b2 ? a2 : b2) != (a < b ? a : b) || (a2 < b2 ? b2 : a2) != (a < b ? b : a))
-        break;
-    }
-    d->open += j - i == 1;
-    d->nonmanifold += j - i > 2;
-  }
   struct tr_plc w;
   memset(&w, 0, sizeof w);
   w.npoints = s->nv;
   w.xyz = s->xyz;
-  w.ntris = n;
-  w.tris = wt;
-  size_t np = 0;
-  if ((st = tr_input_self_intersection_pairs(&w, TR_SELFINT_AUTO, &pairs, &np)) != TR_OK)
-    goto done;
-  d->pairs = np;
-  if (np) {
-    first[0] = keep[pairs[0]];
-    first[1] = keep[pairs[1]];
+  w.ntris = s->nt;
+  w.tris = s->tris;
+  tr_surface_defects f;
+  tr_status st = tr_surface_defects_find(&w, &f);
+  if (st == TR_OK) {
+    d->zero = f.nzero;
+    d->duplicate = f.ndup;
+    d->open = f.nopen;
+    d->nonmanifold = f.nnonmanifold;
+    d->pairs = f.npairs;
+    if (f.npairs) {
+      first[0] = f.pairs[0];
+      first[1] = f.pairs[1];
+    }
   }
-done:
-  free(key);
-  free(ord);
-  free(keep);
-  free(wt);
-  free(slots);
-  free(pairs);
-  free(bad);
+  tr_surface_defects_free(&f);
   return st;
 }
 

@@ -5,29 +5,20 @@ cubes refused without it (exit 7), meshed with it and validated by `check --reso
 --resolve-internal; a valid file gives the same bytes with and without it; an open box
 exits 6 naming the edge; a union with rational corners meshes (exactly with --exact,
 checked; the same bytes twice and with 1 and 2 threads; also --keep-surface and
---quality), and exits 11 naming the mode under --surface-tolerance.
+--quality), and exits 11 naming the mode under --surface-tolerance; corners at 2^52 that
+share a double exit 9 in doubles and mesh with --exact, checked.
 Usage: cli_resolve.py TETREC tests/data"""
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
-tetrec = os.path.abspath(sys.argv[1])
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "io"))
+from clitest import Cli  # noqa: E402
+
+cli = Cli(os.path.abspath(sys.argv[1]))
 data = os.path.abspath(sys.argv[2])
-fails = 0
-
-
-def run(args, cwd):
-    p = subprocess.run([tetrec] + args, capture_output=True, text=True, cwd=cwd)
-    return p.returncode, p.stdout, p.stderr
-
-
-def expect(cond, what):
-    global fails
-    if not cond:
-        print("FAILED:", what, file=sys.stderr)
-        fails += 1
+run, expect = cli.run, cli.expect
 
 
 def off_of(path):
@@ -125,5 +116,16 @@ with tempfile.TemporaryDirectory() as d:
                       "1e-3"], d)
     expect(rc == 11 and "--surface-tolerance" in err and "not implemented yet" in err,
            f"rational corners --surface-tolerance: exit {rc}: {err}")
+    # corners at 2^52, two exact ones with one nearest double: no mesh in doubles (exit 9
+    # naming --exact); --exact (tr_options.keep_exact) writes the exact one, proved by check
+    grid = os.path.join(data, "resolve_grid_cycle.off")
+    rc, _, err = run(["mesh", grid, "--resolve", "-o", "g.mesh"], d)
+    expect(rc == 9 and "--exact" in err, f"grid cycle in doubles: exit {rc}: {err}")
+    rc, _, err = run(["mesh", grid, "--resolve", "--exact", "-o", "g.node"], d)
+    expect(rc == 0 and "only the exact output is valid" in err,
+           f"grid cycle --exact: exit {rc}: {err}")
+    rc, _, err = run(["check", "--resolve", grid, "g.node", "-v"], d)
+    expect(rc == 0 and "conforms exactly" in err and "volume equals" in err,
+           f"check --resolve of the exact grid cycle mesh: exit {rc}: {err}")
 
-sys.exit(1 if fails else 0)
+cli.finish("cli_resolve")

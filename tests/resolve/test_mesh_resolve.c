@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "input/validate.h"
+#include "output/round.h"
 #include "resolve/resolve.h"
 #include "../pipeline/tmesh.h"
 
@@ -265,7 +267,7 @@ static void rational_cases(const char *name, const tr_plc *p, uint32_t nxq)
 
 /* A tetrahedron piercing the unit cube's bottom: its edge from (0.2, 0.3, -1) to
  * (0.7, 0.9, 2) crosses z = 0 at x = 0.2 + 0.5 / 3, no double. */
-static void t_rational(void)
+static tr_plc *pierced_cube(void)
 {
   double xyz[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1,
                   0.2, 0.3, -1, 0.7, 0.9, 2, 0.9, 0.1, 0.5, 0.1, 0.8, 0.4};
@@ -282,7 +284,12 @@ static void t_rational(void)
       tris[3 * t + 1] = tris[3 * t + 2];
       tris[3 * t + 2] = x;
     }
-  tr_plc *p = from_arrays(xyz, 12, tris, 16);
+  return from_arrays(xyz, 12, tris, 16);
+}
+
+static void t_rational(void)
+{
+  tr_plc *p = pierced_cube();
   rational_cases("tet_pierces_cube", p, 10);
   /* hole points on such a surface: not done yet, said by name */
   EXPECT(tr_plc_add_hole(p, 0.5, 0.5, 0.5) == TR_OK, "add hole: %s", tr_last_error());
@@ -290,10 +297,92 @@ static void t_rational(void)
   opt.resolve = 1;
   tr_mesh *m = NULL;
   tr_status st = tr_mesh_plc(p, &opt, &m, NULL);
-  EXPECT(st == TR_ERR_UNSUPPORTED && !m && strstr(tr_last_error(), "hole and region points"),
+  EXPECT(st == TR_ERR_UNSUPPORTED && !m && strstr(tr_last_error(), "hole points"),
          "hole point: %s: %s", tr_status_name(st), tr_last_error());
   tr_mesh_destroy(m);
   tr_plc_destroy(p);
+}
+
+/* Region points on a surface with rational corners, located exactly (src/outer/points.c
+ * with the corners' exact bounds in the triangles' boxes). With its internal facets
+ * (resolve = 2) the pierced cube has a cell cube n tetrahedron, convex: a region point at
+ * the tetrahedron's centroid gives attribute 5 to that cell's tets, each with its four
+ * vertices in the closed input tetrahedron exactly, and one at (0.05, 0.05, 0.05)
+ * attribute 9 to the cube's part outside it, none of whose tets has all four there (that
+ * tet would lie in the convex cell). Without internal facets (resolve = 1) the union is
+ * one cell: every tet gets 5. A maximum volume of 0.002 on region 5 refines it until no
+ * tet is over it. Every mesh validated exactly with the solid's volume. */
+static int in_closed_tet(const tr_point *x, const tr_point P[4], int s)
+{
+  for (int k = 0; k < 4; k++) {
+    tr_point W[4] = {P[0], P[1], P[2], P[3]};
+    W[k] = *x;
+    if (tr_orient3d_p(&W[0], &W[1], &W[2], &W[3]) * s < 0)
+      return 0;
+  }
+  return 1;
+}
+
+static void t_regions(void)
+{
+  static const struct {
+    int mode;
+    double maxvol;
+    const char *name;
+  } runs[] = {{1, 0, "regions_union"}, {2, 0, "regions_internal"},
+              {2, 0.002, "regions_internal_max_volume"}};
+  for (size_t r = 0; r < sizeof runs / sizeof *runs; r++) {
+    tr_plc *p = pierced_cube();
+    tr_point P[4];
+    double c[3] = {0, 0, 0};
+    for (int i = 0; i < 4; i++) {
+      P[i] = tr_pt_d(p->xyz + 3 * (8 + i));
+      for (int d = 0; d < 3; d++)
+        c[d] += 0.25 * p->xyz[3 * (8 + i) + d];
+    }
+    int s = tr_orient3d_p(&P[0], &P[1], &P[2], &P[3]);
+    EXPECT(tr_plc_add_region(p, c[0], c[1], c[2], 5, runs[r].maxvol) == TR_OK, "%s",
+           tr_last_error());
+    if (runs[r].mode == 2)
+      EXPECT(tr_plc_add_region(p, 0.05, 0.05, 0.05, 9, 0) == TR_OK, "%s", tr_last_error());
+    tr_options opt = tm_options();
+    opt.resolve = runs[r].mode;
+    mesh_resolved(runs[r].name, p, &opt);
+    tr_mesh *m = NULL;
+    tr_stats st;
+    memset(&st, 0, sizeof st);
+    st.size = sizeof st;
+    tr_status rc = tr_mesh_plc(p, &opt, &m, &st);
+    EXPECT(rc == TR_OK && m, "%s: %s: %s", runs[r].name, tr_status_name(rc), tr_last_error());
+    uint32_t n5 = 0, n9 = 0, other = 0, bad5 = 0, bad9 = 0;
+    for (uint32_t t = 0; m && t < tr_mesh_num_tets(m); t++) {
+      const uint32_t *tv = tr_mesh_tets(m) + 4 * (size_t)t;
+      int all = 1;
+      for (int k = 0; k < 4; k++) {
+        tr_point x = tr_mesh_point(m, tv[k]);
+        all &= in_closed_tet(&x, P, s);
+      }
+      int32_t g = tr_mesh_tet_regions(m)[t];
+      n5 += g == 5, n9 += g == 9, other += g != 5 && g != 9;
+      bad5 += g == 5 && !all;
+      bad9 += g == 9 && all;
+    }
+    if (runs[r].mode == 1) {
+      EXPECT(m && n5 == tr_mesh_num_tets(m) && n5 > 0, "%s: %u of %u tets in region 5",
+             runs[r].name, n5, m ? tr_mesh_num_tets(m) : 0);
+    } else {
+      EXPECT(n5 > 0 && n9 > 0 && other > 0 && bad5 == 0 && bad9 == 0,
+             "%s: regions 5: %u (%u not in the tetrahedron), 9: %u (%u in it), others %u",
+             runs[r].name, n5, bad5, n9, bad9, other);
+    }
+    EXPECT(st.region_points == (runs[r].mode == 2 ? 2u : 1u) && st.tets_over_bounds == 0 &&
+               (runs[r].maxvol == 0) == (st.points_added_for_quality == 0),
+           "%s: %llu region points, %llu tets over the bound, %llu points added", runs[r].name,
+           (unsigned long long)st.region_points, (unsigned long long)st.tets_over_bounds,
+           (unsigned long long)st.points_added_for_quality);
+    tr_mesh_destroy(m);
+    tr_plc_destroy(p);
+  }
 }
 
 /* Two unit cubes, the second turned about z by the angle of cosine 3/5 and moved by 1/3
@@ -376,6 +465,104 @@ static void t_defects(const char *data)
   EXPECT(st == TR_ERR_OPEN, "a triangle given twice more: %s", tr_status_name(st));
   tr_plc_destroy(p);
   tr_plc_destroy(c);
+}
+
+/* tr_options.keep_exact (the CLI's --exact, Python's exact=True). On
+ * tests/data/resolve_grid_cycle.off, corners at 2^52 where an ulp is a unit, two exact
+ * corners of the solid share a nearest double: no doubles keep every tet positive, so
+ * the default rounding fails and names the option. With it the exact mesh comes back,
+ * validated exactly (conformity to the resolved surface, the solid's volume); its points
+ * are the nearest doubles, unrepaired, so only the exact .node may be written. On the
+ * tetrahedron piercing the cube, whose doubles the rounding can repair, the option
+ * changes nothing but the doubles: the same tets, the same exact points. */
+static int same_doubles(const void *ctx, uint32_t a, uint32_t b)
+{
+  const double *x = ctx;
+  return memcmp(x + 3 * (size_t)a, x + 3 * (size_t)b, 3 * sizeof *x);
+}
+
+static void t_keep_exact(const char *data)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s/resolve_grid_cycle.off", data);
+  tr_plc *p = tm_read(path);
+  tr_options opt = tm_options();
+  opt.resolve = 1;
+  tr_mesh *m = NULL;
+  tr_status st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st == TR_ERR_INVALID_MESH && !m && strstr(tr_last_error(), "keep_exact"),
+         "grid_cycle without keep_exact: %s: %s", tr_status_name(st), tr_last_error());
+  tr_mesh_destroy(m);
+  opt.keep_exact = 1;
+  mesh_resolved("grid_cycle_keep_exact", p, &opt);
+  m = NULL;
+  st = tr_mesh_plc(p, &opt, &m, NULL);
+  EXPECT(st == TR_OK && m, "grid_cycle keep_exact: %s: %s", tr_status_name(st),
+         tr_last_error());
+  if (m) {
+    /* the reason there is no mesh in doubles: two vertices, one double, two exact points */
+    uint32_t nv = tr_mesh_num_vertices(m), shared = 0;
+    uint32_t *ord = malloc(sizeof *ord * nv);
+    for (uint32_t v = 0; v < nv; v++)
+      ord[v] = v;
+    tr_sort_ids(ord, nv, same_doubles, tr_mesh_points(m));
+    for (uint32_t i = 1; i < nv; i++)
+      if (!same_doubles(tr_mesh_points(m), ord[i - 1], ord[i])) {
+        char *a = NULL, *b = NULL;
+        EXPECT(tr_mesh_point_exact(m, ord[i - 1], &a) == TR_OK &&
+                   tr_mesh_point_exact(m, ord[i], &b) == TR_OK && strcmp(a, b),
+               "vertices %u and %u: one exact point %s", ord[i - 1], ord[i], a ? a : "?");
+        tr_free(a);
+        tr_free(b);
+        shared++;
+      }
+    EXPECT(shared > 0, "grid_cycle: no two vertices share a double");
+    free(ord);
+    uint64_t flat = tr_round_count_nonpositive(m, NULL);
+    EXPECT(flat > 0, "grid_cycle: every tet positive on the nearest doubles");
+    EXPECT(tr_mesh_write(m, "keep_exact_grid.node", 1) == TR_OK, "exact .node: %s",
+           tr_last_error());
+    st = tr_mesh_write(m, "keep_exact_grid.mesh", 0);
+    EXPECT(st == TR_ERR_INVALID_MESH, "a .mesh in doubles of a mesh flat there: %s",
+           tr_status_name(st));
+    remove("keep_exact_grid.node");
+    remove("keep_exact_grid.ele");
+    remove("keep_exact_grid.face");
+    remove("keep_exact_grid.mesh");
+  }
+  tr_mesh_destroy(m);
+  tr_plc_destroy(p);
+}
+
+static void t_keep_exact_same_mesh(void)
+{
+  tr_plc *p = pierced_cube();
+  tr_mesh *m[2] = {NULL, NULL};
+  for (int k = 0; k < 2; k++) {
+    tr_options opt = tm_options();
+    opt.resolve = 1;
+    opt.keep_exact = k;
+    tr_status st = tr_mesh_plc(p, &opt, &m[k], NULL);
+    EXPECT(st == TR_OK, "pierced cube, keep_exact %d: %s", k, tr_last_error());
+  }
+  if (m[0] && m[1]) {
+    uint32_t nv = tr_mesh_num_vertices(m[0]), nt = tr_mesh_num_tets(m[0]), diff = 0;
+    EXPECT(nv == tr_mesh_num_vertices(m[1]) && nt == tr_mesh_num_tets(m[1]) &&
+               !memcmp(tr_mesh_tets(m[0]), tr_mesh_tets(m[1]), 16 * (size_t)nt),
+           "keep_exact changed the tets");
+    for (uint32_t v = 0; v < nv && nv == tr_mesh_num_vertices(m[1]); v++) {
+      char *a = NULL, *b = NULL;
+      tr_mesh_point_exact(m[0], v, &a);
+      tr_mesh_point_exact(m[1], v, &b);
+      diff += !a || !b || strcmp(a, b);
+      tr_free(a);
+      tr_free(b);
+    }
+    EXPECT(diff == 0, "keep_exact moved %u exact points", diff);
+  }
+  tr_mesh_destroy(m[0]);
+  tr_mesh_destroy(m[1]);
+  tr_plc_destroy(p);
 }
 
 /* Errors of the soup: open, badly oriented, empty solid, bad option value. */
@@ -539,6 +726,9 @@ int main(int argc, char **argv)
     {"random_cubes", t_random_cubes, NULL},
     {"fans", NULL, t_fans},
     {"flat_doubles", NULL, t_flat_doubles},
+    {"keep_exact", NULL, t_keep_exact},
+    {"keep_exact_same", t_keep_exact_same_mesh, NULL},
+    {"regions", t_regions, NULL},
   };
   int r = texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
   tr_thread_cleanup();
