@@ -12,7 +12,8 @@
 #         clone from local git mirrors instead of GitHub: path/OWNER+NAME/repo (bare or not),
 #         the layout of bench/realworld/fetch.sh's TETREC_CORPUS_MIRROR, e.g. for a machine
 #         without internet access; the same commits
-#   JOBS  ninja's parallel jobs (default 1: the build takes ~17 min of one core and ~2 GB)
+#   JOBS  ninja's parallel jobs (default 1: about 6 min of CPU, 16 min of wall clock at
+#         nice 10 on a loaded two-core machine)
 #
 # Sources, pinned by commit (fTetWild's cmake/FloatTetwildDependencies.cmake names the tags
 # it downloads; the two exceptions are said below):
