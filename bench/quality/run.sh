@@ -38,6 +38,17 @@
 #   one are thin too. The total says how many of the tets under 10 degrees of the models
 #   that miss the targets stand so.
 #
+# With FTETWILD=path, fTetWild (Hu et al. 2020; bench/peer/build_ftetwild.sh builds it from
+# its public source, never part of this repository) meshes each model too: `FloatTetwild_bin
+# -i IN.off -o OUT.mesh $FT_FLAGS` (default -e 1e-3 --max-threads 1: its default envelope,
+# its boundary may lie anywhere within 1e-3 of the bounding-box diagonal, on one thread;
+# the model as the OFF `tetrec convert` writes, not timed). Its column: cpu, tets, min dihedral, share under 10 degrees
+# by the same `tetrec check --quality R`, and whether that check finds its tets valid
+# against their own boundary (links, exact orientation, exact conformity and volume; the
+# boundary moved, so it is not checked against the input): "own", or "(invalid)". The
+# totals add it over the models tetrec and fTetWild both meshed, with the ratios
+# tetrec/fTetWild (issue 47: CPU at most 0.25x).
+#
 # usage: TETGEN=/path/to/tetgen-1.6 bench/quality/run.sh [BUILD_DIR]
 #   BUILD_DIR  a build of tetrec (default build; set up with meson if missing)
 #   TETGEN     the TetGen 1.6 binary (required; not part of the repository). Build it with
@@ -56,6 +67,8 @@
 #   TOL=EPS    tetrec meshes with --surface-tolerance EPS (docs/simplify.md) and its
 #              output is checked with `tetrec check --surface-tolerance EPS` (the proven
 #              two-sided bound instead of exact conformity)
+#   FTETWILD=path     also fTetWild (above); FT_FLAGS="..." its options instead of
+#              -e 1e-3 --max-threads 1
 #   TG_FLAGS="..."    TetGen's switches instead of -pq${R}Q, e.g. -p180//0q1.414Q: no facet
 #              merging (-p180) and no removal of near-flat edges at small angles (//0);
 #              plain -p180 still drops edges under 5 degrees from flat at angles under 15;
@@ -69,6 +82,12 @@ case $BUILD in /*) ;; *) BUILD=$ROOT/$BUILD ;; esac
 R=${R:-1.414}
 TIMEOUT=${TIMEOUT:-120}
 TG_FLAGS=${TG_FLAGS:--pq${R}Q}
+FTETWILD=${FTETWILD:-}
+FT_FLAGS=${FT_FLAGS:--e 1e-3 --max-threads 1}
+if [ -n "$FTETWILD" ] && [ ! -x "$FTETWILD" ]; then
+  echo "FTETWILD=$FTETWILD is not executable (bench/peer/build_ftetwild.sh builds it)" >&2
+  exit 1
+fi
 : "${TETGEN:?set TETGEN to the TetGen 1.6 binary}"
 [ -x "$TETGEN" ] || { echo "TETGEN=$TETGEN is not executable" >&2; exit 1; }
 [ -x /usr/bin/time ] || { echo "needs /usr/bin/time (Debian package time)" >&2; exit 1; }
@@ -149,10 +168,14 @@ under() {
 
 table=$OUT/table.txt
 rows=$OUT/work/rows.txt
+ftrows=$OUT/work/ftrows.txt
 : >"$rows"
-printf "%-28s | %-50s | %-50s | %-13s | %-36s | %s\n" "model" "tetrec --quality $R: cpu tets mindih <10% <5% maxR >R%" \
+: >"$ftrows"
+ft_head=
+[ -z "$FTETWILD" ] || ft_head=" | ftetwild ${FT_FLAGS}: cpu tets mindih <10% valid"
+printf "%-28s | %-50s | %-50s | %-13s | %-36s | %s%s\n" "model" "tetrec --quality $R: cpu tets mindih <10% <5% maxR >R%" \
   "tetgen ${TG_FLAGS}: cpu tets mindih <10% <5% maxR >R%" "targets" "TetGen surface" \
-  "tetrec <10 on thin input" | tee "$table"
+  "tetrec <10 on thin input" "$ft_head" | tee "$table"
 for model in "$DATA"/data/meshes/*.off; do
   name=$(basename "$model" .off)
   if [ -n "${ONLY:-}" ] && ! echo "$name" | grep -qE "$ONLY"; then continue; fi
@@ -234,8 +257,35 @@ for model in "$DATA"/data/meshes/*.off; do
   read -r thin_n thin_t <<<"$thin"
   thin_col=-
   [ "$thin_n" = - ] || thin_col="$thin_n on $thin_t triangles"
-  printf "%-28s | %-50s | %-50s | %-13s | %-36s | %s\n" "$name" "$a" "$b" "$target" "$surf" \
-    "$thin_col" | tee -a "$table"
+  ft_col=
+  if [ -n "$FTETWILD" ]; then
+    mkdir -p "$w/ft"
+    # shellcheck disable=SC2086
+    if ! "$TETREC" convert "$model" "$w/ft/in.off" -q >"$w/ft/convert.log" 2>&1; then
+      c=fail:convert
+    elif timed "$w/ftetwild.time" "$FTETWILD" -i "$w/ft/in.off" -o "$w/ft/out.mesh" $FT_FLAGS \
+        >"$w/ftetwild.log" 2>&1 </dev/null && [ -s "$w/ft/out.mesh" ]; then
+      awk -f "$ROOT/bench/peer/mesh_boundary.awk" "$w/ft/out.mesh" >"$w/ft/boundary.off"
+      cv=own
+      "$TETREC" check "$w/ft/boundary.off" "$w/ft/out.mesh" --quality "$R" >"$w/ftetwild.check" 2>&1 ||
+        cv="(invalid)"
+      read -r tc dc pc _ _ <<<"$(quality "$w/ftetwild.check")"
+      read -r nc _ <<<"$(under "$w/ftetwild.check")"
+      c="$(cpu "$w/ftetwild.time") $tc $dc $pc $cv"
+      # with tetrec's figures where it meshed: cpu tets min n10, fTetWild's the same
+      if [ $ra != fail ] && [ "$tc" != - ]; then
+        read -r ca ta da _ _ _ _ <<<"${a% (invalid)}"
+        read -r na _ <<<"$(under "$w/tetrec.check")"
+        echo "$name $ca $ta $da $na $(cpu "$w/ftetwild.time") $tc $dc $nc" >>"$ftrows"
+      fi
+    else
+      c=fail
+    fi
+    rm -f "$w/ft/out.mesh" "$w/ft/out.mesh"_* "$w/ft/boundary.off"
+    ft_col=" | $c"
+  fi
+  printf "%-28s | %-50s | %-50s | %-13s | %-36s | %s%s\n" "$name" "$a" "$b" "$target" "$surf" \
+    "$thin_col" "$ft_col" | tee -a "$table"
 done
 # totals: the first four lines as before the targets and surface columns came (others read them)
 # rows: name, tetrec's cpu tets min n10 n5 maxR, TetGen's the same, target, dropped,
@@ -285,3 +335,18 @@ awk '
     if (B["same"] > 0 && TB["same"] > 0) printf "; cpu %.2fx, tets %.2fx", A["same"] / B["same"], TA["same"] / TB["same"]
     printf "\n"
   }' "$rows" | tee -a "$table"
+if [ -n "$FTETWILD" ]; then
+  # ftrows: name, tetrec's cpu tets min n10, fTetWild's the same
+  awk '
+    { n++; ca += $2; ta += $3; na += $5; cb += $6; tb += $7; nb += $9
+      if (n == 1 || $4 + 0 < ma) ma = $4 + 0
+      if (n == 1 || $8 + 0 < mb) mb = $8 + 0
+      if ($4 + 0 >= $8 + 0) ge++ }
+    END {
+      printf "\nfTetWild: total over the %d models tetrec and fTetWild both meshed:\n", n
+      if (!n) exit
+      printf "  tetrec:   cpu %.2f s, %d tets, min dihedral %s, <10 deg %.2f%%\n", ca, ta, ma, ta ? 100 * na / ta : 0
+      printf "  ftetwild: cpu %.2f s, %d tets, min dihedral %s, <10 deg %.2f%%\n", cb, tb, mb, tb ? 100 * nb / tb : 0
+      printf "  ratios tetrec/ftetwild: cpu %.2fx (issue 47: <= 0.25x), tets %.2fx; tetrec'"'"'s min dihedral >= fTetWild'"'"'s on %d of %d\n", cb ? ca / cb : 0, tb ? ta / tb : 0, ge, n
+    }' "$ftrows" | tee -a "$table"
+fi

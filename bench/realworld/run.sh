@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Real-world benchmark (issue 50): tetrec against TetGen 1.6 on the corpus of
+# Real-world benchmark (issue 50): tetrec against TetGen 1.6, and fTetWild when FTETWILD is
+# set (issues 47 and 49), on the corpus of
 # bench/realworld/manifest.txt (public test surfaces from STLCutters.jl, wildmeshing/data,
 # TetGenTests, FastAndRobustMeshArrangements and CGAL's data meshes; fetched by
 # bench/realworld/fetch.sh at pinned commits, never part of this repository), model by
@@ -43,6 +44,22 @@
 # share under 10 degrees, and the ratios tetrec/TetGen; then the outcomes of each program
 # over every model run.
 #
+# fTetWild (FTETWILD=path; Hu et al. 2020, built from its public source by
+# bench/peer/build_ftetwild.sh, never part of this repository), run after the other two:
+# `FloatTetwild_bin -i IN -o W/ft/out.mesh $FT_FLAGS` (default -e 1e-3 --max-threads 1:
+# its default envelope, its boundary may lie anywhere within 1e-3 of the bounding-box
+# diagonal of the input; one thread, like tetrec). It has one task in every mode, its own
+# quality meshing within that envelope. It reads STL and OBJ as given, every other format
+# as the OFF that `tetrec convert` writes (not timed). Its columns: exit, cpu, tets,
+# <10deg (tetrec check --quality R, as above) and valid, which judges its tets but not
+# their boundary against the input (that boundary moved): `tetrec check` of its .mesh
+# against its own boundary faces (the faces of one tet only; every vertex of the .mesh
+# is an input point, so the check is exact), written as OFF by
+# bench/peer/mesh_boundary.awk: "own" = links, exact orientation, exact conformity to that
+# boundary and volume hold; NO otherwise (see W/ft.check). The totals add fTetWild's over
+# the models both tetrec and it meshed, with the ratios tetrec/fTetWild (issues 47 and 49:
+# total CPU at most 0.25x).
+#
 # TetGen does not read OBJ, nor binary STL (its STL reader reads text only and stops
 # with "Wrong number of vertices"): such a model is given to it as the OFF file that
 # `tetrec convert IN W/tg/NAME.off` writes (vertices as %.17g, the same doubles; not
@@ -70,6 +87,10 @@
 #              (the proven two-sided bound instead of exact conformity); rows.tsv then
 #              also holds the bound tetrec reports (--stats surface_tolerance_bound)
 #   TG_DETAIL=0     no untimed TetGen statistics run (see steiner above)
+#   FTETWILD=path   also run fTetWild (see above); FT_FLAGS="..." its options instead of
+#              -e 1e-3 --max-threads 1
+#   TR_FLAGS with --resolve or --resolve-internal: tetrec's output is checked with the same
+#              option (against the solid of the arrangement, docs/resolve.md)
 #   KEEP=1     keep the output meshes (default: deleted once measured)
 #   RESULTS=dir     where the results go (default BUILD_DIR/bench-realworld-MODE, with
 #              -only appended when ONLY or NOTE picks a subset)
@@ -95,6 +116,17 @@ case $MODE in
   *) echo "MODE must be plain, keep or quality, not $MODE" >&2; exit 1 ;;
 esac
 TG_FLAGS=${TG_FLAGS:-$tg_mode}
+FTETWILD=${FTETWILD:-}
+FT_FLAGS=${FT_FLAGS:--e 1e-3 --max-threads 1}
+if [ -n "$FTETWILD" ]; then
+  [ -x "$FTETWILD" ] ||
+    { echo "FTETWILD=$FTETWILD is not executable (bench/peer/build_ftetwild.sh builds it)" >&2; exit 1; }
+fi
+# the check of tetrec's output is against what tetrec meshed: with --resolve, the solid
+chk_flags=()
+for f in $TR_FLAGS; do
+  case $f in --resolve|--resolve-internal) chk_flags+=("$f") ;; esac
+done
 : "${TETGEN:?set TETGEN to the TetGen 1.6 binary (bench/peer/build_tetgen.sh)}"
 [ -x "$TETGEN" ] || { echo "TETGEN=$TETGEN is not executable" >&2; exit 1; }
 [ -x /usr/bin/time ] || { echo "needs /usr/bin/time (Debian package time)" >&2; exit 1; }
@@ -159,7 +191,7 @@ under10() {
 # figures); why a mesh is invalid goes to the notes
 validate() {
   local extra=()
-  [ "$4" != tetrec ] || extra=("${tol_flags[@]}")
+  [ "$4" != tetrec ] || extra=("${tol_flags[@]}" "${chk_flags[@]}")
   if again timeout "$TIMEOUT" "$TETREC" check "$1" "$2" --quality "$R" "${extra[@]}" >"$3" 2>&1; then
     if grep -q 'rounded doubles\|surface are within' "$3"; then echo 'yes*'; else echo yes; fi
   else
@@ -190,10 +222,18 @@ notes=$OUT/notes.txt
   echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); timeout ${TIMEOUT}s; mode $MODE"
   echo "tetrec ($TR_VERSION): mesh IN -o OUT.node --stats S.json -q ${tr_mode[*]} ${tol_flags[*]} $TR_FLAGS"
   echo "tetgen ${TG_VERSION:-(version unknown)} $TG_FLAGS; corpus $CORPUS"
+  [ -z "$FTETWILD" ] ||
+    echo "ftetwild: FloatTetwild_bin -i IN -o OUT.mesh $FT_FLAGS; valid: against its own boundary (it moves the input's), see the header"
   echo "steiner: total (on edges/facets/interior); <10deg: share of tets with a dihedral angle under 10 degrees (tetrec check --quality $R on both)"
-  printf '%-46s %6s | %-8s %6s %-26s %8s %7s %-4s | %-8s %6s %-26s %8s %7s %-4s | %s\n' \
-    model tris "tetrec" cpu steiner tets "<10deg" valid "tetgen" cpu steiner tets "<10deg" valid \
-    "cpu target"
+  if [ -n "$FTETWILD" ]; then
+    printf '%-46s %6s | %-8s %6s %-26s %8s %7s %-4s | %-8s %6s %-26s %8s %7s %-4s | %-10s | %-8s %6s %8s %7s %s\n' \
+      model tris "tetrec" cpu steiner tets "<10deg" valid "tetgen" cpu steiner tets "<10deg" valid \
+      "cpu target" ftetwild cpu tets "<10deg" valid
+  else
+    printf '%-46s %6s | %-8s %6s %-26s %8s %7s %-4s | %-8s %6s %-26s %8s %7s %-4s | %s\n' \
+      model tris "tetrec" cpu steiner tets "<10deg" valid "tetgen" cpu steiner tets "<10deg" valid \
+      "cpu target"
+  fi
 } | tee "$table"
 
 absent=0
@@ -258,6 +298,46 @@ while read -r _ src path _ tris note <&3; do
   # alternate which program runs first, so that neither always finds the caches warm
   if [ $((idx % 2)) -eq 0 ]; then run_tetrec; run_tetgen; else run_tetgen; run_tetrec; fi
   idx=$((idx + 1))
+  # fTetWild: its input as for TetGen, but it reads binary STL and OBJ too
+  c_out=- c_cpu=- c_tets=- c_n10=- c_valid=- c_min=-
+  if [ -n "$FTETWILD" ]; then
+    mkdir -p "$w/ft"
+    case $ext in
+      stl|obj) ft_in=$model ;;
+      *)
+        ft_in=$w/ft/in.off
+        again "$TETREC" convert "$model" "$ft_in" -q >"$w/ft/convert.log" 2>&1 || ft_in= ;;
+    esac
+    ft_rc=0
+    if [ -z "$ft_in" ]; then
+      c_out=conv
+    else
+      # shellcheck disable=SC2086
+      timed "$w/ftetwild.time" "$FTETWILD" -i "$ft_in" -o "$w/ft/out.mesh" $FT_FLAGS \
+        >"$w/ftetwild.log" 2>&1 </dev/null || ft_rc=$?
+      c_out=$(outcome "$ft_rc")
+      [ "$ft_rc" = 124 ] || c_cpu=$(cpu "$w/ftetwild.time")
+      if [ "$ft_rc" = 0 ]; then
+        c_tets=$(awk '$1 == "Tetrahedra" { getline; print $1; exit }' "$w/ft/out.mesh" 2>/dev/null || true)
+        if [ -z "$c_tets" ] || [ "$c_tets" = 0 ]; then
+          c_out="ok:0tets"
+          c_tets=-
+        fi
+      fi
+    fi
+    if [ "$c_out" = ok ]; then
+      awk -f "$ROOT/bench/peer/mesh_boundary.awk" "$w/ft/out.mesh" >"$w/ft/boundary.off"
+      if again timeout "$TIMEOUT" "$TETREC" check "$w/ft/boundary.off" "$w/ft/out.mesh" \
+          --quality "$R" >"$w/ft.check" 2>&1; then
+        c_valid=own
+      else
+        c_valid=NO
+        echo "$name: ftetwild output invalid against its own boundary: $(grep -m1 'error' "$w/ft.check" | cut -c1-200)" >>"$notes"
+      fi
+      read -r c_n10 _ <<<"$(under10 "$w/ft.check")"
+      c_min=$(sed -n 's/.*dihedral min \([0-9.e+-]*\).*/\1/p' "$w/ft.check" | head -n 1 || true)
+    fi
+  fi
 
   # tetrec
   a_out=$(outcome "$tr_rc")
@@ -339,11 +419,22 @@ while read -r _ src path _ tris note <&3; do
     elif [ "${5:--}" = - ] || [ "$5" = 0 ]; then echo "$1 ($2/$3/$4)"
     else echo "$1 ($2/$3/$4 +${5}r)"; fi
   }
-  printf '%-46s %6s | %-8s %6s %-26s %8s %7s %-4s | %-8s %6s %-26s %8s %7s %-4s | %s\n' \
-    "$name" "$tris" "$a_out" "$a_cpu" "$(steiner_col "$a_st" "$a_e" "$a_f" "$a_i" "$a_r")" "$a_tets" \
-    "$(pct "$a_n10" "$a_tets")" "$a_valid" \
-    "$b_out" "$b_cpu" "$(steiner_col "$b_st" "$b_e" "$b_f" "$b_i")" "$b_tets" \
-    "$(pct "$b_n10" "$b_tets")" "$b_valid" "$target" | tee -a "$table"
+  {
+    if [ -n "$FTETWILD" ]; then
+      printf '%-46s %6s | %-8s %6s %-26s %8s %7s %-4s | %-8s %6s %-26s %8s %7s %-4s | %-10s | %-8s %6s %8s %7s %s\n' \
+        "$name" "$tris" "$a_out" "$a_cpu" "$(steiner_col "$a_st" "$a_e" "$a_f" "$a_i" "$a_r")" "$a_tets" \
+        "$(pct "$a_n10" "$a_tets")" "$a_valid" \
+        "$b_out" "$b_cpu" "$(steiner_col "$b_st" "$b_e" "$b_f" "$b_i")" "$b_tets" \
+        "$(pct "$b_n10" "$b_tets")" "$b_valid" "$target" \
+        "$c_out" "$c_cpu" "$c_tets" "$(pct "$c_n10" "$c_tets")" "$c_valid"
+    else
+      printf '%-46s %6s | %-8s %6s %-26s %8s %7s %-4s | %-8s %6s %-26s %8s %7s %-4s | %s\n' \
+        "$name" "$tris" "$a_out" "$a_cpu" "$(steiner_col "$a_st" "$a_e" "$a_f" "$a_i" "$a_r")" "$a_tets" \
+        "$(pct "$a_n10" "$a_tets")" "$a_valid" \
+        "$b_out" "$b_cpu" "$(steiner_col "$b_st" "$b_e" "$b_f" "$b_i")" "$b_tets" \
+        "$(pct "$b_n10" "$b_tets")" "$b_valid" "$target"
+    fi
+  } | tee -a "$table"
   printf '%s\t' "$name" "$tris" "$note" "$a_out" "$a_cpu" "$a_st" "$a_e" "$a_f" "$a_i" "$a_tets" \
     "$a_n10" "$a_valid" "$b_out" "$b_cpu" "$b_st" "$b_e" "$b_f" "$b_i" "$b_tets" "$b_n10" \
     "$b_valid" "$target" >>"$rows"
@@ -351,17 +442,20 @@ while read -r _ src path _ tris note <&3; do
   b_min=$(sed -n 's/.*dihedral min \([0-9.e+-]*\).*/\1/p' "$w/tetgen.check" 2>/dev/null | head -n 1 || true)
   a_bound=$(field surface_tolerance_bound "$w/tetrec.json" || true)
   printf '%s\t' "$a_r" "${a_min:--}" "${b_min:--}" >>"$rows"
-  printf '%s\n' "${a_bound:--}" >>"$rows"
+  printf '%s\t' "${a_bound:--}" "$c_out" "$c_cpu" "$c_tets" "$c_n10" "$c_valid" >>"$rows"
+  printf '%s\n' "${c_min:--}" >>"$rows"
   if [ "$KEEP" != 1 ]; then
     rm -f "$w"/tetrec.node "$w"/tetrec.ele "$w"/tetrec.face "$w"/tg/*.1.* "$w"/input.*
+    rm -rf "$w/ft"
   fi
 done 3< <(awk '$1 == "file"' "$MANIFEST")
 
 # rows: 1 name 2 tris 3 note, tetrec 4 out 5 cpu 6 steiner 7 e 8 f 9 i 10 tets 11 n10
 # 12 valid, TetGen 13 out 14 cpu 15 steiner 16 e 17 f 18 i 19 tets 20 n10 21 valid, 22 target,
 # 23 tetrec's points added by refinement, 24 tetrec's and 25 TetGen's smallest dihedral
-# angle (tetrec check), 26 the surface bound tetrec reports (TOL)
-awk -F'\t' -v absent="$absent" '
+# angle (tetrec check), 26 the surface bound tetrec reports (TOL), fTetWild 27 out 28 cpu
+# 29 tets 30 n10 31 valid 32 smallest dihedral angle ("-" without FTETWILD)
+awk -F'\t' -v absent="$absent" -v ft="${FTETWILD:+1}" '
   function sh(n, t) { return t > 0 ? sprintf("%.2f%%", 100 * n / t) : "-" }
   function ratio(a, b) { return b > 0 ? sprintf("%.2fx", a / b) : "-" }
   {
@@ -369,6 +463,14 @@ awk -F'\t' -v absent="$absent" '
     ao[$4 ~ /^rej/ ? "rejected" : $4]++; bo[$13]++
     if ($12 != "-") av[$12]++
     if ($21 != "-") bv[$21]++
+    if (ft) {
+      co[$27]++
+      if ($31 != "-") cv[$31]++
+      if ($4 == "ok" && $27 == "ok") {
+        cn++; cac += $5; cat += $10; can += $11; ccc += $28; cct += $29; ccn += $30
+        if ($24 != "-" && $32 != "-" && $24 + 0 >= $32 + 0) cmin++
+      }
+    }
     if ($4 != "ok" || $13 != "ok") next
     n++; ac += $5; bc += $14; as += $6; ae += $7; af += $8; ai += $9; ar += $23; at += $10; an += $11
     if ($15 != "-") { bs += $15; bst++ }
@@ -389,6 +491,13 @@ awk -F'\t' -v absent="$absent" '
     printf "  smallest dihedral >= max(TetGen'"'"'s, 10 deg) on %d of %d; share <10deg <= half TetGen'"'"'s on %d of %d\n", mindih, n, half, n
     if (bound > 0) printf "  largest surface bound tetrec reported: %.6g of the diagonal\n", bound
     printf "outcomes over the %d models run:\n  tetrec: %s; valid: %s\n  tetgen: %s; valid: %s\n", models, outcomes(ao), outcomes(av), outcomes(bo), outcomes(bv)
+    if (ft) {
+      printf "total over the %d models tetrec and fTetWild both meshed:\n", cn
+      printf "  tetrec:   cpu %.2f s, %d tets, <10deg %s\n", cac, cat, sh(can, cat)
+      printf "  ftetwild: cpu %.2f s, %d tets, <10deg %s\n", ccc, cct, sh(ccn, cct)
+      printf "  ratios tetrec/ftetwild: cpu %s (issues 47, 49: <= 0.25x), tets %s; smallest dihedral >= fTetWild'"'"'s on %d of %d\n", ratio(cac, ccc), ratio(cat, cct), cmin, cn
+      printf "  ftetwild: %s; valid against its own boundary: %s\n", outcomes(co), outcomes(cv)
+    }
     if (absent) printf "%d models of the manifest are not in the corpus (notes.txt)\n", absent
   }' "$rows" | tee -a "$table"
 [ ! -s "$notes" ] || echo "notes: $notes" | tee -a "$table"
