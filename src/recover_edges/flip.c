@@ -430,6 +430,19 @@ tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard,
   return admit(m, j, done);
 }
 
+tr_status tr_flip23_jb(struct tr_mesh *m, uint32_t t, int k, int nb, tr_flip_guard guard,
+                       void *ud, tr_flip_journal *j, int *done)
+{
+  if (nb != 1 && nb != 2)
+    return tr_flip23_j(m, t, k, guard, ud, j, done);
+  /* one side's sign is >= 0 and another's < 0: tr_flip23 would refuse; the try counts
+   * (the budget sees the same tries either way) */
+  *done = 0;
+  if (!spent(j))
+    j->tries++;
+  return TR_OK;
+}
+
 static tr_status remove_j(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                           tr_flip_guard guard, void *ud, tr_flip_journal *j, int *done)
 {
@@ -529,17 +542,17 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
             continue;
           /* with j->pivot, only the edges that block the Swap23 (TetGen's reflex link
            * edges): removing the others rarely helps and doubles the search per level */
-          int try_ar = 1, try_br = 1;
+          int try_ar = 1, try_br = 1, nb = -1;
           if (j->pivot) {
             uint32_t be[3][2];
-            int nb = tr_flip23_blockers(m, t, k, be);
+            nb = tr_flip23_blockers(m, t, k, be);
             try_ar = try_br = 0;
             for (int x = 0; x < nb; x++) {
               try_ar |= (be[x][0] == a && be[x][1] == r) || (be[x][0] == r && be[x][1] == a);
               try_br |= (be[x][0] == b && be[x][1] == r) || (be[x][0] == r && be[x][1] == b);
             }
           }
-          s = tr_flip23_j(m, t, k, guard, ud, j, &ok);
+          s = tr_flip23_jb(m, t, k, nb, guard, ud, j, &ok);
           if (s == TR_OK && !ok && depth > 2 && !spent(j)) {
             /* the Swap23 is blocked by edge a-r or b-r: try removing one of them; a
              * removal that fails is undone before the other is tried */

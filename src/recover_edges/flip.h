@@ -117,6 +117,13 @@ int tr_flip23_blockers(const struct tr_mesh *m, uint32_t t, int k, uint32_t e[3]
 /* Swap23 on face k of t, appended to j. */
 tr_status tr_flip23_j(struct tr_mesh *m, uint32_t t, int k, tr_flip_guard guard, void *ud,
                       tr_flip_journal *j, int *done);
+/* The same when tr_flip23_blockers just found nb blockers of that face (nb < 0: not
+ * asked): with one or two, a side of the face has an orientation >= 0 and another one
+ * < 0, so the Swap23 is refused without its three tests again; the try is counted all
+ * the same. (Three cannot happen between two valid tets: the three signs sum, as a
+ * volume, to one of fixed sign; it is passed on to the tests.) */
+tr_status tr_flip23_jb(struct tr_mesh *m, uint32_t t, int k, int nb, tr_flip_guard guard,
+                       void *ud, tr_flip_journal *j, int *done);
 
 /* A set of edges / triangles by vertex ids (any order; an edge has v[2] = TR_NONE): the
  * flip drivers list each crossed simplex once, and comparing every new candidate with

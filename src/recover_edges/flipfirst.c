@@ -93,7 +93,7 @@ static tr_status remove_crossing(struct tr_mesh *m, uint32_t t, int type, int co
   }
   uint32_t be[3][2];
   int nb = tr_flip23_blockers(m, t, code, be);
-  TR_CHECK(tr_flip23_j(m, t, code, guard, (void *)cons, j, done));
+  TR_CHECK(tr_flip23_jb(m, t, code, nb, guard, (void *)cons, j, done));
   for (int e = 0; e < nb && !*done && !(j->budget && j->tries >= j->budget); e++) {
     TR_CHECK(tr_flip_remove_edge_nm(m, be[e][0], be[e][1], TR_NONE, depth, guard,
                                     (void *)cons, j, done));

@@ -278,7 +278,8 @@ static tr_status recover_one(ctx *c, uint32_t i, int steiner, int *complete, uin
     if (!done && !c->opt.no_flips)
       TR_CHECK(tr_pipe_flip_first(m, v0, v1, &c->pipe, &c->cons, &c->memo,
                                   steiner ? TR_EDGE_STEINER_FLIP_DEPTH : c->depth,
-                                  TR_EDGE_FLIP_BUDGET,
+                                  c->opt.flip_budget ? c->opt.flip_budget
+                                                     : TR_EDGE_FLIP_BUDGET,
                                   !steiner && c->depth < TR_EDGE_FLIP_LEVEL_MAX, &c->est,
                                   &done));
     if (done) {

@@ -74,6 +74,9 @@ typedef struct tr_edge_recovery_opts {
    * missing, its flat edges (tr_flat_edges) are recovered after the others, the flips
    * of the others protecting only those (see recover_edges.c). */
   const struct tr_plc *surface;
+  /* Flip attempts allowed per sub-segment and try of the flip searches (flipfirst.c);
+   * 0: TR_EDGE_FLIP_BUDGET of recover_edges.c. */
+  uint32_t flip_budget;
 } tr_edge_recovery_opts;
 tr_status tr_recover_edges_ex(struct tr_mesh *m, const uint32_t *edges, uint32_t n,
                               const tr_edge_recovery_opts *opt, tr_edge_chains *chains,

@@ -4,7 +4,8 @@
  * (refused, mesh unchanged), protected edges and faces, the 2-2 hull flip on every face of
  * a cube (ghosts stay consistent), and a missing input edge recovered by the flips of the
  * edge driver without a Steiner point.
- * Usage: test_flip ring N | ring_invalid | protected | hull_cube | flip23 | recover N */
+ * Usage: test_flip ring N | ring_invalid | protected | hull_cube | flip23 | recover N |
+ *        edge_tet | sxset | blocked23 */
 #include <gmp.h>
 #include <math.h>
 #include <stdio.h>
@@ -378,6 +379,67 @@ static int test_sxset(void)
   return 0;
 }
 
+/* tr_flip23_jb (the flip searches' Swap23 after tr_flip23_blockers) decides as
+ * tr_flip23_j does: on every interior face of a random Delaunay mesh, one or two blockers
+ * mean the Swap23 is refused (counted as one try, mesh unchanged), none that it is made,
+ * three never happen between two valid tets. Made flips are undone; validator at the end
+ * (the mesh is the one it started as). */
+static int test_blocked23(void)
+{
+  enum { NP = 60 };
+  double x[3 * NP];
+  unsigned long long r = 2463534242ull;
+  for (int i = 0; i < 3 * NP; i++) {
+    r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+    x[i] = (double)(r % 2001) / 1000.0 - 1.0;
+  }
+  struct tr_mesh *m;
+  CK(tr_delaunay_build(x, NP, &m));
+  mpq_t vol;
+  mpq_init(vol);
+  CK(tr_mesh_volume6(m, vol));
+  int count[4] = {0, 0, 0, 0};
+  for (uint32_t t = 0; t < m->nt; t++)
+    for (int k = 0; k < 4; k++) {
+      if (tr_tet_is_free(m, t) || !tr_tet_is_real(m, t))
+        continue;
+      uint32_t c = m->tn[4 * (size_t)t + (size_t)k];
+      if (c == TR_NONE || !tr_tet_is_real(m, c >> 2) || (c >> 2) < t)
+        continue; /* each interior face once */
+      uint32_t be[3][2], before[8];
+      memcpy(before, m->tv + 4 * (size_t)t, 4 * sizeof *before);
+      memcpy(before + 4, m->tv + 4 * (size_t)(c >> 2), 4 * sizeof *before);
+      int nb = tr_flip23_blockers(m, t, k, be), want, got;
+      tr_flip_journal j;
+      memset(&j, 0, sizeof j);
+      CK(tr_flip23_j(m, t, k, NULL, NULL, &j, &want));
+      if (want)
+        CK(tr_flip_journal_undo(m, &j, 0));
+      j.tries = 0;
+      CK(tr_flip23_jb(m, t, k, nb, NULL, NULL, &j, &got));
+      if (nb == 3 || got != want || got != (nb == 0) || j.tries != 1 || j.n != (uint32_t)got)
+        FAIL("blocked23: tet %u face %d: %d blockers, Swap23 %d, with them %d (%u tries)", t,
+             k, nb, want, got, j.tries);
+      if (got)
+        CK(tr_flip_journal_undo(m, &j, 0));
+      tr_flip_journal_free(&j);
+      if (memcmp(m->tv + 4 * (size_t)t, before, 4 * sizeof *before) ||
+          memcmp(m->tv + 4 * (size_t)(c >> 2), before + 4, 4 * sizeof *before))
+        FAIL("blocked23: tet %u face %d: the pair is not as it was", t, k);
+      count[nb]++;
+    }
+  if (!count[0] || !count[1] || !count[2])
+    FAIL("blocked23: faces with 0/1/2 blockers %d/%d/%d: a kind is not shown", count[0],
+         count[1], count[2]);
+  if (validate(m, vol, "blocked23"))
+    return 1;
+  printf("blocked23: %d faces flippable, %d / %d with one / two blockers refused alike\n",
+         count[0], count[1], count[2]);
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2)
@@ -400,6 +462,8 @@ int main(int argc, char **argv)
     return test_edge_tet();
   if (!strcmp(w, "sxset"))
     return test_sxset();
+  if (!strcmp(w, "blocked23"))
+    return test_blocked23();
   fprintf(stderr, "unknown test %s\n", w);
   return 2;
 }

@@ -56,7 +56,7 @@ int main(int argc, char **argv)
   tr_edge_chains ch;
   memset(&ch, 0, sizeof ch);
   tr_edge_recovery_stats st;
-  tr_edge_recovery_opts opt = {paper, paper, paper, NULL};
+  tr_edge_recovery_opts opt = {paper, paper, paper, NULL, 0};
   tr_status s = e ? tr_delaunay_build(c.xyz, c.np, &m) : TR_ERR_NOMEM;
   uint32_t ne = e ? input_edges(&c, e) : 0;
   if (s == TR_OK)

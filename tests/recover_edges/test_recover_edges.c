@@ -526,7 +526,7 @@ static int insert_point(struct tr_mesh *m, tr_qpoint *q, uint32_t *id)
 static int test_equal_doubles(void)
 {
   static const double xyz[] = {0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1, 0.4, 0.45, 0, 0.6, 0.55, 2};
-  static const tr_edge_recovery_opts opts[3] = {{0, 0, 0, NULL}, {1, 0, 1, NULL}, {1, 1, 0, NULL}};
+  static const tr_edge_recovery_opts opts[3] = {{0, 0, 0, NULL, 0}, {1, 0, 1, NULL, 0}, {1, 1, 0, NULL, 0}};
   static const char *const names[3] = {"equal doubles, defaults",
                                        "equal doubles, no flips and no Lawson flips",
                                        "equal doubles, no flips and no midpoint splits"};
@@ -583,6 +583,13 @@ int main(int argc, char **argv)
     g_opt.no_lawson = 1;
     argc--;
   }
+  /* a trailing "budget=N": at most N flip attempts per search (tr_edge_recovery_opts) */
+  if (argc >= 3 && !strncmp(argv[argc - 1], "budget=", 7)) {
+    g_opt.flip_budget = (uint32_t)atoi(argv[argc - 1] + 7);
+    if (!g_opt.flip_budget)
+      return 2;
+    argc--;
+  }
   if (argc == 6 && !strcmp(argv[1], "grid"))
     return test_grid(atoi(argv[2]), (uint32_t)atoi(argv[3]), (uint64_t)atoll(argv[4]),
                      atoi(argv[5]), NULL);
@@ -597,6 +604,7 @@ int main(int argc, char **argv)
   if (argc == 4 && !strcmp(argv[1], "spheres"))
     return test_spheres((uint64_t)atoll(argv[2]), atoi(argv[3]));
   fprintf(stderr, "usage: test_recover_edges spheres <seed> <meshes> | grid <n> <nseg> "
-                  "<seed> <incremental> | crossing | badinput | equal_doubles [nolawson]\n");
+                  "<seed> <incremental> | crossing | badinput | equal_doubles [nolawson] "
+                  "[budget=N]\n");
   return 2;
 }

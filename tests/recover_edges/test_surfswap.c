@@ -277,7 +277,7 @@ static int test_phases(void)
   mpq_init(vol);
   tr_edge_chains ch;
   tr_edge_recovery_stats st;
-  tr_edge_recovery_opts opt = {0, 0, 0, p};
+  tr_edge_recovery_opts opt = {0, 0, 0, p, 0};
   tr_status s = tr_mesh_volume6(m, vol);
   if (s == TR_OK)
     s = tr_recover_edges_ex(m, e, ne, &opt, &ch, &st);
