@@ -207,6 +207,8 @@ static tr_status apply(tr_sliver_ctx *c, const fcand *x, int *done)
     TR_CHECK(tr_mesh_replace_open(m, x->old, x->nold, x->newv, x->nnew, ids));
   for (uint32_t i = 0; m->region && i < x->nnew; i++)
     m->region[ids[i]] = x->region[i];
+  /* the new tets hold a, b, c0 and d0: every vertex of the sub-faces that change */
+  TR_CHECK(tr_sliver_touch(c, x->newv, 4 * (size_t)x->nnew));
   tr_vtkey_face(F[0], F[1], F[2], k);
   TR_CHECK(tr_vtmap_set(&c->faces, 3, k, TR_VTMAP_NONE));
   tr_vtkey_face(G[0], G[1], G[2], k);

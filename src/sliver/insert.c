@@ -664,6 +664,9 @@ static tr_status insert_at(tr_sliver_ctx *c, uint32_t t, int last, trial *best, 
   TR_CHECK(tr_mesh_replace(m, best->cav, best->n, best->newv, best->nf, ids));
   for (uint32_t i = 0; m->region && i < best->nf; i++)
     m->region[ids[i]] = region;
+  /* the cone's vertices: every vertex of the cavity's tets but the swallowed ones, which
+   * are in no tet now */
+  TR_CHECK(tr_sliver_touch(c, best->newv, 4 * (size_t)best->nf));
   *done = 1;
   return TR_OK;
 }

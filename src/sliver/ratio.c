@@ -134,6 +134,7 @@ static tr_status ratio_vertex(tr_sliver_ctx *c, uint32_t v, double keep, tr_u32b
       memcpy(m->xyz + 3 * (size_t)v, trial[b], sizeof trial[b]);
       for (size_t i = 0; i < ball->n; i++)
         tr_sliver_forget(c, ball->a[i]);
+      TR_CHECK(tr_sliver_touch_tets(c, ball->a, ball->n));
       if (m->vq && m->vq[v]) /* the exact point is the double from now on */
         tr_qpoint_set_d(m->vq[v], trial[b]);
       *moved = 1;

@@ -205,8 +205,42 @@ const uint32_t *tr_sliver_shape_keys(const tr_sliver_ctx *c, size_t *stride)
   return S->e[0].v;
 }
 
+tr_status tr_sliver_touch(tr_sliver_ctx *c, const uint32_t *v, size_t n)
+{
+  const uint32_t nv = c->m->nv;
+  if (c->nvstamp < nv) { /* a new point's id */
+    uint64_t want = (uint64_t)nv + nv / 2 + 16;
+    uint32_t cap = want > UINT32_MAX ? UINT32_MAX : (uint32_t)want;
+    uint64_t *a = realloc(c->vstamp, sizeof *a * (size_t)cap);
+    if (!a)
+      return tr_error(TR_ERR_NOMEM, "out of memory for %u vertex stamps", cap);
+    memset(a + c->nvstamp, 0, sizeof *a * (size_t)(cap - c->nvstamp));
+    c->vstamp = a;
+    c->nvstamp = cap;
+  }
+  c->epoch++;
+  for (size_t i = 0; i < n; i++)
+    c->vstamp[v[i]] = c->epoch;
+  return TR_OK;
+}
+
+tr_status tr_sliver_touch_tets(tr_sliver_ctx *c, const uint32_t *tets, size_t n)
+{
+  for (size_t i = 0; i < n; i++)
+    TR_CHECK(tr_sliver_touch(c, c->m->tv + 4 * (size_t)tets[i], 4));
+  return TR_OK;
+}
+
+void tr_sliver_forget_flips(tr_sliver_ctx *c)
+{
+  if (c->nflip_failed)
+    memset(c->flip_failed, 0, sizeof *c->flip_failed * (size_t)c->nflip_failed);
+}
+
 void tr_sliver_ctx_free(tr_sliver_ctx *c)
 {
+  free(c->vstamp);
+  free(c->flip_failed);
   tr_vtmap_free(&c->faces);
   tr_vtmap_free(&c->edges);
   if (c->shapes)
@@ -230,7 +264,10 @@ tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfa
   uint32_t n = sub->n;
   c->movable = malloc(m->nv ? m->nv : 1);
   c->shapes = calloc(1, sizeof *c->shapes);
-  if (!c->movable || !c->shapes)
+  c->epoch = 1; /* above every stamp: 0 is "no failure" in flip_failed */
+  c->vstamp = calloc(m->nv ? m->nv : 1, sizeof *c->vstamp);
+  c->nvstamp = m->nv;
+  if (!c->movable || !c->shapes || !c->vstamp)
     return tr_error(TR_ERR_NOMEM, "out of memory for the sliver stage of %u vertices", m->nv);
   TR_CHECK(tr_vtmap_reserve(&c->faces, 3, n));
   TR_CHECK(tr_vtmap_reserve(&c->edges, 2, 3 * n / 2 + 1));
@@ -319,6 +356,7 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
   uint32_t nv0 = m->nv;
   s = tr_refine_open_pinned(m, plc, sub, &rp, list.a, (uint32_t)list.n, &rs);
   tr_sliver_forget_all(c); /* refinement may have changed any tet */
+  tr_sliver_forget_flips(c);
   TR_CHECK(s);
   tr_u32buf_free(&list);
   *added = rs.points;

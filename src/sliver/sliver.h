@@ -20,6 +20,9 @@
  *    smallest dihedral angle of its star, accepted only when every tet of the star is
  *    exactly positive with the new point. A moved vertex stays strictly inside its star,
  *    so it never reaches a constraint; its exact point becomes the double itself.
+ *    The pass walks only the stars of the vertices of tets under the bound (the others do
+ *    not move), and the flip pass skips a tet that found no flip while no tet at its
+ *    vertices changed (tr_sliver_touch): the same result, without the searches.
  *  - insert.c (level 3): a tet under TR_SLIVER_INSERT_BOUND gets a new interior point at
  *    its circumcentre (a double), or between it and the centroid, or over one of its
  *    sub-faces, or, for a tet with three or four fixed vertices (a cap pinned between
@@ -141,6 +144,15 @@ typedef struct tr_sliver_ctx {
   uint64_t point_budget;   /* insertion: points the stage may add */
   tr_vtmap failed;         /* insertion: tets (sorted vertices) no candidate point opened;
                               later passes skip them (most stay pinned) */
+  /* The flip pass's memo (flips.c): `epoch` counts the changes; vstamp[v] (nv entries)
+   * is the epoch of the last change of a tet at v (created, deleted, or a vertex of it
+   * moved: tr_sliver_touch); flip_failed[t] the epoch at which slot t's tet found no
+   * flip (0: never, or forgotten). */
+  uint64_t epoch;
+  uint64_t *vstamp;
+  uint32_t nvstamp;
+  uint64_t *flip_failed;
+  uint32_t nflip_failed;
   tr_sliver_bounds keep;
   /* the refinement set-ups' memo (refine.h), tr_sliver_remove's, shared by the contexts
    * it rebuilds and by the trials' (not owned; NULL: none) */
@@ -215,6 +227,15 @@ const uint32_t *tr_sliver_shape_keys(const tr_sliver_ctx *c, size_t *stride);
 int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
                            const double x[3], uint32_t region, double ratio, double dih,
                            double ratio_was);
+
+/* A change of the mesh for the flip pass's memo (sliver.h): the n vertex ids v[0..n)
+ * (the new tets' vertices of a flip or an insertion: every vertex of the tets it deleted
+ * is one of them) get a new epoch; tr_sliver_touch_tets the vertices of the n tets
+ * `tets` (a moved vertex's star). tr_sliver_forget_flips: every slot's failure
+ * forgotten (a change made without these, e.g. refinement). */
+tr_status tr_sliver_touch(tr_sliver_ctx *c, const uint32_t *v, size_t n);
+tr_status tr_sliver_touch_tets(tr_sliver_ctx *c, const uint32_t *tets, size_t n);
+void tr_sliver_forget_flips(tr_sliver_ctx *c);
 
 /* 1 iff the face / edge (any vertex order) is a constraint the flips must keep. */
 int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv);

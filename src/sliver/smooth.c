@@ -6,6 +6,7 @@
  * keeps the point strictly inside its link polyhedron, so it reaches no constraint. */
 #include <assert.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "refine/quality.h"
@@ -293,6 +294,7 @@ tr_status tr_sliver_smooth_vertex(tr_sliver_ctx *c, uint32_t v, double bound, tr
     memcpy(m->xyz + 3 * (size_t)v, to, sizeof to);
     for (size_t i = 0; i < ball->n; i++)
       tr_sliver_forget(c, ball->a[i]);
+    TR_CHECK(tr_sliver_touch_tets(c, ball->a, ball->n));
     if (m->vq && m->vq[v]) /* the exact point is the double from now on */
       tr_qpoint_set_d(m->vq[v], to);
     *moved = 1;
@@ -301,14 +303,44 @@ tr_status tr_sliver_smooth_vertex(tr_sliver_ctx *c, uint32_t v, double bound, tr
   return TR_OK;
 }
 
+/* Marks in near[] the vertices of the real tets of `tets` (all slots when NULL, else the n
+ * listed) whose smallest angle is under the bound. */
+static void mark_near(const tr_sliver_ctx *c, const uint32_t *tets, size_t n, uint8_t *near)
+{
+  const struct tr_mesh *m = c->m;
+  for (size_t i = 0; i < n; i++) {
+    uint32_t t = tets ? tets[i] : (uint32_t)i;
+    if (!tr_tet_is_real(m, t) || !(tr_sliver_tet_min(c, t, NULL) < c->bound))
+      continue;
+    for (int k = 0; k < 4; k++)
+      near[m->tv[4 * (size_t)t + (size_t)k]] = 1;
+  }
+}
+
+/* A vertex whose star holds no tet under the bound does not move
+ * (tr_sliver_smooth_vertex stops at its first q0), and most movable vertices are such
+ * (cheese.off: 3 in 4 of the stars walked): only the vertices of a tet under the bound
+ * get their star walked, found by one scan of the tets' cached measures. Moves only
+ * change the mover's star, whose tets' vertices are marked again after it: the same
+ * moves as walking every star. */
 tr_status tr_sliver_smooth_pass(tr_sliver_ctx *c, tr_sliver_stats *st)
 {
+  struct tr_mesh *m = c->m;
   tr_u32buf ball = {0};
   tr_status s = TR_OK;
-  for (uint32_t v = 0; v < c->m->nv && s == TR_OK; v++) {
+  uint8_t *near = calloc(m->nv ? m->nv : 1, 1);
+  if (!near)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u vertex flags", m->nv);
+  mark_near(c, NULL, m->nt, near);
+  for (uint32_t v = 0; v < m->nv && s == TR_OK; v++) {
+    if (!near[v])
+      continue;
     int moved;
     s = tr_sliver_smooth_vertex(c, v, c->bound, &ball, st, &moved);
+    if (s == TR_OK && moved) /* ball: v's star, the tets whose angles changed */
+      mark_near(c, ball.a, ball.n, near);
   }
+  free(near);
   tr_u32buf_free(&ball);
   return s;
 }
