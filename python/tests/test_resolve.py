@@ -145,3 +145,21 @@ def test_region_points_work_on_rational_corners_holes_are_refused_by_name():
     with pytest.raises(tetrec.Error) as e:
         tetrec.tetrahedralize(pts, tris, resolve=True, holes=[(0.25, 0.25, 0.25)])
     assert e.value.status == "TR_ERR_UNSUPPORTED" and "hole points" in e.value.message
+
+
+def test_a_skew_quad_is_refused_as_read_and_read_as_its_fan_with_resolve():
+    """resolve_skew_quad.obj: a tetrahedron with faces ADC and ACB given as the quad A D C
+    B, whose projection along z is a bow-tie. read() refuses it; read(resolve=True) gives
+    the fan from A with a warning naming the polygon, and the mesh is the tetrahedron:
+    one tet, 6V = 3/2, exactly."""
+    path = DATA / "resolve_skew_quad.obj"
+    with pytest.raises(tetrec.Error) as e:
+        tetrec.read(path)
+    assert e.value.status == "TR_ERR_INPUT" and ":8: facet 0: polygon" in str(e.value)
+    with pytest.warns(UserWarning, match=r"1 polygon\(s\) .* read as fans .*:8: facet 0"):
+        s = tetrec.read(path, resolve=True)
+    assert s.triangles.tolist()[:2] == [[0, 3, 2], [0, 2, 1]]
+    m = tetrec.tetrahedralize(s, resolve=True)
+    check_mesh(m, s.points, s.triangles)
+    assert len(m.tets) == 1
+    assert tets_volume6(m.exact_points(), m.tets) == Fraction(3, 2)

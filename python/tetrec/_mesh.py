@@ -27,12 +27,20 @@ class Surface(NamedTuple):
     markers: np.ndarray
 
 
-def read(path) -> Surface:
+def read(path, *, resolve=False) -> Surface:
     """Reads a surface (.off .stl .obj .ply .mesh .node .poly .smesh; the extension picks
     the reader). Polygons come back triangulated in their plane. Segments on no
     triangle and volume tets in the file are not part of a Surface: a warning says how
-    many were left out."""
-    points, triangles, markers, nsegs, ntets = _tetrec.read(os.fspath(path))
+    many were left out.
+
+    resolve=True reads the surface as tetrahedralize(..., resolve=True) takes it: a
+    polygon of one loop that cannot be triangulated in its plane (self-overlapping, or
+    all corners collinear) comes back as the fan of its loop from its first corner, with
+    a warning naming it, instead of an error."""
+    points, triangles, markers, nsegs, ntets, fans = _tetrec.read(os.fspath(path),
+                                                                  bool(resolve))
+    if fans:
+        warnings.warn(f"tetrec.read({os.fspath(path)!r}): {fans}", stacklevel=2)
     for n, what in ((nsegs, "segments on no triangle"), (ntets, "tetrahedra")):
         if n:
             warnings.warn(f"tetrec.read({os.fspath(path)!r}): {n} {what} left out "

@@ -582,18 +582,49 @@ static PyObject *py_validate(PyObject *Py_UNUSED(mod), PyObject *args)
   return res;
 }
 
-/* read(path) -> (points (n,3) float64, triangles (m,3) uint32, markers (m,) int32,
- * segments, tets): the last two count what the file held beside its surface (segments on
- * no triangle, volume tets), which a Surface cannot carry. */
+/* "" or "N polygon(s) that cannot be triangulated in their plane read as fans: " and the
+ * first reasons, joined by "; ". */
+static PyObject *fan_notes(const tr_plc *plc)
+{
+  uint32_t n = tr_plc_num_fans(plc);
+  if (!n)
+    return PyUnicode_FromString("");
+  PyObject *notes = PyUnicode_FromString(tr_plc_fan_notes(plc));
+  if (!notes)
+    return NULL;
+  PyObject *lines = PyUnicode_Splitlines(notes, 0);
+  Py_DECREF(notes);
+  PyObject *sep = lines ? PyUnicode_FromString("; ") : NULL;
+  PyObject *joined = sep ? PyUnicode_Join(sep, lines) : NULL;
+  Py_XDECREF(lines);
+  Py_XDECREF(sep);
+  if (!joined)
+    return NULL;
+  PyObject *res = PyUnicode_FromFormat("%lu polygon(s) that cannot be triangulated in their "
+                                       "plane read as fans of their loops (at most ten named): %U",
+                                       (unsigned long)n, joined);
+  Py_DECREF(joined);
+  return res;
+}
+
+/* read(path, resolve) -> (points (n,3) float64, triangles (m,3) uint32, markers (m,)
+ * int32, segments, tets, fans): segments and tets count what the file held beside its
+ * surface (segments on no triangle, volume tets), which a Surface cannot carry; fans is
+ * "" or, with resolve, what tr_plc_fan_notes says of the polygons read as fans. */
 static PyObject *py_read(PyObject *Py_UNUSED(mod), PyObject *args)
 {
   PyObject *path_obj;
-  if (!PyArg_ParseTuple(args, "O&", PyUnicode_FSConverter, &path_obj))
+  int resolve = 0;
+  if (!PyArg_ParseTuple(args, "O&p", PyUnicode_FSConverter, &path_obj, &resolve))
     return NULL;
   tr_plc *plc = NULL;
   tr_status st;
+  tr_options opt;
+  tr_options_default(&opt);
+  opt.resolve = resolve;
+  opt.threads = 1;
   Py_BEGIN_ALLOW_THREADS
-  st = tr_plc_read(PyBytes_AS_STRING(path_obj), &plc);
+  st = tr_plc_read_options(PyBytes_AS_STRING(path_obj), &opt, &plc);
   Py_END_ALLOW_THREADS
   Py_DECREF(path_obj);
   if (st != TR_OK)
@@ -601,12 +632,16 @@ static PyObject *py_read(PyObject *Py_UNUSED(mod), PyObject *args)
   PyObject *arrays = tetrec_py_plc_arrays(plc);
   unsigned long extra[2];
   tetrec_py_plc_extras(plc, &extra[0], &extra[1]);
+  PyObject *fans = fan_notes(plc);
   tr_plc_destroy(plc);
-  if (!arrays)
+  if (!arrays || !fans) {
+    Py_XDECREF(arrays);
+    Py_XDECREF(fans);
     return NULL;
-  PyObject *res = Py_BuildValue("(OOOkk)", PyTuple_GET_ITEM(arrays, 0),
+  }
+  PyObject *res = Py_BuildValue("(OOOkkN)", PyTuple_GET_ITEM(arrays, 0),
                                 PyTuple_GET_ITEM(arrays, 1), PyTuple_GET_ITEM(arrays, 2),
-                                extra[0], extra[1]);
+                                extra[0], extra[1], fans);
   Py_DECREF(arrays);
   return res;
 }
@@ -633,7 +668,8 @@ static PyObject *py_error(PyObject *Py_UNUSED(mod), PyObject *args)
 static PyMethodDef module_methods[] = {
     {"tetrahedralize", py_tetrahedralize, METH_VARARGS,
      "tetrahedralize(points, triangles, markers, options) -> (CMesh, stats)"},
-    {"read", py_read, METH_VARARGS, "read(path) -> (points, triangles, markers, segments, tets)"},
+    {"read", py_read, METH_VARARGS,
+     "read(path, resolve) -> (points, triangles, markers, segments, tets, fans)"},
     {"validate", py_validate, METH_VARARGS,
      "validate(points, triangles, markers) -> (points, triangles, markers, report)"},
     {"status_name", py_status_name, METH_VARARGS, "status_name(code) -> 'TR_ERR_...'"},
