@@ -265,6 +265,23 @@ static tr_status insert_one(struct tr_mesh *m, qctx *c, uint32_t pid, uint32_t *
   return TR_OK;
 }
 
+/* A copy of exact point i (q) as m's next vertex *id. */
+static tr_status add_exact(struct tr_mesh *m, const tr_qpoint *q, uint32_t i, uint32_t *id)
+{
+  tr_qpoint *x = malloc(sizeof *x);
+  if (!x)
+    return tr_error(TR_ERR_NOMEM, "out of memory for exact point %u", i);
+  tr_qpoint_init(x);
+  tr_point src = tr_pt_q(q);
+  tr_qpoint_set_point(x, &src);
+  tr_status st = tr_mesh_add_steiner(m, x, id);
+  if (st != TR_OK) {
+    tr_qpoint_clear(x);
+    free(x);
+  }
+  return st;
+}
+
 tr_status tr_delaunay_insert_exact(struct tr_mesh *m, tr_qpoint *const *q, uint32_t n)
 {
   if (!n)
@@ -280,21 +297,9 @@ tr_status tr_delaunay_insert_exact(struct tr_mesh *m, tr_qpoint *const *q, uint3
   memset(&c, 0, sizeof c);
   tr_status st = TR_OK;
   for (uint32_t i = 0; st == TR_OK && i < n; i++) {
-    tr_qpoint *x = malloc(sizeof *x);
-    if (!x) {
-      st = tr_error(TR_ERR_NOMEM, "out of memory for exact point %u", i);
-      break;
-    }
-    tr_qpoint_init(x);
-    tr_point src = tr_pt_q(q[i]);
-    tr_qpoint_set_point(x, &src);
     uint32_t id;
-    if ((st = tr_mesh_add_steiner(m, x, &id)) != TR_OK) {
-      tr_qpoint_clear(x);
-      free(x);
-      break;
-    }
-    st = insert_one(m, &c, id, &hint);
+    if ((st = add_exact(m, q[i], i, &id)) == TR_OK)
+      st = insert_one(m, &c, id, &hint);
   }
   tr_u32buf_free(&c.cav);
   tr_u32buf_free(&c.bnd);
@@ -359,19 +364,8 @@ tr_status tr_delaunay_build_exact(const double *xyz, uint32_t nd, tr_qpoint *con
     st = tr_mesh_add_vertex(m, xyz + 3 * (size_t)i, &id);
   }
   for (uint32_t i = 0; st == TR_OK && i < n; i++) {
-    tr_qpoint *x = malloc(sizeof *x);
-    if (!x) {
-      st = tr_error(TR_ERR_NOMEM, "out of memory for exact point %u", i);
-      break;
-    }
-    tr_qpoint_init(x);
-    tr_point src = tr_pt_q(q[i]);
-    tr_qpoint_set_point(x, &src);
     uint32_t id;
-    if ((st = tr_mesh_add_steiner(m, x, &id)) != TR_OK) {
-      tr_qpoint_clear(x);
-      free(x);
-    }
+    st = add_exact(m, q[i], i, &id);
   }
   uint32_t sv[4] = {0, 0, 0, 0}, t0 = TR_NONE, g[4];
   if (st == TR_OK)
