@@ -294,6 +294,9 @@ int rf_forced_by_angle(const rf_ctx *c, uint32_t t);
 int rf_too_close(const rf_ctx *c, const uint32_t *tets, size_t n, const double *p, double cap);
 tr_status rf_push_tet(rf_ctx *c, uint32_t t);
 tr_status rf_refine_tet(rf_ctx *c, uint32_t t);
+/* The sub-segments and sub-faces of t that a vertex of t encroaches, queued (tet.c); *pushed
+ * = 1 when one was. */
+tr_status rf_own_encroached(rf_ctx *c, uint32_t t, int *pushed);
 
 /* ---- rounds.c ---- */
 /* The fewest points a round may add (else the next tet goes the serial way). */
