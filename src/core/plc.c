@@ -5,7 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../io/io.h"
 #include "status.h"
 
 void tr_plc_clear(struct tr_plc *plc)
@@ -120,20 +119,6 @@ tr_status tr_plc_set(tr_plc *plc, const double *xyz, uint32_t npoints, const uin
   return TR_OK;
 }
 
-tr_status tr_plc_read(const char *path, tr_plc **out)
-{
-  tr_error_clear();
-  *out = NULL;
-  tr_plc *p;
-  TR_CHECK(tr_plc_create(&p));
-  tr_status st = tr_io_read_file(path, p);
-  if (st != TR_OK) {
-    tr_plc_destroy(p);
-    return st;
-  }
-  *out = p;
-  return TR_OK;
-}
 
 /* Room for element n of an array that holds n: the capacity is the next power of two
  * (an array only ever grows here), so a million tr_plc_add_region calls are a few dozen

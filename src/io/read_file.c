@@ -73,6 +73,10 @@ tr_status tr_io_read_file(const char *path, struct tr_plc *plc)
   return tr_io_read_file_threads(path, plc, 1);
 }
 
+/* the reading entry of the public API lives with the readers, not in core/plc.c, which
+ * the readers build on */
+tr_status tr_plc_read(const char *path, tr_plc **out) { return tr_plc_read_fans(path, out, 1, 0); }
+
 tr_status tr_plc_read_threads(const char *path, tr_plc **out, int threads)
 {
   return tr_plc_read_fans(path, out, threads, 0);
