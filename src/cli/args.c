@@ -60,7 +60,8 @@ static const struct command {
      "when there is any (also zero-area and duplicate triangles). -o FILE (.vtk or .msh)\n"
      "writes the offending triangles and edges, with cell data / physical tag 1\n"
      "intersecting triangle, 2 open edge, 3 non-manifold edge, 4 triangle of a non-planar\n"
-     "polygon, 5 zero-area, 6 duplicate triangle, for ParaView or Gmsh.\n"},
+     "polygon, 5 zero-area, 6 duplicate triangle, 7 triangle of the fan of a polygon that\n"
+     "cannot be triangulated in its plane, for ParaView or Gmsh.\n"},
     {"convert", C_CONVERT, 2, "convert IN OUT [options]",
      "Convert a surface or mesh between formats (OUT: .off .stl .mesh .meshb .vtu .vtk .msh\n"
      "or TetGen).\n"},

@@ -3,7 +3,8 @@
  * vertices merged first, then triangles of zero area, duplicate triangles, open edges and
  * non-manifold edges, the latter valid for `tetrec mesh` as internal facets between
  * regions but listed because they are often a modelling slip, every self-intersecting
- * pair), then every non-planar input polygon (polytri.c). Numbers are those of IN:
+ * pair), then every input polygon that cannot be triangulated in its plane (listed with
+ * the fan --resolve reads instead), then every non-planar one (polytri.c). Numbers are those of IN:
  * triangles after polygon triangulation, the input face each came from, vertices
  * 0-based. A surface without defects gets a note when triangles of it have a corner
  * under 10 degrees: valid, but the tets refinement puts on them stay thin
@@ -19,7 +20,7 @@
 #include "refine/quality.h"
 
 enum { ISSUE_SELFINT = 1, ISSUE_OPEN = 2, ISSUE_NONMANIFOLD = 3, ISSUE_NONPLANAR = 4,
-       ISSUE_ZERO_AREA = 5, ISSUE_DUPLICATE = 6 };
+       ISSUE_ZERO_AREA = 5, ISSUE_DUPLICATE = 6, ISSUE_POLYGON = 7 };
 
 struct list {
   uint32_t *a;
@@ -47,7 +48,7 @@ static tr_status add(struct list *l, const uint32_t *v, int32_t mark)
 
 struct counts {
   size_t selfint;
-  uint32_t open, nonmanifold, nonplanar, zero, duplicate;
+  uint32_t open, nonmanifold, nonplanar, zero, duplicate, polygons;
 };
 
 /* The defects (src/input/defects.c) printed and listed for the output file, in the order
@@ -99,9 +100,35 @@ static tr_status analyse(const struct tr_plc *plc, struct list *tris, struct lis
   c->nonmanifold = d.nnonmanifold;
   c->selfint = d.npairs;
   tr_surface_defects_free(&d);
+  /* polygons that cannot be triangulated in their plane, read as fans (tr_plc.read_fans):
+   * their triangles are contiguous, in facet order */
+  const char *why = plc->fan_notes ? plc->fan_notes : "";
+  for (uint32_t f = 0, t = 0; st == TR_OK && src && f < plc->nfans; f++) {
+    uint32_t face = plc->fan_facet[f];
+    while (t < plc->ntris && src[t] < face)
+      t++;
+    uint32_t t1 = t;
+    while (t1 < plc->ntris && src[t1] == face)
+      st = add(tris, plc->tris + 3 * (size_t)t1++, ISSUE_POLYGON);
+    const char *nl = strchr(why, '\n');
+    int len = *why ? (nl ? (int)(nl - why) : (int)strlen(why)) : 0;
+    printf("polygon that cannot be triangulated in its plane: input face %u (triangles %u..%u, "
+           "its fan as --resolve reads it)%s%.*s\n", face, t, t1 - 1, len ? ": " : "", len, why);
+    why += len + (nl && len ? 1 : 0);
+    t = t1;
+  }
+  c->polygons = plc->nfans;
   uint32_t nnp = 0;
   if (st == TR_OK)
     st = tr_plc_nonplanar(plc, &np, &nnp);
+  uint32_t kept = 0; /* a fanned polygon is listed above, not again as non-planar */
+  for (uint32_t i = 0, f = 0; st == TR_OK && i < nnp; i++) {
+    while (f < plc->nfans && plc->fan_facet[f] < np[i].facet)
+      f++;
+    if (f == plc->nfans || plc->fan_facet[f] != np[i].facet)
+      np[kept++] = np[i];
+  }
+  nnp = kept;
   for (uint32_t i = 0; st == TR_OK && i < nnp; i++) {
     printf("non-planar polygon: input face %u (triangles %u..%u): a vertex lies %.17g from "
            "the plane of its largest triangle (%.3g of its bounding box diagonal)\n",
@@ -124,9 +151,9 @@ tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version,
     TR_CHECK(tr_io_check_writable(out));
   }
   tr_plc *plc = NULL;
-  TR_CHECK(tr_plc_read(in, &plc));
+  TR_CHECK(tr_plc_read_fans(in, &plc, 1, 1)); /* every such polygon listed, not the first */
   struct list tris = {NULL, NULL, 0, 0, 3}, edges = {NULL, NULL, 0, 0, 2};
-  struct counts c = {0, 0, 0, 0, 0, 0};
+  struct counts c = {0, 0, 0, 0, 0, 0, 0};
   tr_status st = analyse(plc, &tris, &edges, &c);
   if (st == TR_OK && out) {
     struct tr_mesh_view v = {plc->npoints, plc->xyz, NULL, 0, NULL, NULL, tris.n, tris.a,
@@ -136,7 +163,8 @@ tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version,
                                              : tr_write_msh_edges(&v, &e, out, msh_version);
   }
   if (st == TR_OK) {
-    int any = c.selfint || c.open || c.nonmanifold || c.nonplanar || c.zero || c.duplicate;
+    int any = c.selfint || c.open || c.nonmanifold || c.nonplanar || c.zero || c.duplicate ||
+              c.polygons;
     if (!quiet && !any)
       fprintf(stderr, "tetrec: %s: %u vertices, %u triangles: no defect found\n", in,
               plc->npoints, plc->ntris);
@@ -151,12 +179,16 @@ tr_status tr_cli_check_surface(const char *in, const char *out, int msh_version,
               (unsigned long long)thin.triangles, thin.thinnest,
               plc->tri_source ? plc->tri_source[thin.thinnest] : thin.thinnest,
               thin.thinnest_angle, thin.thinnest_vertex);
+    char polygons[96];
+    snprintf(polygons, sizeof polygons, ", %u polygons that cannot be triangulated in their "
+             "plane", c.polygons);
     if (any)
       st = tr_error(c.selfint ? TR_ERR_SELF_INTERSECT
                     : c.open || c.nonmanifold ? TR_ERR_OPEN : TR_ERR_INPUT,
                     "%s: %zu self-intersecting pairs, %u open edges, %u non-manifold edges, "
-                    "%u non-planar polygons, %u zero-area triangles, %u duplicate triangles",
-                    in, c.selfint, c.open, c.nonmanifold, c.nonplanar, c.zero, c.duplicate);
+                    "%u non-planar polygons, %u zero-area triangles, %u duplicate triangles%s",
+                    in, c.selfint, c.open, c.nonmanifold, c.nonplanar, c.zero, c.duplicate,
+                    c.polygons ? polygons : "");
   }
   free(tris.a);
   free(tris.mark);

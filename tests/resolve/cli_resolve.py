@@ -6,7 +6,8 @@ cubes refused without it (exit 7), meshed with it and validated by `check --reso
 exits 6 naming the edge; a union with rational corners meshes (exactly with --exact,
 checked; the same bytes twice and with 1 and 2 threads; also --keep-surface and
 --quality), and exits 11 naming the mode under --surface-tolerance; corners at 2^52 that
-share a double exit 9 in doubles and mesh with --exact, checked.
+share a double exit 9 in doubles and mesh with --exact, checked; a skew quad is refused
+as read, listed by check-surface and meshed with --resolve.
 Usage: cli_resolve.py TETREC tests/data"""
 import json
 import os
@@ -127,5 +128,22 @@ with tempfile.TemporaryDirectory() as d:
     rc, _, err = run(["check", "--resolve", grid, "g.node", "-v"], d)
     expect(rc == 0 and "conforms exactly" in err and "volume equals" in err,
            f"check --resolve of the exact grid cycle mesh: exit {rc}: {err}")
+
+    # a skew quad whose projection is a bow-tie: refused as read (exit 4 naming the
+    # polygon), listed by check-surface with the fan --resolve reads instead, meshed with
+    # --resolve (a warning names it) into the one tetrahedron it bounds, checked exactly
+    skew = os.path.join(data, "resolve_skew_quad.obj")
+    rc, _, err = run(["mesh", skew, "-o", "q.node"], d)
+    expect(rc == 4 and ":8: facet 0: polygon" in err, f"skew quad as read: exit {rc}: {err}")
+    rc, out, err = run(["check-surface", skew, "-o", "q.vtk"], d)
+    expect(rc == 4 and "polygon that cannot be triangulated in its plane: input face 0 "
+           "(triangles 0..1" in out and "1 polygons that cannot be triangulated" in err,
+           f"check-surface of the skew quad: exit {rc}: {out}{err}")
+    rc, _, err = run(["mesh", skew, "--resolve", "--exact", "-o", "q.node"], d)
+    expect(rc == 0 and "read as the fan of its loop" in err and "1 tetrahedra" in err,
+           f"skew quad --resolve: exit {rc}: {err}")
+    rc, _, err = run(["check", "--resolve", skew, "q.node"], d)
+    expect(rc == 0 and "conforms exactly" in err and "volume equals" in err,
+           f"check --resolve of the skew quad's mesh: exit {rc}: {err}")
 
 cli.finish("cli_resolve")
