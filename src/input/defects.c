@@ -20,16 +20,6 @@ void tr_surface_defects_free(tr_surface_defects *d)
   memset(d, 0, sizeof *d);
 }
 
-/* -0.0 == 0.0: the same point, as tr_plc_validate merges them */
-static int cmp_xyz(const void *ctx, uint32_t a, uint32_t b)
-{
-  const double *x = ctx, *p = x + 3 * (size_t)a, *q = x + 3 * (size_t)b;
-  for (int k = 0; k < 3; k++)
-    if (p[k] != q[k])
-      return p[k] < q[k] ? -1 : 1;
-  return 0;
-}
-
 static int zero_area(const double *x, const uint32_t *t)
 {
   const double *a = x + 3 * (size_t)t[0], *b = x + 3 * (size_t)t[1], *c = x + 3 * (size_t)t[2];
@@ -178,9 +168,9 @@ tr_status tr_surface_defects_find(const struct tr_plc *plc, tr_surface_defects *
   for (uint32_t i = 0; st == TR_OK && i < nv; i++)
     ord[i] = i;
   if (st == TR_OK)
-    st = tr_sort_ids(ord, nv, cmp_xyz, plc->xyz);
+    st = tr_sort_ids(ord, nv, tr_cmp_point, plc->xyz);
   for (uint32_t i = 0; st == TR_OK && i < nv; i++)
-    rep[ord[i]] = i && cmp_xyz(plc->xyz, ord[i - 1], ord[i]) == 0 ? rep[ord[i - 1]] : ord[i];
+    rep[ord[i]] = i && tr_cmp_point(plc->xyz, ord[i - 1], ord[i]) == 0 ? rep[ord[i - 1]] : ord[i];
   w.npoints = nv;
   w.xyz = plc->xyz;
   for (uint32_t t = 0; st == TR_OK && t < nt; t++) {

@@ -28,7 +28,7 @@ static double vclock(void)
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static int cmp_point(const void *ctx, uint32_t a, uint32_t b)
+int tr_cmp_point(const void *ctx, uint32_t a, uint32_t b)
 {
   const double *x = ctx;
   for (int k = 0; k < 3; k++) {
@@ -49,13 +49,13 @@ typedef struct {
 static int cmp_point_key(const void *pa, const void *pb)
 {
   const point_key *a = pa, *b = pb;
-  int c = 0; /* cmp_point's order (-0.0 == 0.0), then the index */
+  int c = 0; /* tr_cmp_point's order (-0.0 == 0.0), then the index */
   for (int k = 0; k < 3 && !c; k++)
     c = (a->x[k] > b->x[k]) - (a->x[k] < b->x[k]);
   return c ? c : (a->i > b->i) - (a->i < b->i);
 }
 
-/* ord = 0..n-1 sorted by cmp_point, equal points in index order (what a stable sort
+/* ord = 0..n-1 sorted by tr_cmp_point, equal points in index order (what a stable sort
  * gives): the coordinates copied beside the index, so that a comparison reads one
  * record instead of two random points. */
 static tr_status sort_points(const double *xyz, uint32_t n, uint32_t *ord)
@@ -89,7 +89,7 @@ static tr_status merge_vertices(struct tr_plc *plc, uint32_t *orig, tr_report *r
     goto done;
   for (uint32_t i = 0; i < n;) {
     uint32_t j = i + 1;
-    while (j < n && cmp_point(plc->xyz, ord[i], ord[j]) == 0)
+    while (j < n && tr_cmp_point(plc->xyz, ord[i], ord[j]) == 0)
       j++;
     for (uint32_t k = i; k < j; k++) {
       map[ord[k]] = ord[i]; /* stable sort: ord[i] is the lowest index of the group */

@@ -98,6 +98,10 @@ tr_status tr_input_shell_cavities(struct tr_plc *plc, const uint32_t *order,
 tr_status tr_input_orient_cells(struct tr_plc *plc, const uint32_t *tnum, const uint32_t *orig,
                                 int allow_open, char *flipped);
 
+/* Points a and b of the double array ctx (3 per point) in lexicographic order, for
+ * tr_sort_ids: -0.0 == 0.0, the same point, as validation merges them. */
+int tr_cmp_point(const void *ctx, uint32_t a, uint32_t b);
+
 /* Stable merge sort of ids by cmp(ctx, a, b) (<0, 0, >0). */
 tr_status tr_sort_ids(uint32_t *ids, uint32_t n, int (*cmp)(const void *, uint32_t, uint32_t),
                       const void *ctx);

@@ -156,13 +156,15 @@ static void in_tet(void *ud, uint32_t i)
   q->found[i] = q->cur;
 }
 
-/* The interval box of tet t: its vertices' doubles, or their exact bounds. */
-static void tet_box(const struct tr_mesh *m, uint32_t t, double lo[3], double hi[3])
+/* The interval box of points v[0..n-1]: their doubles, widened to the exact bounds of
+ * those that are rational points (xq NULL: none; a Steiner point's or --resolve's corner's
+ * double is only near it). */
+static void exact_box(const double *xyz, tr_qpoint *const *xq, const uint32_t *v, int n,
+                      double lo[3], double hi[3])
 {
-  const uint32_t *tv = m->tv + 4 * (size_t)t;
-  tr_box_of(m->xyz, tv, 4, lo, hi);
-  for (int k = 0; k < 4; k++) {
-    const tr_qpoint *q = m->vq ? m->vq[tv[k]] : NULL;
+  tr_box_of(xyz, v, n, lo, hi);
+  for (int k = 0; k < n; k++) {
+    const tr_qpoint *q = xq ? xq[v[k]] : NULL;
     for (int d = 0; q && d < 3; d++) {
       lo[d] = q->lo[d] < lo[d] ? q->lo[d] : lo[d];
       hi[d] = q->hi[d] > hi[d] ? q->hi[d] : hi[d];
@@ -170,19 +172,14 @@ static void tet_box(const struct tr_mesh *m, uint32_t t, double lo[3], double hi
   }
 }
 
-/* The interval box of input triangle t: its corners' doubles, or the exact bounds of
- * those that are rational points (--resolve's corners, whose doubles are only near). */
+static void tet_box(const struct tr_mesh *m, uint32_t t, double lo[3], double hi[3])
+{
+  exact_box(m->xyz, m->vq, m->tv + 4 * (size_t)t, 4, lo, hi);
+}
+
 static void tri_box(const struct tr_plc *plc, uint32_t t, double lo[3], double hi[3])
 {
-  const uint32_t *v = plc->tris + 3 * (size_t)t;
-  tr_box_of(plc->xyz, v, 3, lo, hi);
-  for (int k = 0; k < 3; k++) {
-    const tr_qpoint *q = plc->xq ? plc->xq[v[k]] : NULL;
-    for (int d = 0; q && d < 3; d++) {
-      lo[d] = q->lo[d] < lo[d] ? q->lo[d] : lo[d];
-      hi[d] = q->hi[d] > hi[d] ? q->hi[d] : hi[d];
-    }
-  }
+  exact_box(plc->xyz, plc->xq, plc->tris + 3 * (size_t)t, 3, lo, hi);
 }
 
 /* facet[i]: the first input triangle point i lies on (closed), TR_NONE if none;

@@ -52,15 +52,6 @@ static void surf_free(surf *s)
   memset(s, 0, sizeof *s);
 }
 
-static int cmp_xyz(const void *ctx, uint32_t a, uint32_t b)
-{
-  const double *x = ctx, *p = x + 3 * (size_t)a, *q = x + 3 * (size_t)b;
-  for (int k = 0; k < 3; k++)
-    if (p[k] != q[k])
-      return p[k] < q[k] ? -1 : 1;
-  return 0;
-}
-
 /* |p - x|, Euclidean, rounded up a little: the largest rounding move is a bound in the
  * report, so it must not come out low. */
 static double displacement(const tr_point *p, const double x[3])
@@ -141,11 +132,11 @@ static tr_status round_surface(const struct tr_plc *plc, const uint32_t *orig,
   info->max_move = most > info->max_move ? most : info->max_move;
   info->move_bound += most;
   /* a stable sort: the first of a run of equal doubles is the least vertex */
-  st = tr_sort_ids(ord, nused, cmp_xyz, x);
+  st = tr_sort_ids(ord, nused, tr_cmp_point, x);
   if (st != TR_OK)
     goto done;
   for (uint32_t i = 0; i < nused; i++) /* id = the representative, for now */
-    id[ord[i]] = i && cmp_xyz(x, ord[i - 1], ord[i]) == 0 ? id[ord[i - 1]] : ord[i];
+    id[ord[i]] = i && tr_cmp_point(x, ord[i - 1], ord[i]) == 0 ? id[ord[i - 1]] : ord[i];
   uint32_t nv = 0;
   for (uint32_t v = 0; v < n; v++) /* representatives numbered in arrangement order */
     if (id[v] == v)
