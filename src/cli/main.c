@@ -238,11 +238,15 @@ static int cmd_mesh(const tr_cli_args *a)
     warn_nonplanar(a, plc); /* the polygons as read, before --resolve replaces them */
   if (s == TR_OK && a->resolve) {
     progress("resolving", a->in);
-    s = tr_resolve_replace(&plc, a->resolve, a->verbose);
+    tr_options ropt = opt; /* the pipeline below meshes plc as it now is */
+    ropt.resolve = a->resolve;
+    s = tr_resolve_replace(&plc, &ropt, a->verbose);
   }
   if (s == TR_OK) {
     progress("validating", a->in);
-    s = tr_plc_validate(plc, &opt);
+    /* --resolve validated it already when it is valid as given (report included) */
+    if (!plc->validated)
+      s = tr_plc_validate(plc, &opt);
     print_report(a, plc);
     /* the validator stops at the first defect */
     if ((s == TR_ERR_SELF_INTERSECT || s == TR_ERR_OPEN) && !a->quiet)
@@ -443,9 +447,10 @@ static int cmd_check(const tr_cli_args *a)
   tr_status s = tr_cli_read_input(a, 1, &surf);
   if (s == TR_OK)
     warn_nonplanar(a, surf);
+  opt.resolve = a->resolve;
   if (s == TR_OK && a->resolve) /* the surface the mesh was made for */
-    s = tr_resolve_replace(&surf, a->resolve, a->verbose);
-  if (s == TR_OK)
+    s = tr_resolve_replace(&surf, &opt, a->verbose);
+  if (s == TR_OK && !surf->validated)
     s = tr_plc_validate(surf, &opt);
   if (s == TR_OK) {
     /* MESH.node alone has no tets: read its .ele. */

@@ -1,4 +1,5 @@
 /* The public tr_plc_* functions: life cycle, copying arrays in, reading files. */
+#define _POSIX_C_SOURCE 200809L
 #include "plc.h"
 
 #include <math.h>
@@ -244,4 +245,46 @@ uint32_t tr_plc_num_fans(const tr_plc *plc) { return plc ? plc->nfans : 0; }
 const char *tr_plc_fan_notes(const tr_plc *plc)
 {
   return plc && plc->fan_notes ? plc->fan_notes : "";
+}
+
+tr_status tr_plc_copy(const tr_plc *in, tr_plc **out)
+{
+  TR_CHECK(tr_plc_create(out));
+  tr_plc *p = *out;
+  tr_status st = tr_plc_set(p, in->xyz, in->npoints, in->tris, in->ntris, in->tri_marker);
+  if (st == TR_OK)
+    st = tr_plc_copy_points(p, in);
+  if (st == TR_OK)
+    st = tr_plc_copy_exact(p, in);
+  if (st == TR_OK && in->source && !(p->source = strdup(in->source)))
+    st = tr_error(TR_ERR_NOMEM, "out of memory copying the PLC");
+  if (st == TR_OK && in->tri_source) {
+    if (!(p->tri_source = malloc(sizeof *p->tri_source * (in->ntris ? in->ntris : 1))))
+      st = tr_error(TR_ERR_NOMEM, "out of memory copying %u triangle sources", in->ntris);
+    else
+      memcpy(p->tri_source, in->tri_source, sizeof *p->tri_source * in->ntris);
+  }
+  if (st == TR_OK && in->nsegs) {
+    p->segs = malloc(sizeof *p->segs * 2 * (size_t)in->nsegs);
+    if (!p->segs)
+      st = tr_error(TR_ERR_NOMEM, "out of memory copying %u segments", in->nsegs);
+    else {
+      memcpy(p->segs, in->segs, sizeof *p->segs * 2 * (size_t)in->nsegs);
+      p->nsegs = in->nsegs;
+    }
+  }
+  if (st == TR_OK && in->vsize) {
+    if (!(p->vsize = malloc(sizeof *p->vsize * (in->npoints ? in->npoints : 1))))
+      st = tr_error(TR_ERR_NOMEM, "out of memory copying %u point sizes", in->npoints);
+    else
+      memcpy(p->vsize, in->vsize, sizeof *p->vsize * in->npoints);
+  }
+  if (st != TR_OK) {
+    tr_plc_destroy(p);
+    *out = NULL;
+  } else {
+    p->validated = in->validated;
+    memcpy(p->validate_seconds, in->validate_seconds, sizeof p->validate_seconds);
+  }
+  return st;
 }

@@ -92,6 +92,10 @@ static inline tr_point tr_plc_point(const struct tr_plc *plc, uint32_t v)
  * triangles). */
 tr_status tr_plc_copy_exact(struct tr_plc *dst, const struct tr_plc *src);
 
+/* *out = a new PLC with in's points, triangles, markers, sources, segments, exact points,
+ * hole and region points, sizes, file name and validation state (not its report). */
+tr_status tr_plc_copy(const struct tr_plc *in, struct tr_plc **out);
+
 /* Frees the arrays and zeroes the struct (not the struct itself). */
 void tr_plc_clear(struct tr_plc *plc);
 

@@ -29,42 +29,6 @@
 #include "simplify/simplify.h"
 #include "smooth/smooth.h"
 
-static tr_status copy_plc(const tr_plc *in, tr_plc **out)
-{
-  TR_CHECK(tr_plc_create(out));
-  tr_plc *p = *out;
-  tr_status st = tr_plc_set(p, in->xyz, in->npoints, in->tris, in->ntris, in->tri_marker);
-  if (st == TR_OK)
-    st = tr_plc_copy_points(p, in);
-  if (st == TR_OK)
-    st = tr_plc_copy_exact(p, in);
-  if (st == TR_OK && in->source && !(p->source = strdup(in->source)))
-    st = tr_error(TR_ERR_NOMEM, "out of memory copying the PLC");
-  if (st == TR_OK && in->nsegs) {
-    p->segs = malloc(sizeof *p->segs * 2 * (size_t)in->nsegs);
-    if (!p->segs)
-      st = tr_error(TR_ERR_NOMEM, "out of memory copying %u segments", in->nsegs);
-    else {
-      memcpy(p->segs, in->segs, sizeof *p->segs * 2 * (size_t)in->nsegs);
-      p->nsegs = in->nsegs;
-    }
-  }
-  if (st == TR_OK && in->vsize) {
-    if (!(p->vsize = malloc(sizeof *p->vsize * (in->npoints ? in->npoints : 1))))
-      st = tr_error(TR_ERR_NOMEM, "out of memory copying %u point sizes", in->npoints);
-    else
-      memcpy(p->vsize, in->vsize, sizeof *p->vsize * in->npoints);
-  }
-  if (st != TR_OK) {
-    tr_plc_destroy(p);
-    *out = NULL;
-  } else {
-    p->validated = in->validated;
-    memcpy(p->validate_seconds, in->validate_seconds, sizeof p->validate_seconds);
-  }
-  return st;
-}
-
 /* The caller's size field (tr_options.sizing) onto p, its copy of the caller's PLC, before
  * validation: the merges of duplicates carry it. */
 static tr_status attach_sizing(tr_plc *p, const tr_options *opt)
@@ -216,11 +180,11 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     st = tr_error(TR_ERR_USAGE, "optimize level %d: it is 0 (off), 1 (flips), 2 (flips "
                   "and smoothing) or 3 (flips, smoothing and new points)", opt.optimize);
   if (st == TR_OK)
-    st = copy_plc(plc, &p);
+    st = tr_plc_copy(plc, &p);
   if (st == TR_OK)
     st = attach_sizing(p, &opt);
   if (st == TR_OK && opt.resolve)
-    st = tr_resolve_replace(&p, opt.resolve, opt.verbose >= 2);
+    st = tr_resolve_replace(&p, &opt, opt.verbose >= 2);
   /* Validation works on a copy: the caller's PLC is const. One the caller validated
    * (tetrec mesh does, to print its report) is not validated twice, unless it was
    * validated as open and this call wants a closed surface. */

@@ -120,10 +120,11 @@ typedef struct tr_resolve_info {
  * segments with a changed surface too; an empty solid is TR_ERR_INPUT. */
 tr_status tr_resolve_plc(const struct tr_plc *in, int mode, struct tr_plc **out,
                          tr_resolve_info *info);
-/* What the command and the pipeline do with it: *p replaced by the boundary of its
- * solid (kept when it bounds it as given), and with `report` one line on stderr of what
- * the resolution found. */
-tr_status tr_resolve_replace(struct tr_plc **p, int mode, int report);
+/* What the command and the pipeline do with it (opt->resolve the mode): *p replaced by
+ * its validated copy when tr_plc_validate(opt) accepts it, so that an input valid before
+ * gives the same mesh; else by the boundary of its solid (kept when it bounds it as
+ * given). With `report` one line on stderr of what it found. */
+tr_status tr_resolve_replace(struct tr_plc **p, const struct tr_options *opt, int report);
 
 /* The point of vertex v (d: the input's coordinates). */
 static inline tr_point tr_arr_point(const tr_arrangement *arr, const struct tr_plc *plc,

@@ -210,11 +210,35 @@ done:
   return st;
 }
 
-tr_status tr_resolve_replace(struct tr_plc **p, int mode, int report)
+tr_status tr_resolve_replace(struct tr_plc **p, const tr_options *opt, int report)
 {
+  /* An input that validation accepts (its repairs included: merged duplicates, triangles
+   * turned to agree with their neighbours and to face outward) is meshed as validated:
+   * the same mesh as without --resolve. The arrangement reads the orientation as given,
+   * so on such an input turned inside out it would find an empty solid. */
+  if (opt->resolve != 1 && opt->resolve != 2)
+    return tr_error(TR_ERR_USAGE, "tr_options.resolve is %d: 0 (off), 1 (the union: pieces "
+                    "inside the solid dropped) or 2 (kept as internal facets)", opt->resolve);
+  if (!(*p)->xq) {
+    struct tr_plc *v = NULL;
+    TR_CHECK(tr_plc_copy(*p, &v));
+    tr_status st = tr_plc_validate(v, opt);
+    if (st == TR_OK) {
+      if (report)
+        fprintf(stderr, "tetrec: resolve: the input is valid as given: meshed as "
+                "validated\n");
+      tr_plc_destroy(*p);
+      *p = v;
+      return TR_OK;
+    }
+    tr_plc_destroy(v);
+    if (st == TR_ERR_NOMEM)
+      return st;
+    tr_error_clear();
+  }
   struct tr_plc *r = NULL;
   tr_resolve_info ri;
-  TR_CHECK(tr_resolve_plc(*p, mode, &r, &ri));
+  TR_CHECK(tr_resolve_plc(*p, opt->resolve, &r, &ri));
   if (report)
     fprintf(stderr, "tetrec: resolve: %llu improper pairs, %u pieces, %u on the boundary, %u "
             "internal, %u new vertices on it (%u exact rationals), %u connected parts%s, %.3f s\n",
