@@ -62,27 +62,35 @@ static int shape_frame(const double *const p[4], double buf[4][3], const double 
   return e;
 }
 
-/* cs[e] = the cosine of the angle between the normals of the two faces
- * at edge e (ECode order), clamped to [-1, 1]; 1 where a face has no normal. The
- * dihedral angle at e is pi minus its arccosine. p: coordinates shape_frame gave (framing
- * them again changes nothing, and cost a bounding box per call) */
-static void framed_cosines(const double *const p[4], double cs[6])
+/* The faces' normals of a tet (p: coordinates shape_frame gave): n[k] = (y - x) x (z - x)
+ * for face k's vertices x y z in tr_face_vtx's order, as constants (with the mesh's tables,
+ * another unit, the compiler could unroll nothing). n[1], n[2] and n[3] are the cross
+ * products v x w, w x u and u x v of u, v, w = b - a, c - a, d - a, the very operations
+ * the volume and the circumcentre take: those callers reuse them (tet_shape,
+ * tr_tet_min_cos) instead of making them twice. */
+static const uint8_t face_of[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+
+static void face_normal(const double *const p[4], int k, double n[3])
 {
-  /* tr_face_vtx and, per edge of tr_edge_vtx, the two faces through it (those opposite
-   * the other two vertices), as constants: with the mesh's tables (another unit) the
-   * compiler could unroll nothing, and the search for the two faces was a tenth of this
-   * function, the hottest of the sliver stage (tests/refine: dihedral_at_edge_matches_geometry) */
-  static const uint8_t fv[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+  const double *x = p[face_of[k][0]], *y = p[face_of[k][1]], *z = p[face_of[k][2]];
+  double e1[3], e2[3];
+  sub3(y, x, e1);
+  sub3(z, x, e2);
+  cross3(e1, e2, n);
+}
+
+/* cs[e] = the cosine of the angle between the normals n (face_normal) of the two faces
+ * at edge e (ECode order), clamped to [-1, 1]; 1 where a face has no normal. The
+ * dihedral angle at e is pi minus its arccosine. */
+static void normal_cosines(const double n[4][3], double cs[6])
+{
+  /* per edge of tr_edge_vtx, the two faces through it (those opposite the other two
+   * vertices), as constants: the search for them was a tenth of this function, the
+   * hottest of the sliver stage (tests/refine: dihedral_at_edge_matches_geometry) */
   static const uint8_t ef[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
-  double n[4][3], len[4];
-  for (int k = 0; k < 4; k++) {
-    const double *x = p[fv[k][0]], *y = p[fv[k][1]], *z = p[fv[k][2]];
-    double e1[3], e2[3];
-    sub3(y, x, e1);
-    sub3(z, x, e2);
-    cross3(e1, e2, n[k]);
+  double len[4];
+  for (int k = 0; k < 4; k++)
     len[k] = sqrt(dot3(n[k], n[k]));
-  }
   for (int e = 0; e < 6; e++) {
     int k = ef[e][0], l = ef[e][1];
     double c = len[k] > 0 && len[l] > 0 ? dot3(n[k], n[l]) / (len[k] * len[l]) : 1;
@@ -90,6 +98,16 @@ static void framed_cosines(const double *const p[4], double cs[6])
      * (libm's fmin was 4.7% of couplingdown --quality 1.414) */
     cs[e] = c >= 1 || c != c ? 1 : c <= -1 ? -1 : c;
   }
+}
+
+/* normal_cosines of the tet p (coordinates shape_frame gave: framing them again changes
+ * nothing, and cost a bounding box per call) */
+static void framed_cosines(const double *const p[4], double cs[6])
+{
+  double n[4][3];
+  for (int k = 0; k < 4; k++)
+    face_normal(p, k, n[k]);
+  normal_cosines(n, cs);
 }
 
 /* framed_cosines of any coordinates */
@@ -144,8 +162,12 @@ static int tet_shape(const double *a0, const double *b0, const double *c0, const
       finite = finite && isfinite(cc[i]);
     }
   if (dih || lo_cos) {
-    double cs[6], lo = 1;
-    framed_cosines(p, cs);
+    double cs[6], lo = 1, n[4][3];
+    face_normal(p, 0, n[0]);
+    memcpy(n[1], vw, sizeof vw); /* face_normal(p, 1), (2) and (3): the same operations */
+    memcpy(n[2], wu, sizeof wu);
+    memcpy(n[3], uv, sizeof uv);
+    normal_cosines(n, cs);
     for (int e = 0; e < 6 && dih; e++)
       dih[e] = tr_dihedral_of_cos(cs[e]);
     for (int e = 0; e < 6; e++)
@@ -168,15 +190,15 @@ double tr_tet_min_cos(const double *a, const double *b, const double *c, const d
   const double *p0[4] = {a, b, c, d}, *p[4];
   double buf[4][3];
   int fe = shape_frame(p0, buf, p);
-  /* the volume as tr_tet_shape computes it, the same operations in the same order */
-  double u[3], v[3], w[3], vw[3];
+  /* the volume as tr_tet_shape computes it, the same operations in the same order; v x w
+   * is face 1's normal */
+  double u[3], n[4][3];
+  for (int k = 0; k < 4; k++)
+    face_normal(p, k, n[k]);
   sub3(p[1], p[0], u);
-  sub3(p[2], p[0], v);
-  sub3(p[3], p[0], w);
-  cross3(v, w, vw);
-  *volume = fe ? ldexp(dot3(u, vw) / 6, 3 * fe) : dot3(u, vw) / 6;
+  *volume = fe ? ldexp(dot3(u, n[1]) / 6, 3 * fe) : dot3(u, n[1]) / 6;
   double cs[6], lo = 1;
-  framed_cosines(p, cs);
+  normal_cosines(n, cs);
   for (int e = 0; e < 6; e++)
     lo = cs[e] < lo ? cs[e] : lo; /* no NaN here */
   return lo;

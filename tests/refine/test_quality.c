@@ -93,6 +93,81 @@ static void min_dihedral_equals_smallest_of_six(void)
   }
 }
 
+/* The smallest cosine and the volume by their definition, each face's normal made on its
+ * own from its three vertices (y - x) x (z - x), faces in tr_face_vtx's order, the
+ * cosine at edge e that of the normals of the two faces through it (those opposite the
+ * edge's other two vertices), clamped to [-1, 1], 1 where a normal is zero; the volume
+ * (b - a) . ((c - a) x (d - a)) / 6. */
+static double min_cos_by_faces(const double p[4][3], double *volume)
+{
+  double n[4][3], len[4];
+  for (int k = 0; k < 4; k++) {
+    const double *x = p[tr_face_vtx[k][0]], *y = p[tr_face_vtx[k][1]], *z = p[tr_face_vtx[k][2]];
+    double e1[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]};
+    double e2[3] = {z[0] - x[0], z[1] - x[1], z[2] - x[2]};
+    n[k][0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[k][1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[k][2] = e1[0] * e2[1] - e1[1] * e2[0];
+    len[k] = sqrt(n[k][0] * n[k][0] + n[k][1] * n[k][1] + n[k][2] * n[k][2]);
+  }
+  double lo = 1;
+  for (int e = 0; e < 6; e++) {
+    int f[2], nf = 0;
+    for (int k = 0; k < 4; k++)
+      if (k != tr_edge_vtx[e][0] && k != tr_edge_vtx[e][1])
+        f[nf++] = k; /* the face opposite vertex k holds the edge */
+    const double *a = n[f[0]], *b = n[f[1]];
+    double c = len[f[0]] > 0 && len[f[1]] > 0
+                   ? (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (len[f[0]] * len[f[1]])
+                   : 1;
+    c = c >= 1 || c != c ? 1 : c <= -1 ? -1 : c;
+    lo = c < lo ? c : lo;
+  }
+  double u[3], v[3], w[3];
+  for (int k = 0; k < 3; k++) {
+    u[k] = p[1][k] - p[0][k];
+    v[k] = p[2][k] - p[0][k];
+    w[k] = p[3][k] - p[0][k];
+  }
+  *volume = (u[0] * (v[1] * w[2] - v[2] * w[1]) + u[1] * (v[2] * w[0] - v[0] * w[2]) +
+             u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+  return lo;
+}
+
+/* The measures share the face normals that the volume and the circumcentre also take
+ * (quality.c: v x w, w x u and u x v are the normals of faces 1, 2 and 3): tr_tet_min_cos,
+ * tr_tet_min_dihedral and tr_tet_shape give, bit for bit, the smallest cosine (its angle)
+ * and the volume of each face's normal made on its own, on random, nearly flat and flat
+ * tets and tets with two vertices the same. */
+static void measures_equal_the_per_face_definition(void)
+{
+  uint64_t r = 9001;
+  for (int it = 0; it < 20000; it++) {
+    double p[4][3];
+    random_tet(&r, p);
+    if (it % 4 == 1) /* nearly flat, or flat: d close to or on the plane of abc */
+      for (int k = 0; k < 3; k++)
+        p[3][k] = (p[0][k] + p[1][k] + p[2][k]) / 3 + (it % 8 == 1 ? 1e-9 : 0);
+    if (it % 4 == 2) /* a zero normal on two faces */
+      memcpy(p[2], p[1], sizeof p[1]);
+    double want_vol, want = min_cos_by_faces(p, &want_vol);
+    double vol, ratio, vol2, dih[6], r2, v3;
+    double lo = tr_tet_min_cos(p[0], p[1], p[2], p[3], &vol);
+    EXPECT(lo == want && vol == want_vol, "tet %d: min cosine %.17g vs %.17g, volume %.17g vs "
+           "%.17g", it, lo, want, vol, want_vol);
+    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol2, dih, NULL);
+    double m = tr_tet_min_dihedral(p[0], p[1], p[2], p[3], &r2, &v3);
+    double six = dih[0];
+    for (int e = 1; e < 6; e++)
+      six = fmin(six, dih[e]);
+    double angle = tr_dihedral_of_cos(want);
+    EXPECT(vol2 == want_vol && v3 == want_vol && (m == angle || (isnan(m) && isnan(angle))) &&
+               (six == angle || (isnan(six) && isnan(angle))),
+           "tet %d: tr_tet_shape / tr_tet_min_dihedral %.17g, %.17g vs %.17g degrees", it, six,
+           m, angle);
+  }
+}
+
 /* A tet scaled by a power of two has the same figures, bit for bit (the volume scaled
  * with it), on both sides of the frame's range (half extents 2^-240 and 2^240) and far
  * outside it: whether a tet is measured as given or in its frame, and by tr_tet_shape,
@@ -265,6 +340,7 @@ int main(int argc, char **argv)
       {"dihedral_at_edge", dihedral_at_edge_matches_geometry, NULL},
       {"cos_below", cos_below_screens_only_angles_under_the_bound, NULL},
       {"scale_invariant", measures_invariant_under_power_of_two_scaling, NULL},
+      {"per_face", measures_equal_the_per_face_definition, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
