@@ -46,15 +46,8 @@ static int classify(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t, tr_pi
   tr_isect x;
   if (memo)
     x = tr_segmemo_classify(memo, m, v);
-  else {
-    tr_point pa = tr_mesh_point(m, a), pb = tr_mesh_point(m, b), p[4];
-    const tr_point *pp[4];
-    for (int k = 0; k < 4; k++) {
-      p[k] = tr_mesh_point(m, v[k]);
-      pp[k] = &p[k];
-    }
-    x = tr_classify_segment_tet(&pa, &pb, pp);
-  }
+  else
+    x = tr_segmemo_classify_ids(m, a, b, v);
   int cut = 0;
   uint8_t ty[2] = {TR_DEG, TR_DEG}, code[2] = {0, 0};
   uint32_t nod[2] = {TR_NONE, TR_NONE};
