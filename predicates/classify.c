@@ -46,6 +46,11 @@ typedef struct clipper {
   const tr_point *a, *b;
   const tr_point *const *t;
   int drop, s;
+  /* segment-tet: the orientations by point number (tr_classify_segment_tet_o), and the
+   * tet vertex that is the point a / b (-1: none) */
+  tr_orient_fn o3;
+  void *ud;
+  int sa, sb;
 } clipper;
 
 /* A crossing that happens at an endpoint is that endpoint. */
@@ -388,7 +393,7 @@ tr_isect tr_classify_segment_triangle(const tr_point *a, const tr_point *b,
       r.n = 1, r.end[0] = h, r.end[0].on_seg = TR_SEG_A;
     return r;
   }
-  clipper c = {3, {0}, {0}, nsign_tri, a, b, t, k, s};
+  clipper c = {3, {0}, {0}, nsign_tri, a, b, t, k, s, NULL, NULL, -1, -1};
   for (int i = 0; i < 3; i++) {
     c.ga[i] = s * tr_orient2d_proj_p(t[(i + 1) % 3], t[(i + 2) % 3], a, k);
     c.gb[i] = s * tr_orient2d_proj_p(t[(i + 1) % 3], t[(i + 2) % 3], b, k);
@@ -414,47 +419,77 @@ static int nsign_tet(const clipper *c, int i, int j)
   for (int v = 0; v < 4; v++)
     if (v != i && v != j)
       kl[n++] = v;
-  const tr_point *tk = c->t[kl[0]], *tl = c->t[kl[1]];
-  if (tr_pt_same(tk, c->a) || tr_pt_same(tk, c->b) || tr_pt_same(tl, c->a) ||
-      tr_pt_same(tl, c->b))
+  if (kl[0] == c->sa || kl[0] == c->sb || kl[1] == c->sa || kl[1] == c->sb)
     return 0;
-  return parity4(i, j, kl[0], kl[1]) * tr_orient3d_p(tk, tl, c->b, c->a);
+  return parity4(i, j, kl[0], kl[1]) * c->o3(c->ud, kl[0], kl[1], TR_PT_B, TR_PT_A);
 }
 
-/* g_i(x): orientation of the tet with vertex i replaced by x (>= 0 inside) */
-static int g_tet(const tr_point *const t[4], int i, const tr_point *x)
+/* g_i(x) for x = a or b: orientation of the tet with vertex i replaced by x (>= 0
+ * inside); 0 without a predicate when x is another vertex of the tet */
+static int g_tet(const clipper *c, int i, int x)
 {
-  const tr_point *p[4] = {t[0], t[1], t[2], t[3]};
-  for (int j = 0; j < 4; j++)
-    if (j != i && tr_pt_same(t[j], x))
-      return 0;
+  int sx = x == TR_PT_A ? c->sa : c->sb;
+  if (sx >= 0 && sx != i)
+    return 0;
+  int p[4] = {0, 1, 2, 3};
   p[i] = x;
-  return tr_orient3d_p(p[0], p[1], p[2], p[3]);
+  return c->o3(c->ud, p[0], p[1], p[2], p[3]);
+}
+
+/* The clip of ab by the tet once a != b is known. */
+static tr_isect segment_tet(clipper *c)
+{
+  tr_isect r = {0, {{0, 0, 0}, {0, 0, 0}}};
+  for (int i = 0; i < 4; i++) {
+    c->ga[i] = g_tet(c, i, TR_PT_A);
+    if (c->ga[i] < 0)
+      c->gb[i] = g_tet(c, i, TR_PT_B);
+  }
+  /* early out: a constraint with both ends outside needs gb only where ga < 0 */
+  for (int i = 0; i < 4; i++)
+    if (c->ga[i] < 0 && c->gb[i] < 0)
+      return r;
+  for (int i = 0; i < 4; i++)
+    if (c->ga[i] >= 0)
+      c->gb[i] = g_tet(c, i, TR_PT_B);
+  return clip(c);
+}
+
+/* The points of a point-based classification, by number. */
+typedef struct pts6 {
+  const tr_point *p[6];
+} pts6;
+
+static int o3_points(void *ud, int p, int q, int r, int s)
+{
+  const pts6 *x = ud;
+  return tr_orient3d_p(x->p[p], x->p[q], x->p[r], x->p[s]);
 }
 
 tr_isect tr_classify_segment_tet(const tr_point *a, const tr_point *b, const tr_point *const t[4])
 {
-  tr_isect r = {0, {{0, 0, 0}, {0, 0, 0}}};
-  clipper c = {4, {0}, {0}, nsign_tet, a, b, t, 0, 1};
+  pts6 x = {{t[0], t[1], t[2], t[3], a, b}};
+  clipper c = {4, {0}, {0}, nsign_tet, a, b, t, 0, 1, o3_points, &x, -1, -1};
   for (int i = 0; i < 4; i++) {
-    c.ga[i] = g_tet(t, i, a);
-    if (c.ga[i] < 0)
-      c.gb[i] = g_tet(t, i, b);
+    if (c.sa < 0 && tr_pt_same(t[i], a))
+      c.sa = i;
+    if (c.sb < 0 && tr_pt_same(t[i], b))
+      c.sb = i;
   }
-  /* early out: a constraint with both ends outside needs gb only where ga < 0 */
-  for (int i = 0; i < 4; i++)
-    if (c.ga[i] < 0 && c.gb[i] < 0)
-      return r;
-  for (int i = 0; i < 4; i++)
-    if (c.ga[i] >= 0)
-      c.gb[i] = g_tet(t, i, b);
   if (tr_equal_p(a, b)) {
+    tr_isect r = {0, {{0, 0, 0}, {0, 0, 0}}};
     for (int i = 0; i < 4; i++)
-      if (c.ga[i] < 0)
+      if ((c.ga[i] = g_tet(&c, i, TR_PT_A)) < 0)
         return r;
     r.n = 1;
     r.end[0] = type_of(zero_mask(&c, POS_A), 4, POS_A);
     return r;
   }
-  return clip(&c);
+  return segment_tet(&c);
+}
+
+tr_isect tr_classify_segment_tet_o(tr_orient_fn o3, void *ud, int sa, int sb)
+{
+  clipper c = {4, {0}, {0}, nsign_tet, NULL, NULL, NULL, 0, 1, o3, ud, sa, sb};
+  return segment_tet(&c);
 }

@@ -86,6 +86,16 @@ tr_isect tr_classify_segment_triangle(const tr_point *a, const tr_point *b,
  * ends are typed by all the faces they lie on (e.g. along an edge: EDG/NOD ends). */
 tr_isect tr_classify_segment_tet(const tr_point *a, const tr_point *b, const tr_point *const t[4]);
 
+/* The same for a != b with the points known by number and every orientation asked of
+ * o3(ud, p, q, r, s), the exact sign of tr_orient3d_p of points p, q, r, s: 0..3 the
+ * tet's vertices, TR_PT_A and TR_PT_B the segment's ends; sa (sb) is the tet vertex that
+ * is the point a (b), -1 if none. The same answer as tr_classify_segment_tet, for callers
+ * that know their points by id and remember orientations (edge recovery asks the
+ * orientations of the same faces against the same ends over and over). */
+enum { TR_PT_A = 4, TR_PT_B = 5 };
+typedef int (*tr_orient_fn)(void *ud, int p, int q, int r, int s);
+tr_isect tr_classify_segment_tet_o(tr_orient_fn o3, void *ud, int sa, int sb);
+
 #ifdef __cplusplus
 }
 #endif

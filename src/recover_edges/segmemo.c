@@ -4,11 +4,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mesh/orient_memo.h"
+
 void tr_segmemo_init(tr_segmemo *g, const struct tr_mesh *m, uint32_t a, uint32_t b)
 {
+  (void)m;
   memset(g, 0, sizeof *g);
-  g->pa = tr_mesh_point(m, a);
-  g->pb = tr_mesh_point(m, b);
+  g->a = a;
+  g->b = b;
 }
 
 void tr_segmemo_free(tr_segmemo *g)
@@ -38,18 +41,38 @@ static tr_isect unpack(uint16_t r)
   return x;
 }
 
+/* The tet's vertices and the segment's ends by the numbers of tr_classify_segment_tet_o. */
+typedef struct ids6 {
+  const struct tr_mesh *m;
+  uint32_t v[6];
+} ids6;
+
+static int o3_ids(void *ud, int p, int q, int r, int s)
+{
+  const ids6 *x = ud;
+  return tr_mesh_orient(x->m, x->v[p], x->v[q], x->v[r], x->v[s]);
+}
+
+tr_isect tr_segmemo_classify_ids(const struct tr_mesh *m, uint32_t a, uint32_t b,
+                                 const uint32_t v[4])
+{
+  ids6 x = {m, {v[0], v[1], v[2], v[3], a, b}};
+  int sa = -1, sb = -1;
+  for (int k = 0; k < 4; k++) {
+    if (v[k] == a)
+      sa = k;
+    if (v[k] == b)
+      sb = k;
+  }
+  return tr_classify_segment_tet_o(o3_ids, &x, sa, sb);
+}
+
 tr_isect tr_segmemo_classify(tr_segmemo *g, const struct tr_mesh *m, const uint32_t v[4])
 {
   uint32_t known = tr_vtmap_get(&g->map, 4, v);
   if (known != TR_VTMAP_NONE)
     return unpack((uint16_t)known);
-  tr_point p[4];
-  const tr_point *pp[4];
-  for (int k = 0; k < 4; k++) {
-    p[k] = tr_mesh_point(m, v[k]);
-    pp[k] = &p[k];
-  }
-  tr_isect x = tr_classify_segment_tet(&g->pa, &g->pb, pp);
+  tr_isect x = tr_segmemo_classify_ids(m, g->a, g->b, v);
   uint16_t r = pack(&x);
   (void)tr_vtmap_put(&g->map, 4, v, r, NULL); /* no room: recomputed next time */
   return unpack(r);

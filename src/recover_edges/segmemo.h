@@ -15,7 +15,7 @@
 #include "mesh/mesh.h"
 
 typedef struct tr_segmemo {
-  tr_point pa, pb;
+  uint32_t a, b;
   tr_vtmap map; /* tet listing -> packed tr_isect: n, end types and codes (on_seg is
                   not kept) */
 } tr_segmemo;
@@ -25,5 +25,11 @@ void tr_segmemo_init(tr_segmemo *g, const struct tr_mesh *m, uint32_t a, uint32_
 void tr_segmemo_free(tr_segmemo *g);
 /* tr_classify_segment_tet(a, b, tet v) with end[].on_seg = 0; v must be a real tet. */
 tr_isect tr_segmemo_classify(tr_segmemo *g, const struct tr_mesh *m, const uint32_t v[4]);
+/* The same without a memo of tets, for segment ab of mesh vertices a != b (on_seg is
+ * set): the orientations go through the mesh's orientation memo (mesh/orient_memo.h)
+ * when it is on, which keeps the exact ones across tets that share a face and across the
+ * recovery's repeated searches for one segment. */
+tr_isect tr_segmemo_classify_ids(const struct tr_mesh *m, uint32_t a, uint32_t b,
+                                 const uint32_t v[4]);
 
 #endif

@@ -299,6 +299,56 @@ static void seg_tet_matches_oracle(void)
   clear_points();
 }
 
+/* tr_classify_segment_tet_o (points by number, orientations from a callback, the ends
+ * that are tet vertices named) answers as tr_classify_segment_tet on the points, also
+ * when a or b is a vertex of the tet (edge recovery's pipes start at one), and as the
+ * oracle. */
+typedef struct six {
+  const tr_point *p[6];
+} six;
+static int six_orient(void *ud, int p, int q, int r, int s)
+{
+  const six *x = ud;
+  return tr_orient3d_p(x->p[p], x->p[q], x->p[r], x->p[s]);
+}
+
+static void seg_tet_by_number_matches_points(void)
+{
+  init_points();
+  int shared = 0, nonempty = 0;
+  for (int it = 0; it < 20000; it++) {
+    for (int i = 0; i < NPTS; i++)
+      random_point(i, it % 4 == 3 && i % 2);
+    const tr_point *t[4] = {&PT[0], &PT[1], &PT[2], &PT[3]};
+    int o = tr_orient3d_p(t[0], t[1], t[2], t[3]);
+    if (o == 0)
+      continue;
+    if (o < 0)
+      t[0] = &PT[1], t[1] = &PT[0];
+    const tr_point *a = &PT[4], *b = &PT[5];
+    int sa = -1, sb = -1;
+    if (it % 3 == 1)
+      sa = it % 4, a = t[sa];
+    else if (it % 3 == 2)
+      sb = (it + 1) % 4, b = t[sb];
+    if (tr_equal_p(a, b))
+      continue;
+    six x = {{t[0], t[1], t[2], t[3], a, b}};
+    tr_isect got = tr_classify_segment_tet_o(six_orient, &x, sa, sb);
+    tr_isect want = tr_classify_segment_tet(a, b, t);
+    tr_isect ref = oracle_seg_tet(a, b, t);
+    shared += sa >= 0 || sb >= 0;
+    nonempty += want.n > 0;
+    CHECK(same(got, want) && same(want, ref), "iteration %d (a = vertex %d, b = vertex %d)", it,
+          sa, sb);
+    if (!same(got, want))
+      show("by number", got), show("on points", want);
+  }
+  CHECK(shared > 5000 && nonempty > 4000, "enough cases: %d with a shared vertex, %d meeting",
+        shared, nonempty);
+  clear_points();
+}
+
 static void seg_tri_matches_oracle(void)
 {
   init_points();
@@ -598,6 +648,7 @@ int main(int argc, char **argv)
 {
   static const check_case cases[] = {
       {"seg_tet_matches_oracle", seg_tet_matches_oracle},
+      {"seg_tet_by_number_matches_points", seg_tet_by_number_matches_points},
       {"seg_tri_matches_oracle", seg_tri_matches_oracle},
       {"seg_seg_matches_oracle", seg_seg_matches_oracle},
       {"seg_tet_consistent_with_faces", seg_tet_consistent_with_faces},

@@ -8,6 +8,7 @@
 #include "delaunay/delaunay.h"
 #include "mesh/check.h"
 #include "mesh/mesh.h"
+#include "mesh/orient_memo.h"
 #include "predicates.h"
 #include "tcommon.h"
 
@@ -192,6 +193,103 @@ static int validator_catches_corruption(void)
 
 /* The Delaunay mesh of the 4x4x4 integer grid (cospherical everywhere), validated; NULL
  * on failure. */
+/* 1 iff the two stores hold the same tets in the same slots, linked alike, with the same
+ * v2t and free list. */
+static int same_store(const struct tr_mesh *a, const struct tr_mesh *b)
+{
+  return a->nt == b->nt && a->nfree == b->nfree && a->free_head == b->free_head &&
+         a->nv == b->nv && !memcmp(a->tv, b->tv, 4 * (size_t)a->nt * sizeof *a->tv) &&
+         !memcmp(a->tn, b->tn, 4 * (size_t)a->nt * sizeof *a->tn) &&
+         !memcmp(a->flags, b->flags, a->nt) && !memcmp(a->v2t, b->v2t, a->nv * sizeof *a->v2t);
+}
+
+/* tr_mesh_replace reads the links of a 2-3 or 3-2 flip off the two configurations (not
+ * through the face table of other replacements): on every valid 2-3 flip of a Delaunay
+ * mesh and its undo (3-2), the store must end up as the general matching leaves it
+ * (tr_mesh_replace_open, which always matches faces), slot for slot; a list of the
+ * right size but another shape must still be refused with the mesh unchanged. */
+static int replace_flip_links_equal_general_matching(void)
+{
+  double pts[40 * 3];
+  for (int i = 0; i < 40 * 3; i++)
+    pts[i] = t_unif();
+  struct tr_mesh *a, *b;
+  EXPECT_OK(tr_delaunay_build(pts, 40, &a), "Delaunay A");
+  EXPECT_OK(tr_delaunay_build(pts, 40, &b), "Delaunay B");
+  EXPECT(same_store(a, b), "the same points give the same store");
+  mpq_t v0;
+  mpq_init(v0);
+  tr_mesh_volume6(a, v0);
+  uint32_t flips = 0, refused = 0, nt0 = a->nt;
+  for (uint32_t t = 0; t < nt0; t++)
+    for (int k = 0; k < 4; k++) {
+      if (!tr_tet_is_real(a, t))
+        break;
+      uint32_t c = a->tn[4 * t + k];
+      if (c == TR_NONE || !tr_tet_is_real(a, c >> 2))
+        continue;
+      uint32_t u = c >> 2, p = a->tv[4 * t + k], q = a->tv[4 * u + (c & 3)], f[3];
+      for (int i = 0; i < 3; i++)
+        f[i] = a->tv[4 * t + tr_face_vtx[k][i]];
+      int sg[3];
+      for (int i = 0; i < 3; i++)
+        sg[i] = tr_mesh_orient(a, p, q, f[i], f[(i + 1) % 3]);
+      if (!sg[0] || sg[1] != sg[0] || sg[2] != sg[0])
+        continue; /* pq does not cross the open face */
+      if (sg[0] < 0) {
+        uint32_t x = p;
+        p = q;
+        q = x;
+      }
+      uint32_t old[2] = {t, u}, nv[12], ida[3], idb[3], oldv[8];
+      memcpy(oldv, a->tv + 4 * t, 4 * sizeof *oldv);
+      memcpy(oldv + 4, a->tv + 4 * u, 4 * sizeof *oldv);
+      for (int i = 0; i < 3; i++) {
+        /* rotate the listing with i so that the slots of p and q vary over the flips */
+        uint32_t v[4] = {p, q, f[i], f[(i + 1) % 3]}, r[4];
+        static const int even[3][4] = {{0, 1, 2, 3}, {2, 0, 1, 3}, {1, 2, 0, 3}};
+        for (int j = 0; j < 4; j++)
+          r[j] = v[even[(i + t) % 3][j]];
+        memcpy(nv + 4 * i, r, sizeof r);
+      }
+      /* a wrong shape of the same size: one new tet takes a vertex from outside */
+      uint32_t bad[12];
+      memcpy(bad, nv, sizeof bad);
+      for (uint32_t w = 0; w < a->nv; w++)
+        if (w != p && w != q && w != f[0] && w != f[1] && w != f[2]) {
+          bad[4 * 2 + 3] = w;
+          break;
+        }
+      tr_status s = tr_mesh_replace(a, old, 2, bad, 3, NULL);
+      EXPECT(s == TR_ERR_INTERNAL && same_store(a, b),
+             "a 2-3 list with vertex %u from outside is refused, store unchanged (%s)",
+             bad[11], tr_status_name(s));
+      refused++;
+      EXPECT_OK(tr_mesh_replace(a, old, 2, nv, 3, ida), "2-3 flip");
+      EXPECT_OK(tr_mesh_replace_open(b, old, 2, nv, 3, idb), "2-3 flip, general matching");
+      EXPECT(same_store(a, b) && !memcmp(ida, idb, sizeof ida),
+             "2-3 flip of face %u:%d: the same store as the general matching", t, k);
+      EXPECT_OK(tr_check_mesh(a, TR_CHK_TOPOLOGY, v0), "valid after the 2-3 flip");
+      /* the undo, a 3-2 flip; its wrong shape: the edge pq kept in one tet */
+      uint32_t bad2[8] = {oldv[0], oldv[1], oldv[2], oldv[3], p, q, f[0], f[1]};
+      s = tr_mesh_replace(a, ida, 3, bad2, 2, NULL);
+      EXPECT(s == TR_ERR_INTERNAL && same_store(a, b),
+             "a 3-2 list keeping edge pq is refused, store unchanged (%s)", tr_status_name(s));
+      EXPECT_OK(tr_mesh_replace(a, ida, 3, oldv, 2, NULL), "3-2 flip");
+      EXPECT_OK(tr_mesh_replace_open(b, idb, 3, oldv, 2, NULL), "3-2 flip, general matching");
+      EXPECT(same_store(a, b), "3-2 flip back to face %u:%d: the same store as the general "
+             "matching", t, k);
+      EXPECT_OK(tr_check_mesh(a, TR_CHK_TOPOLOGY, v0), "valid after the 3-2 flip");
+      flips++;
+      break; /* one flip per tet */
+    }
+  EXPECT(flips > 20 && refused == flips, "2-3 and 3-2 flips compared: %u", flips);
+  mpq_clear(v0);
+  tr_mesh_destroy(a);
+  tr_mesh_destroy(b);
+  return 0;
+}
+
 static struct tr_mesh *grid4_delaunay(void)
 {
   double pts[64 * 3];
@@ -453,6 +551,8 @@ int main(int argc, char **argv)
     return codes_are_the_papers();
   if (!strcmp(c, "replace"))
     return replace_flips_keep_volume_and_links();
+  if (!strcmp(c, "replace_fast"))
+    return replace_flip_links_equal_general_matching();
   if (!strcmp(c, "validator"))
     return validator_catches_corruption();
   if (!strcmp(c, "ball_shell"))
