@@ -159,7 +159,9 @@ static int test_random(uint32_t np, int nseg, uint64_t seed, uint32_t range)
   return bad;
 }
 
-static int test_grid(void)
+/* The Delaunay mesh of the 4x4x4 integer grid (point i at (i%4, (i/4)%4, i/16)), or NULL
+ * with the message printed. */
+static struct tr_mesh *grid4(void)
 {
   double xyz[64 * 3];
   for (int i = 0; i < 64; i++) {
@@ -170,8 +172,16 @@ static int test_grid(void)
   struct tr_mesh *m;
   if (tr_delaunay_build(xyz, 64, &m) != TR_OK) {
     fprintf(stderr, "delaunay: %s\n", tr_last_error());
-    return 1;
+    return NULL;
   }
+  return m;
+}
+
+static int test_grid(void)
+{
+  struct tr_mesh *m = grid4();
+  if (!m)
+    return 1;
   /* (0,0,0)-(3,3,3) through (1,1,1),(2,2,2); (0,0,1)-(3,1,2); (1,0,0)-(2,3,0) in the
    * bottom face; (0,1,1)-(3,2,2) */
   uint32_t seg[] = {0, 63, 16, 3 + 4 + 32, 1, 2 + 12, 4 + 16, 3 + 8 + 32};
@@ -188,17 +198,9 @@ static int test_grid(void)
  * many of them segments lying in the hull's planes (exact zeros everywhere). */
 static int test_ghosts(void)
 {
-  double xyz[64 * 3];
-  for (int i = 0; i < 64; i++) {
-    xyz[3 * i] = i % 4;
-    xyz[3 * i + 1] = (i / 4) % 4;
-    xyz[3 * i + 2] = i / 16;
-  }
-  struct tr_mesh *m;
-  if (tr_delaunay_build(xyz, 64, &m) != TR_OK) {
-    fprintf(stderr, "delaunay: %s\n", tr_last_error());
+  struct tr_mesh *m = grid4();
+  if (!m)
     return 1;
-  }
   tr_pipe pipe = {0};
   uint32_t npipes = 0, nghosts = 0, nflat = 0;
   for (uint32_t a = 0; a < 64; a++)
