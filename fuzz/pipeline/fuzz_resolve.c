@@ -12,7 +12,9 @@
  *  - --resolve through the pipeline (tr_mesh_plc), rational corners included
  *    (TR_ERR_UNSUPPORTED, a limit said by name such as coordinates too large for the
  *    rays, is expected): the mesh validator and the exact conformity validator against
- *    the resolved surface, the tets' volume the solid's;
+ *    the resolved surface, the tets' volume the solid's; an input that validation
+ *    accepts (disjoint or nested shapes, some reversed) is meshed as validated: the
+ *    same tets and points as without --resolve, the volume its domain's;
  *  - `tetrec resolve` (tr_resolve_snap, doubles or floats): no improper pair in the
  *    result by the all-pairs test (not the grid the rounding loop used), and the result
  *    valid for tr_plc_validate; not converging (TR_ERR_SELF_INTERSECT naming the pair)
@@ -233,12 +235,29 @@ static int solid(const soup *s, const tr_plc *p, int scale, mpq_t v6)
   return ok;
 }
 
+/* The tets and points of m and n are the same, in the same order. */
+static int same_mesh(const tr_mesh *m, const tr_mesh *n)
+{
+  uint32_t nt = tr_mesh_num_tets(m), nv = tr_mesh_num_vertices(m);
+  return nt == tr_mesh_num_tets(n) && nv == tr_mesh_num_vertices(n) &&
+         !memcmp(tr_mesh_tets(m), tr_mesh_tets(n), sizeof(uint32_t) * 4 * (size_t)nt) &&
+         !memcmp(tr_mesh_points(m), tr_mesh_points(n), sizeof(double) * 3 * (size_t)nv);
+}
+
 static void mesh(const tr_plc *p, int mode, const mpq_t v6)
 {
   tr_options opt;
   tr_options_default(&opt);
   opt.verbose = 0;
   opt.resolve = mode;
+  /* an input that validation accepts (its orientation repaired) is meshed as without
+   * --resolve: then its domain, not the solid by winding number, is what the tets fill */
+  tr_plc *copy = NULL;
+  if (tr_plc_copy(p, &copy) != TR_OK)
+    finding("tr_plc_copy");
+  int valid = tr_plc_validate(copy, &opt) == TR_OK;
+  tr_plc_destroy(copy);
+  tr_error_clear();
   tr_mesh *m = NULL;
   tr_plc *used = NULL;
   /* the exact mesh: doubles that keep every tet positive may not exist at 2^-600 */
@@ -249,8 +268,16 @@ static void mesh(const tr_plc *p, int mode, const mpq_t v6)
     finding("tr_mesh_plc --resolve");
   if (tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, NULL) != TR_OK)
     finding("the mesh validator");
-  if (tr_check_conformity(m, used, v6, 0) != TR_OK)
+  if (tr_check_conformity(m, used, valid ? NULL : v6, 0) != TR_OK)
     finding("exact conformity to the resolved surface");
+  if (valid) {
+    tr_mesh *n = NULL;
+    opt.resolve = 0;
+    if (tr_mesh_plc_flags(p, &opt, &n, NULL, NULL, TR_PIPE_KEEP_EXACT) != TR_OK ||
+        !same_mesh(m, n))
+      finding("a valid input meshed otherwise with --resolve than without");
+    tr_mesh_destroy(n);
+  }
   tr_mesh_destroy(m);
   tr_plc_destroy(used);
 }
