@@ -280,11 +280,10 @@ typedef struct tr_options {
    * of the input's winding number (the cells where it is >= 1: the union of the
    * positively oriented parts) bounded by the exact arrangement of the input triangles;
    * pieces between two solid cells are dropped, or kept as internal facets with 2. An
-   * input whose winding number is not defined (open, or triangles oriented against their
-   * neighbours) is TR_ERR_OPEN naming the edge and triangles. An input that already
-   * bounds its solid as given (a valid closed surface; an outward shell nested in
-   * another is an internal facet, kept only with 2) is meshed unchanged: the same mesh
-   * as with 0. Boundary vertices that are rational points and no doubles are mesh
+   * input that validation accepts (with its repairs: duplicates merged, triangles turned
+   * to agree with their neighbours and outward) is meshed as validated: the same mesh as
+   * with 0. Of the others, one whose winding number is not defined (open, or triangles
+   * oriented against their neighbours) is TR_ERR_OPEN naming the edge and triangles. Boundary vertices that are rational points and no doubles are mesh
    * vertices with exact points (written exactly by the exact writers, rounded like Steiner
    * points otherwise); on such a surface surface_tolerance and hole points are not
    * implemented yet (TR_ERR_UNSUPPORTED naming the mode; region points work). 0

@@ -139,7 +139,8 @@ static const struct option {
     {"--resolve", NULL, C_MESH | C_CHECK,
      "mesh the solid of a self-intersecting or defective surface:\n"
      "the cells where its winding number is >= 1, bounded by the\n"
-     "exact arrangement of its triangles (docs/resolve.md); a\n"
+     "exact arrangement of its triangles (docs/resolve.md); an\n"
+     "input that validation accepts meshes as without it; a\n"
      "polygon that cannot be triangulated in its plane is read as\n"
      "a fan, with a warning; with check, validate against that\n"
      "surface"},
