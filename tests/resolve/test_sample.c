@@ -136,13 +136,13 @@ static int winding(const tr_plc *s, const box3 *tbox, const box3 *box, const dou
   return INT32_MIN;
 }
 
-/* Whether some tet of m holds p (closed tets, exactly). */
-static int in_mesh(const tr_mesh *m, const box3 *tetbox, const double *p)
+/* Whether some of m's nt tets holds p (closed tets, exactly). */
+static int in_mesh(const tr_mesh *m, uint32_t nt, const box3 *tetbox, const double *p)
 {
   tr_point P = tr_pt_d(p);
   const uint32_t *tv = tr_mesh_tets(m);
   box3 pb = point_box(&P, 1);
-  for (uint32_t t = 0; t < tr_mesh_num_tets(m); t++) {
+  for (uint32_t t = 0; t < nt; t++) {
     if (!boxes_meet(&pb, tetbox + t))
       continue;
     tr_point c[4];
@@ -398,7 +398,7 @@ static void check_one(const char *name, const tr_plc *s, tr_options opt, int nsa
       on++;
       continue;
     }
-    int inside = in_mesh(m, tetbox, p);
+    int inside = in_mesh(m, nt, tetbox, p);
     in += w >= 1;
     out += w < 1;
     if (inside != (w >= 1) && wrong++ < 5)
