@@ -134,14 +134,20 @@ done:
   return st;
 }
 
+static tr_status check_mode(int mode)
+{
+  if (mode != 1 && mode != 2)
+    return tr_error(TR_ERR_USAGE, "tr_options.resolve is %d: 0 (off), 1 (the union: pieces "
+                    "inside the solid dropped) or 2 (kept as internal facets)", mode);
+  return TR_OK;
+}
+
 tr_status tr_resolve_plc(const struct tr_plc *in, int mode, struct tr_plc **out,
                          tr_resolve_info *info)
 {
   *out = NULL;
   memset(info, 0, sizeof *info);
-  if (mode != 1 && mode != 2)
-    return tr_error(TR_ERR_USAGE, "tr_options.resolve is %d: 0 (off), 1 (the union: pieces "
-                    "inside the solid dropped) or 2 (kept as internal facets)", mode);
+  TR_CHECK(check_mode(mode));
   double c0 = now();
   tr_arrangement arr;
   tr_solid sol;
@@ -216,9 +222,7 @@ tr_status tr_resolve_replace(struct tr_plc **p, const tr_options *opt, int repor
    * turned to agree with their neighbours and to face outward) is meshed as validated:
    * the same mesh as without --resolve. The arrangement reads the orientation as given,
    * so on such an input turned inside out it would find an empty solid. */
-  if (opt->resolve != 1 && opt->resolve != 2)
-    return tr_error(TR_ERR_USAGE, "tr_options.resolve is %d: 0 (off), 1 (the union: pieces "
-                    "inside the solid dropped) or 2 (kept as internal facets)", opt->resolve);
+  TR_CHECK(check_mode(opt->resolve));
   if (!(*p)->xq) {
     struct tr_plc *v = NULL;
     TR_CHECK(tr_plc_copy(*p, &v));

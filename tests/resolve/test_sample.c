@@ -173,17 +173,6 @@ static int cmp_face(const void *x, const void *y)
   return 0;
 }
 
-static void sort3(uint32_t *v)
-{
-  for (int i = 0; i < 2; i++)
-    for (int j = 0; j < 2 - i; j++)
-      if (v[j] > v[j + 1]) {
-        uint32_t x = v[j];
-        v[j] = v[j + 1];
-        v[j + 1] = x;
-      }
-}
-
 /* Exact points made while splitting a face, freed together. */
 typedef struct {
   tr_qpoint **q;
@@ -312,7 +301,7 @@ static uint32_t check_boundary(const char *name, const tr_plc *s, const box3 *tb
       for (int i = 0, j = 0; i < 4; i++)
         if (i != k)
           x->v[j++] = tv[4 * (size_t)t + i];
-      sort3(x->v);
+      tr_sort3(x->v);
     }
   qsort(f, 4 * (size_t)nt, sizeof *f, cmp_face);
   uint32_t nb = 0, bad = 0;
