@@ -84,6 +84,11 @@ static int orient2d_raw(const double *a, const double *b, const double *c, doubl
 
 static double orient2d_adapt(const double *a, const double *b, const double *c)
 {
+  /* Three points on one axis-parallel line are collinear: exactly 0 without the
+   * expansions. Projections of CAD faces in axis planes (the self-intersection test,
+   * facet recovery) ask this often, and the filter cannot answer it (mx or my is 0). */
+  if ((a[0] == b[0] && a[0] == c[0]) || (a[1] == b[1] && a[1] == c[1]))
+    return 0;
   const double *p[3] = {a, b, c};
   if (!tr_exp_in_range(3, p, 2, O2_LO, O2_HI))
     return tr_gmp_lifted_det_sign(2, 0, p);
@@ -111,7 +116,7 @@ double tr_orient2d(const double a[2], const double b[2], const double c[2])
 {
   const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
   const double det = ux * vy - uy * vx;
-  const double mx = fmax(fabs(ux), fabs(vx)), my = fmax(fabs(uy), fabs(vy));
+  const double mx = tr_absmax3_(ux, vx, 0), my = tr_absmax3_(uy, vy, 0);
   if (mx >= O2_FLO && my >= O2_FLO && mx <= O2_FHI && my <= O2_FHI) {
     const double eb = O2_FILTER * mx * my;
     if (det > eb || -det > eb)
@@ -343,8 +348,7 @@ double tr_incircle(const double a[2], const double b[2], const double c[2], cons
   const double la = ax * ax + ay * ay, lb = bx * bx + by * by, lc = cx * cx + cy * cy;
   const double det = (la * (bx * cy - cx * by) + lb * (cx * ay - ax * cy)) +
                      lc * (ax * by - bx * ay);
-  const double mx = fmax(fmax(fabs(ax), fabs(bx)), fabs(cx));
-  const double my = fmax(fmax(fabs(ay), fabs(by)), fabs(cy));
+  const double mx = tr_absmax3_(ax, bx, cx), my = tr_absmax3_(ay, by, cy);
   if (mx >= IC_FLO && my >= IC_FLO && mx <= IC_FHI && my <= IC_FHI) {
     const double eb = IC_FILTER * mx * my * (mx * mx + my * my);
     if (det > eb || -det > eb)
