@@ -35,6 +35,9 @@ typedef struct {
   /* plane[t] != 0: triangle t lies in the plane {x_k = const}, k = (plane[t] & 3) - 1,
    * and bit 2 is set when its normal points to -x_k; NULL: the reference path */
   uint8_t *plane;
+  /* proj[t] (with plane): the axis k = proj[t] & 3 whose projection is t's 2D view, and
+   * bit 2 set when t is clockwise there; NO_PROJ: t is flat in every projection */
+  uint8_t *proj;
   uint32_t bx, by; /* the improper pair found first in (x, y) order, x < y; bx = n: none */
   /* collect mode (tr_input_self_intersection_pairs): every improper pair, 2 per pair */
   int collect, oom;
@@ -145,30 +148,50 @@ static int edges_hit(const struct tr_plc *plc, const uint32_t *t, const uint32_t
   return 0;
 }
 
+/* Sign of orient2d of (a, b, c) with axis `drop` left out. */
+static int o2(const struct tr_plc *plc, uint32_t a, uint32_t b, uint32_t c, int drop)
+{
+  return tr_sign(tr_orient2d_proj(P(plc, a), P(plc, b), P(plc, c), drop));
+}
+
+enum { NO_PROJ = 0xff };
+
+/* The 2D view of triangle it: the axis to leave out, and its orientation there (*st, 0
+ * only for a triangle flat in every projection). The reference path takes the first
+ * axis with a nonzero orientation; the others read proj[], where run() put the axis of
+ * the largest normal component. Any axis with a nonzero orientation projects t's plane
+ * one to one, so the choice decides nothing; it only avoids the axes along which a
+ * triangle in an axis plane is flat, whose exact zeros cost the adaptive stages. */
+static int projection(const sweep *s, uint32_t it, int *st)
+{
+  if (s->proj && s->proj[it] != NO_PROJ) {
+    *st = s->proj[it] & 4 ? -1 : 1;
+    return s->proj[it] & 3;
+  }
+  const uint32_t *t = s->plc->tris + 3 * (size_t)it;
+  int drop = 0;
+  *st = 0;
+  for (; drop < 3 && !*st; drop++)
+    *st = o2(s->plc, t[0], t[1], t[2], drop);
+  return drop - 1;
+}
+
 /* Triangles t and u sharing exactly the edge (a, b), with third corners p and q: they
  * meet only in that edge unless they are coplanar with p and q on the same side of it
  * (neither corner is on the line: zero-area triangles were rejected before). On CAD
  * surfaces most neighbours are coplanar, where the general test classifies six
  * segments; this decides them with one orient3d and two orient2d. */
-static int edge_pair_improper(const sweep *s, uint32_t it, uint32_t a, uint32_t b, uint32_t p,
-                              uint32_t q)
+static int edge_pair_improper(const sweep *s, uint32_t it, uint32_t a, uint32_t b, uint32_t q)
 {
-  const struct tr_plc *plc = s->plc;
-  /* (a, b, p) is an even permutation of triangle it: the same plane and side */
+  /* (a, b, p) is an even permutation of triangle it: the same plane and side, and its
+   * orientation in the projection is t's */
   if (side(s, it, q) != 0)
     return 0;
-  for (int ax = 0; ax < 3; ax++) {
-    int sp = tr_sign(tr_orient2d_proj(P(plc, a), P(plc, b), P(plc, p), ax));
-    if (sp != 0)
-      return sp == tr_sign(tr_orient2d_proj(P(plc, a), P(plc, b), P(plc, q), ax));
-  }
-  return 1; /* p on the line ab: not a triangle; cannot happen after validation */
-}
-
-/* Sign of orient2d of (a, b, c) with axis `drop` left out. */
-static int o2(const struct tr_plc *plc, uint32_t a, uint32_t b, uint32_t c, int drop)
-{
-  return tr_sign(tr_orient2d_proj(P(plc, a), P(plc, b), P(plc, c), drop));
+  int sp;
+  int drop = projection(s, it, &sp);
+  if (!sp)
+    return 1; /* p on the line ab: not a triangle; cannot happen after validation */
+  return sp == o2(s->plc, a, b, q, drop);
 }
 
 /* Vertex p in the closed triangle t (2D, t of orientation st != 0). */
@@ -189,12 +212,12 @@ static int in_closed(const struct tr_plc *plc, const uint32_t *t, int st, uint32
  * other's boundary, properly or through a corner. Plane-free orient2d tests replace the
  * exact zero orient3d of the general path, which on the flat faces of CAD models was
  * most of the validation's time. */
-static int coplanar_improper(const struct tr_plc *plc, const uint32_t *t, const uint32_t *u)
+static int coplanar_improper(const sweep *s, uint32_t it, uint32_t iu)
 {
-  int drop = 0, st = 0;
-  for (; drop < 3 && !st; drop++)
-    st = o2(plc, t[0], t[1], t[2], drop);
-  drop--;
+  const struct tr_plc *plc = s->plc;
+  const uint32_t *t = plc->tris + 3 * (size_t)it, *u = plc->tris + 3 * (size_t)iu;
+  int st;
+  int drop = projection(s, it, &st);
   int su = o2(plc, u[0], u[1], u[2], drop);
   for (int k = 0; k < 3; k++) {
     int ut = u[k] == t[0] || u[k] == t[1] || u[k] == t[2];
@@ -215,6 +238,39 @@ static int coplanar_improper(const struct tr_plc *plc, const uint32_t *t, const 
   return 0;
 }
 
+/* x in the closed cone at v spanned by a and b, where s = sign orient2d(v, a, b) != 0:
+ * the cone of an angle under 180 degrees is where the two half-planes through v, left
+ * of va and right of vb (for s > 0), meet. */
+static int in_cone(const struct tr_plc *plc, uint32_t v, uint32_t a, uint32_t b, int s,
+                   uint32_t x, int drop)
+{
+  return s * o2(plc, v, a, x, drop) >= 0 && s * o2(plc, v, x, b, drop) >= 0;
+}
+
+/* Coplanar t = (v, a, b) and u = (v, c, d) sharing only v: near v each is its cone (the
+ * closed angle at v), and each lies in its cone, so they meet beyond v iff the cones
+ * share a ray. Two closed arcs of directions, each under 180 degrees, meet iff one holds
+ * an end of the other: at most eight orient2d where coplanar_improper asks up to 45. A
+ * fan of triangles around a vertex of a flat CAD face is made of such pairs. */
+static int coplanar_fan_improper(const sweep *s, uint32_t it, uint32_t iu)
+{
+  const struct tr_plc *plc = s->plc;
+  const uint32_t *t = plc->tris + 3 * (size_t)it, *u = plc->tris + 3 * (size_t)iu;
+  int st, kv = 0, ku = 0;
+  int drop = projection(s, it, &st);
+  while (t[kv] != u[0] && t[kv] != u[1] && t[kv] != u[2])
+    kv++;
+  while (u[ku] != t[kv])
+    ku++;
+  uint32_t v = t[kv], a = t[(kv + 1) % 3], b = t[(kv + 2) % 3];
+  uint32_t c = u[(ku + 1) % 3], d = u[(ku + 2) % 3];
+  int su = o2(plc, v, c, d, drop);
+  if (!st || !su)
+    return coplanar_improper(s, it, iu); /* flat: not after validation */
+  return in_cone(plc, v, a, b, st, c, drop) || in_cone(plc, v, a, b, st, d, drop) ||
+         in_cone(plc, v, c, d, su, a, drop) || in_cone(plc, v, c, d, su, b, drop);
+}
+
 static int improper(const sweep *s, uint32_t i, uint32_t j)
 {
   const struct tr_plc *plc = s->plc;
@@ -230,7 +286,7 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
       uq = k;
   }
   if (shared == 2)
-    return edge_pair_improper(s, i, t[(tp + 1) % 3], t[(tp + 2) % 3], t[tp], u[uq]);
+    return edge_pair_improper(s, i, t[(tp + 1) % 3], t[(tp + 2) % 3], u[uq]);
   if (shared < 2) {
     /* the non-shared corners of u against the plane of t: all on one side, the pair is
      * fine; all on it, the coplanar test */
@@ -239,7 +295,8 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
     if (strictly_one_side(cu))
       return 0;
     if (!cu[0] && !cu[1])
-      return coplanar_improper(plc, t, u);
+      return shared == 1 && s->plane ? coplanar_fan_improper(s, i, j)
+                                     : coplanar_improper(s, i, j);
     sides(s, j, i, ct);
     if (strictly_one_side(ct))
       return 0;
@@ -481,7 +538,8 @@ static tr_status run(sweep *sw, int method)
   sweep s = *sw;
   uint32_t n = plc->ntris;
   s.lo = malloc(sizeof(double) * 6 * (size_t)(n ? n : 1));
-  s.plane = method == TR_SELFINT_REFERENCE ? NULL : malloc(n ? n : 1);
+  s.plane = method == TR_SELFINT_REFERENCE ? NULL : malloc(2 * (size_t)(n ? n : 1));
+  s.proj = s.plane ? s.plane + n : NULL;
   tr_status st = TR_OK;
   if (!s.lo || (method != TR_SELFINT_REFERENCE && !s.plane)) {
     free(s.lo);
@@ -497,6 +555,21 @@ static tr_status run(sweep *sw, int method)
         int o = tr_sign(tr_orient2d_proj(a, b, c, k));
         s.plane[t] = o ? (uint8_t)((k + 1) | (o < 0 ? 4 : 0)) : 0;
       }
+    int k = 0;
+    if (s.plane[t]) {
+      k = (s.plane[t] & 3) - 1;
+    } else { /* the largest normal component, in doubles: only a choice */
+      double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+      double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+      double nx = fabs(uy * vz - uz * vy), ny = fabs(uz * vx - ux * vz),
+             nz = fabs(ux * vy - uy * vx);
+      k = ny > nx ? 1 : 0;
+      k = nz > (k ? ny : nx) ? 2 : k;
+    }
+    int o = tr_sign(tr_orient2d_proj(a, b, c, k));
+    for (int j = 1; j < 3 && !o; j++) /* the doubles chose a flat axis */
+      o = tr_sign(tr_orient2d_proj(a, b, c, k = (k + 1) % 3));
+    s.proj[t] = o ? (uint8_t)(k | (o < 0 ? 4 : 0)) : NO_PROJ;
   }
   s.hi = s.lo + 3 * (size_t)n;
   for (uint32_t t = 0; t < n; t++)
@@ -523,7 +596,7 @@ static tr_status run(sweep *sw, int method)
   free(s.lo);
   free(s.plane);
   s.lo = s.hi = NULL;
-  s.plane = NULL;
+  s.plane = s.proj = NULL;
   *sw = s;
   return st;
 }
@@ -540,7 +613,7 @@ tr_status tr_input_self_intersection_pairs(const struct tr_plc *plc, int method,
                                            uint32_t **pairs, size_t *npairs)
 {
   uint32_t n = plc->ntris;
-  sweep s = {plc, NULL, NULL, 0, NULL, n, n, 1, 0, NULL, 0, 0};
+  sweep s = {plc, NULL, NULL, 0, NULL, NULL, n, n, 1, 0, NULL, 0, 0};
   *pairs = NULL;
   *npairs = 0;
   tr_status st = run(&s, method);
@@ -562,7 +635,7 @@ tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_
                                          int method)
 {
   uint32_t n = plc->ntris;
-  sweep s = {plc, NULL, NULL, 0, NULL, n, n, 0, 0, NULL, 0, 0};
+  sweep s = {plc, NULL, NULL, 0, NULL, NULL, n, n, 0, 0, NULL, 0, 0};
   tr_status st = run(&s, method);
   if (st == TR_OK && s.bx < n) {
     uint32_t x = s.bx, y = s.by;

@@ -358,6 +358,75 @@ static void t_selfint_narrow(void)
   EXPECT(kinds[0] > 100 && kinds[1] > 100, "both verdicts (%d, %d)", kinds[0], kinds[1]);
 }
 
+/* Coplanar pairs sharing one vertex (fans around a vertex of a flat CAD face) take the
+ * cone test at that vertex; the general path tests corners and edge crossings. Random
+ * soups of triangles on a 5x5 grid in one plane, the plane z = 0 or a tilted one
+ * (z = x/4 + y/2, exact), must list the same improper pairs both ways, and fan pairs of
+ * both verdicts must occur. */
+static void t_selfint_fan(void)
+{
+  int fans[2] = {0, 0};
+  for (int round = 0; round < 200; round++) {
+    enum { NT = 20, NV = 25 };
+    double X[NV * 3];
+    uint32_t T[3 * NT];
+    for (int v = 0; v < NV; v++) {
+      double x = v % 5, y = v / 5;
+      X[3 * v] = x;
+      X[3 * v + 1] = y;
+      X[3 * v + 2] = round % 2 ? 0.25 * x + 0.5 * y : 0;
+    }
+    uint32_t nt = 0;
+    while (nt < NT) {
+      uint32_t *t = T + 3 * nt;
+      for (int k = 0; k < 3; k++)
+        t[k] = (uint32_t)(sb_unif() * NV);
+      int dup = tr_orient2d_proj(X + 3 * t[0], X + 3 * t[1], X + 3 * t[2], 2) == 0;
+      for (uint32_t o = 0; o < nt && !dup; o++) {
+        int same = 0;
+        for (int i = 0; i < 3; i++)
+          for (int j = 0; j < 3; j++)
+            same += T[3 * o + i] == t[j];
+        dup = same == 3;
+      }
+      if (!dup)
+        nt++;
+    }
+    struct tr_plc *p = NULL;
+    if (tr_plc_create(&p) != TR_OK || tr_plc_set(p, X, NV, T, nt, NULL) != TR_OK) {
+      EXPECT(0, "round %d: soup built", round);
+      tr_plc_destroy(p);
+      continue;
+    }
+    uint32_t *pr = NULL, *pa = NULL;
+    size_t nr = 0, na = 0;
+    EXPECT(tr_input_self_intersection_pairs(p, TR_SELFINT_REFERENCE, &pr, &nr) == TR_OK,
+           "round %d: reference", round);
+    EXPECT(tr_input_self_intersection_pairs(p, TR_SELFINT_ALL_PAIRS, &pa, &na) == TR_OK,
+           "round %d: shortcuts", round);
+    EXPECT(nr == na && (!nr || !memcmp(pr, pa, 2 * nr * sizeof *pr)),
+           "round %d: the shortcuts list %zu improper pairs, the general path %zu", round, na, nr);
+    for (uint32_t i = 0; i < nt; i++)
+      for (uint32_t j = i + 1; j < nt; j++) {
+        int shared = 0;
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++)
+            shared += T[3 * i + a] == T[3 * j + b];
+        if (shared != 1)
+          continue;
+        int bad = 0;
+        for (size_t k = 0; k < nr && !bad; k++)
+          bad = pr[2 * k] == i && pr[2 * k + 1] == j;
+        fans[bad]++;
+      }
+    free(pr);
+    free(pa);
+    tr_plc_destroy(p);
+  }
+  EXPECT(fans[0] > 1000 && fans[1] > 1000, "fan pairs of both verdicts (%d fine, %d improper)",
+         fans[0], fans[1]);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -365,6 +434,7 @@ int main(int argc, char **argv)
       {"selfint_broad", t_selfint_broad, NULL},
       {"selfint_coplanar", t_selfint_coplanar, NULL},
       {"selfint_narrow", t_selfint_narrow, NULL},
+      {"selfint_fan", t_selfint_fan, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
