@@ -5,7 +5,11 @@
  * the mesh validator and the exact conformity validator (tmesh.h). */
 #include <math.h>
 
+#include <stdint.h>
+#include <string.h>
+
 #include "refine/quality.h"
+#include "refine/refine_impl.h" /* rf_cos_angle */
 #include "../pipeline/tmesh.h"
 
 /* The smallest corner of input triangle t of plc, degrees, by arccosine. */
@@ -146,12 +150,74 @@ static void cube_has_no_thin_triangle(void)
   tr_plc_destroy(plc);
 }
 
+/* The corner measure's definition: each difference vector scaled by ldexp to its largest
+ * component's binade, then the cosine. */
+static double cos_by_ldexp(const double *o, const double *p, const double *q)
+{
+  double a[3], b[3], ma = 0, mb = 0;
+  for (int i = 0; i < 3; i++) {
+    a[i] = p[i] - o[i];
+    b[i] = q[i] - o[i];
+    ma = fmax(ma, fabs(a[i]));
+    mb = fmax(mb, fabs(b[i]));
+  }
+  int ea = 0, eb = 0;
+  if (ma > 0 && isfinite(ma))
+    frexp(ma, &ea);
+  if (mb > 0 && isfinite(mb))
+    frexp(mb, &eb);
+  for (int i = 0; i < 3; i++) {
+    a[i] = ldexp(a[i], -ea);
+    b[i] = ldexp(b[i], -eb);
+  }
+  double n = sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
+  return n > 0 ? (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / n : 1;
+}
+
+static uint64_t rng = 0x9e3779b97f4a7c15u;
+static double unif(void)
+{
+  rng ^= rng << 13;
+  rng ^= rng >> 7;
+  rng ^= rng << 17;
+  return (double)(rng >> 11) * 0x1p-53;
+}
+
+/* rf_cos_angle scales by one power of two per vector, not by ldexp per component: the same
+ * double bit for bit, over scales from 2^-1074 to 2^1000, components far apart in size
+ * (subnormal products), zero and equal points. */
+static void cos_angle_equals_definition(void)
+{
+  int bad = 0, subnormal = 0;
+  for (int n = 0; n < 200000 && bad < 5; n++) {
+    int e = (int)(unif() * 2080) - 1074, spread = (int)(unif() * 60);
+    double x[3][3];
+    for (int k = 0; k < 3; k++)
+      for (int i = 0; i < 3; i++) {
+        double m = unif() - 0.5;
+        x[k][i] = ldexp(m, e - (unif() < 0.3 ? spread : 0));
+        if (unif() < 0.05)
+          x[k][i] = 0;
+      }
+    if (n % 97 == 0)
+      memcpy(x[1], x[0], sizeof x[0]);
+    double got = rf_cos_angle(x[0], x[1], x[2]), want = cos_by_ldexp(x[0], x[1], x[2]);
+    subnormal += fabs(x[1][0] - x[0][0]) < 0x1p-1022 && x[1][0] != x[0][0];
+    if (memcmp(&got, &want, sizeof got) && !(isnan(got) && isnan(want))) {
+      bad++;
+      EXPECT(0, "case %d (scale 2^%d): rf_cos_angle %a, by ldexp %a", n, e, got, want);
+    }
+  }
+  EXPECT(subnormal > 1000, "subnormal differences exercised: %d", subnormal);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
       {"thin_prism", prism_with_thin_ends, NULL},
       {"merged", merged_thin_triangles_do_not_count, NULL},
       {"cube", cube_has_no_thin_triangle, NULL},
+      {"cos_angle", cos_angle_equals_definition, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
