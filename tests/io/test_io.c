@@ -9,6 +9,7 @@
 #include "core/plc.h"
 #include "input/validate.h"
 #include "io/io.h"
+#include "io/lex.h"
 #include "io/soup.h"
 #include "qpoint.h"
 #include "tetrec.h"
@@ -615,6 +616,78 @@ static void t_fmt_double(void)
   }
 }
 
+/* tr_parse_double against strtod on one token: the same verdict, the same double bit for
+ * bit (sign of zero included). */
+static int pd_check(const char *tok)
+{
+  double got = 0, want;
+  char *end;
+  int r = tr_parse_double(tok, strlen(tok), &got);
+  want = strtod(tok, &end);
+  int ok_want = *tok && *end == '\0' && isfinite(want);
+  if (!ok_want) {
+    EXPECT(r != 0, "'%s': strtod refuses it, tr_parse_double gives %a", tok, got);
+    return r != 0;
+  }
+  EXPECT(r == 0 && !memcmp(&got, &want, sizeof got), "'%s': %a (status %d), strtod %a", tok,
+         got, r, want);
+  return r == 0 && !memcmp(&got, &want, sizeof got);
+}
+
+/* The decimal reader's fast path (an exact product or quotient by a power of ten) and its
+ * hand-over to strtod: random tokens of every shape (signs, no integer or no fraction part,
+ * leading zeros, 1 to 22 digits, exponents to +-40, the limits 2^53 and 10^22), and
+ * malformed ones, each read as strtod reads it. */
+static void t_parse_double(void)
+{
+  const char *fixed[] = {"0", "-0", "+0", "-0.0", "0.", ".5", "-.5", "5.", "1e22", "1e23",
+                         "1e-22", "1e-23", "9007199254740992", "9007199254740993",
+                         "-9007199254740993e-5", "1234567890123456789", "12345678901234567890",
+                         "0.1", "0.3", "2.5e-3", "7E+2", "1e0001", "1e", "1e+", "e5", ".", "-",
+                         "+", "1.2.3", "0x1p3", "inf", "nan", "1e400", "1e-400", "4.9e-324",
+                         "00000000000000000001", "1,5", "1 ", "1e5x"};
+  for (size_t i = 0; i < sizeof fixed / sizeof fixed[0]; i++)
+    pd_check(fixed[i]);
+  int bad = 0;
+  for (int i = 0; i < 300000 && bad < 10; i++) {
+    char tok[80];
+    size_t n = 0;
+    uint64_t r = fd_next();
+    if (r & 1)
+      tok[n++] = r & 2 ? '-' : '+';
+    int id = (int)(fd_next() % 12), fd = (int)(fd_next() % 12);
+    if (r & 4)
+      id = (int)(fd_next() % 23);
+    for (int k = 0; k < id; k++)
+      tok[n++] = (char)('0' + fd_next() % 10);
+    if ((r & 8) || !id)
+      tok[n++] = '.';
+    for (int k = 0; k < fd; k++)
+      tok[n++] = (char)('0' + fd_next() % 10);
+    if (r & 16)
+      n += (size_t)snprintf(tok + n, sizeof tok - n, "%c%d", r & 32 ? 'e' : 'E',
+                            (int)(fd_next() % 81) - 40);
+    if ((r & 0x3c0) == 0x3c0) /* now and then a stray character */
+      tok[fd_next() % (n + 1)] = "x.e-+ "[fd_next() % 6];
+    tok[n] = '\0';
+    bad += !pd_check(tok);
+  }
+  /* what writers print: %.17g (and 15, 16, 18 digits) of random doubles, and 19 digits
+   * of the midpoints between neighbouring doubles, which round to 64 bits onto the
+   * midpoint itself about one time in ten (the x87 path must hand those over) */
+  for (int i = 0; i < 200000 && bad < 10; i++) {
+    char tok[80];
+    double x = ldexp(1 + (double)(fd_next() >> 12) * 0x1p-52, (int)(fd_next() % 100) - 50);
+    if (i % 2) {
+      snprintf(tok, sizeof tok, "%.*g", 15 + (int)(fd_next() % 4), x);
+    } else {
+      long double mid = (long double)x + (long double)(nextafter(x, INFINITY) - x) / 2;
+      snprintf(tok, sizeof tok, "%.18Le", mid);
+    }
+    bad += !pd_check(tok);
+  }
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 4) {
@@ -633,7 +706,7 @@ int main(int argc, char **argv)
                {"mesh_write", t_mesh_write},     {"malformed", t_malformed},
                {"repairs", t_repairs},           {"edge_sort", t_edge_sort},
                {"cavity", t_cavity},             {"polygon_random", t_polygon_random},
-               {"fmt_double", t_fmt_double}};
+               {"fmt_double", t_fmt_double},     {"parse_double", t_parse_double}};
   for (size_t i = 0; i < sizeof tests / sizeof tests[0]; i++)
     if (!strcmp(argv[1], tests[i].name)) {
       tests[i].fn();
