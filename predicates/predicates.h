@@ -146,6 +146,45 @@ static inline int tr_orient3d_filter(const double a[3], const double b[3], const
   return 0;
 }
 
+/* A triangle (a, b, c) prepared for many orient3d(a, b, c, d) with d varying (the side of
+ * points against a plane): the cross product n of u = b - a and v = c - a and the axis
+ * maxima of |u| and |v|. tr_o3plane_filter(P, a, d) evaluates, operation for operation,
+ * tr_orient3d_filter(a, d, b, c): w (uy vz - uz vy) + ... with w = d - a (an even
+ * permutation: the value of orient3d(a, b, c, d)), so that filter's bound decides it, and
+ * it returns 1 with *det of the right sign, or 0 (then tr_orient3d_adapt(a, b, c, d)). */
+typedef struct tr_o3plane {
+  double n[3], m[3];
+} tr_o3plane;
+
+static inline void tr_o3plane_init(tr_o3plane *P, const double a[3], const double b[3],
+                                   const double c[3])
+{
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  P->n[0] = uy * vz - uz * vy;
+  P->n[1] = uz * vx - ux * vz;
+  P->n[2] = ux * vy - uy * vx;
+  P->m[0] = tr_absmax3_(ux, vx, 0);
+  P->m[1] = tr_absmax3_(uy, vy, 0);
+  P->m[2] = tr_absmax3_(uz, vz, 0);
+}
+
+static inline int tr_o3plane_filter(const tr_o3plane *P, const double a[3], const double d[3],
+                                    double *det)
+{
+  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+  *det = (wx * P->n[0] + wy * P->n[1]) + wz * P->n[2];
+  const double mx = tr_absmax3_(wx, P->m[0], 0), my = tr_absmax3_(wy, P->m[1], 0),
+               mz = tr_absmax3_(wz, P->m[2], 0);
+  if (mx >= TR_O3_FLO && my >= TR_O3_FLO && mz >= TR_O3_FLO && mx <= TR_O3_FHI &&
+      my <= TR_O3_FHI && mz <= TR_O3_FHI) {
+    const double eb = TR_O3_FILTER * mx * my * mz;
+    if (*det > eb || -*det > eb)
+      return 1;
+  }
+  return 0;
+}
+
 static inline double tr_orient3d(const double a[3], const double b[3], const double c[3],
                                  const double d[3])
 {

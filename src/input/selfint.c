@@ -38,6 +38,8 @@ typedef struct {
   /* proj[t] (with plane): the axis k = proj[t] & 3 whose projection is t's 2D view, and
    * bit 2 set when t is clockwise there; NO_PROJ: t is flat in every projection */
   uint8_t *proj;
+  /* o3[t] (with plane): t's cross product for the side of points (tr_o3plane) */
+  tr_o3plane *o3;
   uint32_t bx, by; /* the improper pair found first in (x, y) order, x < y; bx = n: none */
   /* collect mode (tr_input_self_intersection_pairs): every improper pair, 2 per pair */
   int collect, oom;
@@ -76,6 +78,9 @@ static int side(const sweep *s, uint32_t it, uint32_t v)
     int sg = (x > o) - (x < o);
     return c & 4 ? -sg : sg;
   }
+  double det;
+  if (s->o3 && tr_o3plane_filter(&s->o3[it], P(s->plc, t[0]), P(s->plc, v), &det))
+    return tr_sign(det);
   return tr_sign(tr_orient3d(P(s->plc, t[0]), P(s->plc, t[1]), P(s->plc, t[2]), P(s->plc, v)));
 }
 
@@ -540,10 +545,12 @@ static tr_status run(sweep *sw, int method)
   s.lo = malloc(sizeof(double) * 6 * (size_t)(n ? n : 1));
   s.plane = method == TR_SELFINT_REFERENCE ? NULL : malloc(2 * (size_t)(n ? n : 1));
   s.proj = s.plane ? s.plane + n : NULL;
+  s.o3 = s.plane ? malloc(sizeof *s.o3 * (n ? n : 1)) : NULL;
   tr_status st = TR_OK;
-  if (!s.lo || (method != TR_SELFINT_REFERENCE && !s.plane)) {
+  if (!s.lo || (method != TR_SELFINT_REFERENCE && (!s.plane || !s.o3))) {
     free(s.lo);
     free(s.plane);
+    free(s.o3);
     return tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
   }
   for (uint32_t t = 0; t < n && s.plane; t++) {
@@ -570,6 +577,7 @@ static tr_status run(sweep *sw, int method)
     for (int j = 1; j < 3 && !o; j++) /* the doubles chose a flat axis */
       o = tr_sign(tr_orient2d_proj(a, b, c, k = (k + 1) % 3));
     s.proj[t] = o ? (uint8_t)(k | (o < 0 ? 4 : 0)) : NO_PROJ;
+    tr_o3plane_init(&s.o3[t], a, b, c);
   }
   s.hi = s.lo + 3 * (size_t)n;
   for (uint32_t t = 0; t < n; t++)
@@ -595,8 +603,10 @@ static tr_status run(sweep *sw, int method)
     st = by_sweep(&s, n);
   free(s.lo);
   free(s.plane);
+  free(s.o3);
   s.lo = s.hi = NULL;
   s.plane = s.proj = NULL;
+  s.o3 = NULL;
   *sw = s;
   return st;
 }
@@ -613,7 +623,7 @@ tr_status tr_input_self_intersection_pairs(const struct tr_plc *plc, int method,
                                            uint32_t **pairs, size_t *npairs)
 {
   uint32_t n = plc->ntris;
-  sweep s = {plc, NULL, NULL, 0, NULL, NULL, n, n, 1, 0, NULL, 0, 0};
+  sweep s = {plc, NULL, NULL, 0, NULL, NULL, NULL, n, n, 1, 0, NULL, 0, 0};
   *pairs = NULL;
   *npairs = 0;
   tr_status st = run(&s, method);
@@ -635,7 +645,7 @@ tr_status tr_input_self_intersections_by(const struct tr_plc *plc, const uint32_
                                          int method)
 {
   uint32_t n = plc->ntris;
-  sweep s = {plc, NULL, NULL, 0, NULL, NULL, n, n, 0, 0, NULL, 0, 0};
+  sweep s = {plc, NULL, NULL, 0, NULL, NULL, NULL, n, n, 0, 0, NULL, 0, 0};
   tr_status st = run(&s, method);
   if (st == TR_OK && s.bx < n) {
     uint32_t x = s.bx, y = s.by;

@@ -7,6 +7,7 @@
 #include "ref.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 static int fails;
 
@@ -22,6 +23,21 @@ static double w_o2(const double (*p)[3]) { return tr_orient2d(p[0], p[1], p[2]);
 static double w_o2x(const double (*p)[3]) { return tr_orient2d_exact(p[0], p[1], p[2]); }
 static double w_o3(const double (*p)[3]) { return tr_orient3d(p[0], p[1], p[2], p[3]); }
 static double w_o3x(const double (*p)[3]) { return tr_orient3d_exact(p[0], p[1], p[2], p[3]); }
+/* orient3d through the cached plane of (p0, p1, p2): its filter, then the adaptive
+ * stages; the filter's value must also be tr_orient3d_filter(p0, p3, p1, p2)'s, bit for bit */
+static double w_o3p(const double (*p)[3])
+{
+  tr_o3plane P;
+  tr_o3plane_init(&P, p[0], p[1], p[2]);
+  double det, det2;
+  int ok = tr_o3plane_filter(&P, p[0], p[3], &det);
+  int ok2 = tr_orient3d_filter(p[0], p[3], p[1], p[2], &det2);
+  if (ok != ok2 || memcmp(&det, &det2, sizeof det)) {
+    fprintf(stderr, "o3plane: filter %d %a, tr_orient3d_filter %d %a\n", ok, det, ok2, det2);
+    fails++;
+  }
+  return ok ? det : tr_orient3d_adapt(p[0], p[1], p[2], p[3]);
+}
 static double w_ic(const double (*p)[3]) { return tr_incircle(p[0], p[1], p[2], p[3]); }
 static double w_icx(const double (*p)[3]) { return tr_incircle_exact(p[0], p[1], p[2], p[3]); }
 static double w_is(const double (*p)[3]) { return tr_insphere(p[0], p[1], p[2], p[3], p[4]); }
@@ -33,6 +49,7 @@ static double w_isx(const double (*p)[3])
 static const pred_t preds[] = {
     {"orient2d", 3, 2, 0, w_o2, w_o2x, ref_orient2d},
     {"orient3d", 4, 3, 0, w_o3, w_o3x, ref_orient3d},
+    {"orient3d_plane", 4, 3, 0, w_o3p, w_o3x, ref_orient3d},
     {"incircle", 4, 2, 1, w_ic, w_icx, ref_incircle},
     {"insphere", 5, 3, 1, w_is, w_isx, ref_insphere},
 };
