@@ -285,13 +285,18 @@ static int dih_bin(double dih)
   return b < 0 ? 0 : b >= TR_QUALITY_DIH_BINS ? TR_QUALITY_DIH_BINS - 1 : b;
 }
 
-/* The bin of cosine c: the edges below it (counted without branches: a binary search's
- * were mispredicted half the time), or, inside a guard band, the bin of its angle. */
+/* The bin of cosine c: the edges below it, or, inside a guard band, the bin of its
+ * angle. The edges ascend, so their count is a binary search; written as conditional
+ * adds of a halving step (five, for 17 edges), which compile to conditional moves: a
+ * branching search was mispredicted half the time, and counting all 17 cost 3x more. */
+_Static_assert(TR_QUALITY_DIH_BINS - 1 <= 31, "cos_bin's steps from 16 reach 31 edges");
 static int cos_bin(const cos_edges *e, double c)
 {
   int n = 0;
-  for (int k = 0; k < TR_QUALITY_DIH_BINS - 1; k++)
-    n += e->edge[k] < c;
+  for (int step = 16; step; step >>= 1) {
+    int k = n + step;
+    n = k <= TR_QUALITY_DIH_BINS - 1 && e->edge[k - 1] < c ? k : n;
+  }
   if ((n > 0 && near_cos(c, e->edge[n - 1])) ||
       (n < TR_QUALITY_DIH_BINS - 1 && near_cos(c, e->edge[n])))
     return dih_bin(tr_dihedral_of_cos(c));
