@@ -300,6 +300,8 @@ static int cmd_mesh(const tr_cli_args *a)
   opt.sizing = plc->vsize;
   opt.nsizing = plc->vsize ? plc->npoints : 0;
   unsigned flags = a->keep_steiner ? TR_PIPE_KEEP_STEINER : 0;
+  if (!a->stats) /* quality figures only go to --stats (and -v's notes) */
+    flags |= TR_PIPE_NO_QUALITY;
   double t_read = stats.stage_seconds[TR_STAGE_READ];
   s = tr_mesh_plc_flags(plc, &opt, &mesh, &stats, NULL, flags);
   stats.stage_seconds[TR_STAGE_READ] = t_read; /* the pipeline filled the others */

@@ -34,8 +34,12 @@ tr_status tr_mesh_plc_ex(const tr_plc *plc, const tr_options *opt, tr_mesh **out
 enum {
   TR_PIPE_KEEP_EXACT = 1u << 0, /* the caller writes exact coordinates (--exact .node;
                                    set by tr_options.keep_exact) */
-  TR_PIPE_KEEP_STEINER = 1u << 1 /* the recovery's Steiner points as they are, no
-                                    suppression (src/suppress; --keep-steiner) */
+  TR_PIPE_KEEP_STEINER = 1u << 1, /* the recovery's Steiner points as they are, no
+                                     suppression (src/suppress; --keep-steiner) */
+  TR_PIPE_NO_QUALITY = 1u << 2 /* the caller shows no quality figures (the CLI without
+                                  --stats): unless a note about a dihedral target or
+                                  refinement needs them, the stats' dihedral, radius-edge
+                                  and thin-input fields are not measured and stay 0 */
 };
 tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *opt, tr_mesh **out,
                             tr_stats *stats, tr_plc **used, unsigned flags);

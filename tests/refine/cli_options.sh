@@ -6,10 +6,11 @@
 # --keep-edges without refinement are warned about, the point budget stops a run with exit 8, a
 # message and the mesh made so far written, and --stats carries the quality rows; `check
 # --quality R/D -a V` counts the tets over the bounds; --refine-rounds gives the same mesh on
-# 1 and 2 threads. Every mesh written is checked.
-# usage: cli_options.sh TETREC SURFACE WORKDIR
+# 1 and 2 threads; quality figures are measured only where shown (--stats, the notes), the
+# mesh the same either way. Every mesh written is checked.
+# usage: cli_options.sh TETREC SURFACE WORKDIR THIN (THIN: a surface with thin triangles)
 set -u
-T=$1 S=$2 W=$3
+T=$1 S=$2 W=$3 THIN=$4
 rm -rf "$W" # "no mesh written" below means by this run
 mkdir -p "$W"
 fails=0
@@ -71,4 +72,14 @@ expect 0 "" -- mesh "$S" -a 0.0005 --refine-rounds 256 -j 2 -q -o "$W/r2.node" -
 cmp -s "$W/r1.node" "$W/r2.node" && cmp -s "$W/r1.ele" "$W/r2.ele" || { echo "FAIL: --refine-rounds: 1 and 2 threads differ"; fails=$((fails + 1)); }
 expect 0 "conforms exactly.*volume equals" -- check "$S" "$W/r2.node"
 expect 1 "refine-rounds needs a whole number from 1 to 4294967295, not .0." -- mesh "$S" --quality 1.414 --refine-rounds 0 -o "$W/r0.node"
+# without --stats no quality figure is measured unless a note shows it: the same files, the
+# stats rows there with --stats, and the note on thin input triangles (refinement) and the
+# dihedral target's warning (above) still printed
+expect 0 "" -- mesh "$S" -o "$W/n1.node" -q
+expect 0 "" -- mesh "$S" -o "$W/n2.node" -q --stats "$W/n2.json"
+cmp -s "$W/n1.node" "$W/n2.node" && cmp -s "$W/n1.ele" "$W/n2.ele" && cmp -s "$W/n1.face" "$W/n2.face" ||
+  { echo "FAIL: the mesh differs with --stats"; fails=$((fails + 1)); }
+grep -qE '"min_dihedral": [1-9]' "$W/n2.json" || { echo "FAIL: --stats without quality figures"; fails=$((fails + 1)); }
+expect 0 "stand on input triangles with a corner under 10 degrees" -- mesh "$THIN" --quality 1.414 -o "$W/t.node" --exact
+expect 0 "conforms exactly" -- check "$THIN" "$W/t.node"
 exit $((fails != 0))
