@@ -125,6 +125,19 @@ static inline double tr_insphere_det_(const double a[3], const double b[3], cons
   return (la * ma - lb * mb) + (lc * mc - ld * md);
 }
 
+/* The orient3d filter's verdict on the floating determinant det, given the largest
+ * |difference| per axis: 1 iff the bound (orient.c, TR_O3_FILTER) fixes its sign. */
+static inline int tr_orient3d_certain_(double det, double mx, double my, double mz)
+{
+  if (mx >= TR_O3_FLO && my >= TR_O3_FLO && mz >= TR_O3_FLO && mx <= TR_O3_FHI &&
+      my <= TR_O3_FHI && mz <= TR_O3_FHI) {
+    const double eb = TR_O3_FILTER * mx * my * mz;
+    if (det > eb || -det > eb)
+      return 1;
+  }
+  return 0;
+}
+
 /* The static filter of tr_orient3d alone: 1 with *det of the right sign, or 0 when only
  * the adaptive stages can decide (callers that remember the hard cases, such as the
  * flips' orientation memo, ask this first). */
@@ -135,15 +148,8 @@ static inline int tr_orient3d_filter(const double a[3], const double b[3], const
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
   const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
   *det = tr_orient3d_det_(a, b, c, d);
-  const double mx = tr_absmax3_(ux, vx, wx), my = tr_absmax3_(uy, vy, wy),
-               mz = tr_absmax3_(uz, vz, wz);
-  if (mx >= TR_O3_FLO && my >= TR_O3_FLO && mz >= TR_O3_FLO && mx <= TR_O3_FHI &&
-      my <= TR_O3_FHI && mz <= TR_O3_FHI) {
-    const double eb = TR_O3_FILTER * mx * my * mz;
-    if (*det > eb || -*det > eb)
-      return 1;
-  }
-  return 0;
+  return tr_orient3d_certain_(*det, tr_absmax3_(ux, vx, wx), tr_absmax3_(uy, vy, wy),
+                              tr_absmax3_(uz, vz, wz));
 }
 
 /* A triangle (a, b, c) prepared for many orient3d(a, b, c, d) with d varying (the side of
@@ -174,15 +180,8 @@ static inline int tr_o3plane_filter(const tr_o3plane *P, const double a[3], cons
 {
   const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
   *det = (wx * P->n[0] + wy * P->n[1]) + wz * P->n[2];
-  const double mx = tr_absmax3_(wx, P->m[0], 0), my = tr_absmax3_(wy, P->m[1], 0),
-               mz = tr_absmax3_(wz, P->m[2], 0);
-  if (mx >= TR_O3_FLO && my >= TR_O3_FLO && mz >= TR_O3_FLO && mx <= TR_O3_FHI &&
-      my <= TR_O3_FHI && mz <= TR_O3_FHI) {
-    const double eb = TR_O3_FILTER * mx * my * mz;
-    if (*det > eb || -*det > eb)
-      return 1;
-  }
-  return 0;
+  return tr_orient3d_certain_(*det, tr_absmax3_(wx, P->m[0], 0), tr_absmax3_(wy, P->m[1], 0),
+                              tr_absmax3_(wz, P->m[2], 0));
 }
 
 static inline double tr_orient3d(const double a[3], const double b[3], const double c[3],

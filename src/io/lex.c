@@ -127,7 +127,7 @@ static int fast_double(uint64_t m, int e, double *v)
  * double unless q is a midpoint between two doubles (its 11 bits below the double's 53
  * are 10000000000): the midpoints are 64-bit numbers, so the decimal lies strictly
  * between the same two midpoints as q. Only where long double ops round to 64 bits (the
- * precision control can be lowered: checked once). */
+ * precision control can be lowered, and valgrind emulates 53 bits: checked each call). */
 static int wide_double(uint64_t m, int e, double *v)
 {
 #if (defined(__x86_64__) || defined(__i386__)) && LDBL_MANT_DIG == 64

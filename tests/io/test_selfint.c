@@ -293,6 +293,47 @@ static void t_selfint_broad(void)
   }
 }
 
+/* t is already in the soup T[0..nt) (the same three corners in any order)? */
+static int soup_has(const uint32_t *T, uint32_t nt, const uint32_t *t)
+{
+  for (uint32_t o = 0; o < nt; o++) {
+    int same = 0;
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++)
+        same += T[3 * o + i] == t[j];
+    if (same == 3)
+      return 1;
+  }
+  return 0;
+}
+
+/* The soup's improper pairs by the general path (TR_SELFINT_REFERENCE) and with the
+ * shortcuts (TR_SELFINT_ALL_PAIRS) must be the same list. Returns 0 when the soup could not
+ * be built, else 1 with the reference list in *pr (the caller frees it), *nr pairs. */
+static int shortcuts_as_reference(const double *X, uint32_t nv, const uint32_t *T, uint32_t nt,
+                                  int round, uint32_t **pr, size_t *nr)
+{
+  struct tr_plc *p = NULL;
+  uint32_t *pa = NULL;
+  size_t na = 0;
+  *pr = NULL;
+  *nr = 0;
+  if (tr_plc_create(&p) != TR_OK || tr_plc_set(p, X, nv, T, nt, NULL) != TR_OK) {
+    EXPECT(0, "round %d: soup built", round);
+    tr_plc_destroy(p);
+    return 0;
+  }
+  EXPECT(tr_input_self_intersection_pairs(p, TR_SELFINT_REFERENCE, pr, nr) == TR_OK,
+         "round %d: reference", round);
+  EXPECT(tr_input_self_intersection_pairs(p, TR_SELFINT_ALL_PAIRS, &pa, &na) == TR_OK,
+         "round %d: shortcuts", round);
+  EXPECT(*nr == na && (!na || !memcmp(*pr, pa, 2 * na * sizeof *pa)),
+         "round %d: the shortcuts list %zu improper pairs, the general path %zu", round, na, *nr);
+  free(pa);
+  tr_plc_destroy(p);
+  return 1;
+}
+
 /* The narrow phase's shortcuts (the side of a point from one coordinate for a triangle
  * in a plane x_k = const; two orient3d for pairs sharing one vertex that straddle each
  * other's planes) against the general path (TR_SELFINT_REFERENCE): random soups of
@@ -323,37 +364,17 @@ static void t_selfint_narrow(void)
       int flat = 1; /* zero area: the validation rejects those before this test */
       for (int d = 0; d < 3; d++)
         flat = flat && tr_orient2d_proj(a, b, c, d) == 0;
-      int dup = 0;
-      for (uint32_t o = 0; o < nt && !dup; o++) {
-        int same = 0;
-        for (int i = 0; i < 3; i++)
-          for (int j = 0; j < 3; j++)
-            same += T[3 * o + i] == t[j];
-        dup = same == 3;
-      }
-      if (!flat && !dup)
+      if (!flat && !soup_has(T, nt, t))
         nt++;
     }
-    struct tr_plc *p = NULL;
-    if (tr_plc_create(&p) != TR_OK || tr_plc_set(p, X, 27, T, nt, NULL) != TR_OK) {
-      EXPECT(0, "round %d: soup built", round);
-      tr_plc_destroy(p);
+    uint32_t *pr;
+    size_t nr;
+    if (!shortcuts_as_reference(X, 27, T, nt, round, &pr, &nr))
       continue;
-    }
-    uint32_t *pr = NULL, *pa = NULL;
-    size_t nr = 0, na = 0;
-    EXPECT(tr_input_self_intersection_pairs(p, TR_SELFINT_REFERENCE, &pr, &nr) == TR_OK,
-           "round %d: reference", round);
-    EXPECT(tr_input_self_intersection_pairs(p, TR_SELFINT_ALL_PAIRS, &pa, &na) == TR_OK,
-           "round %d: shortcuts", round);
-    EXPECT(nr == na && (!nr || !memcmp(pr, pa, 2 * nr * sizeof *pr)),
-           "round %d: the shortcuts list %zu improper pairs, the general path %zu", round, na, nr);
     /* both verdicts exercised: pairs of the soup that meet improperly and that do not */
     kinds[0] += nr < (size_t)nt * (nt - 1) / 2;
     kinds[1] += nr > 0;
     free(pr);
-    free(pa);
-    tr_plc_destroy(p);
   }
   EXPECT(kinds[0] > 100 && kinds[1] > 100, "both verdicts (%d, %d)", kinds[0], kinds[1]);
 }
@@ -381,31 +402,14 @@ static void t_selfint_fan(void)
       uint32_t *t = T + 3 * nt;
       for (int k = 0; k < 3; k++)
         t[k] = (uint32_t)(sb_unif() * NV);
-      int dup = tr_orient2d_proj(X + 3 * t[0], X + 3 * t[1], X + 3 * t[2], 2) == 0;
-      for (uint32_t o = 0; o < nt && !dup; o++) {
-        int same = 0;
-        for (int i = 0; i < 3; i++)
-          for (int j = 0; j < 3; j++)
-            same += T[3 * o + i] == t[j];
-        dup = same == 3;
-      }
-      if (!dup)
+      if (tr_orient2d_proj(X + 3 * t[0], X + 3 * t[1], X + 3 * t[2], 2) != 0 &&
+          !soup_has(T, nt, t))
         nt++;
     }
-    struct tr_plc *p = NULL;
-    if (tr_plc_create(&p) != TR_OK || tr_plc_set(p, X, NV, T, nt, NULL) != TR_OK) {
-      EXPECT(0, "round %d: soup built", round);
-      tr_plc_destroy(p);
+    uint32_t *pr;
+    size_t nr;
+    if (!shortcuts_as_reference(X, NV, T, nt, round, &pr, &nr))
       continue;
-    }
-    uint32_t *pr = NULL, *pa = NULL;
-    size_t nr = 0, na = 0;
-    EXPECT(tr_input_self_intersection_pairs(p, TR_SELFINT_REFERENCE, &pr, &nr) == TR_OK,
-           "round %d: reference", round);
-    EXPECT(tr_input_self_intersection_pairs(p, TR_SELFINT_ALL_PAIRS, &pa, &na) == TR_OK,
-           "round %d: shortcuts", round);
-    EXPECT(nr == na && (!nr || !memcmp(pr, pa, 2 * nr * sizeof *pr)),
-           "round %d: the shortcuts list %zu improper pairs, the general path %zu", round, na, nr);
     for (uint32_t i = 0; i < nt; i++)
       for (uint32_t j = i + 1; j < nt; j++) {
         int shared = 0;
@@ -420,8 +424,6 @@ static void t_selfint_fan(void)
         fans[bad]++;
       }
     free(pr);
-    free(pa);
-    tr_plc_destroy(p);
   }
   EXPECT(fans[0] > 1000 && fans[1] > 1000, "fan pairs of both verdicts (%d fine, %d improper)",
          fans[0], fans[1]);
