@@ -37,9 +37,10 @@ tr_isect tr_segmemo_classify_ids(const struct tr_mesh *m, uint32_t a, uint32_t b
  * ask for the same tets (a classification is a function of the tet's vertex list and
  * the segment's ends, so a kept one never goes stale while no point is taken back: the
  * caller parks only while no vertex is removed). At most TR_SEGMEMO_STORE_MAX entries
- * are kept over all memos; a memo that would pass it is dropped (its classifications
- * are then recomputed: never a different answer). Zero-initialise. */
-#define TR_SEGMEMO_STORE_MAX (1u << 21)
+ * are kept over all memos (at most about 80 MB); a memo that would pass it is dropped
+ * (its classifications are then recomputed: never a different answer). On 65395.stl
+ * --keep-surface they raised the peak memory from 15 to 25 MB. Zero-initialise. */
+#define TR_SEGMEMO_STORE_MAX (1u << 20)
 typedef struct tr_segmemo_store {
   tr_vtmap idx;      /* (a, b) -> index in g */
   tr_segmemo *g;     /* parked memos (an empty map where one was taken back) */
