@@ -77,3 +77,55 @@ tr_isect tr_segmemo_classify(tr_segmemo *g, const struct tr_mesh *m, const uint3
   (void)tr_vtmap_put(&g->map, 4, v, r, NULL); /* no room: recomputed next time */
   return unpack(r);
 }
+
+void tr_segmemo_take(tr_segmemo_store *s, tr_segmemo *g, const struct tr_mesh *m, uint32_t a,
+                     uint32_t b)
+{
+  tr_segmemo_free(g);
+  tr_segmemo_init(g, m, a, b);
+  uint32_t key[2] = {a, b}, i = tr_vtmap_get(&s->idx, 2, key);
+  if (i == TR_VTMAP_NONE || !s->g[i].map.cap)
+    return;
+  *g = s->g[i];
+  s->entries -= g->map.n;
+  memset(&s->g[i], 0, sizeof s->g[i]);
+}
+
+void tr_segmemo_park(tr_segmemo_store *s, tr_segmemo *g)
+{
+  uint32_t a = g->a, b = g->b, key[2] = {a, b}, i = tr_vtmap_get(&s->idx, 2, key);
+  int room = g->map.n && s->entries + g->map.n <= TR_SEGMEMO_STORE_MAX;
+  if (room && i == TR_VTMAP_NONE) {
+    if (s->n == s->cap) {
+      uint32_t nc = s->cap ? 2 * s->cap : 64;
+      tr_segmemo *q = realloc(s->g, nc * sizeof *q);
+      room = q != NULL;
+      if (q) {
+        s->g = q;
+        s->cap = nc;
+      }
+    }
+    if (room && tr_vtmap_put(&s->idx, 2, key, s->n, NULL) == TR_OK) {
+      i = s->n++;
+      memset(&s->g[i], 0, sizeof s->g[i]);
+    } else {
+      room = 0;
+    }
+  }
+  if (room && !s->g[i].map.cap) {
+    s->g[i] = *g;
+    s->entries += g->map.n;
+    memset(g, 0, sizeof *g);
+  }
+  tr_segmemo_free(g);
+  tr_segmemo_init(g, NULL, a, b);
+}
+
+void tr_segmemo_store_free(tr_segmemo_store *s)
+{
+  for (uint32_t i = 0; i < s->n; i++)
+    tr_segmemo_free(&s->g[i]);
+  free(s->g);
+  tr_vtmap_free(&s->idx);
+  memset(s, 0, sizeof *s);
+}

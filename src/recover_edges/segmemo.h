@@ -32,4 +32,29 @@ tr_isect tr_segmemo_classify(tr_segmemo *g, const struct tr_mesh *m, const uint3
 tr_isect tr_segmemo_classify_ids(const struct tr_mesh *m, uint32_t a, uint32_t b,
                                  const uint32_t v[4]);
 
+/* Memos of the sub-segments that pass 1 of edge recovery leaves missing, kept for its
+ * next flip level and for pass 2, which walk and flip around the same segment again and
+ * ask for the same tets (a classification is a function of the tet's vertex list and
+ * the segment's ends, so a kept one never goes stale while no point is taken back: the
+ * caller parks only while no vertex is removed). At most TR_SEGMEMO_STORE_MAX entries
+ * are kept over all memos (at most about 80 MB); a memo that would pass it is dropped
+ * (its classifications are then recomputed: never a different answer). On 65395.stl
+ * --keep-surface they raised the peak memory from 15 to 25 MB. Zero-initialise. */
+#define TR_SEGMEMO_STORE_MAX (1u << 20)
+typedef struct tr_segmemo_store {
+  tr_vtmap idx;      /* (a, b) -> index in g */
+  tr_segmemo *g;     /* parked memos (an empty map where one was taken back) */
+  uint32_t n, cap;
+  uint64_t entries;  /* classifications held by the parked memos */
+} tr_segmemo_store;
+
+/* Frees *g and starts it as the memo of ab: the parked one if there is one (taken out
+ * of the store), else an empty one. */
+void tr_segmemo_take(tr_segmemo_store *s, tr_segmemo *g, const struct tr_mesh *m, uint32_t a,
+                     uint32_t b);
+/* Parks *g under its segment (or frees it when the store is full or out of memory);
+ * *g is left empty either way. */
+void tr_segmemo_park(tr_segmemo_store *s, tr_segmemo *g);
+void tr_segmemo_store_free(tr_segmemo_store *s);
+
 #endif

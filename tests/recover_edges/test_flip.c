@@ -5,7 +5,7 @@
  * a cube (ghosts stay consistent), and a missing input edge recovered by the flips of the
  * edge driver without a Steiner point.
  * Usage: test_flip ring N | ring_invalid | protected | hull_cube | flip23 | recover N |
- *        edge_tet | sxset | blocked23 */
+ *        edge_tet | sxset | blocked23 | shell_kept */
 #include <gmp.h>
 #include <math.h>
 #include <stdio.h>
@@ -440,6 +440,70 @@ static int test_blocked23(void)
   return 0;
 }
 
+/* tr_flip_remove_edge_nm takes Shell(ab) from tr_flip_edge_tet's tet after its plain
+ * removal of ab failed; when that removal found its tet the same way and changed
+ * nothing, the shell it left in the journal's scratch is used instead. That is the same
+ * list, in the same order, for every interior edge of a random Delaunay mesh whose
+ * removal fails (those that succeed are undone, the mesh stays valid). */
+static int test_shell_kept(void)
+{
+  enum { NP = 60 };
+  double x[3 * NP];
+  unsigned long long r = 88172645463325252ull;
+  for (int i = 0; i < 3 * NP; i++) {
+    r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+    x[i] = (double)(r % 2001) / 1000.0 - 1.0;
+  }
+  struct tr_mesh *m;
+  CK(tr_delaunay_build(x, NP, &m));
+  mpq_t vol;
+  mpq_init(vol);
+  CK(tr_mesh_volume6(m, vol));
+  tr_sxset seen = {0};
+  tr_u32buf sh = {0};
+  int same = 0, removed = 0;
+  for (uint32_t t = 0; t < m->nt; t++)
+    for (int e = 0; e < 16 && !tr_tet_is_free(m, t) && tr_tet_is_real(m, t); e++) {
+      if ((e & 3) >= (e >> 2))
+        continue; /* the six edges (slot e & 3, slot e >> 2), each once */
+      uint32_t a = m->tv[4 * (size_t)t + (size_t)(e & 3)],
+               b = m->tv[4 * (size_t)t + (size_t)(e >> 2)], key[3] = {a, b, TR_NONE};
+      if (tr_sxset_add(&seen, key) != 1)
+        continue;
+      tr_flip_journal j;
+      memset(&j, 0, sizeof j);
+      int done, closed = 0;
+      CK(tr_flip_remove_edge_nm(m, a, b, TR_NONE, 1, NULL, NULL, &j, &done));
+      if (done) {
+        removed++;
+        CK(tr_flip_journal_undo(m, &j, 0));
+      } else {
+        uint32_t t1;
+        CK(tr_flip_edge_tet(m, a, b, &t1));
+        CK(tr_shell(m, a, b, t1, &sh, &closed));
+        if (closed) {
+          if (j.n || sh.n != j.shell.n || memcmp(sh.a, j.shell.a, sh.n * sizeof *sh.a))
+            FAIL("shell_kept: edge %u-%u: the removal left %zu shell tets, the shell has "
+                 "%zu (or a flip was kept)", a, b, j.shell.n, sh.n);
+          same++;
+        }
+      }
+      tr_flip_journal_free(&j);
+    }
+  if (!same || !removed)
+    FAIL("shell_kept: %d shells compared, %d edges removed: a case is not shown", same,
+         removed);
+  if (validate(m, vol, "shell_kept"))
+    return 1;
+  printf("shell_kept: %d failed removals left the edge's shell, %d removals undone\n", same,
+         removed);
+  tr_u32buf_free(&sh);
+  tr_sxset_free(&seen);
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2)
@@ -464,6 +528,8 @@ int main(int argc, char **argv)
     return test_sxset();
   if (!strcmp(w, "blocked23"))
     return test_blocked23();
+  if (!strcmp(w, "shell_kept"))
+    return test_shell_kept();
   fprintf(stderr, "unknown test %s\n", w);
   return 2;
 }
