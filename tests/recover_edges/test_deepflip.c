@@ -28,22 +28,16 @@
 #include "mesh/check.h"
 #include "recover_edges/edgeset.h"
 #include "recover_edges/pipe.h"
-
-static const unsigned CHECKS = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T | TR_CHK_EULER;
-static int failures;
-
-static uint64_t rng;
-static uint32_t next_u32(void)
-{
-  rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
-  return (uint32_t)(rng >> 33);
-}
+#include "trand.h"
 
 static int has_edge(struct tr_mesh *m, uint32_t a, uint32_t b)
 {
   int yes = 0;
   return tr_mesh_has_edge(m, a, b, &yes) == TR_OK && yes;
 }
+
+static const unsigned CHECKS = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T | TR_CHK_EULER;
+static int failures;
 
 /* Recovers the segments seg[0..2n) by flips, depth 3, then 4 .. maxd where that fails;
  * returns how many, or -1 on a failure; *extra: how many depth maxd recovered. */

@@ -301,6 +301,23 @@ static int test_recover(int n)
   return 0;
 }
 
+/* The Delaunay mesh of np points on a grid of 2001^3 in [-1, 1]^3 (xorshift, fixed seed):
+ * exact coincidences and coplanar sets among random ones. */
+static tr_status random_dt(uint32_t np, struct tr_mesh **m)
+{
+  double *x = malloc(sizeof *x * 3 * np);
+  if (!x)
+    return TR_ERR_NOMEM;
+  unsigned long long r = 88172645463325252ull;
+  for (uint32_t i = 0; i < 3 * np; i++) {
+    r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+    x[i] = (double)(r % 2001) / 1000.0 - 1.0;
+  }
+  tr_status st = tr_delaunay_build(x, np, m);
+  free(x);
+  return st;
+}
+
 /* tr_flip_edge_tet (the early-exit search of the flip drivers) gives exactly the tet that
  * scanning the whole of tr_ball(a, 1) gives: the first with vertex b, ghosts included,
  * TR_NONE when ab is not an edge. Checked for every vertex pair of a random Delaunay mesh
@@ -308,14 +325,8 @@ static int test_recover(int n)
 static int test_edge_tet(void)
 {
   enum { NP = 60 };
-  double x[3 * NP];
-  unsigned long long r = 88172645463325252ull;
-  for (int i = 0; i < 3 * NP; i++) {
-    r ^= r << 13, r ^= r >> 7, r ^= r << 17;
-    x[i] = (double)(r % 2001) / 1000.0 - 1.0;
-  }
   struct tr_mesh *m;
-  CK(tr_delaunay_build(x, NP, &m));
+  CK(random_dt(NP, &m));
   mpq_t vol;
   mpq_init(vol);
   CK(tr_mesh_volume6(m, vol));
@@ -448,14 +459,8 @@ static int test_blocked23(void)
 static int test_shell_kept(void)
 {
   enum { NP = 60 };
-  double x[3 * NP];
-  unsigned long long r = 88172645463325252ull;
-  for (int i = 0; i < 3 * NP; i++) {
-    r ^= r << 13, r ^= r >> 7, r ^= r << 17;
-    x[i] = (double)(r % 2001) / 1000.0 - 1.0;
-  }
   struct tr_mesh *m;
-  CK(tr_delaunay_build(x, NP, &m));
+  CK(random_dt(NP, &m));
   mpq_t vol;
   mpq_init(vol);
   CK(tr_mesh_volume6(m, vol));

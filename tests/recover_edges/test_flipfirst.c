@@ -28,21 +28,15 @@
 #include "recover_edges/edgeset.h"
 #include "recover_edges/pipe.h"
 #include "../pipeline/tmesh.h"
-
-static const unsigned CHECKS = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T | TR_CHK_EULER;
-
-static uint64_t rng;
-static uint32_t next_u32(void)
-{
-  rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
-  return (uint32_t)(rng >> 33);
-}
+#include "trand.h"
 
 static int has_edge(struct tr_mesh *m, uint32_t a, uint32_t b)
 {
   int yes = 0;
   return tr_mesh_has_edge(m, a, b, &yes) == TR_OK && yes;
 }
+
+static const unsigned CHECKS = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T | TR_CHK_EULER;
 
 /* The faces and edges the pipe's real pipels cross at an end, each once. */
 static uint32_t crossings(const struct tr_mesh *m, const tr_pipe *p, tr_sxset *seen)

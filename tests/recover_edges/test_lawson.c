@@ -24,13 +24,7 @@
 #include "recover_edges/lawson.h"
 #include "recover_edges/pipe.h"
 #include "tmesh.h"
-
-static uint64_t rng;
-static uint32_t next_u32(void)
-{
-  rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
-  return (uint32_t)(rng >> 33);
-}
+#include "trand.h"
 
 static uint64_t refusals; /* protected edges the guard was asked about */
 static int protect(void *ud, const uint32_t *v, int nv)

@@ -18,15 +18,9 @@
 #include "delaunay/delaunay.h"
 #include "mesh/check.h"
 #include "recover_edges/pipe.h"
+#include "trand.h"
 
 static const unsigned CHECKS = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T | TR_CHK_EULER;
-
-static uint64_t rng;
-static uint32_t next_u32(void)
-{
-  rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
-  return (uint32_t)(rng >> 33);
-}
 
 /* Mesh vertices exactly on segment ab, sorted along it; checks consecutive edges. */
 static int check_chain(struct tr_mesh *m, uint32_t a, uint32_t b)

@@ -27,6 +27,7 @@
 #include "recover_edges/pipe.h"
 #include "recover_edges/recover_edges.h"
 #include "tedges.h"
+#include "trand.h"
 
 static const unsigned CHECKS = TR_CHK_TOPOLOGY;
 /* recovery switches: zero (the default pipeline) except in the coverage mode */
@@ -36,12 +37,6 @@ static const char *const KIND[TR_EDGE_PIPEL_KINDS] = {
     "case1(T5)", "case2-I(T6)", "case2-II-S(T6)", "case2-II-Z(T6)",
     "case3(T7)", "case4(T8)",   "case5(T9)"};
 
-static uint64_t rng;
-static uint32_t next_u32(void)
-{
-  rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
-  return (uint32_t)(rng >> 33);
-}
 static double next_unit(void) { return (next_u32() + 0.5) / 2147483648.0; } /* (0,1) */
 
 static int fail(const char *what, tr_status s)

@@ -22,13 +22,7 @@
 #include "recover_edges/edgeset.h"
 #include "recover_edges/pipe.h"
 #include "../pipeline/texpect.h"
-
-static uint64_t rng;
-static uint32_t next_u32(void)
-{
-  rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
-  return (uint32_t)(rng >> 33);
-}
+#include "trand.h"
 
 static int has_edge(struct tr_mesh *m, uint32_t a, uint32_t b)
 {
