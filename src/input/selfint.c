@@ -243,6 +243,21 @@ static int coplanar_improper(const sweep *s, uint32_t it, uint32_t iu)
   return 0;
 }
 
+/* t and u share exactly one vertex: f = (v, a, b) and g = (v, c, d), the two triangles
+ * rotated to start at it (even permutations: the same orientations). */
+static void from_shared_vertex(const uint32_t *t, const uint32_t *u, uint32_t f[3], uint32_t g[3])
+{
+  int kv = 0, ku = 0;
+  while (t[kv] != u[0] && t[kv] != u[1] && t[kv] != u[2])
+    kv++;
+  while (u[ku] != t[kv])
+    ku++;
+  for (int k = 0; k < 3; k++) {
+    f[k] = t[(kv + k) % 3];
+    g[k] = u[(ku + k) % 3];
+  }
+}
+
 /* x in the closed cone at v spanned by a and b, where s = sign orient2d(v, a, b) != 0:
  * the cone of an angle under 180 degrees is where the two half-planes through v, left
  * of va and right of vb (for s > 0), meet. */
@@ -261,14 +276,11 @@ static int coplanar_fan_improper(const sweep *s, uint32_t it, uint32_t iu)
 {
   const struct tr_plc *plc = s->plc;
   const uint32_t *t = plc->tris + 3 * (size_t)it, *u = plc->tris + 3 * (size_t)iu;
-  int st, kv = 0, ku = 0;
+  int st;
   int drop = projection(s, it, &st);
-  while (t[kv] != u[0] && t[kv] != u[1] && t[kv] != u[2])
-    kv++;
-  while (u[ku] != t[kv])
-    ku++;
-  uint32_t v = t[kv], a = t[(kv + 1) % 3], b = t[(kv + 2) % 3];
-  uint32_t c = u[(ku + 1) % 3], d = u[(ku + 2) % 3];
+  uint32_t f[3], g[3];
+  from_shared_vertex(t, u, f, g);
+  uint32_t v = f[0], a = f[1], b = f[2], c = g[1], d = g[2];
   int su = o2(plc, v, c, d, drop);
   if (!st || !su)
     return coplanar_improper(s, it, iu); /* flat: not after validation */
@@ -306,13 +318,9 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
     if (strictly_one_side(ct))
       return 0;
     if (shared == 1 && s->plane && cu[0] == 1 && cu[1] == 1 && ct[0] == 1 && ct[1] == 1) {
-      int kv = 0, ku = 0;
-      while (t[kv] != u[0] && t[kv] != u[1] && t[kv] != u[2])
-        kv++;
-      while (u[ku] != t[kv])
-        ku++;
-      int r = straddle(plc, t[kv], t[(kv + 1) % 3], t[(kv + 2) % 3], u[(ku + 1) % 3],
-                       u[(ku + 2) % 3]);
+      uint32_t f[3], g[3];
+      from_shared_vertex(t, u, f, g);
+      int r = straddle(plc, f[0], f[1], f[2], g[1], g[2]);
       if (r >= 0)
         return r;
     }
@@ -562,9 +570,10 @@ static tr_status run(sweep *sw, int method)
         int o = tr_sign(tr_orient2d_proj(a, b, c, k));
         s.plane[t] = o ? (uint8_t)((k + 1) | (o < 0 ? 4 : 0)) : 0;
       }
-    int k = 0;
-    if (s.plane[t]) {
+    int k = 0, o = 0;
+    if (s.plane[t]) { /* its own axis, its orientation there found above */
       k = (s.plane[t] & 3) - 1;
+      o = s.plane[t] & 4 ? -1 : 1;
     } else { /* the largest normal component, in doubles: only a choice */
       double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
       double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
@@ -572,10 +581,10 @@ static tr_status run(sweep *sw, int method)
              nz = fabs(ux * vy - uy * vx);
       k = ny > nx ? 1 : 0;
       k = nz > (k ? ny : nx) ? 2 : k;
+      o = tr_sign(tr_orient2d_proj(a, b, c, k));
+      for (int j = 1; j < 3 && !o; j++) /* the doubles chose a flat axis */
+        o = tr_sign(tr_orient2d_proj(a, b, c, k = (k + 1) % 3));
     }
-    int o = tr_sign(tr_orient2d_proj(a, b, c, k));
-    for (int j = 1; j < 3 && !o; j++) /* the doubles chose a flat axis */
-      o = tr_sign(tr_orient2d_proj(a, b, c, k = (k + 1) % 3));
     s.proj[t] = o ? (uint8_t)(k | (o < 0 ? 4 : 0)) : NO_PROJ;
     tr_o3plane_init(&s.o3[t], a, b, c);
   }

@@ -107,10 +107,6 @@ static const double *X(const rf_ctx *c, uint32_t v)
   return c->plc->xyz + 3 * (size_t)v;
 }
 
-/* The differences are scaled by a power of two each (exact, so the cosine is the same
- * double wherever their squares neither overflow nor underflow): at an input scale of 1e200
- * or 1e-200 the squares did, and every angle came out 90 degrees or 0 (no cap, no small
- * angle found). */
 /* v scaled by 2^-e, each component the double ldexp gives: where 2^-e is a double (e >=
  * -1023), the product by it is rounded once, to nearest, only when subnormal, as ldexp
  * rounds; one ldexp per vector instead of three (the stats measure every input corner). */
@@ -126,6 +122,10 @@ static void scale_pow2(double v[3], int e)
   }
 }
 
+/* The differences are scaled by a power of two each (exact, so the cosine is the same
+ * double wherever their squares neither overflow nor underflow): at an input scale of 1e200
+ * or 1e-200 the squares did, and every angle came out 90 degrees or 0 (no cap, no small
+ * angle found). */
 double rf_cos_angle(const double *o, const double *p, const double *q)
 {
   double a[3], b[3], ma = 0, mb = 0;
