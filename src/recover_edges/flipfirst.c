@@ -5,7 +5,8 @@
  * The simplex ab crosses nearest to a (the far face or edge of the pipel at a) is
  * removed: a crossed face by Swap23, or else by removing one of its edges; a crossed edge
  * by edge removal with the bounded recursion of flip.h. When nothing at a's end can be
- * removed, the crossing nearest to b is tried. Every flip, including those inside the
+ * removed, the crossing nearest to b is tried, and the next rounds start at b's end
+ * until it is stuck in turn. Every flip, including those inside the
  * recursion, is admitted only if ab crosses none of the faces and edges it creates
  * (TetGen's flip eligibility): crossed simplices then only disappear, so each removal
  * lowers their number, the loop ends, and a removal is kept even when ab does not appear
@@ -119,21 +120,29 @@ tr_status tr_pipe_flip_first(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe 
   j.pivot = 1;
   j.tetgen_flips = tetgen_flips;
   tr_status s = TR_OK;
+  /* The rounds go on at the end that last lost a crossing, the other end being tried
+   * only when that one is stuck (TetGen works from one end until stuck, then from the
+   * other): going back to a stuck end first in every round repeated its failed search
+   * each time (on the corpus, --keep-surface, with the 4-4 of flip.c: 6.0 -> 4.75
+   * million flip attempts, 1419 -> 1326 points added for edges). */
+  int end = 0;
   /* each removal takes away a crossed simplex and creates none: the count of crossed
    * faces and edges bounds the rounds; the cap only guards that argument */
   for (uint32_t round = 0, cap = 8 * p->n + 64; round < cap && s == TR_OK; round++) {
     int gone = 0;
-    for (int side = 0; side < 2 && !gone && s == TR_OK; side++) {
+    for (int k = 0; k < 2 && !gone && s == TR_OK; k++) {
       uint32_t t, via;
-      int type, code;
-      /* a failed try at a's end may have moved tets to other slots */
-      if (side == 1 && (s = tr_pipe_collect_memo(m, a, b, p, &via, memo)) != TR_OK)
+      int type, code, side = k ? !end : end;
+      /* a failed try at the first end may have moved tets to other slots */
+      if (k == 1 && (s = tr_pipe_collect_memo(m, a, b, p, &via, memo)) != TR_OK)
         break;
       int pi = tr_pipe_end(m, p, a, b, side == 0, &type, &code);
       if (pi < 0)
         continue;
       t = p->pl[pi].iEle;
       s = remove_crossing(m, t, type, code, cons, depth, &j, &gone);
+      if (gone)
+        end = side;
     }
     tr_pipe_count_flips(&j, st);
     if (s != TR_OK || !gone)

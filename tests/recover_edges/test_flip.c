@@ -5,7 +5,7 @@
  * a cube (ghosts stay consistent), and a missing input edge recovered by the flips of the
  * edge driver without a Steiner point.
  * Usage: test_flip ring N | ring_invalid | protected | hull_cube | flip23 | recover N |
- *        edge_tet | sxset | blocked23 | shell_kept */
+ *        edge_tet | sxset | blocked23 | shell_kept | tetgen44 */
 #include <gmp.h>
 #include <math.h>
 #include <stdio.h>
@@ -509,6 +509,63 @@ static int test_shell_kept(void)
   return 0;
 }
 
+/* The edge removal that TetGen's flips reach (journal tetgen_flips, the flip levels
+ * below the last): a flat ring, and the 4-4 flip, a shell of four tets whose edge ab and
+ * two opposite ring vertices are coplanar (TetGen makes it as a Swap23 through a flat tet
+ * and a 3-2). Here a wavy 4-ring around A = (0,0,1), B = (0,0,-1): A, B, r0, r2 lie in
+ * y = 0 and A, B, r1, r3 in x = 0, the ring is not flat. Moving A off both planes leaves
+ * a 4-shell that only the general removal takes (TetGen reaches it by a Swap23 and a 3-2,
+ * the recursion's job). */
+static int test_tetgen44(void)
+{
+  double z[4] = {-0.0625, 0.125, -0.0625, 0.125};
+  for (int moved = 0; moved < 2; moved++) {
+    for (int mode = 0; mode < 2; mode++) {
+      struct tr_mesh *m;
+      CK(build_shell(4, z, 1, -1, &m));
+      /* cos and sin of multiples of pi/2 are not exactly 0: put the ring on the axes */
+      static const double axis[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+      for (int i = 0; i < 4; i++) {
+        m->xyz[3 * (2 + i)] = axis[i][0];
+        m->xyz[3 * (2 + i) + 1] = axis[i][1];
+      }
+      if (moved) {
+        m->xyz[0] += 0.125; /* A off x = 0 and y = 0; the four tets stay positive */
+        m->xyz[1] += 0.0625;
+      }
+      mpq_t vol;
+      mpq_init(vol);
+      CK(tr_mesh_volume6(m, vol));
+      if (validate(m, vol, "4-shell"))
+        return 1;
+      tr_flip_journal j;
+      memset(&j, 0, sizeof j);
+      j.tetgen_flips = mode;
+      int done;
+      CK(tr_flip_remove_edge_nm(m, 0, 1, TR_NONE, 1, NULL, NULL, &j, &done));
+      int want = !(moved && mode);
+      if (done != want)
+        FAIL("tetgen44: A %s, %s flips: removal %s", moved ? "moved" : "on the axis",
+             mode ? "TetGen's" : "general", done ? "made" : "refused");
+      if (done) {
+        if (has_edge(m, 0, 1) || tr_mesh_count_real(m) != 4)
+          FAIL("tetgen44: AB still there or %u tets", tr_mesh_count_real(m));
+        if (!moved && !has_edge(m, 2, 4) && !has_edge(m, 3, 5))
+          FAIL("tetgen44: the new edge is not a diagonal coplanar with AB");
+      } else if (!has_edge(m, 0, 1) || tr_mesh_count_real(m) != 4 || j.n != 0) {
+        FAIL("tetgen44: a refused removal changed the mesh");
+      }
+      if (validate(m, vol, done ? "after the 4-4" : "after refusal"))
+        return 1;
+      tr_flip_journal_free(&j);
+      mpq_clear(vol);
+      tr_mesh_destroy(m);
+    }
+  }
+  printf("tetgen44: the coplanar 4-4 is one of TetGen's flips, the other 4-shell is not\n");
+  return 0;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2)
@@ -535,6 +592,8 @@ int main(int argc, char **argv)
     return test_blocked23();
   if (!strcmp(w, "shell_kept"))
     return test_shell_kept();
+  if (!strcmp(w, "tetgen44"))
+    return test_tetgen44();
   fprintf(stderr, "unknown test %s\n", w);
   return 2;
 }
