@@ -202,26 +202,43 @@ tr_status tr_flip_edge_tet(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t *
 
 static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                              tr_flip_guard guard, void *ud, const tr_flip_journal *j,
-                             tr_u32buf *sh, tr_flip_rec *rec, int *done, int *found);
+                             int star, tr_u32buf *sh, tr_flip_rec *rec, int *done, int *found);
 
 tr_status tr_flip_remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                               tr_flip_guard guard, void *ud, tr_flip_rec *rec, int *done)
 {
   tr_u32buf sh = {0};
   int found;
-  tr_status s = remove_edge(m, a, b, t0, guard, ud, NULL, &sh, rec, done, &found);
+  tr_status s = remove_edge(m, a, b, t0, guard, ud, NULL, 0, &sh, rec, done, &found);
   tr_u32buf_free(&sh);
   return s;
+}
+
+/* How many (tet, star) pairs tet v forms with the stars on j's stack below `top`. */
+static int in_stars(const tr_flip_journal *j, const uint32_t *v, int top)
+{
+  int n = 0;
+  for (int k = 0; k < top && k < TR_FLIP_STACK; k++) {
+    uint32_t x = j->stack[2 * k], y = j->stack[2 * k + 1];
+    int hx = 0, hy = 0;
+    for (int q = 0; q < 4; q++) {
+      hx |= v[q] == x;
+      hy |= v[q] == y;
+    }
+    n += hx && hy;
+  }
+  return n;
 }
 
 /* sh: scratch for Shell(ab), whose memory the caller keeps across calls (the journal's
  * for the searches, which remove edges by the thousand). *found = 1 when ab is still
  * there and sh holds its closed shell from the tet tr_flip_edge_tet finds, as
  * tr_flip_remove_edge_nm takes it next (the mesh is then unchanged: *done = 0 and no
- * flip was made and undone). */
+ * flip was made and undone). star: ab is a nested removal under the star rule; *found
+ * = -1 when its shell breaks the rule (nothing is tried). */
 static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                              tr_flip_guard guard, void *ud, const tr_flip_journal *j,
-                             tr_u32buf *sh, tr_flip_rec *rec, int *done, int *found)
+                             int star, tr_u32buf *sh, tr_flip_rec *rec, int *done, int *found)
 {
   *done = 0;
   *found = 0;
@@ -237,6 +254,16 @@ static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t
   }
   int closed = 0;
   tr_status s = tr_shell(m, a, b, t0, sh, &closed);
+  if (s == TR_OK && star) {
+    /* the two tets at the face this removal unblocks are in the star above it */
+    int n = 0;
+    for (size_t i = 0; i < sh->n && n <= 2; i++)
+      n += in_stars(j, m->tv + 4 * (size_t)sh->a[i], j->nstack);
+    if (n > 2) {
+      *found = -1;
+      return TR_OK;
+    }
+  }
   *found = s == TR_OK && closed && looked;
   if (s != TR_OK || !closed || sh->n < 3 || sh->n > TR_FLIP_MAX_RING)
     return s;
@@ -256,8 +283,9 @@ static tr_status remove_edge(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t
      * two opposite ring vertices are coplanar. The Swap23 that starts a 4-4 in TetGen
      * (flipnm) makes a flat tet, which tetrec's Swap23 refuses, so the 4-4 is taken here
      * in one step. Without it, the 2D diagonal swaps inside planar CAD faces were left
-     * to the last level: turbine.off --keep-surface left 752 edges after level 4 where
-     * TetGen's first level leaves 312 (both on TetGen's own Delaunay mesh), 385 with it. */
+     * to the last level: turbine.off --keep-surface, on TetGen's own Delaunay mesh and in
+     * its segment order, left 823 edges after level 4 where TetGen's first level leaves
+     * 312; 373 with it (docs/recovery.md). */
     int flat = 1;
     for (int q = 3; q < n && flat; q++)
       flat = tr_mesh_orient(m, ring[0], ring[1], ring[2], ring[q]) == 0;
@@ -463,8 +491,8 @@ tr_status tr_flip23_jb(struct tr_mesh *m, uint32_t t, int k, int nb, tr_flip_gua
 
 /* *found: as remove_edge's (0 when nothing was tried) */
 static tr_status remove_j(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
-                          tr_flip_guard guard, void *ud, tr_flip_journal *j, int *done,
-                          int *found)
+                          tr_flip_guard guard, void *ud, tr_flip_journal *j, int star,
+                          int *done, int *found)
 {
   *done = 0;
   *found = 0;
@@ -472,7 +500,7 @@ static tr_status remove_j(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0
     return TR_OK;
   j->tries++;
   TR_CHECK(journal_room(j));
-  TR_CHECK(remove_edge(m, a, b, t0, guard, ud, j, &j->shell, &j->r[j->n], done, found));
+  TR_CHECK(remove_edge(m, a, b, t0, guard, ud, j, star, &j->shell, &j->r[j->n], done, found));
   return admit(m, j, done);
 }
 
@@ -491,19 +519,36 @@ static int shell_face(struct tr_mesh *m, const tr_u32buf *sh, uint32_t a, uint32
   return 0;
 }
 
+static tr_status remove_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0, int depth,
+                           tr_flip_guard guard, void *ud, tr_flip_journal *j, int nested,
+                           int *done);
+
 tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0,
                                  int depth, tr_flip_guard guard, void *ud, tr_flip_journal *j,
                                  int *done)
 {
+  return remove_nm(m, a, b, t0, depth, guard, ud, j, 0, done);
+}
+
+/* nested: ab is removed to unblock a Swap23 of an outer level (the star rule applies) */
+static tr_status remove_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t0, int depth,
+                           tr_flip_guard guard, void *ud, tr_flip_journal *j, int nested,
+                           int *done)
+{
   int found;
-  TR_CHECK(remove_j(m, a, b, t0, guard, ud, j, done, &found));
-  if (*done || depth <= 1 || spent(j))
+  TR_CHECK(remove_j(m, a, b, t0, guard, ud, j, nested && j->stars, done, &found));
+  if (*done || found < 0 || depth <= 1 || spent(j))
     return TR_OK;
   uint32_t e2[2] = {a, b};
   if (guard && guard(ud, e2, 2))
     return TR_OK;
   tr_u32buf sh = {0};
   tr_status s = TR_OK;
+  if (j->nstack < TR_FLIP_STACK) {
+    j->stack[2 * j->nstack] = a;
+    j->stack[2 * j->nstack + 1] = b;
+  }
+  j->nstack++;
   /* every pass either shrinks the shell by one (Swap23 on a ring face) or stops; the
    * sub-removals are bounded by depth, and the passes by the first shell size */
   for (int pass = 0, limit = -1; s == TR_OK && !*done; pass++) {
@@ -585,18 +630,25 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
               try_br |= (be[x][0] == b && be[x][1] == r) || (be[x][0] == r && be[x][1] == b);
             }
           }
+          if (j->stars && j->nstack > 1) {
+            /* a face whose tets are in another star on the stack is not flipped */
+            uint32_t u = m->tn[4 * (size_t)t + (size_t)k];
+            if (in_stars(j, m->tv + 4 * (size_t)t, j->nstack - 1) ||
+                (u != TR_NONE && in_stars(j, m->tv + 4 * (size_t)(u >> 2), j->nstack - 1)))
+              continue;
+          }
           s = tr_flip23_jb(m, t, k, nb, guard, ud, j, &ok);
           if (s == TR_OK && !ok && depth > 2 && !spent(j)) {
             /* the Swap23 is blocked by edge a-r or b-r: try removing one of them; a
              * removal that fails is undone before the other is tried */
             if (try_ar)
-              s = tr_flip_remove_edge_nm(m, a, r, TR_NONE, depth - 1, guard, ud, j, &ok);
+              s = remove_nm(m, a, r, TR_NONE, depth - 1, guard, ud, j, 1, &ok);
             if (s == TR_OK && !ok) {
               stale |= j->n != n0;
               s = tr_flip_journal_undo(m, j, n0);
             }
             if (s == TR_OK && !ok && try_br)
-              s = tr_flip_remove_edge_nm(m, b, r, TR_NONE, depth - 1, guard, ud, j, &ok);
+              s = remove_nm(m, b, r, TR_NONE, depth - 1, guard, ud, j, 1, &ok);
             if (s == TR_OK && !ok) {
               stale |= j->n != n0;
               s = tr_flip_journal_undo(m, j, n0);
@@ -614,9 +666,10 @@ tr_status tr_flip_remove_edge_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint
     }
     if (s != TR_OK || !progress)
       break;
-    s = remove_j(m, a, b, TR_NONE, guard, ud, j, done, &found);
+    s = remove_j(m, a, b, TR_NONE, guard, ud, j, 0, done, &found);
   }
   tr_u32buf_free(&sh);
+  j->nstack--;
   return s;
 }
 

@@ -33,6 +33,9 @@
 
 /* The largest shell edge removal handles. */
 #define TR_FLIP_MAX_RING 14
+/* The deepest recursion of tr_flip_remove_edge_nm whose edges the star rule sees (see
+ * tr_flip_journal.stars); edge recovery goes to depth 7. */
+#define TR_FLIP_STACK 16
 
 /* What a flip replaced: enough to put the old tets back. */
 typedef struct tr_flip_rec {
@@ -96,6 +99,15 @@ typedef struct tr_flip_journal {
    * caller resets it. */
   uint32_t budget, tries;
   tr_u32buf shell; /* scratch of the edge removals: Shell(ab) (freed with the journal) */
+  /* 1: TetGen's star rule in the recursion (the star counters of its flipnm, Si 2015).
+   * The edges being removed, outermost first, are on stack[]; a tet holding one of them
+   * is in that edge's star. A nested removal is not tried on an edge whose shell holds a
+   * tet of a star on the stack other than the two at the face it unblocks, and no ring
+   * face one of whose tets lies in another star on the stack is tried: the recursion
+   * never takes apart a shell an outer level is working on. */
+  int stars;
+  uint32_t stack[2 * TR_FLIP_STACK];
+  int nstack;
 } tr_flip_journal;
 void tr_flip_journal_free(tr_flip_journal *j);
 /* Undoes the journal's flips back to its first `to` entries (newest first). */

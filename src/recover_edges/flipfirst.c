@@ -119,6 +119,10 @@ tr_status tr_pipe_flip_first(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe 
   j.budget = budget;
   j.pivot = 1;
   j.tetgen_flips = tetgen_flips;
+  /* TetGen's star rule (flip.h): on the corpus the flip attempts fell by two thirds
+   * (plain 2.48 -> 0.75 million, --keep-surface 5.03 -> 1.74 million) and the Steiner
+   * points left by 23% (111 -> 85, keep 542 -> 423) */
+  j.stars = 1;
   tr_status s = TR_OK;
   /* The rounds go on at the end that last lost a crossing, the other end being tried
    * only when that one is stuck (TetGen works from one end until stuck, then from the
