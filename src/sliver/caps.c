@@ -253,7 +253,7 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
    * keeps the minimum; fewer tets at it is progress all the same */
   *better = s == TR_OK && gone && !again && !over &&
             (newmin > oldmin || (newmin == oldmin && nnew < nold)) &&
-            !(c->keep.ratio > 0 && newratio > fmax(c->keep.ratio, fmax(was, top_ratio)));
+            !(c->keep.ratio > 0 && newratio > tr_sliver_ratio_allowed(c, fmax(was, top_ratio)));
   return s;
 }
 
@@ -274,6 +274,7 @@ static tr_status trial_ctx(const tr_sliver_ctx *c, const tr_subfaces *sub, uint3
   tc->point_budget = c->point_budget;
   tc->keep = c->keep;
   tc->memo = c->memo;
+  tc->ratio_start = c->ratio_start;
   return TR_OK;
 }
 

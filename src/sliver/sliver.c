@@ -67,11 +67,17 @@ double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, u
   return tr_sliver_min_dihedral_at(m, t, TR_NONE, NULL, NULL);
 }
 
+double tr_sliver_ratio_allowed(const tr_sliver_ctx *c, double ratio_was)
+{
+  double r = fmax(c->keep.ratio, ratio_was);
+  return c->ratio_start > 0 ? fmin(r, fmax(c->keep.ratio, c->ratio_start)) : r;
+}
+
 int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
                            const double x[3], uint32_t region, double ratio, double dih,
                            double ratio_was)
 {
-  if (c->keep.ratio > 0 && ratio > fmax(c->keep.ratio, ratio_was) && !(dih >= c->bound))
+  if (c->keep.ratio > 0 && ratio > tr_sliver_ratio_allowed(c, ratio_was) && !(dih >= c->bound))
     return 0;
   double V = tr_refine_region_bound_of(c->keep.region_id, c->keep.region_max_volume,
                                        c->keep.nregion_bounds, c->keep.max_volume, region);
@@ -378,6 +384,7 @@ static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoint
   c->point_budget = st->points + rs.points;
   c->keep = keep.keep;
   c->memo = keep.memo;
+  c->ratio_start = keep.ratio_start;
   c->sub = keep.sub;
   c->facets = keep.facets;
   c->thin = keep.thin;
@@ -431,6 +438,14 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
       tr_facets_thin_triangles(plc, &facets, SL_FACET_THIN_CORNER, thin, &tq);
     c.thin = thin;
   }
+  /* the reference of every ratio allowance (tr_sliver_ratio_allowed), fixed here: the
+   * shapes measured now are the ones the first flip pass asks for */
+  for (uint32_t t = 0; s == TR_OK && c.keep.ratio > 0 && t < m->nt; t++)
+    if (tr_tet_is_real(m, t)) {
+      double r;
+      tr_sliver_tet_min(&c, t, &r);
+      c.ratio_start = fmax(c.ratio_start, r);
+    }
   tr_refine_memo memo = {0};
   c.memo = &memo;
   uint64_t added = 0;

@@ -166,6 +166,10 @@ typedef struct tr_sliver_ctx {
   /* per input triangle, 1 if a facet of its own with a corner under SL_FACET_THIN_CORNER
      (tr_facets_thin_triangles; NULL: none is) */
   const uint8_t *thin;
+  /* the largest radius-edge ratio of the mesh the stage started from (tr_sliver_remove;
+   * 0: none known): no allowance of tr_sliver_ratio_allowed goes above it (or the ratio
+   * bound), whatever the replaced tets' ratios, which earlier steps may have raised */
+  double ratio_start;
 } tr_sliver_ctx;
 
 /* The context of one mesh: c->m = m, the constraint sets of sub, the movable vertices
@@ -219,10 +223,18 @@ void tr_sliver_forget_from(const tr_sliver_ctx *c, uint32_t nv);
  * ghost tets. caps.c's trials use it as their snapshot of the slots. */
 const uint32_t *tr_sliver_shape_keys(const tr_sliver_ctx *c, size_t *stride);
 
+/* The largest ratio a new tet with an angle under c->bound may have where the tets it
+ * replaces had ratios up to ratio_was: max(c->keep.ratio, ratio_was), but never above
+ * max(c->keep.ratio, c->ratio_start). The replaced tets' ratio alone is a moving
+ * reference: a tet with no angle under the bound may have any ratio (below), so a step
+ * that replaces one made by an earlier step could pass that ratio on to a sliver
+ * (star_rounding_budget.off: 52.98 at the start, 97.25 at the end). */
+double tr_sliver_ratio_allowed(const tr_sliver_ctx *c, double ratio_was);
+
 /* 1 iff tet p (positive, exact points; vertex v at the double x when v is one of them) of
  * region `region` keeps c->keep: its exact volume at most the region's bound, and its ratio
- * (given) at most max(c->keep.ratio, ratio_was) unless its smallest dihedral angle `dih`
- * (given) is at least c->bound: a tet with no angle under the bound is well shaped
+ * (given) at most tr_sliver_ratio_allowed(c, ratio_was) unless its smallest dihedral angle
+ * `dih` (given) is at least c->bound: a tet with no angle under the bound is well shaped
  * whatever its ratio (small dihedral angles are what the ratio misses, not the reverse). */
 int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
                            const double x[3], uint32_t region, double ratio, double dih,
