@@ -248,7 +248,7 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
     if (refused && tr_vtmap_get(refused, 3, key) != TR_VTMAP_NONE)
       continue;
     tr_sliver_snap z;
-    s = tr_sliver_snap_take(c, sub, 0, &z);
+    s = tr_sliver_snap_take(c, sub, &z);
     if (s != TR_OK)
       break;
     tr_refine_stats rs;

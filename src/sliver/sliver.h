@@ -30,13 +30,16 @@
  *    either side; by a cavity that crosses no sub-face, holds none between two of its
  *    tets and is star-shaped about the point, kept when the new tets' smallest angle
  *    beats the cavity's; at most TR_SLIVER_POINTS(nv) points per stage.
- *  - sliver.c, after the rounds (level 3, with the plc in keep): a tet still under
+ *  - pinned.c, after the rounds (level 3, with the plc in keep): a tet still under
  *    SL_PINNED_BOUND with three or four vertices on constraints and a face on a sub-face
  *    is pinned there; refinement (tr_refine_open_pinned) splits the piece under it,
  *    exactly on its input edge or triangle, and a round of flips, moves and points
  *    follows, SL_PINNED_ROUNDS times at most, then one more round (the caps next to the
  *    last constraint points). That refinement runs without the ratio bound (the volume
- *    bounds hold), so its new tets may be over the ratio bound.
+ *    bounds hold), so its new tets may be over the ratio bound, but a tet under the
+ *    stage's bound only up to the largest ratio the stage started from: it is a trial,
+ *    undone (snap.c) and run again without the pinned tets near a tet that breaks this
+ *    and that the rounds' steps do not open.
  *  - polish.c, last: the rounds only look at tets under the bound, so a small mesh whose
  *    worst tet is above it kept its refinement angles (icosahedron.off: 20.9 degrees).
  *    The globally worst tets, whatever their angle, worst first, get the best flip,
@@ -287,6 +290,16 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
  * t failed before (c->failed; a failure is remembered). scratch: tr_sliver_insert_scratch()
  * (free() it; NULL: out of memory). */
 tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done);
+/* Points on the constraints under the pinned tets (pinned.c, after the rounds): the tets
+ * under SL_PINNED_BOUND with three or four fixed vertices and a face on a sub-face get
+ * refinement's points there (tr_refine_open_pinned, within its own TR_SLIVER_POINTS),
+ * kept only when no tet it leaves under the bound has a ratio over
+ * tr_sliver_ratio_allowed(c, INFINITY) after a repair of those, else undone and tried
+ * again without the pinned tets near them; then c again on the new sub-faces (their
+ * vertices fixed, refinement's interior points movable). *added = points on the
+ * constraints (0: none kept). */
+tr_status tr_sliver_open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoints,
+                                tr_sliver_stats *st, uint64_t *added);
 /* The polish's last resort for a pinned tet (three or four vertices on constraints) that
  * nothing else opened: the same candidates, with cavities carved off the vertices they
  * swallow, else with cavities that may swallow interior points on no constraint (they

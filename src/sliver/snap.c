@@ -15,12 +15,11 @@ void tr_sliver_snap_free(tr_sliver_snap *z)
   memset(z, 0, sizeof *z);
 }
 
-tr_status tr_sliver_snap_take(const tr_sliver_ctx *c, const tr_subfaces *sub, int own,
-                              tr_sliver_snap *z)
+tr_status tr_sliver_snap_take(const tr_sliver_ctx *c, const tr_subfaces *sub, tr_sliver_snap *z)
 {
   const struct tr_mesh *m = c->m;
   memset(z, 0, sizeof *z);
-  z->tv = own ? NULL : tr_sliver_shape_keys(c, &z->stride);
+  z->tv = tr_sliver_shape_keys(c, &z->stride);
   z->nv = m->nv;
   z->nt = m->nt;
   z->free_head = m->free_head;

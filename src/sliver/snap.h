@@ -26,10 +26,10 @@ typedef struct tr_sliver_snap {
   tr_subfaces sub;
 } tr_sliver_snap;
 
-/* Takes the snapshot; own: the slots' vertices copied, not lent by c's shape cache (the
- * caller measures on c before it restores or frees z). Free with tr_sliver_snap_free. */
-tr_status tr_sliver_snap_take(const tr_sliver_ctx *c, const tr_subfaces *sub, int own,
-                              tr_sliver_snap *z);
+/* Takes the snapshot: the slots' vertices lent by c's shape cache, when it holds every
+ * slot, else copied (so nothing may measure on c until z is restored or freed). Free
+ * with tr_sliver_snap_free. */
+tr_status tr_sliver_snap_take(const tr_sliver_ctx *c, const tr_subfaces *sub, tr_sliver_snap *z);
 void tr_sliver_snap_free(tr_sliver_snap *z);
 /* The mesh and sub-faces as they were at the snapshot, which is consumed. The caller
  * forgets what refers to the trial's vertices (ids from z->nv on go to other points). */
