@@ -214,7 +214,8 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
     np = pieces(c, t, p, n);
   if (!np)
     return TR_OK;
-  /* the mesh's largest ratio among the tets the bound looks at (cached) */
+  /* the mesh's largest ratio among the tets the bound looks at (cached); it moves with
+   * the steps before, so the allowance caps it at the stage's start (improved) */
   double top_ratio = 0;
   for (uint32_t u = 0; u < m->nt; u++)
     if (tr_tet_is_real(m, u)) {

@@ -12,7 +12,7 @@
  * tets): a trial changes the slots of a few cavities, and tr_sliver_snap_restore links
  * their old tets again by their faces; only the free slots' links (the free list) are
  * kept. Nor
- * are the slots' vertices, as a rule: the shape cache of the polish's context holds them
+ * are the slots' vertices, as a rule: the shape cache of the trial's caller holds them
  * (tr_sliver_shape_keys), and the trial measures without it. */
 typedef struct tr_sliver_snap {
   uint32_t nv, nt, free_head, nfree;
