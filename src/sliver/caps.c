@@ -18,180 +18,7 @@
 #include "refine/refine.h"
 #include "refine/refine_stage.h"
 #include "sliver/sliver.h"
-
-/* One trial's snapshot: what refinement may change. Vertices are only appended, and the
- * old ones keep their coordinates. The neighbour links are not copied (16 bytes a slot,
- * the largest part of the run's peak in this stage on CGAL's elephant at 2.1 million
- * tets): a trial changes the slots of a few cavities, and snap_restore links their old
- * tets again by their faces; only the free slots' links (the free list) are kept. Nor
- * are the slots' vertices, as a rule: the shape cache of the polish's context holds them
- * (tr_sliver_shape_keys), and the trial measures without it. */
-typedef struct snap {
-  uint32_t nv, nt, free_head, nfree;
-  const uint32_t *tv; /* slot t's vertices at tv + stride * t */
-  size_t stride;
-  uint32_t *tv_own; /* tv when it is a copy (no cache to lend it) */
-  uint32_t *region, *v2t;
-  uint8_t *flags;
-  uint32_t *free_tn; /* 5 per free slot: the slot, then its 4 links */
-  uint32_t nfree_slots;
-  tr_subfaces sub;
-} snap;
-
-static void snap_free(snap *z)
-{
-  free(z->tv_own);
-  free(z->region);
-  free(z->v2t);
-  free(z->flags);
-  free(z->free_tn);
-  tr_subfaces_free(&z->sub);
-  memset(z, 0, sizeof *z);
-}
-
-static tr_status snap_take(const tr_sliver_ctx *c, const tr_subfaces *sub, snap *z)
-{
-  const struct tr_mesh *m = c->m;
-  memset(z, 0, sizeof *z);
-  z->tv = tr_sliver_shape_keys(c, &z->stride);
-  z->nv = m->nv;
-  z->nt = m->nt;
-  z->free_head = m->free_head;
-  z->nfree = m->nfree;
-  uint32_t nfree = 0;
-  for (uint32_t t = 0; t < m->nt; t++)
-    nfree += tr_tet_is_free(m, t);
-  size_t nt = m->nt ? m->nt : 1, nv = m->nv ? m->nv : 1, ns = sub->n ? sub->n : 1;
-  if (!z->tv) {
-    z->tv = z->tv_own = malloc(sizeof *z->tv * 4 * nt);
-    z->stride = 4;
-  }
-  z->flags = malloc(nt);
-  z->region = m->region ? malloc(sizeof *z->region * nt) : NULL;
-  z->v2t = malloc(sizeof *z->v2t * nv);
-  z->free_tn = malloc(sizeof *z->free_tn * 5 * ((size_t)nfree + 1));
-  z->sub.v = malloc(sizeof *z->sub.v * 3 * ns);
-  z->sub.tri = malloc(sizeof *z->sub.tri * ns);
-  if (!z->tv || !z->flags || (m->region && !z->region) || !z->v2t || !z->free_tn ||
-      !z->sub.v || !z->sub.tri) {
-    snap_free(z);
-    return tr_error(TR_ERR_NOMEM, "out of memory for a snapshot of %u tets", m->nt);
-  }
-  if (z->tv_own)
-    memcpy(z->tv_own, m->tv, sizeof *z->tv * 4 * (size_t)m->nt);
-  memcpy(z->flags, m->flags, m->nt);
-  if (m->region)
-    memcpy(z->region, m->region, sizeof *z->region * (size_t)m->nt);
-  memcpy(z->v2t, m->v2t, sizeof *z->v2t * (size_t)m->nv);
-  uint32_t *f = z->free_tn;
-  for (uint32_t t = 0; t < m->nt; t++)
-    if (tr_tet_is_free(m, t)) {
-      *f++ = t;
-      memcpy(f, m->tn + 4 * (size_t)t, 4 * sizeof *f);
-      f += 4;
-    }
-  z->nfree_slots = nfree;
-  z->sub.n = sub->n;
-  memcpy(z->sub.v, sub->v, sizeof *sub->v * 3 * (size_t)sub->n);
-  memcpy(z->sub.tri, sub->tri, sizeof *sub->tri * (size_t)sub->n);
-  return TR_OK;
-}
-
-static int slot_changed(const struct tr_mesh *m, const snap *z, uint32_t u);
-
-/* Links face k of slot t to what the face map holds for the same face (its other tet,
- * both ways), or enters it there. */
-static tr_status link_face(struct tr_mesh *m, tr_vtmap *faces, uint32_t t, int k)
-{
-  const uint32_t *v = m->tv + 4 * (size_t)t;
-  uint32_t key[3], code = 4 * t + (uint32_t)k, other;
-  tr_vtkey_face(v[tr_face_vtx[k][0]], v[tr_face_vtx[k][1]], v[tr_face_vtx[k][2]], key);
-  TR_CHECK(tr_vtmap_put(faces, 3, key, code, &other));
-  if (other != code) {
-    m->tn[code] = other;
-    m->tn[other] = code;
-  }
-  return TR_OK;
-}
-
-/* The mesh and sub-faces as they were at the snapshot (which is consumed). The slots
- * whose tets changed get their old tets, linked to each other and to the unchanged
- * tets around them through their shared faces: in a valid mesh each face has at most
- * one tet on either side, so these are exactly the old links. */
-static tr_status snap_restore(struct tr_mesh *m, tr_subfaces *sub, snap *z)
-{
-  for (uint32_t v = z->nv; v < m->nv; v++)
-    if (m->vq && m->vq[v]) {
-      tr_qpoint_clear(m->vq[v]);
-      free(m->vq[v]);
-      m->vq[v] = NULL;
-    }
-  /* the unchanged tets' faces whose link went to a changed slot (or none: a hull face,
-   * or one the trial left unlinked), in slot order */
-  tr_u32buf rim = {0};
-  tr_status s = TR_OK;
-  for (uint32_t t = 0; t < z->nt && s == TR_OK; t++) {
-    if (tr_tet_is_free(m, t) || slot_changed(m, z, t))
-      continue;
-    for (int k = 0; k < 4 && s == TR_OK; k++) {
-      uint32_t c = m->tn[4 * (size_t)t + (size_t)k];
-      if (c == TR_NONE || slot_changed(m, z, c >> 2))
-        s = tr_u32buf_push(&rim, 4 * t + (uint32_t)k);
-    }
-  }
-  tr_vtmap faces = {0};
-  for (uint32_t t = 0; t < z->nt && s == TR_OK; t++) {
-    if (!slot_changed(m, z, t))
-      continue;
-    memcpy(m->tv + 4 * (size_t)t, z->tv + z->stride * (size_t)t, 4 * sizeof *z->tv);
-    if (tr_tet_is_free(m, t))
-      continue; /* its links: below */
-    for (int k = 0; k < 4; k++)
-      m->tn[4 * (size_t)t + (size_t)k] = TR_NONE;
-    for (int k = 0; k < 4 && s == TR_OK; k++)
-      s = link_face(m, &faces, t, k);
-  }
-  for (size_t i = 0; i < rim.n && s == TR_OK; i++) {
-    uint32_t t = rim.a[i] >> 2;
-    int k = (int)(rim.a[i] & 3);
-    m->tn[rim.a[i]] = TR_NONE;
-    const uint32_t *v = m->tv + 4 * (size_t)t;
-    uint32_t key[3];
-    tr_vtkey_face(v[tr_face_vtx[k][0]], v[tr_face_vtx[k][1]], v[tr_face_vtx[k][2]], key);
-    uint32_t other = tr_vtmap_get(&faces, 3, key);
-    if (other != TR_VTMAP_NONE) {
-      m->tn[rim.a[i]] = other;
-      m->tn[other] = rim.a[i];
-    }
-  }
-  tr_vtmap_free(&faces);
-  tr_u32buf_free(&rim);
-  for (uint32_t i = 0; i < z->nfree_slots; i++)
-    memcpy(m->tn + 4 * (size_t)z->free_tn[5 * (size_t)i], z->free_tn + 5 * (size_t)i + 1,
-           4 * sizeof *z->free_tn);
-  m->nv = z->nv;
-  m->nt = z->nt;
-  m->free_head = z->free_head;
-  m->nfree = z->nfree;
-  memcpy(m->flags, z->flags, z->nt);
-  if (m->region && z->region)
-    memcpy(m->region, z->region, sizeof *z->region * (size_t)z->nt);
-  memcpy(m->v2t, z->v2t, sizeof *z->v2t * (size_t)z->nv);
-  tr_subfaces_free(sub);
-  *sub = z->sub;
-  memset(&z->sub, 0, sizeof z->sub);
-  snap_free(z);
-  if (s != TR_OK)
-    return tr_error(TR_ERR_NOMEM, "out of memory undoing a constraint trial of %u tets",
-                    m->nt);
-  return TR_OK;
-}
-
-static int snap_real(const snap *z, uint32_t t)
-{
-  const uint32_t *v = z->tv + z->stride * (size_t)t;
-  return v[0] != TR_NONE && v[3] != TR_GHOST;
-}
+#include "sliver/snap.h"
 
 /* *better = 1 when the tets the trial created beat the ones it deleted, the worst tet t
  * among them, and keep the bounds (as tr_sliver_keeps_bounds: a new tet over max(ratio
@@ -199,8 +26,8 @@ static int snap_real(const snap *z, uint32_t t)
  * its region's volume bound, which the trial's refinement leaves when it stops at its
  * point budget: two boxes under region bounds once kept such a trial). A tet deleted and
  * made again (in another slot or rotation: a cavity's rim) is neither. */
-static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, double top_ratio,
-                          int *better)
+static tr_status improved(const tr_sliver_ctx *c, const tr_sliver_snap *z, uint32_t t,
+                         double top_ratio, int *better)
 {
   const struct tr_mesh *m = c->m;
   *better = 0;
@@ -209,14 +36,14 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
   tr_sliver_tet_key(z->tv + z->stride * (size_t)t, tkey);
   tr_status s = TR_OK;
   for (uint32_t u = 0; u < z->nt && s == TR_OK; u++)
-    if (snap_real(z, u) && slot_changed(m, z, u)) {
+    if (tr_sliver_snap_real(z, u) && tr_sliver_snap_changed(m, z, u)) {
       tr_sliver_tet_key(z->tv + z->stride * (size_t)u, key);
       s = tr_vtmap_set(&old, 4, key, u);
     }
   double newmin = INFINITY, newratio = 0;
   int again = 0, nnew = 0, nold = 0, over = 0;
   for (uint32_t u = 0; u < m->nt && s == TR_OK; u++) {
-    if (!tr_tet_is_real(m, u) || !slot_changed(m, z, u))
+    if (!tr_tet_is_real(m, u) || !tr_sliver_snap_changed(m, z, u))
       continue;
     tr_sliver_tet_key(m->tv + 4 * (size_t)u, key);
     uint32_t was = tr_vtmap_get(&old, 4, key);
@@ -237,7 +64,7 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
   double oldmin = INFINITY, was = 0;
   int gone = 0;
   for (uint32_t u = 0; u < z->nt && s == TR_OK; u++) {
-    if (!snap_real(z, u) || !slot_changed(m, z, u))
+    if (!tr_sliver_snap_real(z, u) || !tr_sliver_snap_changed(m, z, u))
       continue;
     tr_sliver_tet_key(z->tv + z->stride * (size_t)u, key);
     if (tr_vtmap_get(&old, 4, key) == TR_NONE - 1)
@@ -253,40 +80,14 @@ static tr_status improved(const tr_sliver_ctx *c, const snap *z, uint32_t t, dou
    * keeps the minimum; fewer tets at it is progress all the same */
   *better = s == TR_OK && gone && !again && !over &&
             (newmin > oldmin || (newmin == oldmin && nnew < nold)) &&
-            !(c->keep.ratio > 0 && newratio > fmax(c->keep.ratio, fmax(was, top_ratio)));
+            !(c->keep.ratio > 0 && newratio > tr_sliver_ratio_allowed(c, fmax(was, top_ratio)));
   return s;
-}
-
-/* The context of a trial on the new sub-faces: only the trial's new vertices move (an
- * old vertex's exact point may be no double, and the snapshot keeps no coordinates). */
-static tr_status trial_ctx(const tr_sliver_ctx *c, const tr_subfaces *sub, uint32_t nv0,
-                           tr_sliver_ctx *tc)
-{
-  TR_CHECK(tr_sliver_ctx_init(tc, c->m, sub, NULL, 0, c->bound));
-  /* The trial measures without a cache: one of its own, as long as the slots, was the
-   * largest block of memory the whole run held (CGAL's elephant under -a 4e-7: 8.4 of
-   * 54 MB at the peak), and c's holds the snapshot's slots (snap_take). It measures
-   * only the few tets around its points, each a few times. */
-  free(tc->shapes);
-  tc->shapes = NULL;
-  memset(tc->movable, 0, nv0 < c->m->nv ? nv0 : c->m->nv);
-  tc->insert_bound = c->insert_bound;
-  tc->point_budget = c->point_budget;
-  tc->keep = c->keep;
-  tc->memo = c->memo;
-  return TR_OK;
-}
-
-/* 1 when slot u holds another tet than at the snapshot (or none was there) */
-static int slot_changed(const struct tr_mesh *m, const snap *z, uint32_t u)
-{
-  return u >= z->nt || u >= m->nt ||
-         memcmp(m->tv + 4 * (size_t)u, z->tv + z->stride * (size_t)u, 4 * sizeof *z->tv);
 }
 
 /* The trial's new tets under the bound get the polish's steps (a split leaves slivers
  * next to the new points that they open), SL_CAP_PASSES times over them. */
-static tr_status tidy(tr_sliver_ctx *tc, const snap *z, void *scratch, tr_sliver_stats *st)
+static tr_status tidy(tr_sliver_ctx *tc, const tr_sliver_snap *z, void *scratch,
+                      tr_sliver_stats *st)
 {
   struct tr_mesh *m = tc->m;
   tr_u32buf sh = {0}, ball = {0};
@@ -295,7 +96,7 @@ static tr_status tidy(tr_sliver_ctx *tc, const snap *z, void *scratch, tr_sliver
   for (int pass = 0; pass < SL_CAP_PASSES && s == TR_OK; pass++) {
     uint32_t nt = m->nt;
     for (uint32_t u = 0; u < nt && s == TR_OK; u++) {
-      if (!tr_tet_is_real(m, u) || !slot_changed(m, z, u) ||
+      if (!tr_tet_is_real(m, u) || !tr_sliver_snap_changed(m, z, u) ||
           !(tr_sliver_tet_min(tc, u, NULL) < tc->bound))
         continue;
       uint32_t v[4];
@@ -413,7 +214,8 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
     np = pieces(c, t, p, n);
   if (!np)
     return TR_OK;
-  /* the mesh's largest ratio among the tets the bound looks at (cached) */
+  /* the mesh's largest ratio among the tets the bound looks at (cached); it moves with
+   * the steps before, so the allowance caps it at the stage's start (improved) */
   double top_ratio = 0;
   for (uint32_t u = 0; u < m->nt; u++)
     if (tr_tet_is_real(m, u)) {
@@ -446,8 +248,8 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
       }
     if (refused && tr_vtmap_get(refused, 3, key) != TR_VTMAP_NONE)
       continue;
-    snap z;
-    s = snap_take(c, sub, &z);
+    tr_sliver_snap z;
+    s = tr_sliver_snap_take(c, sub, &z);
     if (s != TR_OK)
       break;
     tr_refine_stats rs;
@@ -462,7 +264,7 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
     memset(&tc, 0, sizeof tc);
     tr_sliver_stats ts = *st;
     if (r == TR_OK && rs.points) {
-      r = trial_ctx(c, sub, z.nv, &tc);
+      r = tr_sliver_trial_ctx(c, sub, z.nv, &tc);
       if (r == TR_OK)
         r = tidy(&tc, &z, scratch, &ts);
       if (r != TR_OK)
@@ -482,7 +284,7 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
       tr_vtmap f = tc.failed;
       tc.failed = c->failed;
       c->failed = f;
-      snap_free(&z);
+      tr_sliver_snap_free(&z);
       tr_sliver_ctx_free(c);
       *c = tc;
       *st = ts;
@@ -494,7 +296,7 @@ tr_status tr_sliver_cap_tet(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t t, int 
       if (c->memo && c->memo->n > z.nv) /* the trial's vertex ids go to other points */
         c->memo->n = z.nv;
       uint32_t nv0 = z.nv;
-      s = snap_restore(m, sub, &z);
+      s = tr_sliver_snap_restore(m, sub, &z);
       /* c's other measures hold: the trial moved no old vertex */
       tr_sliver_forget_from(c, nv0);
     }

@@ -449,7 +449,8 @@ static int try_cavity(const tr_sliver_ctx *c, uint32_t t, const double x[3], int
   }
   uint32_t region = m->region ? m->region[t] : 0; /* no sub-face inside the cavity */
   for (uint32_t i = 0; i < z->nf; i++)
-    if (screen ? c->keep.ratio > 0 && rat[i] > fmax(c->keep.ratio, was) && !(dih[i] >= c->bound)
+    if (screen ? c->keep.ratio > 0 && rat[i] > tr_sliver_ratio_allowed(c, was) &&
+                     !(dih[i] >= c->bound)
                : !tr_sliver_keeps_bounds(c, z->newv + 4 * (size_t)i, pid, x, region, rat[i],
                                          dih[i], was))
       return 0; /* the screen: the ratio part only (the volume part is exact) */

@@ -67,11 +67,17 @@ double tr_sliver_min_dihedral(const struct tr_mesh *m, uint32_t a, uint32_t b, u
   return tr_sliver_min_dihedral_at(m, t, TR_NONE, NULL, NULL);
 }
 
+double tr_sliver_ratio_allowed(const tr_sliver_ctx *c, double ratio_was)
+{
+  double r = fmax(c->keep.ratio, ratio_was);
+  return c->ratio_start > 0 ? fmin(r, fmax(c->keep.ratio, c->ratio_start)) : r;
+}
+
 int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
                            const double x[3], uint32_t region, double ratio, double dih,
                            double ratio_was)
 {
-  if (c->keep.ratio > 0 && ratio > fmax(c->keep.ratio, ratio_was) && !(dih >= c->bound))
+  if (c->keep.ratio > 0 && ratio > tr_sliver_ratio_allowed(c, ratio_was) && !(dih >= c->bound))
     return 0;
   double V = tr_refine_region_bound_of(c->keep.region_id, c->keep.region_max_volume,
                                        c->keep.nregion_bounds, c->keep.max_volume, region);
@@ -292,98 +298,6 @@ tr_status tr_sliver_ctx_init(tr_sliver_ctx *c, struct tr_mesh *m, const tr_subfa
   return TR_OK;
 }
 
-/* The tets under SL_PINNED_BOUND (or the dihedral target, when one raised the insertion
- * bound) with three or four vertices no move may touch and a face on a sub-face: what
- * flips, moves and interior points leave of them is pinned there (bench/quality: most
- * tets under 10 degrees on the CAD models), and only a point on the constraint opens it. */
-static tr_status pinned_tets(const tr_sliver_ctx *c, tr_u32buf *out)
-{
-  const struct tr_mesh *m = c->m;
-  double bound = c->insert_bound > TR_SLIVER_INSERT_BOUND ? c->insert_bound : SL_PINNED_BOUND;
-  out->n = 0;
-  for (uint32_t t = 0; t < m->nt; t++) {
-    if (tr_tet_is_free(m, t))
-      continue;
-    const uint32_t *v = m->tv + 4 * (size_t)t;
-    int fixed = 0;
-    for (int i = 0; i < 4; i++)
-      fixed += !c->movable[v[i]];
-    if (fixed < 3 || !(tr_sliver_tet_min(c, t, NULL) < bound))
-      continue;
-    int touches = 0;
-    for (int k = 0; k < 4 && !touches; k++) {
-      uint32_t f[3] = {v[tr_face_vtx[k][0]], v[tr_face_vtx[k][1]], v[tr_face_vtx[k][2]]};
-      touches = tr_sliver_protected(c, f, 3);
-    }
-    if (touches)
-      TR_CHECK(tr_u32buf_push(out, t));
-  }
-  return TR_OK;
-}
-
-/* Points on the constraints under the pinned tets (tr_refine_open_pinned, within what is
- * left of the stage's budget), then the context again: the new sub-faces and their
- * vertices fixed, refinement's new interior points movable. *added = points added. */
-static tr_status open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoints,
-                             tr_sliver_stats *st, uint64_t *added)
-{
-  struct tr_mesh *m = c->m;
-  *added = 0;
-  tr_u32buf list = {0};
-  tr_status s = pinned_tets(c, &list);
-  if (s != TR_OK || !list.n) {
-    tr_u32buf_free(&list);
-    return s;
-  }
-  const struct tr_plc *plc = c->keep.plc;
-  tr_refine_params rp;
-  memset(&rp, 0, sizeof rp);
-  /* no ratio bound: the new tets around a split piece are not refined further (with it,
-   * rotor_small went from 93,635 to 190,864 tets against TetGen's 60,221); the flips,
-   * moves and points of the next round work on them */
-  rp.ratio = 0;
-  rp.max_volume = c->keep.max_volume;
-  rp.keep_edges = c->keep.keep_edges;
-  rp.flat_splits = c->keep.flat_splits;
-  rp.wedge_grading = c->keep.wedge_grading;
-  rp.budget = TR_SLIVER_POINTS(m->nv); /* its own: the interior points may have used theirs */
-  rp.sub_exported = 1; /* tr_refine's or a hook's output (tr_sliver_remove) */
-  rp.memo = c->memo;
-  rp.region_id = c->keep.region_id;
-  rp.region_max_volume = c->keep.region_max_volume;
-  rp.nregion_bounds = c->keep.nregion_bounds;
-  tr_refine_stats rs;
-  uint32_t nv0 = m->nv;
-  s = tr_refine_open_pinned(m, plc, sub, &rp, list.a, (uint32_t)list.n, &rs);
-  tr_sliver_forget_all(c); /* refinement may have changed any tet */
-  tr_sliver_forget_flips(c);
-  TR_CHECK(s);
-  tr_u32buf_free(&list);
-  *added = rs.points;
-  st->points += rs.points;
-  st->on_constraints += rs.on_segments + rs.on_facets;
-  if (!rs.points)
-    return TR_OK;
-  uint8_t *was = c->movable;
-  c->movable = NULL;
-  tr_sliver_ctx keep = *c;
-  tr_sliver_ctx_free(c);
-  s = tr_sliver_ctx_init(c, m, sub, NULL, npoints, keep.bound);
-  if (s == TR_OK)
-    for (uint32_t v = 0; v < nv0; v++)
-      c->movable[v] &= was[v];
-  free(was);
-  c->insert_bound = keep.insert_bound;
-  /* the next insertion pass: as many interior points as went on the constraints */
-  c->point_budget = st->points + rs.points;
-  c->keep = keep.keep;
-  c->memo = keep.memo;
-  c->sub = keep.sub;
-  c->facets = keep.facets;
-  c->thin = keep.thin;
-  return s;
-}
-
 static tr_status round_of(tr_sliver_ctx *c, const tr_sliver_params *par, tr_sliver_stats *st)
 {
   TR_CHECK(tr_sliver_flip_pass(c, st));
@@ -431,6 +345,14 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
       tr_facets_thin_triangles(plc, &facets, SL_FACET_THIN_CORNER, thin, &tq);
     c.thin = thin;
   }
+  /* the reference of every ratio allowance (tr_sliver_ratio_allowed), fixed here: the
+   * shapes measured now are the ones the first flip pass asks for */
+  for (uint32_t t = 0; s == TR_OK && c.keep.ratio > 0 && t < m->nt; t++)
+    if (tr_tet_is_real(m, t)) {
+      double r;
+      tr_sliver_tet_min(&c, t, &r);
+      c.ratio_start = fmax(c.ratio_start, r);
+    }
   tr_refine_memo memo = {0};
   c.memo = &memo;
   uint64_t added = 0;
@@ -447,7 +369,7 @@ tr_status tr_sliver_remove(struct tr_mesh *m, tr_subfaces *sub, const uint8_t *v
   int pinned_points = c.keep.plc && !c.keep.keep_surface && par->level >= TR_SLIVER_INSERT;
   for (int r = 0; s == TR_OK && pinned_points && r < SL_PINNED_ROUNDS; r++) {
     uint64_t on;
-    s = open_pinned(&c, sub, npoints, st, &on);
+    s = tr_sliver_open_pinned(&c, sub, npoints, st, &on);
     if (s != TR_OK || !on)
       break;
     s = round_of(&c, par, st);

@@ -30,13 +30,16 @@
  *    either side; by a cavity that crosses no sub-face, holds none between two of its
  *    tets and is star-shaped about the point, kept when the new tets' smallest angle
  *    beats the cavity's; at most TR_SLIVER_POINTS(nv) points per stage.
- *  - sliver.c, after the rounds (level 3, with the plc in keep): a tet still under
+ *  - pinned.c, after the rounds (level 3, with the plc in keep): a tet still under
  *    SL_PINNED_BOUND with three or four vertices on constraints and a face on a sub-face
  *    is pinned there; refinement (tr_refine_open_pinned) splits the piece under it,
  *    exactly on its input edge or triangle, and a round of flips, moves and points
  *    follows, SL_PINNED_ROUNDS times at most, then one more round (the caps next to the
  *    last constraint points). That refinement runs without the ratio bound (the volume
- *    bounds hold), so its new tets may be over the ratio bound.
+ *    bounds hold), so its new tets may be over the ratio bound, but a tet under the
+ *    stage's bound only up to the largest ratio the stage started from: it is a trial,
+ *    undone (snap.c) and run again without the pinned tets near a tet that breaks this
+ *    and that the rounds' steps do not open.
  *  - polish.c, last: the rounds only look at tets under the bound, so a small mesh whose
  *    worst tet is above it kept its refinement angles (icosahedron.off: 20.9 degrees).
  *    The globally worst tets, whatever their angle, worst first, get the best flip,
@@ -166,6 +169,10 @@ typedef struct tr_sliver_ctx {
   /* per input triangle, 1 if a facet of its own with a corner under SL_FACET_THIN_CORNER
      (tr_facets_thin_triangles; NULL: none is) */
   const uint8_t *thin;
+  /* the largest radius-edge ratio of the mesh the stage started from (tr_sliver_remove;
+   * 0: none known): no allowance of tr_sliver_ratio_allowed goes above it (or the ratio
+   * bound), whatever the replaced tets' ratios, which earlier steps may have raised */
+  double ratio_start;
 } tr_sliver_ctx;
 
 /* The context of one mesh: c->m = m, the constraint sets of sub, the movable vertices
@@ -219,10 +226,18 @@ void tr_sliver_forget_from(const tr_sliver_ctx *c, uint32_t nv);
  * ghost tets. caps.c's trials use it as their snapshot of the slots. */
 const uint32_t *tr_sliver_shape_keys(const tr_sliver_ctx *c, size_t *stride);
 
+/* The largest ratio a new tet with an angle under c->bound may have where the tets it
+ * replaces had ratios up to ratio_was: max(c->keep.ratio, ratio_was), but never above
+ * max(c->keep.ratio, c->ratio_start). The replaced tets' ratio alone is a moving
+ * reference: a tet with no angle under the bound may have any ratio (below), so a step
+ * that replaces one made by an earlier step could pass that ratio on to a sliver
+ * (star_rounding_budget.off: 52.98 at the start, 97.25 at the end). */
+double tr_sliver_ratio_allowed(const tr_sliver_ctx *c, double ratio_was);
+
 /* 1 iff tet p (positive, exact points; vertex v at the double x when v is one of them) of
  * region `region` keeps c->keep: its exact volume at most the region's bound, and its ratio
- * (given) at most max(c->keep.ratio, ratio_was) unless its smallest dihedral angle `dih`
- * (given) is at least c->bound: a tet with no angle under the bound is well shaped
+ * (given) at most tr_sliver_ratio_allowed(c, ratio_was) unless its smallest dihedral angle
+ * `dih` (given) is at least c->bound: a tet with no angle under the bound is well shaped
  * whatever its ratio (small dihedral angles are what the ratio misses, not the reverse). */
 int tr_sliver_keeps_bounds(const tr_sliver_ctx *c, const uint32_t p[4], uint32_t v,
                            const double x[3], uint32_t region, double ratio, double dih,
@@ -275,6 +290,16 @@ tr_status tr_sliver_insert_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
  * t failed before (c->failed; a failure is remembered). scratch: tr_sliver_insert_scratch()
  * (free() it; NULL: out of memory). */
 tr_status tr_sliver_insert_tet(tr_sliver_ctx *c, uint32_t t, void *scratch, int *done);
+/* Points on the constraints under the pinned tets (pinned.c, after the rounds): the tets
+ * under SL_PINNED_BOUND with three or four fixed vertices and a face on a sub-face get
+ * refinement's points there (tr_refine_open_pinned, within its own TR_SLIVER_POINTS),
+ * kept only when no tet it leaves under the bound has a ratio over
+ * tr_sliver_ratio_allowed(c, INFINITY) after a repair of those, else undone and tried
+ * again without the pinned tets near them; then c again on the new sub-faces (their
+ * vertices fixed, refinement's interior points movable). *added = points on the
+ * constraints (0: none kept). */
+tr_status tr_sliver_open_pinned(tr_sliver_ctx *c, tr_subfaces *sub, uint32_t npoints,
+                                tr_sliver_stats *st, uint64_t *added);
 /* The polish's last resort for a pinned tet (three or four vertices on constraints) that
  * nothing else opened: the same candidates, with cavities carved off the vertices they
  * swallow, else with cavities that may swallow interior points on no constraint (they

@@ -567,6 +567,94 @@ static void a_tet_pinned_between_sub_faces_gets_points_on_them(void)
   tr_plc_destroy(plc);
 }
 
+/* The flat tet of a_tet_pinned_between_sub_faces_gets_points_on_them in *m with its plc
+ * and sub-faces, as the stage takes it (inner tets only); 0 (counted) on a failure. */
+static int flat_tet_surface(tr_plc **plc, tr_mesh **m, tr_subfaces *sub)
+{
+  static const double x[12] = {0, 0, 0, 8, 0, 0, 4, 7, 0, 4, 3, 0.25};
+  static const uint32_t tris[12] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
+  static const uint32_t tri[4] = {0, 1, 2, 3};
+  *plc = NULL;
+  *m = NULL;
+  sub->n = 4;
+  sub->v = malloc(sizeof tris);
+  sub->tri = malloc(sizeof tri);
+  tr_refine_params none;
+  memset(&none, 0, sizeof none);
+  tr_refine_stats rs;
+  if (!sub->v || !sub->tri || tr_plc_create(plc) != TR_OK ||
+      tr_plc_set(*plc, x, 4, tris, 4, NULL) != TR_OK || tr_delaunay_build(x, 4, m) != TR_OK ||
+      (memcpy(sub->v, tris, sizeof tris), memcpy(sub->tri, tri, sizeof tri),
+       tr_refine_open_pinned(*m, *plc, sub, &none, NULL, 0, &rs)) != TR_OK) {
+    EXPECT(0, "flat tet surface: setup: %s", tr_last_error());
+    return 0;
+  }
+  return 1;
+}
+
+/* The pinned tets' refinement (pinned.c) is a trial: kept when no tet it leaves under the
+ * stage's bound has a ratio over what the stage started from (after a repair of those),
+ * undone exactly otherwise. The flat tet's surface: with no start known (ratio_start 0)
+ * its points go in, as before the promise; with a start of 1 (so the ratio bound 1.414
+ * is the limit) every trial leaves such a tet between the four fixed input vertices and
+ * the points on the input triangles, and the mesh comes back slot for slot: the same
+ * vertices, tets and sub-faces, the flat tet still there, and it validates with the
+ * exact volume (6 V = 14). */
+static void the_pinned_tets_refinement_is_undone_when_it_breaks_the_ratio_promise(void)
+{
+  for (int promise = 0; promise < 2; promise++) {
+    tr_plc *plc;
+    tr_mesh *m;
+    tr_subfaces sub = {0, NULL, NULL};
+    tr_sliver_ctx c;
+    memset(&c, 0, sizeof c);
+    tr_status s = TR_ERR_INTERNAL;
+    if (flat_tet_surface(&plc, &m, &sub))
+      s = tr_sliver_ctx_init(&c, m, &sub, NULL, 4, TR_SLIVER_BOUND);
+    EXPECT(s == TR_OK || !m, "pinned trial: context: %s", tr_last_error());
+    if (s == TR_OK) {
+      c.keep.plc = plc;
+      c.keep.ratio = 1.414;
+      c.ratio_start = promise ? 1.0 : 0;
+      uint32_t nv = m->nv, nt = m->nt, nsub = sub.n;
+      uint32_t *tv = malloc(sizeof *tv * 4 * (size_t)nt);
+      uint32_t *sv = malloc(sizeof *sv * 3 * (size_t)nsub);
+      if (tv && sv) {
+        memcpy(tv, m->tv, sizeof *tv * 4 * (size_t)nt);
+        memcpy(sv, sub.v, sizeof *sv * 3 * (size_t)nsub);
+      }
+      tr_sliver_stats st;
+      memset(&st, 0, sizeof st);
+      uint64_t added = 0;
+      s = tr_sliver_open_pinned(&c, &sub, 4, &st, &added);
+      EXPECT(s == TR_OK, "pinned trial: %s", tr_last_error());
+      const uint32_t flat[4] = {0, 1, 2, 3};
+      if (!promise)
+        EXPECT(added >= 1 && m->nv > nv && !has_tet(m, flat),
+               "no promise: %llu points, %u -> %u vertices, the flat tet %s",
+               (unsigned long long)added, nv, m->nv, has_tet(m, flat) ? "stays" : "gone");
+      else
+        EXPECT(added == 0 && st.points == 0 && m->nv == nv && m->nt == nt && sub.n == nsub &&
+                   tv && sv && !memcmp(tv, m->tv, sizeof *tv * 4 * (size_t)nt) &&
+                   !memcmp(sv, sub.v, sizeof *sv * 3 * (size_t)nsub) && has_tet(m, flat),
+               "promise 1.414: %llu points kept, %u -> %u vertices, %u -> %u slots, %u -> %u "
+               "sub-faces", (unsigned long long)added, nv, m->nv, nt, m->nt, nsub, sub.n);
+      mpq_t six_v;
+      mpq_init(six_v);
+      mpq_set_ui(six_v, 14, 1);
+      s = tr_check_mesh(m, TR_CHK_TOPOLOGY, six_v);
+      EXPECT(s == TR_OK, "pinned trial %d: mesh validator: %s", promise, tr_last_error());
+      mpq_clear(six_v);
+      free(tv);
+      free(sv);
+    }
+    tr_sliver_ctx_free(&c);
+    tr_subfaces_free(&sub);
+    tr_mesh_destroy(m);
+    tr_plc_destroy(plc);
+  }
+}
+
 /* The ridge hull of the two cap tests (p q r s u, see below). */
 #define RIDGE_E (1.0 / 64)
 static const double ridge_x[15] = {0, 0, 0, 1, 0, 0, 0.5, 0.25, RIDGE_E, 0.5, -0.25, RIDGE_E,
@@ -745,6 +833,8 @@ int main(int argc, char **argv)
       {"cap", a_pinned_cap_is_opened_by_a_point_off_its_plane, NULL},
       {"cap_under_point", a_pinned_cap_under_a_free_point_is_opened_by_the_last_resort, NULL},
       {"pinned", a_tet_pinned_between_sub_faces_gets_points_on_them, NULL},
+      {"pinned_trial", the_pinned_tets_refinement_is_undone_when_it_breaks_the_ratio_promise,
+       NULL},
       {"beam", a_beam_on_thin_side_triangles_is_no_longer_pinned_and_rises_over_tetgen, NULL},
       {"polish", the_polish_raises_the_minimum_of_an_icosahedron, NULL},
       {"surfaces", NULL, refined_surfaces},
