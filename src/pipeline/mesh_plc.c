@@ -406,7 +406,9 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
     uint64_t ninserted = 0;
     uint32_t nv_ins = m->nv;
     if (st == TR_ERR_INVALID_MESH) {
-      tr_status st2 = tr_round_insert_flat(m, &sub, p, &ninserted);
+      tr_status st2 = tr_pipeline_uncompact_steiner(m, res);
+      if (st2 == TR_OK)
+        st2 = tr_round_insert_flat(m, &sub, p, &ninserted);
       if (st2 != TR_OK)
         st = st2;
     }
