@@ -180,6 +180,118 @@ static tr_status try_edge(ctx *c, uint32_t t, int e, int *done)
   return TR_OK;
 }
 
+/* The last resort for a tet t that no flip takes away and no double position of its
+ * Steiner points repairs (chazelle_g4_ulps: a Steiner point on an input edge between two
+ * wall facets bumpy at subnormal scale, whose two tets with a wall vertex as apex leave
+ * it a window of 0.49 ulp in x): a new vertex at t's centroid g, a double, connected to
+ * the boundary of a cavity grown from t across each face g does not see strictly (exactly
+ * and in doubles) until it sees all, so every new tet is positive exactly and in doubles.
+ * The growth stops at a sub-face, a tet that is not kept or of another region, or
+ * TR_FLATFLIP_MAX_CAVITY tets; it is refused when a vertex of the cavity is not on its
+ * boundary (it would be dropped) or an edge inside it lies on an input segment. */
+#define TR_FLATFLIP_MAX_CAVITY 32
+static int sees(const struct tr_mesh *m, const uint32_t *v)
+{
+  return exact_sign(m, v) > 0 && !tr_round_flat(m, v);
+}
+
+static tr_status try_insert(ctx *c, uint32_t t, int *done)
+{
+  struct tr_mesh *m = c->m;
+  *done = 0;
+  const uint32_t *tv = m->tv + 4 * (size_t)t;
+  double g[3];
+  for (int i = 0; i < 3; i++)
+    g[i] = 0.25 * (m->xyz[3 * (size_t)tv[0] + i] + m->xyz[3 * (size_t)tv[1] + i] +
+                   m->xyz[3 * (size_t)tv[2] + i] + m->xyz[3 * (size_t)tv[3] + i]);
+  uint32_t region = m->region[t], pid;
+  TR_CHECK(tr_mesh_add_vertex(m, g, &pid));
+  uint32_t cav[TR_FLATFLIP_MAX_CAVITY], ncav = 1, newv[4 * 4 * TR_FLATFLIP_MAX_CAVITY], nnew;
+  cav[0] = t;
+  int ok = 0;
+  while (!ok) {
+    /* the cavity's boundary faces, as the new tets with g in the opposite vertex's slot */
+    nnew = 0;
+    uint32_t bad_t = TR_NONE;
+    int bad_k = -1;
+    for (uint32_t i = 0; i < ncav; i++)
+      for (int k = 0; k < 4; k++) {
+        uint32_t code = m->tn[4 * (size_t)cav[i] + (size_t)k], u = code == TR_NONE ? TR_NONE : code >> 2;
+        int inside = 0;
+        for (uint32_t j = 0; j < ncav && !inside; j++)
+          inside = cav[j] == u;
+        if (inside)
+          continue;
+        uint32_t *w = newv + 4 * nnew++;
+        memcpy(w, m->tv + 4 * (size_t)cav[i], 4 * sizeof *w);
+        w[k] = pid;
+        if (bad_t == TR_NONE && !sees(m, w)) {
+          bad_t = cav[i];
+          bad_k = k;
+        }
+      }
+    if (bad_t == TR_NONE) {
+      ok = 1;
+      break;
+    }
+    const uint32_t *bv = m->tv + 4 * (size_t)bad_t;
+    const uint8_t *f = tr_face_vtx[bad_k];
+    uint32_t code = m->tn[4 * (size_t)bad_t + (size_t)bad_k], u = code == TR_NONE ? TR_NONE : code >> 2;
+    if (ncav == TR_FLATFLIP_MAX_CAVITY || !kept(m, u) || m->region[u] != region ||
+        is_subface(c, bv[f[0]], bv[f[1]], bv[f[2]]))
+      break;
+    cav[ncav++] = u;
+  }
+  /* every vertex of the cavity on its boundary; no edge inside it on an input segment */
+  for (uint32_t i = 0; i < ncav && ok; i++)
+    for (int k = 0; k < 4 && ok; k++) {
+      uint32_t x = m->tv[4 * (size_t)cav[i] + k];
+      int found = 0;
+      for (uint32_t j = 0; j < 4 * nnew && !found; j++)
+        found = newv[j] == x;
+      ok = found;
+    }
+  if (ok && c->plc->nsegs)
+    for (uint32_t i = 0; i < ncav && ok; i++)
+      for (int e = 0; e < 6 && ok; e++) {
+        uint32_t a = m->tv[4 * (size_t)cav[i] + tr_edge_vtx[e][0]],
+                 b = m->tv[4 * (size_t)cav[i] + tr_edge_vtx[e][1]];
+        int on_boundary = 0;
+        for (uint32_t j = 0; j < nnew && !on_boundary; j++) {
+          const uint32_t *w = newv + 4 * j;
+          int ha = 0, hb = 0;
+          for (int l = 0; l < 4; l++)
+            ha |= w[l] == a, hb |= w[l] == b;
+          on_boundary = ha && hb;
+        }
+        ok = on_boundary || !on_segment(c, a, b);
+      }
+  if (!ok) {
+    m->nv--; /* the vertex just added (the last slot), referenced by no tet */
+    return TR_OK;
+  }
+  uint32_t ids[4 * TR_FLATFLIP_MAX_CAVITY];
+  TR_CHECK(tr_mesh_replace(m, cav, ncav, newv, nnew, ids));
+  for (uint32_t i = 0; i < nnew; i++)
+    m->region[ids[i]] = region;
+  *done = 1;
+  return TR_OK;
+}
+
+/* Tets still flat in doubles after run(): each gets try_insert (tr_round_insert_flat). */
+static tr_status insert_all(ctx *c, uint64_t *ninserted)
+{
+  struct tr_mesh *m = c->m;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!kept(m, t) || !tr_round_flat(m, m->tv + 4 * (size_t)t))
+      continue;
+    int done = 0;
+    TR_CHECK(try_insert(c, t, &done));
+    *ninserted += (uint64_t)done;
+  }
+  return TR_OK;
+}
+
 static tr_status run(ctx *c, uint64_t *nflips)
 {
   struct tr_mesh *m = c->m;
@@ -287,5 +399,25 @@ tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr
   free(c.region_id);
   free(c.region_bound);
   tr_u32buf_free(&c.shell);
+  return st;
+}
+
+tr_status tr_round_insert_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr_plc *plc,
+                               uint64_t *ninserted)
+{
+  *ninserted = 0;
+  if (!m->region || !m->vq || tr_round_count_nonpositive(m, NULL) == 0)
+    return TR_OK;
+  ctx c = {.m = m, .plc = plc, .nsub = sub->n};
+  c.sub = malloc(3 * sizeof *c.sub * (c.nsub ? c.nsub : 1));
+  if (!c.sub)
+    return tr_error(TR_ERR_NOMEM, "out of memory for %u sub-faces", sub->n);
+  for (uint32_t i = 0; i < c.nsub; i++) {
+    memcpy(c.sub + 3 * (size_t)i, sub->v + 3 * (size_t)i, 3 * sizeof *c.sub);
+    tr_sort3(c.sub + 3 * (size_t)i);
+  }
+  qsort(c.sub, c.nsub, 3 * sizeof *c.sub, tr_cmp_face_key);
+  tr_status st = insert_all(&c, ninserted);
+  free(c.sub);
   return st;
 }

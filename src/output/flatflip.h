@@ -48,4 +48,12 @@
 tr_status tr_round_flip_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr_plc *plc,
                              double max_volume, int split_over, uint64_t *nflips);
 
+/* After the rounding repair failed on the compact copy: each kept tet of m still flat in
+ * doubles gets a new vertex at its centroid (a double) joined to a cavity grown from it
+ * until the centroid sees every face of its boundary strictly, exactly and in doubles
+ * (flatflip.c, try_insert). Only run on that failure, so every mesh the repair handles
+ * stays as it was. *ninserted = vertices added. */
+tr_status tr_round_insert_flat(struct tr_mesh *m, const tr_subfaces *sub, const tr_plc *plc,
+                               uint64_t *ninserted);
+
 #endif

@@ -176,3 +176,25 @@ done:
     *out = o;
   return st;
 }
+
+tr_status tr_pipeline_uncompact_steiner(struct tr_mesh *m, struct tr_mesh *res)
+{
+  /* the renumbering of tr_pipeline_compact: kept vertices in increasing id */
+  uint8_t *used = calloc(m->nv ? m->nv : 1, 1);
+  if (!used)
+    return tr_error(TR_ERR_NOMEM, "out of memory giving the Steiner points back");
+  for (uint32_t t = 0; t < m->nt; t++)
+    if (keep(m, t))
+      for (int k = 0; k < 4; k++)
+        used[m->tv[4 * (size_t)t + k]] = 1;
+  for (uint32_t v = 0, j = 0; v < m->nv && j < res->nv; v++)
+    if (used[v]) {
+      if (res->vq && res->vq[j] && m->vq) {
+        m->vq[v] = res->vq[j];
+        res->vq[j] = NULL;
+      }
+      j++;
+    }
+  free(used);
+  return TR_OK;
+}

@@ -399,6 +399,32 @@ tr_status tr_mesh_plc_flags(const tr_plc *plc, const tr_options *optin, tr_mesh 
               (unsigned long long)flat);
   } else if (st == TR_OK) {
     st = tr_round_steiner(res, opt.round_budget, &stats->rounding_repairs);
+    /* No double position exists for some Steiner point (a window under an ulp between
+     * tets on a facet bumpy at subnormal scale): new vertices at the centroids of the
+     * tets still flat (flatflip.h), then compaction and the repair once more. Only on
+     * this failure, so every mesh the repair handles is written as before. */
+    uint64_t ninserted = 0;
+    uint32_t nv_ins = m->nv;
+    if (st == TR_ERR_INVALID_MESH) {
+      tr_status st2 = tr_pipeline_uncompact_steiner(m, res);
+      if (st2 == TR_OK)
+        st2 = tr_round_insert_flat(m, &sub, p, &ninserted);
+      if (st2 != TR_OK)
+        st = st2;
+    }
+    if (ninserted) {
+      st = tr_pipeline_origins_extend(m, p, &sub, edges, ne, nv_ins, &vkind, &vindex);
+      if (st == TR_OK && opt.verbose >= 2)
+        fprintf(stderr, "tetrec: %llu points added where no double position was left\n",
+                (unsigned long long)ninserted);
+      tr_mesh_destroy(res);
+      res = NULL;
+      tr_compact_in cin = {&sub, p->tri_marker, vkind, vindex, edges, ne, subtet, nsubtet};
+      if (st == TR_OK)
+        st = tr_pipeline_compact(m, &cin, &res);
+      if (st == TR_OK)
+        st = tr_round_steiner(res, opt.round_budget, &stats->rounding_repairs);
+    }
     if (st == TR_OK && stats->rounding_repairs && opt.verbose >= 1)
       fprintf(stderr,
               "tetrec: %llu Steiner points moved off their nearest double so that every "

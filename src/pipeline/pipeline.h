@@ -105,6 +105,9 @@ typedef struct tr_compact_in {
  * points are moved out of m. */
 tr_status tr_pipeline_compact(struct tr_mesh *m, const tr_compact_in *in,
                               struct tr_mesh **out);
+/* Gives the Steiner points tr_pipeline_compact moved from m into res back to m (m not
+ * changed since), so that m can be edited and compacted again; res keeps none. */
+tr_status tr_pipeline_uncompact_steiner(struct tr_mesh *m, struct tr_mesh *res);
 
 /* Boundary Steiner points taken off the surface after outer removal (src/suppress) unless
  * flags has TR_PIPE_KEEP_STEINER, the Steiner counts by location into stats; under

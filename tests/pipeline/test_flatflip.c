@@ -195,6 +195,31 @@ static void t_swap32(void)
   tr_mesh_destroy(m);
 }
 
+/* The insertion after a failed repair (tr_round_insert_flat) never crosses the mesh's
+ * boundary: in the bipyramid abcd + acbe of t_swap23 (called without the flips), the
+ * centroid of the flat abcd lies on abc in doubles, so the cavity grows across abc into
+ * acbe and then meets abd, bcd, cad, boundary faces in the plane of abc in doubles that
+ * the centroid does not see: refused, nothing changes (2 tets, 5 vertices, abcd still
+ * the one flat tet, exactly valid with the same volume and boundary). */
+static void t_insert_refused(void)
+{
+  struct tr_mesh *m = sliver_on_abc(1);
+  snapshot s;
+  take(&s, m);
+  tr_plc *none = NULL;
+  tr_plc_create(&none);
+  uint64_t n = 99;
+  tr_status st = tr_round_insert_flat(m, &(tr_subfaces){0}, none, &n);
+  EXPECT(st == TR_OK, "insert_refused: %s", tr_last_error());
+  EXPECT(n == 0, "insert_refused: %llu points inserted, want 0", (unsigned long long)n);
+  EXPECT(m->nv == 5, "insert_refused: %u vertices, want 5", m->nv);
+  EXPECT(tr_mesh_count_real(m) == 2, "insert_refused: %u tets, want 2", tr_mesh_count_real(m));
+  EXPECT(tr_round_count_nonpositive(m, NULL) == 1, "insert_refused: want abcd still flat");
+  same_region("insert_refused", m, &s);
+  tr_plc_destroy(none);
+  tr_mesh_destroy(m);
+}
+
 int main(int argc, char **argv)
 {
   const char *w = argc > 1 ? argv[1] : "all";
@@ -207,6 +232,8 @@ int main(int argc, char **argv)
     t_regions_kept();
   if (all || !strcmp(w, "swap32"))
     t_swap32();
+  if (all || !strcmp(w, "insert_refused"))
+    t_insert_refused();
   if (failures)
     fprintf(stderr, "%d failures\n", failures);
   return failures ? 1 : 0;
