@@ -541,11 +541,11 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
       /* the passes retry every point left while anything changed: a retriangulation
        * that failed on the same star (and the same tets behind it) would fail again */
       uint64_t key = c->tried ? sup_star_key(m, p, &star, (unsigned)dbl) : 0;
-      if (!key || c->tried[p] != key) {
+      if (!key || c->tried[2 * (size_t)p + (size_t)dbl] != key) {
         uint32_t t;
         st = sup_star_fill(m, c, p, region, dbl, SUP_FILL_EXPAND, &t, done);
         if (st == TR_OK && !*done && key)
-          c->tried[p] = key;
+          c->tried[2 * (size_t)p + (size_t)dbl] = key;
       }
       if (st == TR_OK && !*done)
         st = sup_flip_out(m, c, p, region, dbl, done);

@@ -16,11 +16,17 @@ typedef struct sup_ctx {
   uint32_t *head;              /* nv: first node of the vertex's list, TR_NONE */
   uint32_t nl, capl;
   uint32_t *lnext, *lsub;      /* nodes: next node, sub-face */
-  uint64_t *tried;             /* nv or NULL: per interior point, the key of its star at
-                                  its last failed retriangulation (star.c), 0 none */
-  uint64_t *mtried;            /* nv or NULL: the same for its last failed merge (merge.c) */
-  uint64_t *ftried;            /* nv or NULL: the same for its last failed retriangulation
-                                  of the star its flips got stuck on (flipout.c) */
+  uint64_t *tried;             /* 2 * nv or NULL: per interior point p and dbl, at
+                                  2 * p + dbl, the key of its star at its last failed
+                                  retriangulation (star.c), 0 none. One slot per dbl:
+                                  --keep-surface tries dbl = 1 then 0 on every pass, and
+                                  with one slot each try overwrote the other's key, so
+                                  no retry was ever skipped */
+  uint64_t *mtried;            /* nv or NULL: the same for its last failed merge (merge.c;
+                                  at dbl = 1 only) */
+  uint64_t *ftried;            /* 2 * nv or NULL: as tried, for its last failed
+                                  retriangulation of the star its flips got stuck on
+                                  (flipout.c) */
 } sup_ctx;
 
 /* Appends sub-face (a,b,c) of input triangle tri and links it to its vertices. */
