@@ -203,12 +203,17 @@ tr_status sup_flip_out(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t
     uint64_t key = c && c->ftried ? sup_star_key(m, p, &ball, (unsigned)dbl) : 0;
     if (m->region && ball.n)
       st = paint(m, ball.a[0], &link, region);
+    int by_dbl = 1;
     if (st == TR_OK && (!key || c->ftried[2 * (size_t)p + (dbl != 0)] != key))
-      st = sup_star_fill(m, c, p, region, dbl, SUP_FILL_EXPAND, &tf, &filled);
+      st = sup_star_fill(m, c, p, region, dbl, SUP_FILL_EXPAND, &tf, &filled, &by_dbl);
     if (st == TR_OK && filled)
       *done = 1;
-    else if (st == TR_OK && key)
+    else if (st == TR_OK && key) {
       c->ftried[2 * (size_t)p + (dbl != 0)] = key;
+      /* refused whatever dbl: the same star at dbl = 0 would redo it */
+      if (dbl && !by_dbl)
+        c->ftried[2 * (size_t)p] = sup_star_key(m, p, &ball, 0);
+    }
   }
   /* the 4-1 flip: the vertex of the link that t0 lacks takes p's place in t0 */
   uint32_t nv[4] = {0, 0, 0, 0};

@@ -543,9 +543,14 @@ tr_status sup_point(sup_ctx *c, uint32_t p, unsigned flags, int *done)
       uint64_t key = c->tried ? sup_star_key(m, p, &star, (unsigned)dbl) : 0;
       if (!key || c->tried[2 * (size_t)p + (size_t)dbl] != key) {
         uint32_t t;
-        st = sup_star_fill(m, c, p, region, dbl, SUP_FILL_EXPAND, &t, done);
-        if (st == TR_OK && !*done && key)
+        int by_dbl = 0;
+        st = sup_star_fill(m, c, p, region, dbl, SUP_FILL_EXPAND, &t, done, &by_dbl);
+        if (st == TR_OK && !*done && key) {
           c->tried[2 * (size_t)p + (size_t)dbl] = key;
+          /* refused whatever dbl: the dbl = 0 try (--keep-surface) would redo it */
+          if (dbl && !by_dbl)
+            c->tried[2 * (size_t)p] = sup_star_key(m, p, &star, 0);
+        }
       }
       if (st == TR_OK && !*done)
         st = sup_flip_out(m, c, p, region, dbl, done);

@@ -62,10 +62,12 @@ tr_status sup_flip_out(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t
  * without it, the star expanded across missing non-constraint faces at most `rounds`
  * times (starfill.c). c: the sub-faces, the constraints an expansion must not cross
  * (NULL: none). *done = 1 if p is gone (*tnew: one of the new tets); else the mesh is
- * untouched. */
+ * untouched. *by_dbl (if not NULL) = 1 iff it was refused by a new tet that is flat at
+ * doubles only: with 0, a call with dbl = 0 does the same work for the same refusal
+ * (dbl decides nothing else), so a dbl = 1 refusal may key the dbl = 0 slot too. */
 #define SUP_FILL_EXPAND 3
 tr_status sup_star_fill(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t region,
-                        int dbl, int rounds, uint32_t *tnew, int *done);
+                        int dbl, int rounds, uint32_t *tnew, int *done, int *by_dbl);
 
 /* 1 iff every face of f (nf triples, right-hand normal pointing in) not on apex sees
  * apex (a vertex; TR_NONE: the double point q) strictly positively, exactly and, with
