@@ -79,6 +79,17 @@ int sup_sees_all(const struct tr_mesh *m, const uint32_t *f, size_t nf, uint32_t
  * `relaxes` margins, the costly part), the centroids of the tets of star (star.c).
  * *found = 1 if found. */
 #define SUP_RELAX_PASSES 6
+
+/* A face's plane for sup_relax: normal n (length len; 0: a face of zero length, skipped)
+ * and a point a on it, in the frame 2^-e. */
+typedef struct sup_kplane {
+  double n[3], a[3], len;
+} sup_kplane;
+/* find_q's projections into the kernel of the planes pl[0..nf) (star.c): from g (not in
+ * the frame), at most 400 steps onto the half-space d >= tau of the most violated plane,
+ * tau = L / 8^(pass + 1); the point reached into q (not in the frame). */
+void sup_relax(const sup_kplane *pl, size_t nf, int e, double L, const double g[3], double q[3],
+               int pass);
 tr_status sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
                      const double *p0, const double g[3], const double dir[4], int dbl,
                      int relaxes, double q[3], int *found);
