@@ -69,6 +69,7 @@ enum { FILL_OK, FILL_MISSING, FILL_FAIL };
  * tr_face_vtx order (the cavity on their positive side), its vertices but p (sorted). */
 typedef struct fillcav {
   tr_u32buf reg, bt, bv, gid, missing; /* missing: indices into bt of faces not found */
+  int by_dbl; /* the last fill was refused by a new tet flat at doubles only */
 } fillcav;
 
 static int in_reg(const fillcav *c, uint32_t t)
@@ -103,6 +104,7 @@ static tr_status fill(struct tr_mesh *m, uint32_t p, fillcav *c, int dbl, tr_u32
                       int *res)
 {
   *res = FILL_FAIL;
+  c->by_dbl = 0;
   TR_CHECK(collect(m, p, c));
   uint32_t n = (uint32_t)c->gid.n, nb = (uint32_t)(c->bt.n);
   if (n > SUP_FILL_MAX_LINK || n < 4)
@@ -184,8 +186,10 @@ static tr_status fill(struct tr_mesh *m, uint32_t p, fillcav *c, int dbl, tr_u32
     if (tr_orient3d_p(&pts[t[0]], &pts[t[1]], &pts[t[2]], &pts[t[3]]) <= 0)
       goto done;
     uint32_t v[4] = {gid[t[0]], gid[t[1]], gid[t[2]], gid[t[3]]};
-    if (dbl && !dbl_positive(m, v))
+    if (dbl && !dbl_positive(m, v)) {
+      c->by_dbl = 1;
       goto done;
+    }
     for (int q = 0; q < 4 && st == TR_OK; q++) {
       used[t[q]] = 1;
       st = tr_u32buf_push(out, v[q]);
@@ -252,9 +256,11 @@ static tr_status expand(struct tr_mesh *m, const sup_ctx *sc, fillcav *c, uint32
 }
 
 tr_status sup_star_fill(struct tr_mesh *m, const sup_ctx *sc, uint32_t p, uint32_t region,
-                        int dbl, int rounds, uint32_t *tnew, int *done)
+                        int dbl, int rounds, uint32_t *tnew, int *done, int *by_dbl)
 {
   *done = 0;
+  if (by_dbl)
+    *by_dbl = 0;
   *tnew = TR_NONE;
   fillcav c;
   memset(&c, 0, sizeof c);
@@ -274,6 +280,8 @@ tr_status sup_star_fill(struct tr_mesh *m, const sup_ctx *sc, uint32_t p, uint32
     st = expand(m, sc, &c, region, &ok);
   }
   ok = st == TR_OK && res == FILL_OK;
+  if (by_dbl)
+    *by_dbl = c.by_dbl;
   uint32_t nnew = (uint32_t)(nv.n / 4);
   if (ok && !(ids = malloc(sizeof *ids * (nnew ? nnew : 1))))
     st = tr_error(TR_ERR_NOMEM, "out of memory removing a point");

@@ -234,9 +234,9 @@ tr_status tr_suppress_steiner(struct tr_mesh *m, tr_subfaces *sub, const tr_plc 
     return tr_error(TR_ERR_NOMEM, "out of memory for %u vertices", m->nv);
   for (uint32_t v = 0; v < m->nv; v++)
     c.head[v] = TR_NONE;
-  c.tried = calloc(m->nv ? m->nv : 1, sizeof *c.tried);
+  c.tried = calloc(2 * (size_t)(m->nv ? m->nv : 1), sizeof *c.tried);
   c.mtried = calloc(m->nv ? m->nv : 1, sizeof *c.mtried);
-  c.ftried = calloc(m->nv ? m->nv : 1, sizeof *c.ftried);
+  c.ftried = calloc(2 * (size_t)(m->nv ? m->nv : 1), sizeof *c.ftried);
   if (!c.tried || !c.mtried || !c.ftried) {
     free(c.head);
     free(c.tried);

@@ -16,11 +16,17 @@ typedef struct sup_ctx {
   uint32_t *head;              /* nv: first node of the vertex's list, TR_NONE */
   uint32_t nl, capl;
   uint32_t *lnext, *lsub;      /* nodes: next node, sub-face */
-  uint64_t *tried;             /* nv or NULL: per interior point, the key of its star at
-                                  its last failed retriangulation (star.c), 0 none */
-  uint64_t *mtried;            /* nv or NULL: the same for its last failed merge (merge.c) */
-  uint64_t *ftried;            /* nv or NULL: the same for its last failed retriangulation
-                                  of the star its flips got stuck on (flipout.c) */
+  uint64_t *tried;             /* 2 * nv or NULL: per interior point p and dbl, at
+                                  2 * p + dbl, the key of its star at its last failed
+                                  retriangulation (star.c), 0 none. One slot per dbl:
+                                  --keep-surface tries dbl = 1 then 0 on every pass, and
+                                  with one slot each try overwrote the other's key, so
+                                  no retry was ever skipped */
+  uint64_t *mtried;            /* nv or NULL: the same for its last failed merge (merge.c;
+                                  at dbl = 1 only) */
+  uint64_t *ftried;            /* 2 * nv or NULL: as tried, for its last failed
+                                  retriangulation of the star its flips got stuck on
+                                  (flipout.c) */
 } sup_ctx;
 
 /* Appends sub-face (a,b,c) of input triangle tri and links it to its vertices. */
@@ -56,10 +62,12 @@ tr_status sup_flip_out(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t
  * without it, the star expanded across missing non-constraint faces at most `rounds`
  * times (starfill.c). c: the sub-faces, the constraints an expansion must not cross
  * (NULL: none). *done = 1 if p is gone (*tnew: one of the new tets); else the mesh is
- * untouched. */
+ * untouched. *by_dbl (if not NULL) = 1 iff it was refused by a new tet that is flat at
+ * doubles only: with 0, a call with dbl = 0 does the same work for the same refusal
+ * (dbl decides nothing else), so a dbl = 1 refusal may key the dbl = 0 slot too. */
 #define SUP_FILL_EXPAND 3
 tr_status sup_star_fill(struct tr_mesh *m, const sup_ctx *c, uint32_t p, uint32_t region,
-                        int dbl, int rounds, uint32_t *tnew, int *done);
+                        int dbl, int rounds, uint32_t *tnew, int *done, int *by_dbl);
 
 /* 1 iff every face of f (nf triples, right-hand normal pointing in) not on apex sees
  * apex (a vertex; TR_NONE: the double point q) strictly positively, exactly and, with
@@ -71,6 +79,17 @@ int sup_sees_all(const struct tr_mesh *m, const uint32_t *f, size_t nf, uint32_t
  * `relaxes` margins, the costly part), the centroids of the tets of star (star.c).
  * *found = 1 if found. */
 #define SUP_RELAX_PASSES 6
+
+/* A face's plane for sup_relax: normal n (length len; 0: a face of zero length, skipped)
+ * and a point a on it, in the frame 2^-e. */
+typedef struct sup_kplane {
+  double n[3], a[3], len;
+} sup_kplane;
+/* find_q's projections into the kernel of the planes pl[0..nf) (star.c): from g (not in
+ * the frame), at most 400 steps onto the half-space d >= tau of the most violated plane,
+ * tau = L / 8^(pass + 1); the point reached into q (not in the frame). */
+void sup_relax(const sup_kplane *pl, size_t nf, int e, double L, const double g[3], double q[3],
+               int pass);
 tr_status sup_find_q(const struct tr_mesh *m, const tr_u32buf *bf, const tr_u32buf *star,
                      const double *p0, const double g[3], const double dir[4], int dbl,
                      int relaxes, double q[3], int *found);

@@ -10,7 +10,9 @@
  *   expanded     the mesh made non-Delaunay first (every third inner point removed by
  *                flips, flipout.c); then the stars that need an expansion are retried
  *                with every face beyond them a sub-face (the expansion must refuse:
- *                the point stays, the mesh unchanged), then without constraints */
+ *                the point stays, the mesh unchanged), then without constraints
+ *   by_dbl       on that mesh, a star refused at dbl = 1 and not by doubles is refused
+ *                at dbl = 0 too (what lets the memo skip the dbl = 0 try) */
 #include <gmp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,12 +26,12 @@
 #include "tsup.h"
 
 /* One call, then the checks of the file's header. Returns done. */
-static int fill_one(struct tr_mesh *m, const sup_ctx *c, uint32_t p, int dbl, int rounds,
-                    mpq_t vol)
+static int fill_one_by(struct tr_mesh *m, const sup_ctx *c, uint32_t p, int dbl, int rounds,
+                       mpq_t vol, int *by_dbl)
 {
   uint32_t n0 = 0, n1 = 0, *before = canon(m, &n0), t = TR_NONE;
   int done = -1;
-  tr_status s = sup_star_fill(m, c, p, 7, dbl, rounds, &t, &done);
+  tr_status s = sup_star_fill(m, c, p, 7, dbl, rounds, &t, &done, by_dbl);
   EXPECT(s == TR_OK, "point %u: %s", p, tr_last_error());
   s = tr_check_mesh(m, TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T, vol);
   EXPECT(s == TR_OK, "after point %u (done %d): %s", p, done, tr_last_error());
@@ -50,6 +52,56 @@ static int fill_one(struct tr_mesh *m, const sup_ctx *c, uint32_t p, int dbl, in
   free(before);
   free(after);
   return done;
+}
+
+static int fill_one(struct tr_mesh *m, const sup_ctx *c, uint32_t p, int dbl, int rounds,
+                    mpq_t vol)
+{
+  return fill_one_by(m, c, p, dbl, rounds, vol, NULL);
+}
+
+/* The memo's shortcut (star.c, flipout.c): a star refused at dbl = 1 with by_dbl = 0 is
+ * not tried at dbl = 0. On integer points every double is exact, so no refusal can come
+ * from doubles (by_dbl must be 0), and each star refused at dbl = 1, with or without the
+ * expansion, must be refused at dbl = 0 too, the mesh left as it was. */
+static void by_dbl_case(uint32_t n, uint32_t seed)
+{
+  struct tr_mesh *m = mesh_of(n, seed);
+  if (!m)
+    return;
+  mpq_t vol;
+  mpq_init(vol);
+  mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
+  uint32_t k = 0, refused = 0;
+  for (uint32_t p = 0; p < m->nv; p++) {
+    if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p) || k++ % 3)
+      continue;
+    int done = 0;
+    EXPECT(sup_flip_out(m, NULL, p, 7, 0, &done) == TR_OK, "flips: %s", tr_last_error());
+  }
+  for (uint32_t p = 0; p < m->nv; p++) {
+    if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p))
+      continue;
+    for (int rounds = 0; rounds <= SUP_FILL_EXPAND; rounds += SUP_FILL_EXPAND) {
+      sup_ctx c;
+      tsup_constrain_all_but(&c, m, p, TR_NONE, NULL);
+      int by_dbl = -1, done = fill_one_by(m, &c, p, 1, rounds, vol, &by_dbl);
+      if (done == 0) {
+        EXPECT(by_dbl == 0, "point %u: refused by doubles on integer points", p);
+        done = fill_one_by(m, &c, p, 0, rounds, vol, &by_dbl);
+        EXPECT(done == 0, "point %u: refused at dbl 1 (not by doubles), removed at dbl 0", p);
+        refused++;
+      }
+      tsup_ctx_free(&c);
+      if (done == 1)
+        break;
+    }
+  }
+  fprintf(stderr, "%u points (seed %u): %u refusals at dbl 1 not by doubles, refused at dbl 0 "
+          "too\n", n, seed, refused);
+  EXPECT(refused > 0, "no star was refused: a test of nothing");
+  mpq_clear(vol);
+  tr_mesh_destroy(m);
 }
 
 static void delaunay_case(uint32_t n, uint32_t seed, int dbl)
@@ -128,6 +180,8 @@ int main(int argc, char **argv)
     delaunay_case(120, 6, 1);
   else if (!strcmp(c, "expanded"))
     expanded_case(200, 7);
+  else if (!strcmp(c, "by_dbl"))
+    by_dbl_case(200, 7);
   else {
     fprintf(stderr, "unknown case '%s'\n", c);
     return 2;
