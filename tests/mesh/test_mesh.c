@@ -504,6 +504,84 @@ static int find_edges_matches_brute_force(void)
   return 0;
 }
 
+/* tr_mesh_find_edges on random Delaunay meshes (points on a coarse grid: coplanar and
+ * cospherical sets) against a vertex adjacency matrix of every real tet edge, for edge
+ * lists like the callers' (mesh edges and absent pairs, sorted or not, either order,
+ * repeated): the one pass over the tets against the asked edges answers every index. */
+static int find_edges_matches_adjacency_on_random_meshes(void)
+{
+  unsigned long long r = 88172645463325252ull;
+  uint32_t checked = 0, found = 0;
+  for (int round = 0; round < 6; round++) {
+    uint32_t np = 40 + 60 * (uint32_t)round;
+    double *x = malloc(sizeof *x * 3 * np);
+    EXPECT(x != NULL, "malloc");
+    for (uint32_t i = 0; i < 3 * np; i++) {
+      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      x[i] = (double)(r % 9);
+    }
+    struct tr_mesh *m;
+    /* repeated points are merged: nv counts the distinct ones */
+    EXPECT_OK(tr_delaunay_build(x, np, &m), "Delaunay mesh");
+    free(x);
+    uint32_t nv = m->nv;
+    uint8_t *adj = calloc((size_t)nv * nv, 1);
+    EXPECT(adj != NULL, "malloc");
+    for (uint32_t t = 0; t < m->nt; t++)
+      for (int i = 0; tr_tet_is_real(m, t) && i < 4; i++)
+        for (int j = 0; j < 4; j++)
+          if (i != j)
+            adj[(size_t)m->tv[4 * t + i] * nv + m->tv[4 * t + j]] = 1;
+    uint32_t ne = 4 * nv, *e = malloc(sizeof *e * 2 * ne);
+    uint8_t *yes = malloc(ne);
+    EXPECT(e && yes, "malloc");
+    for (uint32_t i = 0; i < ne; i++) {
+      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      uint32_t a, b;
+      if (i > 0 && r % 7 == 0) { /* a repeat, maybe reversed */
+        uint32_t k = (uint32_t)(r >> 8) % i;
+        a = e[2 * k + (r >> 40 & 1)];
+        b = e[2 * k + 1 - (r >> 40 & 1)];
+      } else if (r % 2) { /* an edge of a random real tet */
+        uint32_t t = (uint32_t)(r >> 8) % m->nt;
+        while (!tr_tet_is_real(m, t))
+          t = (t + 1) % m->nt;
+        int k = (int)(r >> 40) % 6;
+        a = m->tv[4 * t + tr_edge_vtx[k][0]];
+        b = m->tv[4 * t + tr_edge_vtx[k][1]];
+      } else { /* a random pair */
+        a = (uint32_t)(r >> 8) % nv;
+        b = (a + 1 + (uint32_t)(r >> 40) % (nv - 1)) % nv;
+      }
+      e[2 * i] = a;
+      e[2 * i + 1] = b;
+    }
+    /* sorted (a < b, lexicographic) like edge recovery's list in even rounds */
+    for (uint32_t i = 0; round % 2 == 0 && i < ne; i++)
+      if (e[2 * i] > e[2 * i + 1]) {
+        uint32_t tmp = e[2 * i];
+        e[2 * i] = e[2 * i + 1];
+        e[2 * i + 1] = tmp;
+      }
+    memset(yes, 7, ne);
+    EXPECT_OK(tr_mesh_find_edges(m, e, ne, yes), "find_edges");
+    for (uint32_t i = 0; i < ne; i++) {
+      uint8_t want = adj[(size_t)e[2 * i] * nv + e[2 * i + 1]];
+      EXPECT(yes[i] == want, "round %d, edge %u (%u-%u): %d, adjacency %d", round, i,
+             e[2 * i], e[2 * i + 1], yes[i], want);
+      found += want;
+    }
+    checked += ne;
+    free(adj);
+    free(e);
+    free(yes);
+    tr_mesh_destroy(m);
+  }
+  EXPECT(found > checked / 4 && found < checked - checked / 4,
+         "both answers exercised (%u of %u present)", found, checked);
+  return 0;
+}
+
 /* A constructed Steiner point past TR_STEINER_MAX_BITS is refused with
  * TR_ERR_UNSUPPORTED and left to the caller; one just under it is stored. The sizes are
  * those of the coordinates' numerators and denominators summed over the three axes. */
@@ -561,6 +639,8 @@ int main(int argc, char **argv)
     return ball_find_matches_brute_force();
   if (!strcmp(c, "find_edges"))
     return find_edges_matches_brute_force();
+  if (!strcmp(c, "find_edges_random"))
+    return find_edges_matches_adjacency_on_random_meshes();
   if (!strcmp(c, "steiner_guard"))
     return steiner_size_guard_refuses_past_the_limit();
   if (!strcmp(c, "hilbert"))
