@@ -134,50 +134,63 @@ tr_status tr_ball_find_domain(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_
 tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                              uint32_t *tet)
 {
-  /* face key -> the first triangle with it; a repeated triangle takes that one's tet */
-  tr_vtmap faces = {0};
-  tr_status st = tr_vtmap_reserve(&faces, 3, n);
-  if (st == TR_OK)
-    st = tr_vtmap_filter(&faces); /* most faces of the mesh are no triangle of the list */
-  for (uint32_t i = 0; i < n && st == TR_OK; i++) {
-    uint32_t k[3];
-    tr_vtkey_face(tris[3 * (size_t)i], tris[3 * (size_t)i + 1], tris[3 * (size_t)i + 2], k);
-    st = tr_vtmap_put(&faces, 3, k, i, NULL);
-    tet[i] = TR_NONE;
-  }
-  /* Each face is looked up once, from the lower of its two tets, which halves the
-   * probes. Ghosts take part so that the neighbour's kind never has to be read (a random
-   * access per face, most of this loop's time): a ghost looks up its one real face, the
-   * hull face opposite its ghost vertex (slot 3), for the real tet across it. The tet
-   * found for a face is its first real tet in slot order: deterministic. */
-  for (uint32_t t = 0; t < m->nt && st == TR_OK; t++) {
-    if (tr_tet_is_free(m, t))
+  /* The real tets of each vertex, in slot order (a CSR built in two passes over the
+   * tets): a triangle's tet is the first in the list of its vertex with the fewest tets
+   * that has the other two, so the first real tet in slot order with the face, as a
+   * deterministic answer must be. A hash of the triangles probed for every face of every
+   * tet cost twice as much (a sorted key and a hash per face, two faces per tet). */
+  uint32_t nv = m->nv, *start = calloc((size_t)nv + 2, sizeof *start), *list = NULL;
+  if (!start)
+    return tr_error(TR_ERR_NOMEM, "out of memory for the tets of %u vertices", nv);
+  size_t total = 0;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
       continue;
     const uint32_t *tv = m->tv + 4 * (size_t)t;
-    int ghost = tr_tet_is_ghost(m, t);
-    for (int f = ghost ? 3 : 0; f < 4; f++) {
-      uint32_t nb = m->tn[4 * (size_t)t + f];
-      if (nb != TR_NONE && nb / 4 < t)
-        continue;
-      uint32_t real = ghost ? (nb == TR_NONE ? TR_NONE : nb / 4) : t;
-      if (real == TR_NONE)
-        continue;
-      uint32_t k[3];
-      tr_vtkey_face(tv[tr_face_vtx[f][0]], tv[tr_face_vtx[f][1]], tv[tr_face_vtx[f][2]], k);
-      uint32_t i = tr_vtmap_get(&faces, 3, k);
-      if (i != TR_VTMAP_NONE && tet[i] == TR_NONE)
-        tet[i] = real;
+    for (int k = 0; k < 4; k++)
+      start[tv[k] + 2]++;
+    total += 4;
+  }
+  if (total >= UINT32_MAX || !(list = malloc(sizeof *list * (total ? total : 1)))) {
+    free(start);
+    return tr_error(TR_ERR_NOMEM, "out of memory for the %zu vertex-tet pairs of the mesh",
+                    total);
+  }
+  /* counted at v + 2, summed: start[v + 1] is where v's entries begin; filling moves it
+   * to where they end, so that v's range is [start[v], start[v + 1]) */
+  for (uint32_t v = 2; v <= nv; v++)
+    start[v] += start[v - 1];
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)t;
+    for (int k = 0; k < 4; k++)
+      list[start[tv[k] + 1]++] = t;
+  }
+  for (uint32_t i = 0; i < n; i++) {
+    const uint32_t *T = tris + 3 * (size_t)i;
+    tet[i] = TR_NONE;
+    if (T[0] >= nv || T[1] >= nv || T[2] >= nv)
+      continue; /* no tet has a vertex that is not in the mesh */
+    int a = 0;
+    for (int k = 1; k < 3; k++)
+      if (start[T[k] + 1] - start[T[k]] < start[T[a] + 1] - start[T[a]])
+        a = k;
+    uint32_t b = T[(a + 1) % 3], c = T[(a + 2) % 3];
+    if (b == c || b == T[a])
+      continue; /* a degenerate triple is no face */
+    for (uint32_t j = start[T[a]]; j < start[T[a] + 1]; j++) {
+      const uint32_t *tv = m->tv + 4 * (size_t)list[j];
+      if ((tv[0] == b || tv[1] == b || tv[2] == b || tv[3] == b) &&
+          (tv[0] == c || tv[1] == c || tv[2] == c || tv[3] == c)) {
+        tet[i] = list[j];
+        break;
+      }
     }
   }
-  for (uint32_t i = 0; i < n && st == TR_OK; i++) {
-    uint32_t k[3];
-    tr_vtkey_face(tris[3 * (size_t)i], tris[3 * (size_t)i + 1], tris[3 * (size_t)i + 2], k);
-    uint32_t first = tr_vtmap_get(&faces, 3, k);
-    if (first != i)
-      tet[i] = tet[first];
-  }
-  tr_vtmap_free(&faces);
-  return st;
+  free(start);
+  free(list);
+  return TR_OK;
 }
 
 tr_status tr_mesh_find_edges(const struct tr_mesh *m, const uint32_t *edges, uint32_t n,

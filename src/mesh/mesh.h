@@ -292,9 +292,10 @@ tr_status tr_ball_find_domain(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_
 /* with_ghosts: the first tet in tr_ball(p, 1)'s order that has b (and c), ghost or not. */
 tr_status tr_ball_find_ex(struct tr_mesh *m, uint32_t p, uint32_t b, uint32_t c,
                           int with_ghosts, uint32_t *t);
-/* All at once: tet[i] = a real tet with triangle i (tris[3i..3i+2]) as a face, TR_NONE if
- * the triangle is not a face of the mesh. One pass over the tets against a hash of the
- * triangles: for many triangles, much cheaper than a tr_ball_find each. */
+/* All at once: tet[i] = the first real tet in slot order with triangle i (tris[3i..3i+2])
+ * as a face, TR_NONE if the triangle is not a face of the mesh. The real tets of each
+ * vertex listed in two passes over the tets, and a scan of one short list per triangle:
+ * for many triangles, much cheaper than a tr_ball_find each. */
 tr_status tr_mesh_find_faces(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,
                              uint32_t *tet);
 /* All at once: present[i] = 1 if {edges[2i], edges[2i+1]} (two distinct vertex ids below

@@ -146,6 +146,34 @@ double rf_cos_angle(const double *o, const double *p, const double *q)
   return n > 0 ? (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / n : 1;
 }
 
+void rf_tri_cos_angles(const double *x0, const double *x1, const double *x2, double c[3])
+{
+  /* d[k] = x[k+1] - x[k], scaled. Corner k's vectors are d[k] and x[k+2] - x[k] =
+   * -d[k+2]: a subtraction of distinct doubles rounds the same either way round, and so
+   * do the scaling, the squares and the products (negated), so the cosine is
+   * -(d[k].d[k+2]) / n, with three differences, scalings and squared lengths instead of
+   * six. Only a zero may differ, in its sign (x - x is +0 both ways round). */
+  const double *x[3] = {x0, x1, x2};
+  double d[3][3], dd[3];
+  for (int k = 0; k < 3; k++) {
+    double m = 0;
+    for (int i = 0; i < 3; i++) {
+      d[k][i] = x[(k + 1) % 3][i] - x[k][i];
+      m = fabs(d[k][i]) > m ? fabs(d[k][i]) : m;
+    }
+    int e = 0;
+    if (m > 0 && isfinite(m))
+      frexp(m, &e);
+    scale_pow2(d[k], e);
+    dd[k] = d[k][0] * d[k][0] + d[k][1] * d[k][1] + d[k][2] * d[k][2];
+  }
+  for (int k = 0; k < 3; k++) {
+    const double *a = d[k], *b = d[(k + 2) % 3];
+    double n = sqrt(dd[k] * dd[(k + 2) % 3]);
+    c[k] = n > 0 ? -(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / n : 1;
+  }
+}
+
 static int nverts(const element *e)
 {
   return e->kind == RF_SEG ? 2 : 3;

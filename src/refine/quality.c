@@ -47,8 +47,8 @@ static int shape_frame(const double *const p[4], double buf[4][3], const double 
   for (int i = 0; i < 4; i++)
     q[i] = p[i];
   /* the range first: the common case then makes no libm call (ilogb); with the second
-   * framing of every measure gone (framed_cosines), this function went from 11.8% to
-   * 5.6% of the instructions of anchor.off under --quality 1.414 */
+   * framing of every measure gone (the cosines on the frame taken once), this function
+   * went from 11.8% to 5.6% of the instructions of anchor.off under --quality 1.414 */
   if (half >= 0x1p-240 && half < 0x1p240) /* 2^-SHAPE_SAFE, 2^SHAPE_SAFE */
     return 0;
   int e = tr_frame_exp(half); /* 0: flat or not finite, nothing to scale */
@@ -100,31 +100,14 @@ static void normal_cosines(const double n[4][3], double cs[6])
   }
 }
 
-/* normal_cosines of the tet p (coordinates shape_frame gave: framing them again changes
- * nothing, and cost a bounding box per call) */
-static void framed_cosines(const double *const p[4], double cs[6])
-{
-  double n[4][3];
-  for (int k = 0; k < 4; k++)
-    face_normal(p, k, n[k]);
-  normal_cosines(n, cs);
-}
-
-/* framed_cosines of any coordinates */
-static void dihedral_cosines(const double *const pin[4], double cs[6])
-{
-  double buf[4][3];
-  const double *p[4];
-  shape_frame(pin, buf, p);
-  framed_cosines(p, cs);
-}
-
-/* tr_tet_shape, and *lo_cos (when not NULL) = the smallest of its tet's framed_cosines:
+/* tr_tet_shape, and *lo_cos (when not NULL) = the smallest of its tet's normal_cosines:
  * tr_tet_min_dihedral's figures on one frame (it took tr_tet_shape's and then
- * tr_tet_min_cos's, a bounding box and a volume twice) */
+ * tr_tet_min_cos's, a bounding box and a volume twice); cs_out (when not NULL) = the six
+ * cosines themselves (tr_quality_measure took them with a second frame and four more
+ * normals, the same doubles) */
 static int tet_shape(const double *a0, const double *b0, const double *c0, const double *d0,
                      double *ratio, double *volume, double dih[6], double cc[3],
-                     double *lo_cos)
+                     double *lo_cos, double cs_out[6])
 {
   const double *p0[4] = {a0, b0, c0, d0}, *p[4];
   double buf[4][3];
@@ -161,7 +144,7 @@ static int tet_shape(const double *a0, const double *b0, const double *c0, const
       cc[i] = a0[i] + o[i];
       finite = finite && isfinite(cc[i]);
     }
-  if (dih || lo_cos) {
+  if (dih || lo_cos || cs_out) {
     double cs[6], lo = 1, n[4][3];
     face_normal(p, 0, n[0]);
     memcpy(n[1], vw, sizeof vw); /* face_normal(p, 1), (2) and (3): the same operations */
@@ -174,6 +157,8 @@ static int tet_shape(const double *a0, const double *b0, const double *c0, const
       lo = cs[e] < lo ? cs[e] : lo; /* as tr_tet_min_cos */
     if (lo_cos)
       *lo_cos = lo;
+    if (cs_out)
+      memcpy(cs_out, cs, sizeof cs);
   }
   return finite;
 }
@@ -181,7 +166,7 @@ static int tet_shape(const double *a0, const double *b0, const double *c0, const
 int tr_tet_shape(const double *a0, const double *b0, const double *c0, const double *d0,
                  double *ratio, double *volume, double dih[6], double cc[3])
 {
-  return tet_shape(a0, b0, c0, d0, ratio, volume, dih, cc, NULL);
+  return tet_shape(a0, b0, c0, d0, ratio, volume, dih, cc, NULL, NULL);
 }
 
 double tr_tet_min_cos(const double *a, const double *b, const double *c, const double *d,
@@ -225,7 +210,7 @@ double tr_tet_min_dihedral(const double *a, const double *b, const double *c, co
                            double *ratio, double *volume)
 {
   double lo;
-  tet_shape(a, b, c, d, ratio, volume, NULL, NULL, &lo);
+  tet_shape(a, b, c, d, ratio, volume, NULL, NULL, &lo, NULL);
   /* the smallest angle has the smallest cosine of the normals' angle: one acos, the
    * same double as the smallest of the six (acos is correctly rounded, so monotone) */
   return tr_dihedral_of_cos(lo);
@@ -330,8 +315,7 @@ void tr_quality_measure(const struct tr_mesh *m, tr_quality *q)
     const double *p[4] = {m->xyz + 3 * (size_t)v[0], m->xyz + 3 * (size_t)v[1],
                           m->xyz + 3 * (size_t)v[2], m->xyz + 3 * (size_t)v[3]};
     double ratio, vol, cs[6];
-    tr_tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, NULL, NULL);
-    dihedral_cosines(p, cs); /* what tr_tet_shape takes the angles of */
+    tet_shape(p[0], p[1], p[2], p[3], &ratio, &vol, NULL, NULL, NULL, cs);
     q->ntets++;
     double lc = cs[0], hc = cs[0];
     for (int e = 0; e < 6; e++) {

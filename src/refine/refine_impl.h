@@ -212,6 +212,10 @@ uint32_t rf_facet_triangle_of(const rf_ctx *c, uint32_t g, const tr_point *p, ui
 /* The cosine of the angle at o between o->p and o->q, in doubles (1 for a zero side): the
  * angle rules are thresholds on input geometry, decided once, not exact predicates. */
 double rf_cos_angle(const double *o, const double *p, const double *q);
+/* c[k] = rf_cos_angle at corner k of triangle x0 x1 x2 (o = x_k, p = x_k+1, q = x_k+2),
+ * the same values, sharing the three edge vectors between the corners (a zero cosine may
+ * be -0 where rf_cos_angle's is +0: equal in every comparison and to acos). */
+void rf_tri_cos_angles(const double *x0, const double *x1, const double *x2, double c[3]);
 /* 1 iff the constraints x and y lie on meet at an input vertex under a small angle. */
 int rf_small_angle_edge(const rf_ctx *c, uint32_t x, uint32_t y);
 /* 1 iff sub-segment (seg) / sub-face id is protected from a split caused by vertex v. */

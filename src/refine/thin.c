@@ -21,31 +21,63 @@
 #include "refine/quality.h"
 #include "refine/refine_impl.h" /* rf_cos_angle */
 
-/* The smallest corner of input triangle t, in degrees, and the corner's vertex (the
- * angle measure of angles.c). */
-static double smallest_corner(const struct tr_plc *plc, uint32_t t, uint32_t *at)
+/* A cosine under this has an angle surely not under `corner` degrees, so its arccosine
+ * is not taken (most triangles' smallest corner is far above it). The guard of 1e-6
+ * degrees is many orders of magnitude above the error of cos, acos and the product in
+ * degrees; at corners near 0 or 180 the slope of the cosine vanishes and the test is
+ * left to the arccosine. -2: take every one. */
+static double corner_cos_skip(double corner)
 {
-  const uint32_t *T = plc->tris + 3 * (size_t)t;
-  double hi = -1; /* the largest cosine: the smallest corner */
-  *at = T[0];
-  for (int k = 0; k < 3; k++) {
-    double c = rf_cos_angle(plc->xyz + 3 * (size_t)T[k], plc->xyz + 3 * (size_t)T[(k + 1) % 3],
-                            plc->xyz + 3 * (size_t)T[(k + 2) % 3]);
-    if (c > hi) {
-      hi = c;
-      *at = T[k];
-    }
-  }
-  return acos(fmin(hi, 1)) * (180 / 3.14159265358979323846);
+  if (!(corner > 1e-3 && corner < 179))
+    return -2;
+  return cos((corner + 1e-6) * (3.14159265358979323846 / 180));
 }
 
-void tr_facets_thin_triangles(const struct tr_plc *plc, const tr_facets *fc, double corner,
-                              uint8_t *thin, tr_quality_thin *out)
+/* 1 iff the smallest corner of input triangle t is under `corner` degrees; then *lo = it
+ * (the arccosine of the largest cosine, as the angle measure of angles.c) and *at = its
+ * vertex. skip: corner_cos_skip(corner). */
+static int thin_corner(const struct tr_plc *plc, uint32_t t, double corner, double skip,
+                       double *lo, uint32_t *at)
+{
+  const uint32_t *T = plc->tris + 3 * (size_t)t;
+  double c[3], hi = -1; /* the largest cosine: the smallest corner */
+  rf_tri_cos_angles(plc->xyz + 3 * (size_t)T[0], plc->xyz + 3 * (size_t)T[1],
+                    plc->xyz + 3 * (size_t)T[2], c);
+  *at = T[0];
+  for (int k = 0; k < 3; k++)
+    if (c[k] > hi) {
+      hi = c[k];
+      *at = T[k];
+    }
+  if (hi < skip)
+    return 0;
+  *lo = acos(fmin(hi, 1)) * (180 / 3.14159265358979323846);
+  return *lo < corner;
+}
+
+static void thin_begin(tr_quality_thin *out)
 {
   out->triangles = 0;
   out->below_on_thin = 0;
   out->thinnest = out->thinnest_vertex = TR_NONE;
   out->thinnest_angle = 180;
+}
+
+static void thin_count(tr_quality_thin *out, uint32_t t, double lo, uint32_t at)
+{
+  out->triangles++;
+  if (lo < out->thinnest_angle) {
+    out->thinnest_angle = lo;
+    out->thinnest = t;
+    out->thinnest_vertex = at;
+  }
+}
+
+void tr_facets_thin_triangles(const struct tr_plc *plc, const tr_facets *fc, double corner,
+                              uint8_t *thin, tr_quality_thin *out)
+{
+  thin_begin(out);
+  double skip = corner_cos_skip(corner);
   for (uint32_t t = 0; t < plc->ntris; t++) {
     if (thin)
       thin[t] = 0;
@@ -53,29 +85,53 @@ void tr_facets_thin_triangles(const struct tr_plc *plc, const tr_facets *fc, dou
     if (tr_facets_size(fc, fc->group[t]) != 1)
       continue;
     uint32_t at;
-    double lo = smallest_corner(plc, t, &at);
-    if (!(lo < corner))
+    double lo;
+    if (!thin_corner(plc, t, corner, skip, &lo, &at))
       continue;
     if (thin)
       thin[t] = 1;
-    out->triangles++;
-    if (lo < out->thinnest_angle) {
-      out->thinnest_angle = lo;
-      out->thinnest = t;
-      out->thinnest_vertex = at;
-    }
+    thin_count(out, t, lo, at);
   }
 }
 
 tr_status tr_plc_thin_triangles(const struct tr_plc *plc, int keep_edges, double corner,
                                 uint8_t *thin, tr_quality_thin *out)
 {
+  /* The corners first, the facets only if a triangle has a thin one: most surfaces have
+   * none, and the facets (a sort of every edge and an orient3d per coplanar candidate)
+   * cost as much as the corners. The same triangles, in the same order, as
+   * tr_facets_thin_triangles on built facets. */
+  thin_begin(out);
+  double skip = corner_cos_skip(corner);
+  uint32_t *cand = NULL, ncand = 0;
+  for (uint32_t t = 0; t < plc->ntris; t++) {
+    if (thin)
+      thin[t] = 0;
+    uint32_t at;
+    double lo;
+    if (!thin_corner(plc, t, corner, skip, &lo, &at))
+      continue;
+    if (!cand && !(cand = malloc(sizeof *cand * (plc->ntris - (size_t)t))))
+      return tr_error(TR_ERR_NOMEM, "out of memory for %u thin triangles", plc->ntris - t);
+    cand[ncand++] = t;
+  }
+  if (!ncand)
+    return TR_OK;
   tr_facets fc = {0};
-  if (plc->ntris)
-    TR_CHECK(tr_facets_build(plc, keep_edges, &fc));
-  tr_facets_thin_triangles(plc, &fc, corner, thin, out);
+  tr_status st = tr_facets_build(plc, keep_edges, &fc);
+  for (uint32_t i = 0; st == TR_OK && i < ncand; i++) {
+    uint32_t t = cand[i], at;
+    double lo;
+    if (tr_facets_size(&fc, fc.group[t]) != 1)
+      continue;
+    thin_corner(plc, t, corner, skip, &lo, &at); /* the same answer again */
+    if (thin)
+      thin[t] = 1;
+    thin_count(out, t, lo, at);
+  }
   tr_facets_free(&fc);
-  return TR_OK;
+  free(cand);
+  return st;
 }
 
 tr_status tr_quality_thin_input(const struct tr_mesh *m, const struct tr_plc *plc,

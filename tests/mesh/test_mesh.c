@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/vtmap.h"
 #include "delaunay/delaunay.h"
 #include "mesh/check.h"
 #include "mesh/mesh.h"
@@ -504,6 +505,230 @@ static int find_edges_matches_brute_force(void)
   return 0;
 }
 
+/* tr_mesh_find_edges on random Delaunay meshes (points on a coarse grid: coplanar and
+ * cospherical sets) against a vertex adjacency matrix of every real tet edge, for edge
+ * lists like the callers' (mesh edges and absent pairs, sorted or not, either order,
+ * repeated): the one pass over the tets against the asked edges answers every index. */
+static int find_edges_matches_adjacency_on_random_meshes(void)
+{
+  unsigned long long r = 88172645463325252ull;
+  uint32_t checked = 0, found = 0;
+  for (int round = 0; round < 6; round++) {
+    uint32_t np = 40 + 60 * (uint32_t)round;
+    double *x = malloc(sizeof *x * 3 * np);
+    EXPECT(x != NULL, "malloc");
+    for (uint32_t i = 0; i < 3 * np; i++) {
+      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      x[i] = (double)(r % 9);
+    }
+    struct tr_mesh *m;
+    /* repeated points are merged: nv counts the distinct ones */
+    EXPECT_OK(tr_delaunay_build(x, np, &m), "Delaunay mesh");
+    free(x);
+    uint32_t nv = m->nv;
+    uint8_t *adj = calloc((size_t)nv * nv, 1);
+    EXPECT(adj != NULL, "malloc");
+    for (uint32_t t = 0; t < m->nt; t++)
+      for (int i = 0; tr_tet_is_real(m, t) && i < 4; i++)
+        for (int j = 0; j < 4; j++)
+          if (i != j)
+            adj[(size_t)m->tv[4 * t + i] * nv + m->tv[4 * t + j]] = 1;
+    uint32_t ne = 4 * nv, *e = malloc(sizeof *e * 2 * ne);
+    uint8_t *yes = malloc(ne);
+    EXPECT(e && yes, "malloc");
+    for (uint32_t i = 0; i < ne; i++) {
+      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      uint32_t a, b;
+      if (i > 0 && r % 7 == 0) { /* a repeat, maybe reversed */
+        uint32_t k = (uint32_t)(r >> 8) % i;
+        a = e[2 * k + (r >> 40 & 1)];
+        b = e[2 * k + 1 - (r >> 40 & 1)];
+      } else if (r % 2) { /* an edge of a random real tet */
+        uint32_t t = (uint32_t)(r >> 8) % m->nt;
+        while (!tr_tet_is_real(m, t))
+          t = (t + 1) % m->nt;
+        int k = (int)(r >> 40) % 6;
+        a = m->tv[4 * t + tr_edge_vtx[k][0]];
+        b = m->tv[4 * t + tr_edge_vtx[k][1]];
+      } else { /* a random pair */
+        a = (uint32_t)(r >> 8) % nv;
+        b = (a + 1 + (uint32_t)(r >> 40) % (nv - 1)) % nv;
+      }
+      e[2 * i] = a;
+      e[2 * i + 1] = b;
+    }
+    /* sorted (a < b, lexicographic) like edge recovery's list in even rounds */
+    for (uint32_t i = 0; round % 2 == 0 && i < ne; i++)
+      if (e[2 * i] > e[2 * i + 1]) {
+        uint32_t tmp = e[2 * i];
+        e[2 * i] = e[2 * i + 1];
+        e[2 * i + 1] = tmp;
+      }
+    memset(yes, 7, ne);
+    EXPECT_OK(tr_mesh_find_edges(m, e, ne, yes), "find_edges");
+    for (uint32_t i = 0; i < ne; i++) {
+      uint8_t want = adj[(size_t)e[2 * i] * nv + e[2 * i + 1]];
+      EXPECT(yes[i] == want, "round %d, edge %u (%u-%u): %d, adjacency %d", round, i,
+             e[2 * i], e[2 * i + 1], yes[i], want);
+      found += want;
+    }
+    checked += ne;
+    free(adj);
+    free(e);
+    free(yes);
+    tr_mesh_destroy(m);
+  }
+  EXPECT(found > checked / 4 && found < checked - checked / 4,
+         "both answers exercised (%u of %u present)", found, checked);
+  return 0;
+}
+
+/* tr_mesh_find_faces as it was before its vertex-tet lists: a hash of the triangles
+ * probed for every face of every real tet, the first in slot order kept. */
+static void find_faces_by_hash(const struct tr_mesh *m, const uint32_t *tris, uint32_t n,
+                               uint32_t *tet)
+{
+  tr_vtmap faces = {0};
+  for (uint32_t i = 0; i < n; i++) {
+    uint32_t k[3];
+    tr_vtkey_face(tris[3 * i], tris[3 * i + 1], tris[3 * i + 2], k);
+    tr_vtmap_put(&faces, 3, k, i, NULL);
+    tet[i] = TR_NONE;
+  }
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (!tr_tet_is_real(m, t))
+      continue;
+    const uint32_t *tv = m->tv + 4 * (size_t)t;
+    for (int f = 0; f < 4; f++) {
+      uint32_t k[3];
+      tr_vtkey_face(tv[tr_face_vtx[f][0]], tv[tr_face_vtx[f][1]], tv[tr_face_vtx[f][2]], k);
+      uint32_t i = tr_vtmap_get(&faces, 3, k);
+      if (i != TR_VTMAP_NONE && tet[i] == TR_NONE)
+        tet[i] = t;
+    }
+  }
+  for (uint32_t i = 0; i < n; i++) {
+    uint32_t k[3];
+    tr_vtkey_face(tris[3 * i], tris[3 * i + 1], tris[3 * i + 2], k);
+    uint32_t first = tr_vtmap_get(&faces, 3, k);
+    if (first != i)
+      tet[i] = tet[first];
+  }
+  tr_vtmap_free(&faces);
+}
+
+/* tr_mesh_find_faces (the tets of each vertex, scanned from the triangle's vertex with
+ * the fewest) names the very tets of the hash over every tet face it replaced, on random
+ * Delaunay meshes (grid points: coplanar and cospherical sets) with free slots left by
+ * flips, for faces of real tets in every rotation and orientation, hull faces, repeats,
+ * absent and degenerate triples and ids past the mesh's vertices. */
+static int find_faces_equals_the_hash_on_random_meshes(void)
+{
+  unsigned long long r = 0x2545f4914f6cdd1dull;
+  uint32_t checked = 0, found = 0, freed = 0, free_left = 0;
+  for (int round = 0; round < 6; round++) {
+    uint32_t np = 40 + 60 * (uint32_t)round;
+    double *x = malloc(sizeof *x * 3 * np);
+    EXPECT(x != NULL, "malloc");
+    for (uint32_t i = 0; i < 3 * np; i++) {
+      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      x[i] = (double)(r % 9);
+    }
+    struct tr_mesh *m;
+    EXPECT_OK(tr_delaunay_build(x, np, &m), "Delaunay mesh");
+    free(x);
+    /* 2-3 flips where they apply: new tets in new or reused slots, free slots */
+    for (int f = 0; f < 40; f++) {
+      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      uint32_t t = (uint32_t)(r % m->nt), u;
+      int k = (int)(r >> 40) % 4;
+      if (!tr_tet_is_real(m, t) || (u = TR_NEIG(m, t, k)) == TR_NONE || !tr_tet_is_real(m, u))
+        continue;
+      const uint32_t *tv = m->tv + 4 * (size_t)t;
+      uint32_t d = tv[k], e = m->tv[4 * (size_t)u + (m->tn[4 * (size_t)t + k] & 3)];
+      uint32_t a = tv[tr_face_vtx[k][0]], b = tv[tr_face_vtx[k][1]], c = tv[tr_face_vtx[k][2]];
+      /* d above face abc (into t), e below: the three tets around edge de */
+      uint32_t nv3[12] = {a, b, d, e, b, c, d, e, c, a, d, e};
+      const double *X = m->xyz;
+      int ok = 1;
+      for (int flip = 0; flip < 2; flip++) { /* the ring abc either way round */
+        ok = 1;
+        for (int q = 0; q < 3 && ok; q++)
+          ok = tr_orient3d(X + 3 * (size_t)nv3[4 * q], X + 3 * (size_t)nv3[4 * q + 1],
+                           X + 3 * (size_t)nv3[4 * q + 2], X + 3 * (size_t)nv3[4 * q + 3]) > 0;
+        if (ok)
+          break;
+        for (int q = 0; q < 3; q++) {
+          uint32_t y = nv3[4 * q];
+          nv3[4 * q] = nv3[4 * q + 1];
+          nv3[4 * q + 1] = y;
+        }
+      }
+      uint32_t old[2] = {t, u}, ids[3], two[8];
+      memcpy(two, m->tv + 4 * (size_t)t, sizeof two / 2);
+      memcpy(two + 4, m->tv + 4 * (size_t)u, sizeof two / 2);
+      if (!ok || tr_mesh_replace(m, old, 2, nv3, 3, ids) != TR_OK)
+        continue;
+      /* every other one back by a 3-2 flip: the same two tets, a slot left free */
+      uint32_t back[2];
+      if (f % 2 == 0 && tr_mesh_replace(m, ids, 3, two, 2, back) == TR_OK)
+        freed++;
+    }
+    uint32_t nfree = 0;
+    for (uint32_t t = 0; t < m->nt; t++)
+      nfree += tr_tet_is_free(m, t);
+    EXPECT_OK(tr_check_mesh(m, TR_CHK_TOPOLOGY, NULL), "mesh after the flips");
+    uint32_t nv = m->nv, ne = 6 * nv, *tri = malloc(sizeof *tri * 3 * ne);
+    uint32_t *got = malloc(sizeof *got * ne), *want = malloc(sizeof *want * ne);
+    EXPECT(tri && got && want, "malloc");
+    for (uint32_t i = 0; i < ne; i++) {
+      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      uint32_t *T = tri + 3 * i;
+      if (i > 0 && r % 9 == 0) { /* a repeat, rotated */
+        uint32_t k = (uint32_t)(r >> 8) % i;
+        for (int q = 0; q < 3; q++)
+          T[q] = tri[3 * k + (q + (r >> 40)) % 3];
+      } else if (r % 9 == 1) { /* degenerate or past the mesh */
+        T[0] = (uint32_t)(r >> 8) % nv;
+        T[1] = r >> 40 & 1 ? T[0] : nv + (uint32_t)(r >> 20) % 3;
+        T[2] = (uint32_t)(r >> 30) % nv;
+      } else if (r % 9 < 6) { /* a face of a live tet (a ghost: its hull face), any order */
+        uint32_t t = (uint32_t)(r >> 8) % m->nt;
+        while (tr_tet_is_free(m, t))
+          t = (t + 1) % m->nt;
+        int k = tr_tet_is_ghost(m, t) ? 3 : (int)(r >> 40) % 4;
+        for (int q = 0; q < 3; q++)
+          T[q] = m->tv[4 * (size_t)t + tr_face_vtx[k][(q + (r >> 50)) % 3]];
+        if (r >> 60 & 1) {
+          uint32_t y = T[0];
+          T[0] = T[1];
+          T[1] = y;
+        }
+      } else { /* three random vertices */
+        for (int q = 0; q < 3; q++)
+          T[q] = (uint32_t)(r >> (8 + 16 * q)) % nv;
+      }
+    }
+    EXPECT_OK(tr_mesh_find_faces(m, tri, ne, got), "find_faces");
+    find_faces_by_hash(m, tri, ne, want);
+    for (uint32_t i = 0; i < ne; i++) {
+      EXPECT(got[i] == want[i], "round %d, triangle %u (%u %u %u): tet %u, the hash's %u",
+             round, i, tri[3 * i], tri[3 * i + 1], tri[3 * i + 2], got[i], want[i]);
+      found += got[i] != TR_NONE;
+    }
+    checked += ne;
+    free_left += nfree;
+    free(tri);
+    free(got);
+    free(want);
+    tr_mesh_destroy(m);
+  }
+  EXPECT(found > checked / 3 && found < checked - checked / 10 && freed > 10 && free_left > 0,
+         "both answers exercised (%u of %u found), %u slots freed, %u left free", found,
+         checked, freed, free_left);
+  return 0;
+}
+
 /* A constructed Steiner point past TR_STEINER_MAX_BITS is refused with
  * TR_ERR_UNSUPPORTED and left to the caller; one just under it is stored. The sizes are
  * those of the coordinates' numerators and denominators summed over the three axes. */
@@ -561,6 +786,10 @@ int main(int argc, char **argv)
     return ball_find_matches_brute_force();
   if (!strcmp(c, "find_edges"))
     return find_edges_matches_brute_force();
+  if (!strcmp(c, "find_faces_random"))
+    return find_faces_equals_the_hash_on_random_meshes();
+  if (!strcmp(c, "find_edges_random"))
+    return find_edges_matches_adjacency_on_random_meshes();
   if (!strcmp(c, "steiner_guard"))
     return steiner_size_guard_refuses_past_the_limit();
   if (!strcmp(c, "hilbert"))

@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "core/facets.h"
 #include "refine/quality.h"
 #include "refine/refine_impl.h" /* rf_cos_angle */
 #include "../pipeline/tmesh.h"
@@ -211,6 +212,158 @@ static void cos_angle_equals_definition(void)
   EXPECT(subnormal > 1000, "subnormal differences exercised: %d", subnormal);
 }
 
+/* rf_tri_cos_angles shares the edge vectors between the three corners: each cosine the
+ * same double as rf_cos_angle at that corner, bit for bit but for the sign of a zero, on
+ * the triangles of cos_angle_equals_definition and right angles with zero products. */
+static void tri_cos_angles_equal_cos_angle(void)
+{
+  int bad = 0, zero = 0;
+  for (int n = 0; n < 200000 && bad < 5; n++) {
+    int e = (int)(unif() * 2080) - 1074, spread = (int)(unif() * 60);
+    double x[3][3];
+    for (int k = 0; k < 3; k++)
+      for (int i = 0; i < 3; i++) {
+        double m = unif() - 0.5;
+        x[k][i] = ldexp(m, e - (unif() < 0.3 ? spread : 0));
+        if (unif() < 0.05)
+          x[k][i] = 0;
+      }
+    if (n % 97 == 0)
+      memcpy(x[1], x[0], sizeof x[0]);
+    if (n % 89 == 0) /* a right angle at x0 with zero products: signed zeros */
+      for (int i = 0; i < 3; i++) {
+        x[1][i] = i == 0 ? x[0][i] + 1 : x[0][i];
+        x[2][i] = i == 1 ? x[0][i] - 1 : x[0][i];
+      }
+    double c[3];
+    rf_tri_cos_angles(x[0], x[1], x[2], c);
+    for (int k = 0; k < 3; k++) {
+      double want = rf_cos_angle(x[k], x[(k + 1) % 3], x[(k + 2) % 3]);
+      zero += want == 0;
+      if (memcmp(&c[k], &want, sizeof want) && !(c[k] == 0 && want == 0) &&
+          !(isnan(c[k]) && isnan(want))) {
+        bad++;
+        EXPECT(0, "case %d corner %d (scale 2^%d): rf_tri_cos_angles %a, rf_cos_angle %a", n,
+               k, e, c[k], want);
+      }
+    }
+  }
+  EXPECT(zero > 1000, "zero cosines exercised: %d", zero);
+}
+
+/* The thin triangles by their definition, as thin.c counted them before it skipped
+ * arccosines and built the facets only for a thin corner: every triangle's three
+ * rf_cos_angle and the arccosine of the largest, a triangle of a merged facet excluded. */
+static void thin_by_definition(const tr_plc *plc, const tr_facets *fc, double corner,
+                               uint8_t *thin, tr_quality_thin *out)
+{
+  out->triangles = out->below_on_thin = 0;
+  out->thinnest = out->thinnest_vertex = UINT32_MAX;
+  out->thinnest_angle = 180;
+  for (uint32_t t = 0; t < plc->ntris; t++) {
+    const uint32_t *T = plc->tris + 3 * (size_t)t;
+    double hi = -1;
+    uint32_t at = T[0];
+    for (int k = 0; k < 3; k++) {
+      double c = rf_cos_angle(plc->xyz + 3 * (size_t)T[k], plc->xyz + 3 * (size_t)T[(k + 1) % 3],
+                              plc->xyz + 3 * (size_t)T[(k + 2) % 3]);
+      if (c > hi) {
+        hi = c;
+        at = T[k];
+      }
+    }
+    double lo = acos(fmin(hi, 1)) * (180 / 3.14159265358979323846);
+    thin[t] = tr_facets_size(fc, fc->group[t]) == 1 && lo < corner;
+    if (!thin[t])
+      continue;
+    out->triangles++;
+    if (lo < out->thinnest_angle) {
+      out->thinnest_angle = lo;
+      out->thinnest = t;
+      out->thinnest_vertex = at;
+    }
+  }
+}
+
+static int same_thin(const tr_quality_thin *a, const tr_quality_thin *b)
+{
+  return a->triangles == b->triangles && a->thinnest == b->thinnest &&
+         a->thinnest_vertex == b->thinnest_vertex &&
+         !memcmp(&a->thinnest_angle, &b->thinnest_angle, sizeof a->thinnest_angle);
+}
+
+/* tr_plc_thin_triangles (the corners first, the facets only for a thin one) and
+ * tr_facets_thin_triangles (no arccosine far from the corner) against the definition on
+ * random surfaces: points of a 3x3x3 grid (coplanar neighbours merge, collinear corners of
+ * 0 and 180 degrees) and fans whose corner at the origin lies within 1e-5 degrees of the
+ * limit, for limits 0, 10, 60, 179.5 and 180, with and without kept edges. */
+static void lazy_thin_triangles_equal_the_definition(void)
+{
+  enum { NP = 27 + 3 * 64, NT = 400 };
+  static double xyz[3 * NP];
+  static uint32_t tris[3 * NT];
+  uint64_t seen_thin = 0, seen_merged = 0, rounds = 0;
+  for (int round = 0; round < 40; round++) {
+    for (int i = 0; i < 27; i++) {
+      xyz[3 * i] = i % 3;
+      xyz[3 * i + 1] = i / 3 % 3;
+      xyz[3 * i + 2] = i / 9;
+    }
+    double corner = (double[]){0, 10, 60, 179.5, 180}[round % 5];
+    /* fans at the origin: corner +- up to 1e-5 degrees, at a random scale */
+    for (int f = 0; f < 64; f++) {
+      double deg = corner + (unif() - 0.5) * 2e-5, r = ldexp(1, (int)(unif() * 40) - 20);
+      double th = deg * (3.14159265358979323846 / 180);
+      double *o = xyz + 3 * (27 + 3 * f);
+      o[0] = o[1] = o[2] = 5 * r;
+      o[3] = o[0] + 2 * r, o[4] = o[1], o[5] = o[2];
+      o[6] = o[0] + 3 * r * cos(th), o[7] = o[1] + 3 * r * sin(th), o[8] = o[2];
+    }
+    uint32_t nt = 0;
+    for (int f = 0; f < 64; f++, nt++)
+      for (int k = 0; k < 3; k++)
+        tris[3 * nt + k] = 27 + 3 * (uint32_t)f + (uint32_t)k;
+    while (nt < NT) {
+      uint32_t a = (uint32_t)(unif() * 27), b = (uint32_t)(unif() * 27),
+               c = (uint32_t)(unif() * 27);
+      if (a == b || b == c || a == c)
+        continue;
+      tris[3 * nt] = a, tris[3 * nt + 1] = b, tris[3 * nt + 2] = c;
+      nt++;
+    }
+    tr_plc plc = {0};
+    plc.npoints = NP;
+    plc.xyz = xyz;
+    plc.ntris = nt;
+    plc.tris = tris;
+    int keep = round / 5 % 2;
+    tr_facets fc;
+    EXPECT(tr_facets_build(&plc, keep, &fc) == TR_OK, "facets: %s", tr_last_error());
+    static uint8_t want_thin[NT], got_thin[NT], got2_thin[NT];
+    tr_quality_thin want, got, got2;
+    thin_by_definition(&plc, &fc, corner, want_thin, &want);
+    tr_facets_thin_triangles(&plc, &fc, corner, got_thin, &got);
+    EXPECT(tr_plc_thin_triangles(&plc, keep, corner, got2_thin, &got2) == TR_OK, "thin: %s",
+           tr_last_error());
+    EXPECT(same_thin(&got, &want) && !memcmp(got_thin, want_thin, nt),
+           "round %d (corner %g): facets path %llu thin, thinnest %u at %a; definition %llu, "
+           "%u at %a", round, corner, (unsigned long long)got.triangles, got.thinnest,
+           got.thinnest_angle, (unsigned long long)want.triangles, want.thinnest,
+           want.thinnest_angle);
+    EXPECT(same_thin(&got2, &want) && !memcmp(got2_thin, want_thin, nt),
+           "round %d (corner %g): plc path %llu thin, thinnest %u at %a; definition %llu, "
+           "%u at %a", round, corner, (unsigned long long)got2.triangles, got2.thinnest,
+           got2.thinnest_angle, (unsigned long long)want.triangles, want.thinnest,
+           want.thinnest_angle);
+    seen_thin += want.triangles;
+    seen_merged += fc.nmerged;
+    tr_facets_free(&fc);
+    rounds++;
+  }
+  EXPECT(seen_thin > 500 && seen_merged > 20, "thin triangles %llu, merged facets %llu",
+         (unsigned long long)seen_thin, (unsigned long long)seen_merged);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
@@ -218,6 +371,8 @@ int main(int argc, char **argv)
       {"merged", merged_thin_triangles_do_not_count, NULL},
       {"cube", cube_has_no_thin_triangle, NULL},
       {"cos_angle", cos_angle_equals_definition, NULL},
+      {"tri_cos", tri_cos_angles_equal_cos_angle, NULL},
+      {"lazy", lazy_thin_triangles_equal_the_definition, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
