@@ -84,6 +84,23 @@ static tr_status improved(const tr_sliver_ctx *c, const tr_sliver_snap *z, uint3
   return s;
 }
 
+tr_status tr_sliver_step_tet(tr_sliver_ctx *tc, uint32_t u, tr_u32buf *sh, tr_u32buf *ball,
+                             void *scratch, tr_sliver_stats *st, uint32_t *points, int *done)
+{
+  uint32_t v[4];
+  memcpy(v, tc->m->tv + 4 * (size_t)u, sizeof v);
+  *done = 0;
+  tr_status s = tr_sliver_flip_tet(tc, u, sh, st, done);
+  for (int j = 0; j < 4 && s == TR_OK && !*done; j++)
+    s = tr_sliver_smooth_vertex(tc, v[j], INFINITY, ball, st, done);
+  if (s == TR_OK && !*done && *points < SL_CAP_POINTS) {
+    s = tr_sliver_insert_tet(tc, u, scratch, done);
+    *points += (uint32_t)*done;
+    st->points += (uint64_t)*done;
+  }
+  return s;
+}
+
 /* The trial's new tets under the bound get the polish's steps (a split leaves slivers
  * next to the new points that they open), SL_CAP_PASSES times over them. */
 static tr_status tidy(tr_sliver_ctx *tc, const tr_sliver_snap *z, void *scratch,
@@ -99,17 +116,8 @@ static tr_status tidy(tr_sliver_ctx *tc, const tr_sliver_snap *z, void *scratch,
       if (!tr_tet_is_real(m, u) || !tr_sliver_snap_changed(m, z, u) ||
           !(tr_sliver_tet_min(tc, u, NULL) < tc->bound))
         continue;
-      uint32_t v[4];
-      memcpy(v, m->tv + 4 * (size_t)u, sizeof v);
-      int done = 0;
-      s = tr_sliver_flip_tet(tc, u, &sh, st, &done);
-      for (int j = 0; j < 4 && s == TR_OK && !done; j++)
-        s = tr_sliver_smooth_vertex(tc, v[j], INFINITY, &ball, st, &done);
-      if (s == TR_OK && !done && points < SL_CAP_POINTS) {
-        s = tr_sliver_insert_tet(tc, u, scratch, &done);
-        points += (uint32_t)done;
-        st->points += (uint64_t)done;
-      }
+      int done;
+      s = tr_sliver_step_tet(tc, u, &sh, &ball, scratch, st, &points, &done);
     }
   }
   tr_u32buf_free(&sh);

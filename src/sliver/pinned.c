@@ -79,25 +79,16 @@ static tr_status broken(const tr_sliver_ctx *c, const tr_sliver_snap *z, double 
 static tr_status repair(tr_sliver_ctx *tc, const tr_sliver_snap *z, double limit,
                         void *scratch, tr_u32buf *bad, tr_sliver_stats *st)
 {
-  struct tr_mesh *m = tc->m;
   tr_u32buf sh = {0}, ball = {0};
   tr_status s = TR_OK;
   uint32_t points = 0;
   for (int pass = 0; pass < SL_CAP_PASSES && bad->n && s == TR_OK; pass++) {
     for (size_t i = 0; i < bad->n && s == TR_OK; i++) {
-      uint32_t u = bad->a[i], v[4];
+      uint32_t u = bad->a[i];
       if (!breaks(tc, z, u, limit)) /* an earlier step replaced it */
         continue;
-      memcpy(v, m->tv + 4 * (size_t)u, sizeof v);
-      int done = 0;
-      s = tr_sliver_flip_tet(tc, u, &sh, st, &done);
-      for (int j = 0; j < 4 && s == TR_OK && !done; j++)
-        s = tr_sliver_smooth_vertex(tc, v[j], INFINITY, &ball, st, &done);
-      if (s == TR_OK && !done && points < SL_CAP_POINTS) {
-        s = tr_sliver_insert_tet(tc, u, scratch, &done);
-        points += (uint32_t)done;
-        st->points += (uint64_t)done;
-      }
+      int done;
+      s = tr_sliver_step_tet(tc, u, &sh, &ball, scratch, st, &points, &done);
     }
     if (s == TR_OK)
       s = broken(tc, z, limit, bad);

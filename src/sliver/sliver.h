@@ -318,6 +318,12 @@ tr_status tr_sliver_polish(tr_sliver_ctx *c, tr_subfaces *sub, int level, tr_sli
 #define SL_CAP_POINTS 8
 #define SL_CAP_FAN 8 /* pieces of a wide trial */
 #define SL_CAP_PASSES 2 /* of flips, moves and interior points over a trial's new tets */
+/* The rounds' steps on tet u, cheapest first: a flip, a move of one of its vertices, an
+ * interior point while *points < SL_CAP_POINTS (counted there and in st->points);
+ * *done = 1 when one was made. sh, ball: scratch (caps.c; the cap trials and the pinned
+ * tets' repair). */
+tr_status tr_sliver_step_tet(tr_sliver_ctx *tc, uint32_t u, tr_u32buf *sh, tr_u32buf *ball,
+                             void *scratch, tr_sliver_stats *st, uint32_t *points, int *done);
 /* caps.c: the constraint pieces of tet t (its worst edge's sub-segment, its sub-faces
  * there, its other sub-segments; wide: instead the other sub-face edges at its vertices
  * on constraints, up to SL_CAP_FAN) split by refinement, one per trial, the first whose new
