@@ -90,8 +90,9 @@ typedef struct tr_flip_journal {
   tr_flip_accept accept; /* NULL: every valid flip is kept */
   void *aud;
   int pivot; /* 1: the recursion removes only the edges that block a Swap23 */
-  /* 1: edge removal only where TetGen's flips reach (3-2, and n -> 2n-4 on a flat ring:
-   * 4-4 and its degenerate kin), the recursion's 2-3 flips doing the rest */
+  /* 1: edge removal only where TetGen's flips reach (3-2, n -> 2n-4 on a flat ring, and
+   * the 4-4 whose edge and two opposite ring vertices are coplanar), the recursion's 2-3
+   * flips doing the rest */
   int tetgen_flips;
   /* Flip attempts (made or refused) allowed, 0 = no limit: the recursion of
    * tr_flip_remove_edge_nm grows exponentially with its depth, and the deep searches of

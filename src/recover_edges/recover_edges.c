@@ -59,9 +59,9 @@
  * over all the edges left): every missing edge is tried at recursion depth
  * TR_EDGE_FLIP_LEVEL_FROM, those left at the next depth, up to TR_EDGE_FLIP_LEVEL_MAX; an
  * edge recovered at one level can unblock another at the next. The levels below the last
- * remove edges only with TetGen's flips (3-2, n-m on a flat ring; flip.h), the last and
- * pass 2 with the general n -> 2n-4: on the whole real-world corpus that took the points
- * added from 486 to 323 and those left from 165 to 104 (Octocat: edges left after the
+ * remove edges only with TetGen's flips (3-2, n-m on a flat ring, its 4-4; flip.h), the
+ * last and pass 2 with the general n -> 2n-4: on the whole real-world corpus that took the
+ * points added from 486 to 323 and those left from 165 to 104 (Octocat: edges left after the
  * flips 74 -> 34), where general removal at every level chose ring triangulations that
  * blocked later flips; with TetGen's flips alone, cheese.off left 446 edges instead of
  * 260. Pass 2 tries

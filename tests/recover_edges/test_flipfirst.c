@@ -11,7 +11,8 @@
  *   a segment left missing crosses no more faces and edges than before: every flip kept
  *   created nothing the segment crosses (the admission rule), also the flips of a
  *   removal that failed. Some segment must be recovered, else the test shows nothing.
- *   With "tetgen", edge removal only as TetGen's flips reach it (3-2, n-m on flat rings).
+ *   With "tetgen", edge removal only as TetGen's flips reach it (3-2, n-m on flat rings,
+ *   the coplanar 4-4).
  *
  * prism: a star-shaped prism (8 points, radii 1 and 0.7) whose top is turned by 0.1
  *   radians, sides and caps in fans: 16 of its edges are missing from the Delaunay mesh.
