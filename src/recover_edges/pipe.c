@@ -525,3 +525,46 @@ int tr_pipe_end(const struct tr_mesh *m, const tr_pipe *p, uint32_t a, uint32_t 
   }
   return -1;
 }
+
+tr_status tr_pipe_end_star(struct tr_mesh *m, uint32_t a, uint32_t b, int at_a,
+                           tr_segmemo *memo, tr_u32buf *ball, uint32_t *t, int *type,
+                           int *code, int *found)
+{
+  *found = 0;
+  uint32_t end = at_a ? a : b;
+  if (end >= m->nv || m->v2t[end] == TR_NONE) {
+    *found = -1; /* not a vertex of the mesh (tests ask for such segments): collect */
+    return TR_OK;
+  }
+  TR_CHECK(tr_ball(m, end, 0, ball));
+  for (size_t i = 0; i < ball->n; i++) {
+    uint32_t u = ball->a[i], via = TR_NONE;
+    tr_pipel pl;
+    if (!tr_tet_is_real(m, u))
+      continue;
+    int cut = classify(m, a, b, u, &pl, &via, memo);
+    if (via != TR_NONE) {
+      *found = -1; /* the collection stops there: let it */
+      return TR_OK;
+    }
+    if (!cut)
+      continue;
+    int t1 = pl.type & 3, t2 = (pl.type >> 2) & 3, ty = at_a ? t2 : t1;
+    const uint32_t *tv = m->tv + 4 * (size_t)u;
+    if ((at_a ? t1 : t2) != TR_NOD || tv[at_a ? pl.iCod1 : pl.iCod2] != end ||
+        (ty != TR_EDG && ty != TR_FAC))
+      continue;
+    if (*found) {
+      /* at a, the collection lists a's star first, in this order: the first one is its
+       * choice too; b's star comes in the order of the walk from a */
+      if (!at_a)
+        *found = -1;
+      return TR_OK;
+    }
+    *found = 1;
+    *t = u;
+    *type = ty;
+    *code = at_a ? pl.iCod2 : pl.iCod1;
+  }
+  return TR_OK;
+}

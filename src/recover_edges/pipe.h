@@ -115,6 +115,14 @@ tr_status tr_pipe_try_flips_budget(struct tr_mesh *m, uint32_t a, uint32_t b, tr
  * type (TR_FAC / TR_EDG) and code in the pipel's tet; -1 if there is none. */
 int tr_pipe_end(const struct tr_mesh *m, const tr_pipe *p, uint32_t a, uint32_t b, int at_a,
                 int *type, int *code);
+/* The same crossing found in the star of the end alone, without collecting the pipe:
+ * *found = 1 with *t (the pipel's tet), *type and *code when exactly one tet of the star
+ * is such a pipel, 0 when none is, -1 when several are at b (then tr_pipe_end's choice rests
+ * on the collection order: collect). At a the collection's order is the star's, so
+ * there the first is taken. ball is scratch. */
+tr_status tr_pipe_end_star(struct tr_mesh *m, uint32_t a, uint32_t b, int at_a,
+                           tr_segmemo *memo, tr_u32buf *ball, uint32_t *t, int *type,
+                           int *code, int *found);
 /* Removes the faces and edges ab crosses one at a time from its ends, every flip admitted
  * only if ab crosses nothing it creates (TetGen's way, flipfirst.c); removals are kept
  * even when ab does not appear. depth, budget: as for tr_pipe_try_flips_budget; memo: a
