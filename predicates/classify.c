@@ -440,6 +440,31 @@ static int g_tet(const clipper *c, int i, int x)
 static tr_isect segment_tet(clipper *c)
 {
   tr_isect r = {0, {{0, 0, 0}, {0, 0, 0}}};
+  /* An end that is a vertex of the tet, with the other end strictly outside one of the
+   * three facets through it: the segment meets the closed tet at that vertex or nowhere
+   * (nowhere when the tet is inverted), which is what the clip below finds with all
+   * eight g. Most tets of a vertex's star are such: a pipe's collection spends most of
+   * its tests there (a third of the edge recovery on 252119.stl of the corpus). */
+  for (int e = 0; e < 2; e++) {
+    int s = e ? c->sb : c->sa, x = e ? TR_PT_A : TR_PT_B, self = e ? TR_PT_B : TR_PT_A;
+    if (s < 0)
+      continue;
+    for (int i = 0; i < 4; i++) {
+      if (i == s || g_tet(c, i, x) >= 0)
+        continue;
+      if (g_tet(c, s, self) < 0)
+        return r;
+      for (int j = 0; j < 4; j++) {
+        c->ga[j] = e ? 1 : 0;
+        c->gb[j] = e ? 0 : 1;
+      }
+      (e ? c->gb : c->ga)[s] = g_tet(c, s, self);
+      int pos = e ? POS_B : POS_A;
+      r.n = 1;
+      r.end[0] = type_of(zero_mask(c, pos), 4, pos);
+      return r;
+    }
+  }
   for (int i = 0; i < 4; i++) {
     c->ga[i] = g_tet(c, i, TR_PT_A);
     if (c->ga[i] < 0)

@@ -74,6 +74,10 @@ tr_isect tr_segmemo_classify(tr_segmemo *g, const struct tr_mesh *m, const uint3
     return unpack((uint16_t)known);
   tr_isect x = tr_segmemo_classify_ids(m, g->a, g->b, v);
   uint16_t r = pack(&x);
+  /* a pipe's collection classifies some sixty tets: growing from 8 keys rehashed them
+   * three times (failure leaves the map as it was: the put below grows it) */
+  if (!g->map.cap)
+    (void)tr_vtmap_reserve(&g->map, 4, 64);
   (void)tr_vtmap_put(&g->map, 4, v, r, NULL); /* no room: recomputed next time */
   return unpack(r);
 }
