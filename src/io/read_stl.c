@@ -25,6 +25,107 @@ static int cmp_pt(const void *pa, const void *pb)
   return (a > b) - (a < b); /* ties by index keep the result deterministic */
 }
 
+static int same_pt(const double *raw, uint32_t a, uint32_t b)
+{
+  /* == identifies -0.0 with 0.0, exactly what we want. */
+  return raw[3 * (size_t)a] == raw[3 * (size_t)b] &&
+         raw[3 * (size_t)a + 1] == raw[3 * (size_t)b + 1] &&
+         raw[3 * (size_t)a + 2] == raw[3 * (size_t)b + 2];
+}
+
+/* A hash of the point's coordinates, -0.0 taken as 0.0 so that equal points hash alike. */
+static uint64_t pt_hash(const double *p)
+{
+  uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (int k = 0; k < 3; k++) {
+    double x = p[k] == 0 ? 0.0 : p[k];
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    h = (h ^ u) * 0xff51afd7ed558ccdull;
+    h ^= h >> 32;
+  }
+  return h;
+}
+
+/* rep[i] = the first index whose point equals point i. The points are grouped by a
+ * hash with a stable radix sort (a qsort of the points was most of the reading of a
+ * large STL), and a group is resolved by comparing its points exactly; a group that
+ * is long (colliding hashes, which a crafted file could make) is sorted by the
+ * coordinates instead, so that the time stays n log n. The answer does not depend on
+ * the grouping: only on which points are equal. */
+static tr_status find_reps(const double *raw, uint32_t n, uint32_t *rep)
+{
+  uint64_t *h = malloc(sizeof *h * (n ? n : 1)), *h2 = malloc(sizeof *h2 * (n ? n : 1));
+  uint32_t *ord = malloc(sizeof *ord * (n ? n : 1)), *o2 = malloc(sizeof *o2 * (n ? n : 1));
+  uint32_t *cnt = malloc(sizeof *cnt * 65536);
+  tr_status st = TR_OK;
+  if (!h || !h2 || !ord || !o2 || !cnt) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory merging STL vertices");
+    goto done;
+  }
+  for (uint32_t i = 0; i < n; i++) {
+    h[i] = pt_hash(raw + 3 * (size_t)i);
+    ord[i] = i;
+  }
+  for (int pass = 0; pass < 4; pass++) {
+    int sh = 16 * pass;
+    memset(cnt, 0, sizeof *cnt * 65536);
+    for (uint32_t i = 0; i < n; i++)
+      cnt[(h[i] >> sh) & 0xffff]++;
+    for (uint32_t d = 0, sum = 0; d < 65536; d++) {
+      uint32_t c = cnt[d];
+      cnt[d] = sum;
+      sum += c;
+    }
+    for (uint32_t i = 0; i < n; i++) {
+      uint32_t k = cnt[(h[i] >> sh) & 0xffff]++;
+      h2[k] = h[i];
+      o2[k] = ord[i];
+    }
+    uint64_t *th = h;
+    h = h2;
+    h2 = th;
+    uint32_t *to = ord;
+    ord = o2;
+    o2 = to;
+  }
+  for (uint32_t i = 0; i < n;) {
+    uint32_t j = i + 1;
+    while (j < n && h[j] == h[i])
+      j++;
+    /* the group ord[i..j) in increasing index (the sort is stable) */
+    if (j - i <= 32) {
+      for (uint32_t k = i; k < j; k++) {
+        rep[ord[k]] = ord[k];
+        for (uint32_t q = i; q < k; q++)
+          if (same_pt(raw, ord[q], ord[k])) {
+            rep[ord[k]] = rep[ord[q]];
+            break;
+          }
+      }
+    } else {
+      g_pts = raw;
+      qsort(ord + i, j - i, sizeof *ord, cmp_pt);
+      for (uint32_t a = i; a < j;) {
+        uint32_t b = a;
+        while (b < j && same_pt(raw, ord[a], ord[b]))
+          b++;
+        for (uint32_t k = a; k < b; k++)
+          rep[ord[k]] = ord[a]; /* sorted by index within the run: ord[a] is the first */
+        a = b;
+      }
+    }
+    i = j;
+  }
+done:
+  free(h);
+  free(h2);
+  free(ord);
+  free(o2);
+  free(cnt);
+  return st;
+}
+
 /* raw: 9 doubles per triangle. Builds points (first occurrence order) and triangles. */
 static tr_status merge(const double *raw, uint32_t ntri, tr_soup *s, const unsigned long *lines)
 {
@@ -35,20 +136,11 @@ static tr_status merge(const double *raw, uint32_t ntri, tr_soup *s, const unsig
     free(rep);
     return tr_error(TR_ERR_NOMEM, "out of memory merging STL vertices");
   }
-  for (uint32_t i = 0; i < n; i++)
-    ord[i] = i;
-  g_pts = raw;
-  qsort(ord, n, sizeof *ord, cmp_pt);
-  for (uint32_t i = 0; i < n;) {
-    uint32_t j = i;
-    /* == identifies -0.0 with 0.0, exactly what we want. */
-    while (j < n && raw[3 * (size_t)ord[j]] == raw[3 * (size_t)ord[i]] &&
-           raw[3 * (size_t)ord[j] + 1] == raw[3 * (size_t)ord[i] + 1] &&
-           raw[3 * (size_t)ord[j] + 2] == raw[3 * (size_t)ord[i] + 2])
-      j++;
-    for (uint32_t k = i; k < j; k++)
-      rep[ord[k]] = ord[i]; /* sorted by index within the run: ord[i] is the first */
-    i = j;
+  tr_status fr = find_reps(raw, n, rep);
+  if (fr != TR_OK) {
+    free(ord);
+    free(rep);
+    return fr;
   }
   tr_status st = TR_OK;
   /* Number the points in order of first occurrence. ord is reused as the new id. */

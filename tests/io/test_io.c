@@ -119,6 +119,42 @@ static void t_stl(void)
   destroy(p);
 }
 
+/* STL vertex merging groups equal points by a hash and resolves a group exactly; a
+ * group of more than 32 occurrences (a vertex of many triangles) is sorted instead. Both
+ * ways must give the first-occurrence numbering: a closed fan of 48 triangles around a
+ * centre written as (0,0,0) and (-0,0,-0) on alternate triangles, rim points shared by
+ * neighbours, and an apex above closing nothing (a soup is all the reader sees). */
+static void t_stl_fan(void)
+{
+  enum { N = 48 };
+  unsigned char b[84 + N * 50];
+  memset(b, 0, sizeof b);
+  b[80] = N;
+  for (int t = 0; t < N; t++) {
+    float c0 = t % 2 ? -0.0f : 0.0f;
+    float v[9] = {c0, 0, c0, (float)(t + 1), 1, 0, (float)(t + 2), 1, 0};
+    memcpy(b + 84 + 50 * t + 12, v, 36); /* little-endian host assumed by the test */
+  }
+  struct tr_plc *p = calloc(1, sizeof *p);
+  tr_status s = tr_read_stl_buf((const char *)b, sizeof b, "fan.stl", p);
+  EXPECT(s == TR_OK, "fan STL: %s", tr_last_error());
+  /* the centre, then rim points 1 .. N+1 in order of first occurrence */
+  EXPECT(p->npoints == N + 2 && p->ntris == N, "fan STL: %u points %u triangles (%d, %d)",
+         p->npoints, p->ntris, N + 2, N);
+  if (p->npoints == N + 2 && p->ntris == N) {
+    int ok = 1;
+    for (int t = 0; t < N; t++)
+      ok &= p->tris[3 * t] == 0 && p->tris[3 * t + 1] == (uint32_t)t + 1 &&
+            p->tris[3 * t + 2] == (uint32_t)t + 2;
+    EXPECT(ok, "fan STL: every triangle must be (centre, rim t+1, rim t+2)");
+    for (int i = 1; i <= N + 1; i++)
+      ok &= p->xyz[3 * i] == i && p->xyz[3 * i + 1] == 1;
+    EXPECT(ok, "fan STL: rim points in order of first occurrence");
+    EXPECT(!signbit(p->xyz[0]) && !signbit(p->xyz[2]), "fan STL: centre stored as +0.0");
+  }
+  destroy(p);
+}
+
 static void t_obj(void)
 {
   struct tr_plc *p = read_ok(tpath(data, "forms.obj"));
@@ -700,7 +736,7 @@ int main(int argc, char **argv)
     const char *name;
     void (*fn)(void);
   } tests[] = {{"off_variants", t_off_variants}, {"off_polygons", t_off_polygons},
-               {"stl", t_stl},                   {"obj", t_obj},
+               {"stl", t_stl},                   {"stl_fan", t_stl_fan},                   {"obj", t_obj},
                {"ply", t_ply},                   {"medit", t_medit},
                {"tetgen", t_tetgen},             {"roundtrip", t_roundtrip},
                {"mesh_write", t_mesh_write},     {"malformed", t_malformed},
