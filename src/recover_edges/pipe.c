@@ -6,6 +6,7 @@
 
 #include "classify.h"
 #include "construct.h"
+#include "mesh/orient_memo.h"
 #include "recover_edges/edgeset.h"
 #include "recover_edges/swap.h"
 
@@ -109,6 +110,58 @@ tr_status tr_pipe_collect(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *pi
   return tr_pipe_collect_memo(m, a, b, pipe, via, NULL);
 }
 
+/* The tets of a's star that ab enters, found by a walk in the star instead of
+ * classifying all of it: those whose closed cone at a holds the direction of b (no
+ * other tet of the star meets ab beyond a). Returns their number: 1 (the direction
+ * inside a cone), 2 (inside the sector of a facet: the tets on both sides), or -1 when
+ * the walk does not settle it: the direction along an edge of the star (a vertex on
+ * ab), a step onto the hull, or a walk longer than the star (a walk in a triangulated
+ * sphere of directions may cycle). */
+static int star_entry(struct tr_mesh *m, uint32_t a, uint32_t b, const tr_u32buf *ball,
+                      uint32_t in[2])
+{
+  if (!ball->n)
+    return -1;
+  uint32_t t = ball->a[0];
+  for (size_t step = 0; step <= ball->n; step++) {
+    const uint32_t *tv = m->tv + 4 * (size_t)t;
+    int ia = -1, neg = -1, zero = -1, nzero = 0;
+    for (int k = 0; k < 4; k++)
+      if (tv[k] == a)
+        ia = k;
+    if (ia < 0)
+      return -1;
+    for (int k = 0; k < 4 && neg < 0; k++) {
+      if (k == ia)
+        continue;
+      uint32_t p[4] = {tv[0], tv[1], tv[2], tv[3]};
+      p[k] = b; /* g_k(b) of the classifier: >= 0 on tet's side of the facet through a */
+      int g = tr_mesh_orient(m, p[0], p[1], p[2], p[3]);
+      if (g < 0)
+        neg = k;
+      else if (g == 0)
+        zero = k, nzero++;
+    }
+    if (neg < 0) {
+      if (nzero > 1)
+        return -1;
+      in[0] = t;
+      if (!nzero)
+        return 1;
+      uint32_t u = TR_NEIG(m, t, zero);
+      if (u == TR_NONE || !tr_tet_is_real(m, u))
+        return -1;
+      in[1] = u;
+      return 2;
+    }
+    uint32_t u = TR_NEIG(m, t, neg);
+    if (u == TR_NONE || !tr_tet_is_real(m, u))
+      return -1;
+    t = u;
+  }
+  return -1;
+}
+
 tr_status tr_pipe_collect_memo(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *pipe,
                                uint32_t *via, tr_segmemo *memo)
 {
@@ -121,9 +174,27 @@ tr_status tr_pipe_collect_memo(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pip
     m->flags[ball.a[i]] |= TR_TF_MARK;
     s = tr_u32buf_push(&seen, ball.a[i]);
   }
+  /* Only the one or two tets of a's star that ab enters are pipels there; the others
+   * need no classification (most of a collection's tests were on them). They are still
+   * listed and marked, so the walk below and the pipe's order are as before. */
+  uint32_t in[2] = {TR_NONE, TR_NONE};
+  int nin = s == TR_OK ? star_entry(m, a, b, &ball, in) : -1;
+#ifndef NDEBUG
+  /* debug builds classify the whole star and check the walk's answer */
+  for (size_t i = 0; s == TR_OK && nin > 0 && i < ball.n; i++) {
+    uint32_t t = ball.a[i], dv = TR_NONE;
+    tr_pipel tp;
+    int cut = tr_tet_is_real(m, t) && classify(m, a, b, t, &tp, &dv, NULL);
+    if (cut != (t == in[0] || t == in[1]))
+      s = tr_error(TR_ERR_INTERNAL, "pipe %u-%u: tet %u of the star is %s by the walk", a, b,
+                   t, cut ? "entered but missed" : "taken but not entered");
+  }
+#endif
   for (size_t i = 0; s == TR_OK && i < seen.n && *via == TR_NONE; i++) {
     uint32_t t = seen.a[i];
     tr_pipel pl, tp;
+    if (nin > 0 && i < ball.n && t != in[0] && t != in[1])
+      continue;
     if (!tr_tet_is_real(m, t) || !classify(m, a, b, t, &tp, via, memo))
       continue;
     if ((s = pipe_push(pipe, &tp)) != TR_OK)
@@ -537,10 +608,12 @@ tr_status tr_pipe_end_star(struct tr_mesh *m, uint32_t a, uint32_t b, int at_a,
     return TR_OK;
   }
   TR_CHECK(tr_ball(m, end, 0, ball));
+  uint32_t in[2] = {TR_NONE, TR_NONE}; /* as in the collection: the rest are not pipels */
+  int nin = star_entry(m, end, at_a ? b : a, ball, in);
   for (size_t i = 0; i < ball->n; i++) {
     uint32_t u = ball->a[i], via = TR_NONE;
     tr_pipel pl;
-    if (!tr_tet_is_real(m, u))
+    if (!tr_tet_is_real(m, u) || (nin > 0 && u != in[0] && u != in[1]))
       continue;
     int cut = classify(m, a, b, u, &pl, &via, memo);
     if (via != TR_NONE) {
