@@ -362,7 +362,11 @@ static tr_status check_input(const struct tr_mesh *m, const uint32_t *edges, uin
   return TR_OK;
 }
 
-static tr_status build_chains(ctx *c, tr_edge_chains *ch)
+/* there[i]: input edge i was a mesh edge when the last phase of flips began. Such an
+ * edge was a constraint from then on (no flip takes it away, no Steiner point splits
+ * it), so it is one still: only the others are walked, instead of listing every edge of
+ * the mesh once more (debug builds list them and check). */
+static tr_status build_chains(ctx *c, tr_edge_chains *ch, const uint8_t *there)
 {
   size_t cap = 2 * (size_t)c->n + 16, nv = 0;
   ch->n = c->n;
@@ -370,11 +374,24 @@ static tr_status build_chains(ctx *c, tr_edge_chains *ch)
   ch->v = malloc(cap * sizeof *ch->v);
   if (!ch->start || !ch->v)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u edge chains", c->n);
-  /* most input edges are one mesh edge at the end: found in one pass, not a walk each */
   uint8_t *present = malloc(c->n ? c->n : 1);
   if (!present)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u input edges", c->n);
-  tr_status fs = tr_mesh_find_edges(c->m, c->edges, c->n, present);
+  tr_status fs = TR_OK;
+  if (c->n)
+    memcpy(present, there, c->n);
+#ifndef NDEBUG
+  uint8_t *now = malloc(c->n ? c->n : 1);
+  if (!now)
+    fs = tr_error(TR_ERR_NOMEM, "out of memory for %u input edges", c->n);
+  else
+    fs = tr_mesh_find_edges(c->m, c->edges, c->n, now);
+  for (uint32_t i = 0; i < c->n && fs == TR_OK; i++)
+    if (present[i] && !now[i])
+      fs = tr_error(TR_ERR_INTERNAL, "input edge %u (%u-%u) was a constraint and is gone", i,
+                    c->edges[2 * (size_t)i], c->edges[2 * (size_t)i + 1]);
+  free(now);
+#endif
   for (uint32_t i = 0; i < c->n && fs == TR_OK; i++) {
     ch->start[i] = (uint32_t)nv;
     uint32_t a = c->edges[2 * (size_t)i], b = c->edges[2 * (size_t)i + 1];
@@ -418,6 +435,9 @@ static tr_status flip_phase(ctx *c, int phase, const uint8_t *there, uint32_t *m
 {
   const uint8_t *flat = c->flat;
   uint32_t k0 = *nmiss;
+  /* the constraints go in by the thousand: grown from 8 keys, the set rehashed them all
+   * a dozen times (a hint: the puts below grow the set anyway if it fails) */
+  (void)tr_vtmap_reserve(&c->cons.m, 2, c->n);
   for (uint32_t i = 0; i < c->n; i++) {
     int mine = !flat || (phase == 0) == !flat[i];
     if (there[i] && (mine || phase == 1))
@@ -516,7 +536,7 @@ static tr_status run(ctx *c, tr_edge_chains *chains, tr_edge_recovery_stats *st)
       st->recovered_by_steiner++;
   }
   if (s == TR_OK)
-    s = build_chains(c, chains);
+    s = build_chains(c, chains, there);
   if (s == TR_OK) {
     st->swap23 = c->est.by_swap23;
     st->swap44 = c->est.by_swap44;

@@ -32,6 +32,13 @@ static tr_status keep_build(keep *k, const uint32_t *tris, uint32_t n,
                             const tr_edge_chains *chains, const uint32_t *listed, size_t nlisted)
 {
   k->built = 1;
+  /* sized at once (hints: the puts grow the sets anyway): grown from 8 keys, they were
+   * rehashed a dozen times on a fine surface */
+  size_t ne = 0;
+  for (uint32_t c = 0; chains && c < chains->n; c++)
+    ne += chains->start[c + 1] - chains->start[c];
+  (void)tr_vtmap_reserve(&k->cons.m, 2, (uint32_t)(chains ? ne : 3 * (size_t)n / 2));
+  (void)tr_vtmap_reserve(&k->faces, 3, (uint32_t)(nlisted / 3 + 16));
   for (uint32_t c = 0; chains && c < chains->n; c++)
     for (uint32_t j = chains->start[c]; j + 1 < chains->start[c + 1]; j++)
       TR_CHECK(tr_edgeset_put(&k->cons, chains->v[j], chains->v[j + 1], c));
