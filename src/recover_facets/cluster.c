@@ -77,11 +77,11 @@ static tr_status vertex_side(tr_vtmap *c, uint32_t v, const tr_point *p, const t
 /* Classification plus the "touches the closed triangle" answer the search needs. */
 static tr_status classify(const struct tr_mesh *m, uint32_t t, const tr_point *e,
                           const tr_point *f, const tr_point *g, tr_clusterel *out,
-                          int *member, int *touch, tr_cluster_memo *mc)
+                          int *member, int *touch, tr_cluster_memo *mc, int s[4])
 {
   tr_vtmap *vc = mc ? &mc->v : NULL;
   tr_point p[4];
-  int s[4], n0 = 0, nin = 0;
+  int n0 = 0, nin = 0;
   const uint32_t *tv = m->tv + 4 * (size_t)t;
   *member = 0;
   *touch = 0;
@@ -167,7 +167,8 @@ tr_status tr_clusterel_classify(const struct tr_mesh *m, uint32_t t, const tr_po
                                 int *member)
 {
   int touch;
-  return classify(m, t, e, f, g, out, member, &touch, NULL);
+  int side[4];
+  return classify(m, t, e, f, g, out, member, &touch, NULL, side);
 }
 
 static int cmp_clusterel(const void *a, const void *b)
@@ -187,7 +188,8 @@ static tr_status collect(struct tr_mesh *m, const tr_point *pe, const tr_point *
     uint32_t t = queue->a[head];
     tr_clusterel c;
     int member, touch;
-    st = classify(m, t, pe, pf, pg, &c, &member, &touch, mc);
+    int side[4];
+    st = classify(m, t, pe, pf, pg, &c, &member, &touch, mc, side);
     if (st != TR_OK)
       break;
     if (member) {
@@ -205,9 +207,19 @@ static tr_status collect(struct tr_mesh *m, const tr_point *pe, const tr_point *
     }
     if (!touch)
       continue;
-    /* Tets touching the closed triangle are face-connected (the star of any point of
-     * the triangle is), so expanding only from them reaches every clusterel. */
+    /* Tets touching the closed triangle are face-connected through faces that touch it
+     * too (the star of any point of the triangle is, through faces holding the point),
+     * so expanding only from them, across faces not strictly on one side of its plane,
+     * reaches every clusterel. The order of the search does not matter: the clusterels
+     * are sorted. (Every tet of e's star touches at e: expanding across all their faces
+     * classified the whole second ring.) */
     for (int k = 0; k < 4; k++) {
+      int pos = 0, neg = 0;
+      for (int q = 0; q < 4; q++)
+        if (q != k)
+          pos += side[q] > 0, neg += side[q] < 0;
+      if (pos == 3 || neg == 3)
+        continue;
       uint32_t u = TR_NEIG(m, t, k);
       if (u == TR_NONE || tr_tet_is_ghost(m, u) || (m->flags[u] & TR_TF_MARK))
         continue;
