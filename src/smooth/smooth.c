@@ -64,9 +64,15 @@ static int convex_quad(const double *A, const double *B, const double *C, const 
   return s1 * s2 < 0 && s3 * s4 < 0;
 }
 
-int tr_smooth_flat_convex(const double *A, const double *B, const double *C, const double *D)
+static inline int flat_convex(const double *A, const double *B, const double *C,
+                              const double *D)
 {
   return tr_orient3d(A, B, C, D) == 0 && convex_quad(A, B, C, D);
+}
+
+int tr_smooth_flat_convex(const double *A, const double *B, const double *C, const double *D)
+{
+  return flat_convex(A, B, C, D);
 }
 
 static int incircle_rule(void *user, const double *const q[4], uint32_t A, uint32_t B,
@@ -96,12 +102,15 @@ typedef struct {
   tr_swap_rule rule;
   void *user;
   uint32_t *twin;                /* per slot, SM_NONE unless the edge has two triangles */
-  uint32_t *head, *next, *prev;  /* corners (= slots) around each vertex */
+  uint32_t *head, *next, *prev;  /* corners (= slots) around each vertex, once corners */
   uint32_t *deg;                 /* corners per vertex */
+  int corners;                   /* built: at the first swap that passes the predicates */
+  uint32_t nv;
   uint8_t *vused;                /* used by a swap of this pass */
   uint32_t *used, nused;         /* those vertices */
   uint32_t *rej, *rejp, *changed; /* as in the reference (smooth_passes.c) */
   uint32_t *stamp, *tl;          /* triangles listed for the next pass */
+  uint32_t nt;
   cand *c, *ctmp;
   uint32_t nc;
 } sm;
@@ -128,6 +137,21 @@ static void unlink_corner(sm *S, uint32_t c, uint32_t v)
   if (S->next[c] != SM_NONE)
     S->prev[S->next[c]] = S->prev[c];
   S->deg[v]--;
+}
+
+/* The corner lists, built on first need: a pass that swaps nothing (most surfaces' only
+ * pass) never needs them. */
+static void build_corners(sm *S, uint32_t ne)
+{
+  if (S->corners)
+    return;
+  for (uint32_t v = 0; v < S->nv; v++) {
+    S->head[v] = SM_NONE;
+    S->deg[v] = 0;
+  }
+  for (uint32_t c = ne; c-- > 0;)
+    link_corner(S, c, S->T[c]);
+  S->corners = 1;
 }
 
 /* BD is an edge iff a triangle around the vertex of fewer corners holds the other. */
@@ -185,7 +209,7 @@ typedef struct {
   uint32_t s1, s2, A, B, C, D;
 } quad;
 
-static int open_quad(const sm *S, uint32_t s, quad *Q)
+static inline int open_quad(const sm *S, uint32_t s, quad *Q)
 {
   const uint32_t *T = S->T;
   uint32_t o = S->twin[s];
@@ -217,11 +241,12 @@ static int examine(sm *S, uint32_t s, uint32_t pass)
   const double *X = S->X, *pa = X + 3 * (size_t)A, *pb = X + 3 * (size_t)B,
                *pc = X + 3 * (size_t)C, *pd = X + 3 * (size_t)D;
   const double *const q4[4] = {pa, pb, pc, pd};
-  if (!tr_smooth_flat_convex(pa, pb, pc, pd) || !S->rule(S->user, q4, A, B, C, D)) {
+  if (!flat_convex(pa, pb, pc, pd) || !S->rule(S->user, q4, A, B, C, D)) {
     S->rej[Q.s1] = pass + 1;
     S->rejp[Q.s1] = Q.s2;
     return 0;
   }
+  build_corners(S, 3 * S->nt);
   if (has_edge(S, B, D))
     return 0;
   swap(S, Q.s1, Q.s2, pass);
@@ -305,14 +330,15 @@ tr_status tr_smooth_surface_rule(struct tr_plc *plc, tr_swap_rule rule, void *us
   uint32_t nt = plc->ntris, ne = 3 * nt, nv = plc->npoints;
   if (nt < 2)
     return TR_OK;
-  sm S = {.T = plc->tris, .X = plc->xyz, .marker = plc->tri_marker, .rule = rule, .user = user};
+  sm S = {.T = plc->tris, .X = plc->xyz, .marker = plc->tri_marker, .rule = rule, .user = user,
+          .nv = nv, .nt = nt};
   size_t nv1 = nv ? nv : 1;
   uint32_t *slots = malloc(sizeof *slots * ne);
   S.twin = malloc(sizeof *S.twin * ne);
   S.head = malloc(sizeof *S.head * nv1);
   S.next = malloc(sizeof *S.next * ne);
   S.prev = malloc(sizeof *S.prev * ne);
-  S.deg = calloc(nv1, sizeof *S.deg);
+  S.deg = malloc(sizeof *S.deg * nv1);
   S.vused = calloc(nv1, 1);
   S.used = malloc(sizeof *S.used * nv1);
   S.rej = calloc(ne, sizeof *S.rej);
@@ -333,22 +359,20 @@ tr_status tr_smooth_surface_rule(struct tr_plc *plc, tr_swap_rule rule, void *us
     goto done;
   for (uint32_t i = 0; i < ne; i++)
     S.twin[i] = SM_NONE;
+  cand x = mkcand(S.T, slots[0]);
   for (uint32_t i = 0; i < ne;) {
-    cand x = mkcand(S.T, slots[i]);
+    cand y = x;
     uint32_t j = i + 1;
-    while (j < ne && mkcand(S.T, slots[j]).key == x.key)
+    while (j < ne && (y = mkcand(S.T, slots[j])).key == x.key)
       j++;
     if (j - i == 2) {
       S.twin[slots[i]] = slots[i + 1];
       S.twin[slots[i + 1]] = slots[i];
       S.c[S.nc++] = x;
     }
+    x = y;
     i = j;
   }
-  for (uint32_t v = 0; v < nv; v++)
-    S.head[v] = SM_NONE;
-  for (uint32_t c = ne; c-- > 0;)
-    link_corner(&S, c, S.T[c]);
   for (uint32_t pass = 0; pass < TR_SMOOTH_MAX_PASSES; pass++) {
     if (pass > 0)
       next_cands(&S, pass);
