@@ -346,8 +346,9 @@ tr_status tr_smooth_surface_rule(struct tr_plc *plc, tr_swap_rule rule, void *us
   S.changed = calloc(nt, sizeof *S.changed);
   S.stamp = calloc(nt, sizeof *S.stamp);
   S.tl = malloc(sizeof *S.tl * nt);
-  S.c = malloc(sizeof *S.c * ne);
-  S.ctmp = malloc(sizeof *S.ctmp * ne);
+  /* an edge with two triangles has two slots: at most ne / 2 candidates */
+  S.c = malloc(sizeof *S.c * (ne / 2 + 1));
+  S.ctmp = malloc(sizeof *S.ctmp * (ne / 2 + 1));
   tr_status st = TR_OK;
   if (!slots || !S.twin || !S.head || !S.next || !S.prev || !S.deg || !S.vused || !S.used ||
       !S.rej || !S.rejp || !S.changed || !S.stamp || !S.tl || !S.c || !S.ctmp) {
@@ -373,6 +374,8 @@ tr_status tr_smooth_surface_rule(struct tr_plc *plc, tr_swap_rule rule, void *us
     x = y;
     i = j;
   }
+  free(slots);
+  slots = NULL;
   for (uint32_t pass = 0; pass < TR_SMOOTH_MAX_PASSES; pass++) {
     if (pass > 0)
       next_cands(&S, pass);
