@@ -15,7 +15,9 @@
  * X is A moved along the axis of a non-zero component of the normal, hence off the plane.
  *
  * Passes run in sorted edge order; within a pass no two swaps share a vertex (so a pass
- * never creates the same edge twice); at most TR_SMOOTH_MAX_PASSES passes. */
+ * never creates the same edge twice); at most TR_SMOOTH_MAX_PASSES passes. A pass after
+ * the first examines only the edges near the previous pass's swaps (smooth.c says why
+ * that makes the same swaps). */
 #ifndef TR_SMOOTH_H
 #define TR_SMOOTH_H
 
@@ -39,6 +41,11 @@ typedef int (*tr_swap_rule)(void *user, const double *const q[4], uint32_t A, ui
                             uint32_t C, uint32_t D);
 tr_status tr_smooth_surface_rule(struct tr_plc *plc, tr_swap_rule rule, void *user,
                                  uint64_t *nswaps);
+
+/* The same swaps in the same order as tr_smooth_surface_rule, by passes that sort and scan
+ * every edge: the reference the tests hold the worklist to. */
+tr_status tr_smooth_surface_rule_passes(struct tr_plc *plc, tr_swap_rule rule, void *user,
+                                        uint64_t *nswaps);
 
 /* 1 iff D is strictly inside the circumcircle of the non-degenerate triangle ABC, the four
  * points being coplanar (exact). */
