@@ -11,21 +11,25 @@
  * Narrow phase: if the non-shared corners of one triangle lie strictly on one side of
  * the other's plane, the two can only meet in the shared vertices (exact orient3d). If
  * they all lie on it, the two are coplanar and a 2D test decides (coplanar_improper).
- * Otherwise the intersection of two closed triangles, when not empty, contains a point
- * of an edge of one of them, so classifying the six edges against the other triangle
- * (classify.h, exact, coplanar overlaps included) finds it; a hit is allowed only at a
- * vertex the two triangles share.
- * Shortcuts, each exact and checked against the general path by the tests (method
- * TR_SELFINT_REFERENCE): a triangle lying in a plane x, y or z = const (most faces of CAD
- * models, where orient3d is exactly 0 and its adaptive stages run to the end) takes the
- * side of a point from one coordinate comparison; and two triangles sharing one vertex,
- * each strictly across the other's plane, are decided by two orient3d (straddle()). */
+ * Otherwise the general path (method TR_SELFINT_REFERENCE, the tests' oracle): the
+ * intersection of two closed triangles, when not empty, contains a point of an edge of
+ * one of them, so classifying the six edges against the other triangle (classify.h,
+ * exact, coplanar overlaps included) finds it; a hit is allowed only at a vertex the two
+ * triangles share.
+ * Shortcuts, each exact and checked against the general path by the tests: a triangle
+ * lying in a plane x, y or z = const (most faces of CAD models, where orient3d is exactly
+ * 0 and its adaptive stages run to the end) takes the side of a point from one coordinate
+ * comparison; pairs whose planes meet in a line compare where each triangle meets that
+ * line, two orient3d from the side signs already known, every degenerate sign included
+ * (selfint_line.c; the six segment classifications cost ~20 times more, most of it in
+ * the exact zeros of corners on the other's plane); coplanar pairs take 2D tests. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "classify.h"
 #include "core/box.h"
 #include "predicates.h"
+#include "selfint_line.h"
 #include "validate.h"
 
 typedef struct {
@@ -85,16 +89,20 @@ static int side(const sweep *s, uint32_t it, uint32_t v)
 }
 
 /* The non-shared corners of triangle iu against the plane of triangle it: counts of
- * the signs +, - and 0 of side(). */
-static void sides(const sweep *s, uint32_t it, uint32_t iu, int cnt[3])
+ * the signs +, - and 0 of side(), and in sg (if not NULL) the sign of each corner of
+ * iu, 0 for a shared one. */
+static void sides(const sweep *s, uint32_t it, uint32_t iu, int cnt[3], int *sg)
 {
   const uint32_t *t = s->plc->tris + 3 * (size_t)it, *u = s->plc->tris + 3 * (size_t)iu;
   cnt[0] = cnt[1] = cnt[2] = 0;
   for (int k = 0; k < 3; k++) {
-    if (u[k] == t[0] || u[k] == t[1] || u[k] == t[2])
-      continue;
-    int sg = side(s, it, u[k]);
-    cnt[sg > 0 ? 0 : sg < 0 ? 1 : 2]++;
+    int o = 0;
+    if (u[k] != t[0] && u[k] != t[1] && u[k] != t[2]) {
+      o = side(s, it, u[k]);
+      cnt[o > 0 ? 0 : o < 0 ? 1 : 2]++;
+    }
+    if (sg)
+      sg[k] = o;
   }
 }
 
@@ -109,28 +117,8 @@ static int strictly_one_side(const int c[3])
 static int one_side(const sweep *s, uint32_t it, uint32_t iu)
 {
   int c[3];
-  sides(s, it, iu, c);
+  sides(s, it, iu, c, NULL);
   return strictly_one_side(c);
-}
-
-/* t = (v, a, b) and u = (v, c, d) share only v; a and b lie strictly on opposite sides
- * of the plane of u, c and d of the plane of t. Each triangle then meets the line L
- * where the planes meet (through v) in a segment from v: t in [v, p], p inside ab; u in
- * [v, q], q inside cd. The triangles meet only in v iff the segments point opposite
- * ways. In the plane of t, the ray from v through p lies on b's side of the line va and
- * the opposite ray on the other side (q is not on va: that would put a on L, in the
- * plane of u). The plane (v, a, c) cuts the plane of t along va, so q's side is the
- * sign of orient3d(v, a, c, q) = s * orient3d(v, a, c, d) (q = c + s (d - c), affine in
- * the last point), nonzero as q is not on va. Returns 1 (improper), 0, or -1 when a
- * sign is 0, which the above excludes for a non-degenerate t. */
-static int straddle(const struct tr_plc *plc, uint32_t v, uint32_t a, uint32_t b, uint32_t c,
-                    uint32_t d)
-{
-  int sd = tr_sign(tr_orient3d(P(plc, v), P(plc, a), P(plc, c), P(plc, d)));
-  int sb = tr_sign(tr_orient3d(P(plc, v), P(plc, a), P(plc, c), P(plc, b)));
-  if (!sd || !sb)
-    return -1;
-  return sd == sb;
 }
 
 /* Edges of t against triangle u: 1 if some hit is not at a shared vertex. */
@@ -307,23 +295,19 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
   if (shared < 2) {
     /* the non-shared corners of u against the plane of t: all on one side, the pair is
      * fine; all on it, the coplanar test */
-    int cu[3], ct[3];
-    sides(s, i, j, cu);
+    int cu[3], ct[3], su[3], sg[3];
+    sides(s, i, j, cu, su);
     if (strictly_one_side(cu))
       return 0;
     if (!cu[0] && !cu[1])
       return shared == 1 && s->plane ? coplanar_fan_improper(s, i, j)
                                      : coplanar_improper(s, i, j);
-    sides(s, j, i, ct);
+    sides(s, j, i, ct, sg);
     if (strictly_one_side(ct))
       return 0;
-    if (shared == 1 && s->plane && cu[0] == 1 && cu[1] == 1 && ct[0] == 1 && ct[1] == 1) {
-      uint32_t f[3], g[3];
-      from_shared_vertex(t, u, f, g);
-      int r = straddle(plc, f[0], f[1], f[2], g[1], g[2]);
-      if (r >= 0)
-        return r;
-    }
+    /* the planes meet in a line: where each triangle meets it (selfint_line.c) */
+    if (s->plane)
+      return tr_selfint_line_improper(plc->xyz, t, u, sg, su, shared);
   } else if (one_side(s, i, j) || one_side(s, j, i)) {
     return 0;
   }
