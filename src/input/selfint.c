@@ -231,6 +231,39 @@ static int coplanar_improper(const sweep *s, uint32_t it, uint32_t iu)
   return 0;
 }
 
+/* An edge of triangle t (corners t[0..2], orientation st != 0 in the projection) with
+ * every corner of u strictly on its outer side. */
+static int separates(const struct tr_plc *plc, const uint32_t *t, int st, const uint32_t *u,
+                     int drop)
+{
+  for (int k = 0; k < 3; k++) {
+    uint32_t a = t[k], b = t[(k + 1) % 3];
+    int out = 1;
+    for (int j = 0; j < 3 && out; j++)
+      out = st * o2(plc, a, b, u[j], drop) < 0;
+    if (out)
+      return 1;
+  }
+  return 0;
+}
+
+/* Coplanar t and u sharing no vertex: they are disjoint iff an edge line of one has the
+ * other strictly on its outer side. (The Minkowski difference t - u is a convex polygon
+ * whose edges are an edge of t minus a corner of u or a corner of t minus an edge of u;
+ * 0 is outside it iff strictly outside one of its edge lines, which says just that.) Most
+ * such pairs on a flat face are apart, where this stops after a few orient2d. */
+static int coplanar_apart_improper(const sweep *s, uint32_t it, uint32_t iu)
+{
+  const struct tr_plc *plc = s->plc;
+  const uint32_t *t = plc->tris + 3 * (size_t)it, *u = plc->tris + 3 * (size_t)iu;
+  int st;
+  int drop = projection(s, it, &st);
+  int su = o2(plc, u[0], u[1], u[2], drop);
+  if (!st || !su)
+    return coplanar_improper(s, it, iu); /* flat: not after validation */
+  return !separates(plc, t, st, u, drop) && !separates(plc, u, su, t, drop);
+}
+
 /* t and u share exactly one vertex: f = (v, a, b) and g = (v, c, d), the two triangles
  * rotated to start at it (even permutations: the same orientations). */
 static void from_shared_vertex(const uint32_t *t, const uint32_t *u, uint32_t f[3], uint32_t g[3])
@@ -300,8 +333,9 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
     if (strictly_one_side(cu))
       return 0;
     if (!cu[0] && !cu[1])
-      return shared == 1 && s->plane ? coplanar_fan_improper(s, i, j)
-                                     : coplanar_improper(s, i, j);
+      return !s->plane ? coplanar_improper(s, i, j)
+             : shared    ? coplanar_fan_improper(s, i, j)
+                         : coplanar_apart_improper(s, i, j);
     sides(s, j, i, ct, sg);
     if (strictly_one_side(ct))
       return 0;

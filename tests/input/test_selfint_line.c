@@ -2,7 +2,8 @@
  * (src/input/selfint_line.c: two orient3d from the side signs) against the general path
  * (TR_SELFINT_REFERENCE: six segment-triangle classifications), on hand-made pairs with
  * known answers and on many random pairs on integer grids, where corners on the other's
- * plane, shared corners, touching edges and coplanar pairs are frequent.
+ * plane, shared corners, touching edges and coplanar pairs are frequent; and coplanar
+ * pairs sharing no corner (the separating edge test of selfint.c) the same way.
  * Usage: test_selfint_line CASE */
 #include <stdio.h>
 #include <stdlib.h>
@@ -195,11 +196,54 @@ static void t_random(void)
   EXPECT(other > 1000, "pairs decided elsewhere also mixed in: %d", other);
 }
 
+/* Coplanar pairs sharing no corner (the separating edge test of selfint.c) against the
+ * general path: random triangles on a 5x5 grid in the plane z = 0, in a tilted plane
+ * (z = x/4 + y/2, exact) and in one far from the origin, touching at corners, along
+ * edges and overlapping often. Both verdicts must occur many times. */
+static void t_coplanar(void)
+{
+  int seen[2] = {0, 0}, bad = 0;
+  for (int round = 0; round < 40000 && bad < 10; round++) {
+    enum { NV = 25 };
+    double X[NV * 3];
+    int plane = round % 3;
+    for (int v = 0; v < NV; v++) {
+      double x = v % 5, y = v / 5;
+      X[3 * v] = plane == 2 ? 1048576 + x : x;
+      X[3 * v + 1] = plane == 2 ? 3 * x + y : y;
+      X[3 * v + 2] = plane == 1 ? 0.25 * x + 0.5 * y : plane == 2 ? x - 2 * y : 0;
+    }
+    uint32_t T[6];
+    int shared;
+    do {
+      for (int k = 0; k < 6; k++)
+        T[k] = rnd(NV);
+      shared = 0;
+      for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+          shared += T[i] == T[3 + j];
+    } while (shared || flat(X, T) || flat(X, T + 3));
+    int fast = npairs(X, NV, T, TR_SELFINT_ALL_PAIRS);
+    int ref = npairs(X, NV, T, TR_SELFINT_REFERENCE);
+    if (fast != ref || fast < 0) {
+      bad++;
+      EXPECT(0, "round %d: shortcuts %d, general path %d for (%u %u %u) (%u %u %u)", round,
+             fast, ref, T[0], T[1], T[2], T[3], T[4], T[5]);
+      continue;
+    }
+    seen[fast > 0]++;
+  }
+  EXPECT(!bad, "%d disagreements", bad);
+  EXPECT(seen[0] > 5000 && seen[1] > 5000, "coplanar pairs apart %d, meeting %d (want > 5000)",
+         seen[0], seen[1]);
+}
+
 int main(int argc, char **argv)
 {
   static const texpect_case cases[] = {
       {"known", t_known, NULL},
       {"random", t_random, NULL},
+      {"coplanar", t_coplanar, NULL},
   };
   return texpect_main(argc, argv, cases, sizeof cases / sizeof *cases);
 }
