@@ -328,7 +328,7 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
   if (shared < 2) {
     /* the non-shared corners of u against the plane of t: all on one side, the pair is
      * fine; all on it, the coplanar test */
-    int cu[3], ct[3], su[3], sg[3];
+    int cu[3], ct[3], su[3], stt[3]; /* counts, and signs of u's and t's corners */
     sides(s, i, j, cu, su);
     if (strictly_one_side(cu))
       return 0;
@@ -336,12 +336,12 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
       return !s->plane ? coplanar_improper(s, i, j)
              : shared    ? coplanar_fan_improper(s, i, j)
                          : coplanar_apart_improper(s, i, j);
-    sides(s, j, i, ct, sg);
+    sides(s, j, i, ct, stt);
     if (strictly_one_side(ct))
       return 0;
     /* the planes meet in a line: where each triangle meets it (selfint_line.c) */
     if (s->plane)
-      return tr_selfint_line_improper(plc->xyz, t, u, sg, su, shared);
+      return tr_selfint_line_improper(plc->xyz, t, u, stt, su, shared);
   } else if (one_side(s, i, j) || one_side(s, j, i)) {
     return 0;
   }
@@ -469,7 +469,7 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
     g.inv[d] = 1.0 / size;
     ncell *= g.dim[d];
   }
-  uint32_t *start = calloc(ncell + 1, sizeof *start), *list = NULL;
+  uint32_t *start = calloc(ncell + 1, sizeof *start), *list = NULL, *cr = NULL, *cc = NULL;
   double *cb = NULL; /* one cell's boxes: lo[3] hi[3] per entry */
   tr_status st = TR_OK;
   if (!start)
@@ -480,17 +480,19 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
     total += cover(&g, s, t, c0, c1);
   if (total > cap && !force)
     goto done; /* slivers across many cells */
-  if (total > cap) {
-    total = 0;
-    for (uint32_t t = 0; t < n; t++)
-      total += cover(&g, s, t, c0, c1);
-  }
   *fallback = 0;
+  /* each triangle's cell range, c0[3] c1[3], computed once */
+  if (!(cr = malloc(sizeof *cr * 6 * (size_t)n))) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
+    goto done;
+  }
+  total = 0;
   for (uint32_t t = 0; t < n; t++) {
-    cover(&g, s, t, c0, c1);
-    for (uint32_t z = c0[2]; z <= c1[2]; z++)
-      for (uint32_t y = c0[1]; y <= c1[1]; y++)
-        for (uint32_t x = c0[0]; x <= c1[0]; x++)
+    uint32_t *r = cr + 6 * (size_t)t;
+    total += cover(&g, s, t, r, r + 3);
+    for (uint32_t z = r[2]; z <= r[5]; z++)
+      for (uint32_t y = r[1]; y <= r[4]; y++)
+        for (uint32_t x = r[0]; x <= r[3]; x++)
           start[((uint64_t)z * g.dim[1] + y) * g.dim[0] + x + 1]++;
   }
   for (uint64_t c = 0; c < ncell; c++)
@@ -500,10 +502,10 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
     goto done;
   }
   for (uint32_t t = 0; t < n; t++) { /* each cell's list in increasing t */
-    cover(&g, s, t, c0, c1);
-    for (uint32_t z = c0[2]; z <= c1[2]; z++)
-      for (uint32_t y = c0[1]; y <= c1[1]; y++)
-        for (uint32_t x = c0[0]; x <= c1[0]; x++)
+    const uint32_t *r = cr + 6 * (size_t)t;
+    for (uint32_t z = r[2]; z <= r[5]; z++)
+      for (uint32_t y = r[1]; y <= r[4]; y++)
+        for (uint32_t x = r[0]; x <= r[3]; x++)
           list[start[((uint64_t)z * g.dim[1] + y) * g.dim[0] + x]++] = t;
   }
   for (uint64_t c = ncell; c > 0; c--) /* back to starts */
@@ -514,7 +516,8 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
   uint32_t kmax = 0;
   for (uint64_t c = 0; c < ncell; c++)
     kmax = start[c + 1] - start[c] > kmax ? start[c + 1] - start[c] : kmax;
-  if (!(cb = malloc(sizeof *cb * 6 * (size_t)(kmax ? kmax : 1)))) {
+  if (!(cb = malloc(sizeof *cb * 6 * (size_t)(kmax ? kmax : 1))) ||
+      !(cc = malloc(sizeof *cc * 3 * (size_t)(kmax ? kmax : 1)))) {
     st = tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
     goto done;
   }
@@ -526,6 +529,7 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
       for (int d = 0; d < 3; d++) {
         cb[6 * (size_t)a + d] = s->lo[3 * (size_t)l[a] + d];
         cb[6 * (size_t)a + 3 + d] = s->hi[3 * (size_t)l[a] + d];
+        cc[3 * (size_t)a + d] = cr[6 * (size_t)l[a] + d];
       }
     for (uint32_t a = 0; a < k; a++)
       for (uint32_t b = a + 1; b < k; b++) {
@@ -533,10 +537,12 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
         if (bj[0] > bi[3] || bi[0] > bj[3] || bj[1] > bi[4] || bi[1] > bj[4] ||
             bj[2] > bi[5] || bi[2] > bj[5])
           continue; /* boxes_meet */
-        /* the pair belongs to the cell of the low corner of the boxes' intersection */
-        if (cell_of(&g, 0, bi[0] > bj[0] ? bi[0] : bj[0]) != cx ||
-            cell_of(&g, 1, bi[1] > bj[1] ? bi[1] : bj[1]) != cy ||
-            cell_of(&g, 2, bi[2] > bj[2] ? bi[2] : bj[2]) != cz)
+        /* The pair belongs to the cell of the low corner of the boxes' intersection, the
+         * larger low corner per axis; cell_of is monotone, so that corner's cell is the
+         * larger of the two low corners' cells, which cover() gave. */
+        const uint32_t *ca = cc + 3 * (size_t)a, *cj = cc + 3 * (size_t)b;
+        if ((ca[0] > cj[0] ? ca[0] : cj[0]) != cx || (ca[1] > cj[1] ? ca[1] : cj[1]) != cy ||
+            (ca[2] > cj[2] ? ca[2] : cj[2]) != cz)
           continue;
         consider(s, l[a], l[b]);
       }
@@ -544,6 +550,8 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
 done:
   free(start);
   free(list);
+  free(cr);
+  free(cc);
   free(cb);
   return st;
 }
