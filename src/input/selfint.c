@@ -11,21 +11,25 @@
  * Narrow phase: if the non-shared corners of one triangle lie strictly on one side of
  * the other's plane, the two can only meet in the shared vertices (exact orient3d). If
  * they all lie on it, the two are coplanar and a 2D test decides (coplanar_improper).
- * Otherwise the intersection of two closed triangles, when not empty, contains a point
- * of an edge of one of them, so classifying the six edges against the other triangle
- * (classify.h, exact, coplanar overlaps included) finds it; a hit is allowed only at a
- * vertex the two triangles share.
- * Shortcuts, each exact and checked against the general path by the tests (method
- * TR_SELFINT_REFERENCE): a triangle lying in a plane x, y or z = const (most faces of CAD
- * models, where orient3d is exactly 0 and its adaptive stages run to the end) takes the
- * side of a point from one coordinate comparison; and two triangles sharing one vertex,
- * each strictly across the other's plane, are decided by two orient3d (straddle()). */
+ * Otherwise the general path (method TR_SELFINT_REFERENCE, the tests' oracle): the
+ * intersection of two closed triangles, when not empty, contains a point of an edge of
+ * one of them, so classifying the six edges against the other triangle (classify.h,
+ * exact, coplanar overlaps included) finds it; a hit is allowed only at a vertex the two
+ * triangles share.
+ * Shortcuts, each exact and checked against the general path by the tests: a triangle
+ * lying in a plane x, y or z = const (most faces of CAD models, where orient3d is exactly
+ * 0 and its adaptive stages run to the end) takes the side of a point from one coordinate
+ * comparison; pairs whose planes meet in a line compare where each triangle meets that
+ * line, two orient3d from the side signs already known, every degenerate sign included
+ * (selfint_line.c; the six segment classifications cost ~20 times more, most of it in
+ * the exact zeros of corners on the other's plane); coplanar pairs take 2D tests. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "classify.h"
 #include "core/box.h"
 #include "predicates.h"
+#include "selfint_line.h"
 #include "validate.h"
 
 typedef struct {
@@ -85,16 +89,20 @@ static int side(const sweep *s, uint32_t it, uint32_t v)
 }
 
 /* The non-shared corners of triangle iu against the plane of triangle it: counts of
- * the signs +, - and 0 of side(). */
-static void sides(const sweep *s, uint32_t it, uint32_t iu, int cnt[3])
+ * the signs +, - and 0 of side(), and in sg (if not NULL) the sign of each corner of
+ * iu, 0 for a shared one. */
+static void sides(const sweep *s, uint32_t it, uint32_t iu, int cnt[3], int *sg)
 {
   const uint32_t *t = s->plc->tris + 3 * (size_t)it, *u = s->plc->tris + 3 * (size_t)iu;
   cnt[0] = cnt[1] = cnt[2] = 0;
   for (int k = 0; k < 3; k++) {
-    if (u[k] == t[0] || u[k] == t[1] || u[k] == t[2])
-      continue;
-    int sg = side(s, it, u[k]);
-    cnt[sg > 0 ? 0 : sg < 0 ? 1 : 2]++;
+    int o = 0;
+    if (u[k] != t[0] && u[k] != t[1] && u[k] != t[2]) {
+      o = side(s, it, u[k]);
+      cnt[o > 0 ? 0 : o < 0 ? 1 : 2]++;
+    }
+    if (sg)
+      sg[k] = o;
   }
 }
 
@@ -109,28 +117,8 @@ static int strictly_one_side(const int c[3])
 static int one_side(const sweep *s, uint32_t it, uint32_t iu)
 {
   int c[3];
-  sides(s, it, iu, c);
+  sides(s, it, iu, c, NULL);
   return strictly_one_side(c);
-}
-
-/* t = (v, a, b) and u = (v, c, d) share only v; a and b lie strictly on opposite sides
- * of the plane of u, c and d of the plane of t. Each triangle then meets the line L
- * where the planes meet (through v) in a segment from v: t in [v, p], p inside ab; u in
- * [v, q], q inside cd. The triangles meet only in v iff the segments point opposite
- * ways. In the plane of t, the ray from v through p lies on b's side of the line va and
- * the opposite ray on the other side (q is not on va: that would put a on L, in the
- * plane of u). The plane (v, a, c) cuts the plane of t along va, so q's side is the
- * sign of orient3d(v, a, c, q) = s * orient3d(v, a, c, d) (q = c + s (d - c), affine in
- * the last point), nonzero as q is not on va. Returns 1 (improper), 0, or -1 when a
- * sign is 0, which the above excludes for a non-degenerate t. */
-static int straddle(const struct tr_plc *plc, uint32_t v, uint32_t a, uint32_t b, uint32_t c,
-                    uint32_t d)
-{
-  int sd = tr_sign(tr_orient3d(P(plc, v), P(plc, a), P(plc, c), P(plc, d)));
-  int sb = tr_sign(tr_orient3d(P(plc, v), P(plc, a), P(plc, c), P(plc, b)));
-  if (!sd || !sb)
-    return -1;
-  return sd == sb;
 }
 
 /* Edges of t against triangle u: 1 if some hit is not at a shared vertex. */
@@ -243,6 +231,39 @@ static int coplanar_improper(const sweep *s, uint32_t it, uint32_t iu)
   return 0;
 }
 
+/* An edge of triangle t (corners t[0..2], orientation st != 0 in the projection) with
+ * every corner of u strictly on its outer side. */
+static int separates(const struct tr_plc *plc, const uint32_t *t, int st, const uint32_t *u,
+                     int drop)
+{
+  for (int k = 0; k < 3; k++) {
+    uint32_t a = t[k], b = t[(k + 1) % 3];
+    int out = 1;
+    for (int j = 0; j < 3 && out; j++)
+      out = st * o2(plc, a, b, u[j], drop) < 0;
+    if (out)
+      return 1;
+  }
+  return 0;
+}
+
+/* Coplanar t and u sharing no vertex: they are disjoint iff an edge line of one has the
+ * other strictly on its outer side. (The Minkowski difference t - u is a convex polygon
+ * whose edges are an edge of t minus a corner of u or a corner of t minus an edge of u;
+ * 0 is outside it iff strictly outside one of its edge lines, which says just that.) Most
+ * such pairs on a flat face are apart, where this stops after a few orient2d. */
+static int coplanar_apart_improper(const sweep *s, uint32_t it, uint32_t iu)
+{
+  const struct tr_plc *plc = s->plc;
+  const uint32_t *t = plc->tris + 3 * (size_t)it, *u = plc->tris + 3 * (size_t)iu;
+  int st;
+  int drop = projection(s, it, &st);
+  int su = o2(plc, u[0], u[1], u[2], drop);
+  if (!st || !su)
+    return coplanar_improper(s, it, iu); /* flat: not after validation */
+  return !separates(plc, t, st, u, drop) && !separates(plc, u, su, t, drop);
+}
+
 /* t and u share exactly one vertex: f = (v, a, b) and g = (v, c, d), the two triangles
  * rotated to start at it (even permutations: the same orientations). */
 static void from_shared_vertex(const uint32_t *t, const uint32_t *u, uint32_t f[3], uint32_t g[3])
@@ -307,23 +328,20 @@ static int improper(const sweep *s, uint32_t i, uint32_t j)
   if (shared < 2) {
     /* the non-shared corners of u against the plane of t: all on one side, the pair is
      * fine; all on it, the coplanar test */
-    int cu[3], ct[3];
-    sides(s, i, j, cu);
+    int cu[3], ct[3], su[3], stt[3]; /* counts, and signs of u's and t's corners */
+    sides(s, i, j, cu, su);
     if (strictly_one_side(cu))
       return 0;
     if (!cu[0] && !cu[1])
-      return shared == 1 && s->plane ? coplanar_fan_improper(s, i, j)
-                                     : coplanar_improper(s, i, j);
-    sides(s, j, i, ct);
+      return !s->plane ? coplanar_improper(s, i, j)
+             : shared    ? coplanar_fan_improper(s, i, j)
+                         : coplanar_apart_improper(s, i, j);
+    sides(s, j, i, ct, stt);
     if (strictly_one_side(ct))
       return 0;
-    if (shared == 1 && s->plane && cu[0] == 1 && cu[1] == 1 && ct[0] == 1 && ct[1] == 1) {
-      uint32_t f[3], g[3];
-      from_shared_vertex(t, u, f, g);
-      int r = straddle(plc, f[0], f[1], f[2], g[1], g[2]);
-      if (r >= 0)
-        return r;
-    }
+    /* the planes meet in a line: where each triangle meets it (selfint_line.c) */
+    if (s->plane)
+      return tr_selfint_line_improper(plc->xyz, t, u, stt, su, shared);
   } else if (one_side(s, i, j) || one_side(s, j, i)) {
     return 0;
   }
@@ -451,7 +469,7 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
     g.inv[d] = 1.0 / size;
     ncell *= g.dim[d];
   }
-  uint32_t *start = calloc(ncell + 1, sizeof *start), *list = NULL;
+  uint32_t *start = calloc(ncell + 1, sizeof *start), *list = NULL, *cr = NULL, *cc = NULL;
   double *cb = NULL; /* one cell's boxes: lo[3] hi[3] per entry */
   tr_status st = TR_OK;
   if (!start)
@@ -462,17 +480,19 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
     total += cover(&g, s, t, c0, c1);
   if (total > cap && !force)
     goto done; /* slivers across many cells */
-  if (total > cap) {
-    total = 0;
-    for (uint32_t t = 0; t < n; t++)
-      total += cover(&g, s, t, c0, c1);
-  }
   *fallback = 0;
+  /* each triangle's cell range, c0[3] c1[3], computed once */
+  if (!(cr = malloc(sizeof *cr * 6 * (size_t)n))) {
+    st = tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
+    goto done;
+  }
+  total = 0;
   for (uint32_t t = 0; t < n; t++) {
-    cover(&g, s, t, c0, c1);
-    for (uint32_t z = c0[2]; z <= c1[2]; z++)
-      for (uint32_t y = c0[1]; y <= c1[1]; y++)
-        for (uint32_t x = c0[0]; x <= c1[0]; x++)
+    uint32_t *r = cr + 6 * (size_t)t;
+    total += cover(&g, s, t, r, r + 3);
+    for (uint32_t z = r[2]; z <= r[5]; z++)
+      for (uint32_t y = r[1]; y <= r[4]; y++)
+        for (uint32_t x = r[0]; x <= r[3]; x++)
           start[((uint64_t)z * g.dim[1] + y) * g.dim[0] + x + 1]++;
   }
   for (uint64_t c = 0; c < ncell; c++)
@@ -482,10 +502,10 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
     goto done;
   }
   for (uint32_t t = 0; t < n; t++) { /* each cell's list in increasing t */
-    cover(&g, s, t, c0, c1);
-    for (uint32_t z = c0[2]; z <= c1[2]; z++)
-      for (uint32_t y = c0[1]; y <= c1[1]; y++)
-        for (uint32_t x = c0[0]; x <= c1[0]; x++)
+    const uint32_t *r = cr + 6 * (size_t)t;
+    for (uint32_t z = r[2]; z <= r[5]; z++)
+      for (uint32_t y = r[1]; y <= r[4]; y++)
+        for (uint32_t x = r[0]; x <= r[3]; x++)
           list[start[((uint64_t)z * g.dim[1] + y) * g.dim[0] + x]++] = t;
   }
   for (uint64_t c = ncell; c > 0; c--) /* back to starts */
@@ -496,7 +516,8 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
   uint32_t kmax = 0;
   for (uint64_t c = 0; c < ncell; c++)
     kmax = start[c + 1] - start[c] > kmax ? start[c + 1] - start[c] : kmax;
-  if (!(cb = malloc(sizeof *cb * 6 * (size_t)(kmax ? kmax : 1)))) {
+  if (!(cb = malloc(sizeof *cb * 6 * (size_t)(kmax ? kmax : 1))) ||
+      !(cc = malloc(sizeof *cc * 3 * (size_t)(kmax ? kmax : 1)))) {
     st = tr_error(TR_ERR_NOMEM, "out of memory checking self-intersections");
     goto done;
   }
@@ -508,6 +529,7 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
       for (int d = 0; d < 3; d++) {
         cb[6 * (size_t)a + d] = s->lo[3 * (size_t)l[a] + d];
         cb[6 * (size_t)a + 3 + d] = s->hi[3 * (size_t)l[a] + d];
+        cc[3 * (size_t)a + d] = cr[6 * (size_t)l[a] + d];
       }
     for (uint32_t a = 0; a < k; a++)
       for (uint32_t b = a + 1; b < k; b++) {
@@ -515,10 +537,12 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
         if (bj[0] > bi[3] || bi[0] > bj[3] || bj[1] > bi[4] || bi[1] > bj[4] ||
             bj[2] > bi[5] || bi[2] > bj[5])
           continue; /* boxes_meet */
-        /* the pair belongs to the cell of the low corner of the boxes' intersection */
-        if (cell_of(&g, 0, bi[0] > bj[0] ? bi[0] : bj[0]) != cx ||
-            cell_of(&g, 1, bi[1] > bj[1] ? bi[1] : bj[1]) != cy ||
-            cell_of(&g, 2, bi[2] > bj[2] ? bi[2] : bj[2]) != cz)
+        /* The pair belongs to the cell of the low corner of the boxes' intersection, the
+         * larger low corner per axis; cell_of is monotone, so that corner's cell is the
+         * larger of the two low corners' cells, which cover() gave. */
+        const uint32_t *ca = cc + 3 * (size_t)a, *cj = cc + 3 * (size_t)b;
+        if ((ca[0] > cj[0] ? ca[0] : cj[0]) != cx || (ca[1] > cj[1] ? ca[1] : cj[1]) != cy ||
+            (ca[2] > cj[2] ? ca[2] : cj[2]) != cz)
           continue;
         consider(s, l[a], l[b]);
       }
@@ -526,6 +550,8 @@ static tr_status by_grid(sweep *s, uint32_t n, const double ext[3], int force, i
 done:
   free(start);
   free(list);
+  free(cr);
+  free(cc);
   free(cb);
   return st;
 }
