@@ -35,7 +35,8 @@ tr_status tr_input_self_intersections(const struct tr_plc *plc, const uint32_t *
 /* The same with a chosen broad phase, for the tests that compare them: AUTO is the grid,
  * or the sweep when the grid would be too large; GRID forces the grid; ALL_PAIRS tests
  * every pair whose boxes meet; REFERENCE too, each pair by the general narrow phase
- * alone (every side by orient3d, no two-orient3d test of straddling pairs), the oracle
+ * alone (every side by orient3d, six segment-triangle classifications for pairs across
+ * each other's planes, no interval test on the planes' line, selfint_line.h), the oracle
  * of the shortcuts. All give the same answer. */
 enum { TR_SELFINT_AUTO, TR_SELFINT_GRID, TR_SELFINT_SWEEP, TR_SELFINT_ALL_PAIRS,
        TR_SELFINT_REFERENCE };

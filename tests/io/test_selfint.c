@@ -335,8 +335,9 @@ static int shortcuts_as_reference(const double *X, uint32_t nv, const uint32_t *
 }
 
 /* The narrow phase's shortcuts (the side of a point from one coordinate for a triangle
- * in a plane x_k = const; two orient3d for pairs sharing one vertex that straddle each
- * other's planes) against the general path (TR_SELFINT_REFERENCE): random soups of
+ * in a plane x_k = const; the interval test on the line where the two planes meet, at
+ * most two orient3d, for pairs across each other's planes; the separating edge line for
+ * coplanar pairs) against the general path (TR_SELFINT_REFERENCE): random soups of
  * triangles on the grid {0,1,2}^3, where triangles in axis planes, exactly coplanar
  * pairs, corners on the other's plane and shared vertices abound, then the same soups
  * moved off the grid's axes by a shear (no triangle in an axis plane) and scaled by a
