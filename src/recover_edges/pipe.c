@@ -576,24 +576,29 @@ tr_status tr_recover_edge(struct tr_mesh *m, uint32_t a, uint32_t b, tr_edge_sta
   return s;
 }
 
+/* 1 when pipel pl starts at the end vertex (a if at_a, else b) and leaves its star
+ * through a face or an edge: that crossing's type and code in pl's tet. */
+static int end_crossing(const struct tr_mesh *m, const tr_pipel *pl, uint32_t a, uint32_t b,
+                        int at_a, int *type, int *code)
+{
+  const uint32_t *tv = m->tv + 4 * (size_t)pl->iEle;
+  int t1 = pl->type & 3, t2 = (pl->type >> 2) & 3;
+  int ty = at_a ? t2 : t1;
+  if ((at_a ? t1 : t2) != TR_NOD || tv[at_a ? pl->iCod1 : pl->iCod2] != (at_a ? a : b))
+    return 0;
+  if (ty != TR_EDG && ty != TR_FAC)
+    return 0;
+  *type = ty;
+  *code = at_a ? pl->iCod2 : pl->iCod1;
+  return 1;
+}
+
 int tr_pipe_end(const struct tr_mesh *m, const tr_pipe *p, uint32_t a, uint32_t b, int at_a,
                 int *type, int *code)
 {
-  for (uint32_t i = 0; i < p->n; i++) {
-    const tr_pipel *pl = &p->pl[i];
-    if (pl->ghost)
-      continue;
-    const uint32_t *tv = m->tv + 4 * (size_t)pl->iEle;
-    int t1 = pl->type & 3, t2 = (pl->type >> 2) & 3;
-    int ty = at_a ? t2 : t1;
-    if ((at_a ? t1 : t2) != TR_NOD || tv[at_a ? pl->iCod1 : pl->iCod2] != (at_a ? a : b))
-      continue;
-    if (ty != TR_EDG && ty != TR_FAC)
-      continue;
-    *type = ty;
-    *code = at_a ? pl->iCod2 : pl->iCod1;
-    return (int)i;
-  }
+  for (uint32_t i = 0; i < p->n; i++)
+    if (!p->pl[i].ghost && end_crossing(m, &p->pl[i], a, b, at_a, type, code))
+      return (int)i;
   return -1;
 }
 
@@ -620,12 +625,8 @@ tr_status tr_pipe_end_star(struct tr_mesh *m, uint32_t a, uint32_t b, int at_a,
       *found = -1; /* the collection stops there: let it */
       return TR_OK;
     }
-    if (!cut)
-      continue;
-    int t1 = pl.type & 3, t2 = (pl.type >> 2) & 3, ty = at_a ? t2 : t1;
-    const uint32_t *tv = m->tv + 4 * (size_t)u;
-    if ((at_a ? t1 : t2) != TR_NOD || tv[at_a ? pl.iCod1 : pl.iCod2] != end ||
-        (ty != TR_EDG && ty != TR_FAC))
+    int ty, co;
+    if (!cut || !end_crossing(m, &pl, a, b, at_a, &ty, &co))
       continue;
     if (*found) {
       /* at a, the collection lists a's star first, in this order: the first one is its
@@ -637,7 +638,7 @@ tr_status tr_pipe_end_star(struct tr_mesh *m, uint32_t a, uint32_t b, int at_a,
     *found = 1;
     *t = u;
     *type = ty;
-    *code = at_a ? pl.iCod2 : pl.iCod1;
+    *code = co;
   }
   return TR_OK;
 }

@@ -374,12 +374,7 @@ static tr_status build_chains(ctx *c, tr_edge_chains *ch, const uint8_t *there)
   ch->v = malloc(cap * sizeof *ch->v);
   if (!ch->start || !ch->v)
     return tr_error(TR_ERR_NOMEM, "out of memory for %u edge chains", c->n);
-  uint8_t *present = malloc(c->n ? c->n : 1);
-  if (!present)
-    return tr_error(TR_ERR_NOMEM, "out of memory for %u input edges", c->n);
   tr_status fs = TR_OK;
-  if (c->n)
-    memcpy(present, there, c->n);
 #ifndef NDEBUG
   uint8_t *now = malloc(c->n ? c->n : 1);
   if (!now)
@@ -387,7 +382,7 @@ static tr_status build_chains(ctx *c, tr_edge_chains *ch, const uint8_t *there)
   else
     fs = tr_mesh_find_edges(c->m, c->edges, c->n, now);
   for (uint32_t i = 0; i < c->n && fs == TR_OK; i++)
-    if (present[i] && !now[i])
+    if (there[i] && !now[i])
       fs = tr_error(TR_ERR_INTERNAL, "input edge %u (%u-%u) was a constraint and is gone", i,
                     c->edges[2 * (size_t)i], c->edges[2 * (size_t)i + 1]);
   free(now);
@@ -396,7 +391,7 @@ static tr_status build_chains(ctx *c, tr_edge_chains *ch, const uint8_t *there)
     ch->start[i] = (uint32_t)nv;
     uint32_t a = c->edges[2 * (size_t)i], b = c->edges[2 * (size_t)i + 1];
     c->walk.n = 0;
-    if (present[i]) {
+    if (there[i]) {
       if ((fs = tr_u32buf_push(&c->walk, a)) == TR_OK)
         fs = tr_u32buf_push(&c->walk, b);
     } else if ((fs = walk_chain(c, a, b, &c->walk)) != TR_OK) {
@@ -419,7 +414,6 @@ static tr_status build_chains(ctx *c, tr_edge_chains *ch, const uint8_t *there)
     if (nv >= UINT32_MAX)
       fs = tr_error(TR_ERR_NOMEM, "edge chains: more than 2^32 entries");
   }
-  free(present);
   ch->start[c->n] = (uint32_t)nv;
   return fs;
 }

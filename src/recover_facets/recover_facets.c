@@ -34,10 +34,9 @@ static tr_status keep_build(keep *k, const uint32_t *tris, uint32_t n,
   k->built = 1;
   /* sized at once (hints: the puts grow the sets anyway): grown from 8 keys, they were
    * rehashed a dozen times on a fine surface */
-  size_t ne = 0;
-  for (uint32_t c = 0; chains && c < chains->n; c++)
-    ne += chains->start[c + 1] - chains->start[c];
-  (void)tr_vtmap_reserve(&k->cons.m, 2, (uint32_t)(chains ? ne : 3 * (size_t)n / 2));
+  (void)tr_vtmap_reserve(&k->cons.m, 2,
+                         chains ? chains->start[chains->n] - chains->start[0]
+                                : (uint32_t)(3 * (size_t)n / 2));
   (void)tr_vtmap_reserve(&k->faces, 3, (uint32_t)(nlisted / 3 + 16));
   for (uint32_t c = 0; chains && c < chains->n; c++)
     for (uint32_t j = chains->start[c]; j + 1 < chains->start[c + 1]; j++)
