@@ -62,6 +62,27 @@ static int shape_frame(const double *const p[4], double buf[4][3], const double 
   return e;
 }
 
+/* shape_frame's answer without its bounding box, from the differences u, v, w = b - a,
+ * c - a, d - a that the measures take anyway: 1 when shape_frame would return 0 (measure
+ * as given), 0 when it must be asked. Every |difference| under 2^236 (NaN and inf fail)
+ * bounds each axis's extent by 2^237, and one over 2^-236 makes an extent over it (the
+ * roundings are monotone and the thresholds doubles), so the half extent is inside
+ * [2^-SHAPE_SAFE, 2^SHAPE_SAFE) with room for the rounding of 0.5 hi - 0.5 lo. The box
+ * was a fifth of tr_tet_min_cos, the sliver stage's most called measure. */
+static int frame_as_given(const double u[3], const double v[3], const double w[3])
+{
+  const double *d[3] = {u, v, w};
+  double big = 0;
+  for (int i = 0; i < 3; i++)
+    for (int k = 0; k < 3; k++) {
+      double x = fabs(d[i][k]);
+      if (!(x < 0x1p236))
+        return 0;
+      big = x > big ? x : big;
+    }
+  return big > 0x1p-236;
+}
+
 /* The faces' normals of a tet (p: coordinates shape_frame gave): n[k] = (y - x) x (z - x)
  * for face k's vertices x y z in tr_face_vtx's order, as constants (with the mesh's tables,
  * another unit, the compiler could unroll nothing). n[1], n[2] and n[3] are the cross
@@ -100,6 +121,34 @@ static void normal_cosines(const double n[4][3], double cs[6])
   }
 }
 
+/* The smallest of normal_cosines' six, the same double, without clamping each: a cosine
+ * the clamp takes to 1 (at least 1, NaN, or a face without a normal) never lowers a
+ * minimum that starts at 1, and one at most -1 leaves -1 after the final clamp either way.
+ * The per-cosine clamp's branches were a third of normal_cosines. */
+static double min_normal_cos(const double n[4][3])
+{
+  static const uint8_t ef[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
+  double len[4], lo = 1;
+  for (int k = 0; k < 4; k++)
+    len[k] = sqrt(dot3(n[k], n[k]));
+  if (len[0] > 0 && len[1] > 0 && len[2] > 0 && len[3] > 0) {
+    for (int e = 0; e < 6; e++) {
+      int k = ef[e][0], l = ef[e][1];
+      double c = dot3(n[k], n[l]) / (len[k] * len[l]);
+      lo = c < lo ? c : lo;
+    }
+  } else {
+    for (int e = 0; e < 6; e++) {
+      int k = ef[e][0], l = ef[e][1];
+      if (len[k] > 0 && len[l] > 0) {
+        double c = dot3(n[k], n[l]) / (len[k] * len[l]);
+        lo = c < lo ? c : lo;
+      }
+    }
+  }
+  return lo <= -1 ? -1 : lo;
+}
+
 /* tr_tet_shape, and *lo_cos (when not NULL) = the smallest of its tet's normal_cosines:
  * tr_tet_min_dihedral's figures on one frame (it took tr_tet_shape's and then
  * tr_tet_min_cos's, a bounding box and a volume twice); cs_out (when not NULL) = the six
@@ -109,14 +158,17 @@ static int tet_shape(const double *a0, const double *b0, const double *c0, const
                      double *ratio, double *volume, double dih[6], double cc[3],
                      double *lo_cos, double cs_out[6])
 {
-  const double *p0[4] = {a0, b0, c0, d0}, *p[4];
-  double buf[4][3];
-  int fe = shape_frame(p0, buf, p);
-  const double *a = p[0], *b = p[1], *c = p[2], *d = p[3];
-  double u[3], v[3], w[3];
-  sub3(b, a, u);
-  sub3(c, a, v);
-  sub3(d, a, w);
+  const double *p0[4] = {a0, b0, c0, d0}, *p[4] = {a0, b0, c0, d0};
+  double buf[4][3], u[3], v[3], w[3];
+  sub3(b0, a0, u);
+  sub3(c0, a0, v);
+  sub3(d0, a0, w);
+  int fe = 0;
+  if (!frame_as_given(u, v, w) && (fe = shape_frame(p0, buf, p)) != 0) {
+    sub3(p[1], p[0], u); /* on the frame */
+    sub3(p[2], p[0], v);
+    sub3(p[3], p[0], w);
+  }
   double vw[3], wu[3], uv[3];
   cross3(v, w, vw);
   cross3(w, u, wu);
@@ -150,11 +202,14 @@ static int tet_shape(const double *a0, const double *b0, const double *c0, const
     memcpy(n[1], vw, sizeof vw); /* face_normal(p, 1), (2) and (3): the same operations */
     memcpy(n[2], wu, sizeof wu);
     memcpy(n[3], uv, sizeof uv);
-    normal_cosines(n, cs);
-    for (int e = 0; e < 6 && dih; e++)
-      dih[e] = tr_dihedral_of_cos(cs[e]);
-    for (int e = 0; e < 6; e++)
-      lo = cs[e] < lo ? cs[e] : lo; /* as tr_tet_min_cos */
+    if (dih || cs_out) {
+      normal_cosines(n, cs);
+      for (int e = 0; e < 6 && dih; e++)
+        dih[e] = tr_dihedral_of_cos(cs[e]);
+      for (int e = 0; e < 6; e++)
+        lo = cs[e] < lo ? cs[e] : lo; /* as tr_tet_min_cos */
+    } else
+      lo = min_normal_cos(n);
     if (lo_cos)
       *lo_cos = lo;
     if (cs_out)
@@ -172,21 +227,31 @@ int tr_tet_shape(const double *a0, const double *b0, const double *c0, const dou
 double tr_tet_min_cos(const double *a, const double *b, const double *c, const double *d,
                       double *volume)
 {
-  const double *p0[4] = {a, b, c, d}, *p[4];
-  double buf[4][3];
-  int fe = shape_frame(p0, buf, p);
+  const double *p0[4] = {a, b, c, d}, *p[4] = {a, b, c, d};
+  double buf[4][3], u[3], v[3], w[3], n[4][3];
+  sub3(b, a, u);
+  sub3(c, a, v);
+  sub3(d, a, w);
+  int fe = 0;
+  if (frame_as_given(u, v, w)) {
+    /* face_normal's operations: faces 1, 2 and 3 are v x w, w x u and u x v */
+    double e1[3], e2[3];
+    sub3(d, b, e1);
+    sub3(c, b, e2);
+    cross3(e1, e2, n[0]);
+    cross3(v, w, n[1]);
+    cross3(w, u, n[2]);
+    cross3(u, v, n[3]);
+  } else {
+    fe = shape_frame(p0, buf, p);
+    for (int k = 0; k < 4; k++)
+      face_normal(p, k, n[k]);
+    sub3(p[1], p[0], u);
+  }
   /* the volume as tr_tet_shape computes it, the same operations in the same order; v x w
    * is face 1's normal */
-  double u[3], n[4][3];
-  for (int k = 0; k < 4; k++)
-    face_normal(p, k, n[k]);
-  sub3(p[1], p[0], u);
   *volume = fe ? ldexp(dot3(u, n[1]) / 6, 3 * fe) : dot3(u, n[1]) / 6;
-  double cs[6], lo = 1;
-  normal_cosines(n, cs);
-  for (int e = 0; e < 6; e++)
-    lo = cs[e] < lo ? cs[e] : lo; /* no NaN here */
-  return lo;
+  return min_normal_cos(n);
 }
 
 double tr_dihedral_of_cos(double lo)

@@ -169,13 +169,15 @@ static void measures_equal_the_per_face_definition(void)
 }
 
 /* A tet scaled by a power of two has the same figures, bit for bit (the volume scaled
- * with it), on both sides of the frame's range (half extents 2^-240 and 2^240) and far
- * outside it: whether a tet is measured as given or in its frame, and by tr_tet_shape,
+ * with it), on both sides of the frame's range (half extents 2^-240 and 2^240), on both
+ * sides of the differences' shortcut to it (2^-236 and 2^236) and far outside it: whether
+ * a tet is measured as given or in its frame, and by tr_tet_shape,
  * tr_tet_min_cos or tr_tet_min_dihedral (which measures on one frame what the other two
  * measure on theirs), the sliver stage ranks it the same. */
 static void measures_invariant_under_power_of_two_scaling(void)
 {
-  static const int ks[] = {-900, -300, -241, -240, -239, 0, 238, 239, 240, 241, 300, 900};
+  static const int ks[] = {-900, -300, -241, -240, -239, -237, -236, -235, 0,
+                           234,  235,  236,  237,  238,  239,  240,  241,  300, 900};
   uint64_t r = 4242;
   for (int it = 0; it < 2000; it++) {
     double p[4][3];
