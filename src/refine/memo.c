@@ -143,6 +143,20 @@ void rf_memo_keep(rf_ctx *c, const tr_subfaces *sub)
   k->have = 1;
 }
 
+tr_status rf_memo_plc_tables(rf_ctx *c, int *have)
+{
+  const tr_refine_memo *memo = c->par.memo;
+  const struct rf_subs_cache *k = memo ? memo->subs : NULL;
+  *have = 0;
+  if (!k || !k->have || k->plc != c->plc || k->keep_edges != c->par.keep_edges)
+    return TR_OK;
+  TR_CHECK(tr_facets_copy(&c->fc, &k->t.fc));
+  TR_CHECK(tr_vtmap_copy(&c->trimap, &k->t.trimap));
+  TR_CHECK(rf_caps_copy(&c->caps, &k->t.caps, c->plc));
+  *have = 1;
+  return TR_OK;
+}
+
 tr_status rf_memo_copy(rf_ctx *c)
 {
   const struct rf_subs_cache *k = c->par.memo->subs;

@@ -151,6 +151,10 @@ tr_status rf_memo_copy(rf_ctx *c);
 /* The memo (if any) keeps a copy of c's tables, just built from sub; none when out of
  * memory (the copy only saves time). */
 void rf_memo_keep(rf_ctx *c, const tr_subfaces *sub);
+/* The tables that depend on the plc alone (facets, the triangle map, the cap clusters)
+ * copied from the memo's when it holds them for c's plc and keep_edges (*have = 1), so a
+ * set-up on other sub-faces rebuilds only theirs. */
+tr_status rf_memo_plc_tables(rf_ctx *c, int *have);
 /* The per-vertex lines of on_input_edge for nv vertices (subs.c): the memo's, its entries
  * from memo->n on reset, or without a memo a fresh array the caller frees. NULL when out
  * of memory: every test is then made in full. */

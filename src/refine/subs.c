@@ -160,6 +160,16 @@ static int on_line(const tr_point *a, const tr_point *b, const tr_point *p)
   return 1;
 }
 
+/* p is not beyond both a and b along any axis: cheaper than on_line, and mostly decides
+ * (exact) */
+static int in_box(const tr_point *a, const tr_point *b, const tr_point *p)
+{
+  for (int d = 0; d < 3; d++)
+    if (tr_cmp_coord_p(p, a, d) * tr_cmp_coord_p(p, b, d) > 0)
+      return 0;
+  return 1;
+}
+
 /* 1 iff u and w (mesh vertices) lie on the closed input edge AB (exact). line: per vertex
  * the input edge it was found on (its ids sorted), or NULL; a vertex of k sub-faces is
  * asked up to 6k times, and on the line is exactly the case no filter decides (the cost
@@ -177,28 +187,25 @@ static int on_input_edge(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t A, ui
     if (x[i] < np)
       return 0;
     tr_point p = tr_mesh_point(m, x[i]);
-    for (int d = 0; d < 3; d++) { /* first: cheaper than on_line, and mostly decides */
-      int sa = tr_cmp_coord_p(&p, &pa, d), sb = tr_cmp_coord_p(&p, &pb, d);
-      if (sa * sb > 0) /* beyond both ends along d */
-        return 0;
-    }
     /* the edge as an unordered pair: its two triangles list it both ways */
     uint32_t lo = A < B ? A : B, hi = A < B ? B : A;
     uint32_t *l = line ? line + 2 * (size_t)x[i] : NULL;
     if (l && l[0] != TR_NONE) {
       /* found on the closed input edge {l0,l1} and no input point: inside it, so on no
        * other input edge, which the validated input's edges meet only at their ends (the
-       * exact test again for each triangle around x was the bulk of each set-up) */
+       * exact test again for each triangle around x was the bulk of each set-up); and
+       * inside AB's box when AB is that edge, so the box test below is not needed */
       int on = l[0] == lo && l[1] == hi;
-      assert(on == on_line(&pa, &pb, &p)); /* and a memo kept across runs, the same point */
+      /* and a memo kept across runs, the same point */
+      assert(on == (in_box(&pa, &pb, &p) && on_line(&pa, &pb, &p)));
       if (!on)
         return 0;
-    } else {
-      if (!on_line(&pa, &pb, &p))
-        return 0;
-      if (l)
-        l[0] = lo, l[1] = hi;
+      continue;
     }
+    if (!in_box(&pa, &pb, &p) || !on_line(&pa, &pb, &p))
+      return 0;
+    if (l)
+      l[0] = lo, l[1] = hi;
   }
   return 1;
 }
@@ -234,21 +241,69 @@ static void input_edge_of(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t tri,
       return;
 }
 
+#ifndef NDEBUG
+/* The plc's tables copied from the memo (rf_memo_plc_tables) are those a build makes,
+ * slot for slot. */
+static void check_plc_tables(const rf_ctx *c)
+{
+  const struct tr_plc *plc = c->plc;
+  tr_facets fc = {0};
+  rf_caps caps;
+  memset(&caps, 0, sizeof caps);
+  tr_vtmap tm = {0};
+  if (tr_facets_build(plc, c->par.keep_edges, &fc) != TR_OK ||
+      rf_caps_build(&caps, plc) != TR_OK || tr_vtmap_reserve(&tm, 3, plc->ntris) != TR_OK) {
+    tr_error_clear(); /* out of memory: nothing to compare */
+  } else {
+    for (uint32_t t = 0; t < plc->ntris; t++)
+      if (rf_face_set(&tm, plc->tris + 3 * (size_t)t, t) != TR_OK)
+        tr_error_clear();
+    assert(fc.ntris == c->fc.ntris && fc.ninner == c->fc.ninner && fc.nmerged == c->fc.nmerged &&
+           !memcmp(fc.group, c->fc.group, sizeof *fc.group * fc.ntris) &&
+           !memcmp(fc.member, c->fc.member, sizeof *fc.member * fc.ntris));
+    assert(caps.n == c->caps.n);
+    assert(!caps.n || (!memcmp(caps.tri, c->caps.tri, sizeof *caps.tri * plc->ntris) &&
+                       !memcmp(caps.vert, c->caps.vert, sizeof *caps.vert * plc->npoints) &&
+                       caps.edge.cap == c->caps.edge.cap && caps.edge.n == c->caps.edge.n &&
+                       !memcmp(caps.edge.slot, c->caps.edge.slot,
+                               sizeof *caps.edge.slot * (size_t)caps.edge.cap *
+                                   (caps.edge.arity + 1))));
+    assert(tm.cap == c->trimap.cap && tm.n == c->trimap.n &&
+           !memcmp(tm.slot, c->trimap.slot, sizeof *tm.slot * (size_t)tm.cap * (tm.arity + 1)));
+  }
+  tr_facets_free(&fc);
+  rf_caps_free(&caps);
+  tr_vtmap_free(&tm);
+}
+#endif
+
 static tr_status build_tables(rf_ctx *c, const tr_subfaces *sub)
 {
   const struct tr_plc *plc = c->plc;
   struct tr_mesh *m = c->m;
-  TR_CHECK(tr_facets_build(plc, c->par.keep_edges, &c->fc));
+  /* the plc's own tables from the last set-up when it has them (the sliver polish's
+   * kept trials change the sub-faces, and each set-up after one comes here; the cap
+   * clusters were a fifth of its cost) */
+  int have;
+  TR_CHECK(rf_memo_plc_tables(c, &have));
+  if (!have)
+    TR_CHECK(tr_facets_build(plc, c->par.keep_edges, &c->fc));
   c->st->merged_edges = c->fc.ninner;
   TR_CHECK(rf_vertex_room(c, m->nv + 1));
   for (uint32_t v = 0; v < m->nv; v++) {
     c->vkind[v] = v < plc->npoints ? RF_INPUT : RF_FREE;
     c->vown[v] = v < plc->npoints ? v : TR_NONE;
   }
-  TR_CHECK(tr_vtmap_reserve(&c->trimap, 3, plc->ntris));
-  for (uint32_t t = 0; t < plc->ntris; t++)
-    TR_CHECK(rf_face_set(&c->trimap, plc->tris + 3 * (size_t)t, t));
-  TR_CHECK(rf_caps_build(&c->caps, plc));
+  if (!have) {
+    TR_CHECK(tr_vtmap_reserve(&c->trimap, 3, plc->ntris));
+    for (uint32_t t = 0; t < plc->ntris; t++)
+      TR_CHECK(rf_face_set(&c->trimap, plc->tris + 3 * (size_t)t, t));
+    TR_CHECK(rf_caps_build(&c->caps, plc));
+  }
+#ifndef NDEBUG
+  else
+    check_plc_tables(c);
+#endif
   /* "is this mesh face a sub-face?" is asked of every face the refinement walks */
   TR_CHECK(tr_vtmap_reserve(&c->fm, 3, 2 * sub->n));
   TR_CHECK(tr_vtmap_filter(&c->fm));
@@ -465,10 +520,19 @@ tr_status rf_subs_export(const rf_ctx *c, tr_subfaces *out)
     free(tri);
     return st;
   }
-  qsort(r, n, sizeof *r, cmp_sf);
-  for (uint32_t i = 0; i < n; i++) {
-    memcpy(v + 3 * (size_t)i, r[i].v, sizeof r[i].v);
-    tri[i] = r[i].tri;
+  /* The sub-faces that came in are in their exported order already when they came from an
+   * export (the sliver stage's set-ups, one per trial): only the run after the sorted
+   * prefix is sorted, then merged with it (the qsort of every record was a tenth of a
+   * trial on a mesh of 230k tets). No two records compare equal (distinct sub-faces). */
+  uint32_t head = 1;
+  while (head < n && cmp_sf(&r[head - 1], &r[head]) < 0)
+    head++;
+  if (head < n)
+    qsort(r + head, n - head, sizeof *r, cmp_sf);
+  for (uint32_t i = 0, j = head, o = 0; o < n; o++) {
+    const sf_rec *x = j >= n || (i < head && cmp_sf(&r[i], &r[j]) < 0) ? &r[i++] : &r[j++];
+    memcpy(v + 3 * (size_t)o, x->v, sizeof x->v);
+    tri[o] = x->tri;
   }
   free(r);
   tr_subfaces_free(out);
