@@ -332,7 +332,9 @@ static tr_status cone(rworker *W, rcand *x)
   return TR_OK;
 }
 
-/* The bad-tet tests of a winner's new tets, once every cone is in. */
+/* The bad-tet tests of a winner's new tets, right after its cone: a test reads the tet's
+ * own vertices and region only, which its own cone wrote (one pass over the cone, while
+ * it is in cache, instead of a second phase over every winner). */
 static void bad_tests(rworker *W, const rcand *x)
 {
   rround *R = W->R;
@@ -356,10 +358,11 @@ static void *job(void *arg)
       rcand *x = R->cand + i;
       if (R->phase == 2)
         W->st = evaluate(W, x);
-      else if (R->phase == 4 && x->kind == RC_INSERT)
+      else if (R->phase == 4 && x->kind == RC_INSERT) {
         W->st = cone(W, x);
-      else if (R->phase == 5 && x->kind == RC_INSERT)
-        bad_tests(W, x);
+        if (W->st == TR_OK)
+          bad_tests(W, x);
+      }
     }
   }
   if (W->st != TR_OK)
@@ -670,14 +673,12 @@ tr_status rf_round(rf_ctx *c, uint64_t room)
     for (uint32_t j = x->nbf; j < x->ncav; j++)
       TR_CHECK(tr_u32buf_push(&R->surplus, cav[j]));
   }
-  /* 4. the cones, then 5. the bad-tet tests of their tets */
+  /* 4. the cones and the bad-tet tests of their tets */
   R->secs[2] += now() - t0;
-  if (nwin) {
+  if (nwin)
     TR_CHECK(run_phase(R, 4));
-    TR_CHECK(run_phase(R, 5));
-  }
   t0 = now();
-  /* 6. in candidate order: the bookkeeping of rf_after_insert, then the rest */
+  /* 5. in candidate order: the bookkeeping of rf_after_insert, then the rest */
   for (size_t i = 0; i < R->surplus.n; i++)
     tr_tet_free(m, R->surplus.a[i]);
   for (uint32_t i = 0; i < R->n; i++) {
