@@ -37,15 +37,8 @@
 #include "recover_edges/pipe.h"
 #include "recover_edges/recover_edges.h"
 #include "../pipeline/tmesh.h"
+#include "tdflip.h"
 #include "trand.h"
-
-static int has_edge(struct tr_mesh *m, uint32_t a, uint32_t b)
-{
-  int yes = 0;
-  return tr_mesh_has_edge(m, a, b, &yes) == TR_OK && yes;
-}
-
-static const unsigned CHECKS = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T | TR_CHK_EULER;
 
 /* The faces and edges the pipe's real pipels cross at an end, each once. */
 static uint32_t crossings(const struct tr_mesh *m, const tr_pipe *p, tr_sxset *seen)
