@@ -537,6 +537,7 @@ static tr_status remove_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t
 {
   int found;
   TR_CHECK(remove_j(m, a, b, t0, guard, ud, j, nested && j->stars, done, &found));
+  j->pruned += found < 0;
   if (*done || found < 0 || depth <= 1 || spent(j))
     return TR_OK;
   uint32_t e2[2] = {a, b};
@@ -634,8 +635,10 @@ static tr_status remove_nm(struct tr_mesh *m, uint32_t a, uint32_t b, uint32_t t
             /* a face whose tets are in another star on the stack is not flipped */
             uint32_t u = m->tn[4 * (size_t)t + (size_t)k];
             if (in_stars(j, m->tv + 4 * (size_t)t, j->nstack - 1) ||
-                (u != TR_NONE && in_stars(j, m->tv + 4 * (size_t)(u >> 2), j->nstack - 1)))
+                (u != TR_NONE && in_stars(j, m->tv + 4 * (size_t)(u >> 2), j->nstack - 1))) {
+              j->pruned++;
               continue;
+            }
           }
           s = tr_flip23_jb(m, t, k, nb, guard, ud, j, &ok);
           if (s == TR_OK && !ok && depth > 2 && !spent(j)) {

@@ -109,6 +109,7 @@ typedef struct tr_flip_journal {
   int stars;
   uint32_t stack[2 * TR_FLIP_STACK];
   int nstack;
+  uint32_t pruned; /* branches the star rule cut (nested removals and ring faces) */
 } tr_flip_journal;
 void tr_flip_journal_free(tr_flip_journal *j);
 /* Undoes the journal's flips back to its first `to` entries (newest first). */

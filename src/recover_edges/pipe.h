@@ -126,12 +126,19 @@ tr_status tr_pipe_end_star(struct tr_mesh *m, uint32_t a, uint32_t b, int at_a,
 /* Removes the faces and edges ab crosses one at a time from its ends, every flip admitted
  * only if ab crosses nothing it creates (TetGen's way, flipfirst.c); removals are kept
  * even when ab does not appear. depth, budget: as for tr_pipe_try_flips_budget; memo: a
- * memo of segment ab or NULL; tetgen_flips: edge removal only as TetGen's flips reach it
- * (flip.h's journal field). p must be Pipe(ab) with no vertex inside ab; on return it is
- * the current Pipe(ab) unless *done. */
+ * memo of segment ab or NULL; mode: TR_FLIPFIRST_* bits. p must be Pipe(ab) with no vertex
+ * inside ab; on return it is the current Pipe(ab) unless *done. */
 tr_status tr_pipe_flip_first(struct tr_mesh *m, uint32_t a, uint32_t b, tr_pipe *p,
                              const struct tr_edgeset *cons, tr_segmemo *memo, int depth,
-                             uint32_t budget, int tetgen_flips, tr_edge_stats *st, int *done);
+                             uint32_t budget, unsigned mode, tr_edge_stats *st, int *done);
+/* edge removal only as TetGen's flips reach it (flip.h's journal field tetgen_flips) */
+#define TR_FLIPFIRST_TETGEN 1u
+/* without TetGen's star rule in the recursion (flip.h's journal field stars) */
+#define TR_FLIPFIRST_NO_STARS 2u
+/* when ab is still missing and the star rule cut a branch of the search, the search once
+ * more without the rule: the rule is TetGen's pruning, and some edges are recovered only
+ * through a branch it cuts (a nested removal that takes apart an outer shell) */
+#define TR_FLIPFIRST_RETRY 4u
 /* Splits ab at one exact point M (midsplit.c): its midpoint, or, when that lies in the
  * pipels at a or at b, the first point nested midpoints would reach between them; the
  * tets of Pipe(ab) whose closure holds M are replaced by the cone from M. When no short

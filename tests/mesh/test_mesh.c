@@ -505,6 +505,27 @@ static int find_edges_matches_brute_force(void)
   return 0;
 }
 
+/* The random find_edges / find_faces tests' generator step (xorshift64). */
+static unsigned long long xorshift(unsigned long long *r)
+{
+  *r ^= *r << 13, *r ^= *r >> 7, *r ^= *r << 17;
+  return *r;
+}
+
+/* *m: the Delaunay mesh of np points drawn by xorshift on the grid {0..8}^3 (coplanar
+ * and cospherical sets, repeated points merged); 1 on a failure. */
+static int grid_delaunay(unsigned long long *r, uint32_t np, struct tr_mesh **m)
+{
+  double *x = malloc(sizeof *x * 3 * np);
+  EXPECT(x != NULL, "malloc");
+  for (uint32_t i = 0; i < 3 * np; i++)
+    x[i] = (double)(xorshift(r) % 9);
+  tr_status s = tr_delaunay_build(x, np, m);
+  free(x);
+  EXPECT_OK(s, "Delaunay mesh");
+  return 0;
+}
+
 /* tr_mesh_find_edges on random Delaunay meshes (points on a coarse grid: coplanar and
  * cospherical sets) against a vertex adjacency matrix of every real tet edge, for edge
  * lists like the callers' (mesh edges and absent pairs, sorted or not, either order,
@@ -514,17 +535,9 @@ static int find_edges_matches_adjacency_on_random_meshes(void)
   unsigned long long r = 88172645463325252ull;
   uint32_t checked = 0, found = 0;
   for (int round = 0; round < 6; round++) {
-    uint32_t np = 40 + 60 * (uint32_t)round;
-    double *x = malloc(sizeof *x * 3 * np);
-    EXPECT(x != NULL, "malloc");
-    for (uint32_t i = 0; i < 3 * np; i++) {
-      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
-      x[i] = (double)(r % 9);
-    }
     struct tr_mesh *m;
     /* repeated points are merged: nv counts the distinct ones */
-    EXPECT_OK(tr_delaunay_build(x, np, &m), "Delaunay mesh");
-    free(x);
+    EXPECT(grid_delaunay(&r, 40 + 60 * (uint32_t)round, &m) == 0, "grid mesh");
     uint32_t nv = m->nv;
     uint8_t *adj = calloc((size_t)nv * nv, 1);
     EXPECT(adj != NULL, "malloc");
@@ -537,7 +550,7 @@ static int find_edges_matches_adjacency_on_random_meshes(void)
     uint8_t *yes = malloc(ne);
     EXPECT(e && yes, "malloc");
     for (uint32_t i = 0; i < ne; i++) {
-      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      xorshift(&r);
       uint32_t a, b;
       if (i > 0 && r % 7 == 0) { /* a repeat, maybe reversed */
         uint32_t k = (uint32_t)(r >> 8) % i;
@@ -627,19 +640,11 @@ static int find_faces_equals_the_hash_on_random_meshes(void)
   unsigned long long r = 0x2545f4914f6cdd1dull;
   uint32_t checked = 0, found = 0, freed = 0, free_left = 0;
   for (int round = 0; round < 6; round++) {
-    uint32_t np = 40 + 60 * (uint32_t)round;
-    double *x = malloc(sizeof *x * 3 * np);
-    EXPECT(x != NULL, "malloc");
-    for (uint32_t i = 0; i < 3 * np; i++) {
-      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
-      x[i] = (double)(r % 9);
-    }
     struct tr_mesh *m;
-    EXPECT_OK(tr_delaunay_build(x, np, &m), "Delaunay mesh");
-    free(x);
+    EXPECT(grid_delaunay(&r, 40 + 60 * (uint32_t)round, &m) == 0, "grid mesh");
     /* 2-3 flips where they apply: new tets in new or reused slots, free slots */
     for (int f = 0; f < 40; f++) {
-      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      xorshift(&r);
       uint32_t t = (uint32_t)(r % m->nt), u;
       int k = (int)(r >> 40) % 4;
       if (!tr_tet_is_real(m, t) || (u = TR_NEIG(m, t, k)) == TR_NONE || !tr_tet_is_real(m, u))
@@ -682,7 +687,7 @@ static int find_faces_equals_the_hash_on_random_meshes(void)
     uint32_t *got = malloc(sizeof *got * ne), *want = malloc(sizeof *want * ne);
     EXPECT(tri && got && want, "malloc");
     for (uint32_t i = 0; i < ne; i++) {
-      r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+      xorshift(&r);
       uint32_t *T = tri + 3 * i;
       if (i > 0 && r % 9 == 0) { /* a repeat, rotated */
         uint32_t k = (uint32_t)(r >> 8) % i;

@@ -28,15 +28,9 @@
 #include "mesh/check.h"
 #include "recover_edges/edgeset.h"
 #include "recover_edges/pipe.h"
+#include "tdflip.h"
 #include "trand.h"
 
-static int has_edge(struct tr_mesh *m, uint32_t a, uint32_t b)
-{
-  int yes = 0;
-  return tr_mesh_has_edge(m, a, b, &yes) == TR_OK && yes;
-}
-
-static const unsigned CHECKS = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T | TR_CHK_EULER;
 static int failures;
 
 /* Recovers the segments seg[0..2n) by flips, depth 3, then 4 .. maxd where that fails;

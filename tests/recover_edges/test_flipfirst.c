@@ -14,6 +14,13 @@
  *   With "tetgen", edge removal only as TetGen's flips reach it (3-2, n-m on flat rings,
  *   the coplanar 4-4).
  *
+ * retry: 16 lattice points in [0, 6)^3 (the smallest set found) and the segment 1-14 it
+ *   misses. At depth 6 the search under TetGen's star rule leaves it missing; with
+ *   TR_FLIPFIRST_RETRY the search without the rule, made where the rule cut a branch,
+ *   recovers it. tr_recover_edges with 1-14 as the only input edge adds no Steiner point
+ *   (one before the retry: the rule cut the only removal sequence it has). Every mesh
+ *   through the validator with the exact volume.
+ *
  * prism: a star-shaped prism (8 points, radii 1 and 0.7) whose top is turned by 0.1
  *   radians, sides and caps in fans: 16 of its edges are missing from the Delaunay mesh.
  *   The whole pipeline recovers every one by flips, with no Steiner point (one point
@@ -28,16 +35,10 @@
 #include "mesh/check.h"
 #include "recover_edges/edgeset.h"
 #include "recover_edges/pipe.h"
+#include "recover_edges/recover_edges.h"
 #include "../pipeline/tmesh.h"
+#include "tdflip.h"
 #include "trand.h"
-
-static int has_edge(struct tr_mesh *m, uint32_t a, uint32_t b)
-{
-  int yes = 0;
-  return tr_mesh_has_edge(m, a, b, &yes) == TR_OK && yes;
-}
-
-static const unsigned CHECKS = TR_CHK_LINKS | TR_CHK_ORIENT | TR_CHK_V2T | TR_CHK_EULER;
 
 /* The faces and edges the pipe's real pipels cross at an end, each once. */
 static uint32_t crossings(const struct tr_mesh *m, const tr_pipe *p, tr_sxset *seen)
@@ -166,6 +167,83 @@ static int lattice(uint32_t np, uint32_t range, int depth, int tetgen)
   return bad != 0;
 }
 
+static const double retry_pts[16][3] = {
+  {2, 0, 3}, {1, 2, 0}, {5, 1, 4}, {4, 2, 4}, {1, 1, 4}, {2, 3, 1}, {4, 1, 5}, {1, 4, 5},
+  {0, 5, 5}, {5, 3, 4}, {2, 1, 3}, {4, 4, 2}, {2, 4, 1}, {0, 2, 5}, {5, 5, 4}, {0, 5, 1},
+};
+
+/* The Delaunay mesh of retry_pts, through the validator; vol: its exact volume. */
+static struct tr_mesh *retry_mesh(mpq_t vol)
+{
+  struct tr_mesh *m = NULL;
+  EXPECT(tr_delaunay_build(&retry_pts[0][0], 16, &m) == TR_OK, "delaunay: %s",
+         tr_last_error());
+  if (m)
+    EXPECT(tr_check_mesh(m, CHECKS, NULL) == TR_OK && tr_mesh_volume6(m, vol) == TR_OK,
+           "initial mesh: %s", tr_last_error());
+  return m;
+}
+
+/* tr_pipe_flip_first(1-14, depth 6, mode) on a fresh mesh: 1 if recovered, 0 if not,
+ * -1 on an error or an invalid mesh. */
+static int retry_search(unsigned mode)
+{
+  mpq_t vol;
+  mpq_init(vol);
+  struct tr_mesh *m = retry_mesh(vol);
+  int r = -1;
+  tr_pipe p;
+  tr_edgeset cons;
+  memset(&p, 0, sizeof p);
+  memset(&cons, 0, sizeof cons);
+  uint32_t via = TR_NONE;
+  if (m && !has_edge(m, 1, 14) && tr_pipe_collect(m, 1, 14, &p, &via) == TR_OK &&
+      via == TR_NONE) {
+    tr_edge_stats st;
+    memset(&st, 0, sizeof st);
+    int done = 0;
+    if (tr_pipe_flip_first(m, 1, 14, &p, &cons, NULL, 6, 20000, mode, &st, &done) == TR_OK &&
+        tr_check_mesh(m, CHECKS, vol) == TR_OK)
+      r = done && has_edge(m, 1, 14);
+    EXPECT(r >= 0, "mode %u: %s", mode, tr_last_error());
+    EXPECT(r < 0 || done == r, "mode %u: reported %d, the mesh says %d", mode, done, r);
+  } else {
+    EXPECT(0, "1-14 is not a missing segment through no vertex of the mesh");
+  }
+  tr_pipe_free(&p);
+  tr_edgeset_free(&cons);
+  tr_mesh_destroy(m);
+  mpq_clear(vol);
+  return r;
+}
+
+static int retry(void)
+{
+  EXPECT(retry_search(0) == 0, "under the star rule 1-14 was recovered: the case shows nothing");
+  EXPECT(retry_search(TR_FLIPFIRST_RETRY) == 1, "the retry without the star rule left 1-14");
+  mpq_t vol;
+  mpq_init(vol);
+  struct tr_mesh *m = retry_mesh(vol);
+  const uint32_t e[2] = {1, 14};
+  tr_edge_chains ch;
+  tr_edge_recovery_stats st;
+  memset(&ch, 0, sizeof ch);
+  memset(&st, 0, sizeof st);
+  if (m) {
+    EXPECT(tr_recover_edges(m, e, 1, &ch, &st) == TR_OK, "recovery: %s", tr_last_error());
+    EXPECT(tr_check_mesh(m, CHECKS, vol) == TR_OK, "after recovery: %s", tr_last_error());
+    EXPECT(st.missing_edges == 1, "%llu edges missing, expected 1",
+           (unsigned long long)st.missing_edges);
+    EXPECT(st.points_added == 0 && m->nv == 16, "%llu Steiner points, expected none",
+           (unsigned long long)st.points_added);
+    EXPECT(has_edge(m, 1, 14), "1-14 is not a mesh edge after recovery");
+  }
+  tr_edge_chains_free(&ch);
+  tr_mesh_destroy(m);
+  mpq_clear(vol);
+  return failures != 0;
+}
+
 static int prism(const char *path)
 {
   tr_plc *plc = tm_read(path);
@@ -193,8 +271,10 @@ int main(int argc, char **argv)
     return lattice((uint32_t)atoi(argv[2]), (uint32_t)atoi(argv[4]), atoi(argv[5]),
                    argc == 7 && !strcmp(argv[6], "tetgen"));
   }
+  if (argc == 2 && !strcmp(argv[1], "retry"))
+    return retry();
   if (argc == 3 && !strcmp(argv[1], "prism"))
     return prism(argv[2]);
-  fprintf(stderr, "usage: test_flipfirst lattice N SEED RANGE DEPTH | prism FILE\n");
+  fprintf(stderr, "usage: test_flipfirst lattice N SEED RANGE DEPTH | retry | prism FILE\n");
   return 2;
 }

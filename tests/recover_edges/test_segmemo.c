@@ -22,13 +22,8 @@
 #include "recover_edges/edgeset.h"
 #include "recover_edges/pipe.h"
 #include "../pipeline/texpect.h"
+#include "tdflip.h"
 #include "trand.h"
-
-static int has_edge(struct tr_mesh *m, uint32_t a, uint32_t b)
-{
-  int yes = 0;
-  return tr_mesh_has_edge(m, a, b, &yes) == TR_OK && yes;
-}
 
 static int same(tr_isect x, tr_isect y)
 {

@@ -184,6 +184,23 @@ static double unif(void)
   return (double)(rng >> 11) * 0x1p-53;
 }
 
+/* Case n of the cosine tests: a triangle at scale 2^e (returned), e in [-1074, 1006), its
+ * components spread up to 2^59 apart in size, some zero; x1 = x0 in every 97th case. */
+static int draw_triangle(int n, double x[3][3])
+{
+  int e = (int)(unif() * 2080) - 1074, spread = (int)(unif() * 60);
+  for (int k = 0; k < 3; k++)
+    for (int i = 0; i < 3; i++) {
+      double m = unif() - 0.5;
+      x[k][i] = ldexp(m, e - (unif() < 0.3 ? spread : 0));
+      if (unif() < 0.05)
+        x[k][i] = 0;
+    }
+  if (n % 97 == 0)
+    memcpy(x[1], x[0], sizeof x[0]);
+  return e;
+}
+
 /* rf_cos_angle scales by one power of two per vector, not by ldexp per component: the same
  * double bit for bit, over scales from 2^-1074 to 2^1000, components far apart in size
  * (subnormal products), zero and equal points. */
@@ -191,17 +208,8 @@ static void cos_angle_equals_definition(void)
 {
   int bad = 0, subnormal = 0;
   for (int n = 0; n < 200000 && bad < 5; n++) {
-    int e = (int)(unif() * 2080) - 1074, spread = (int)(unif() * 60);
     double x[3][3];
-    for (int k = 0; k < 3; k++)
-      for (int i = 0; i < 3; i++) {
-        double m = unif() - 0.5;
-        x[k][i] = ldexp(m, e - (unif() < 0.3 ? spread : 0));
-        if (unif() < 0.05)
-          x[k][i] = 0;
-      }
-    if (n % 97 == 0)
-      memcpy(x[1], x[0], sizeof x[0]);
+    int e = draw_triangle(n, x);
     double got = rf_cos_angle(x[0], x[1], x[2]), want = cos_by_ldexp(x[0], x[1], x[2]);
     subnormal += fabs(x[1][0] - x[0][0]) < 0x1p-1022 && x[1][0] != x[0][0];
     if (memcmp(&got, &want, sizeof got) && !(isnan(got) && isnan(want))) {
@@ -219,17 +227,8 @@ static void tri_cos_angles_equal_cos_angle(void)
 {
   int bad = 0, zero = 0;
   for (int n = 0; n < 200000 && bad < 5; n++) {
-    int e = (int)(unif() * 2080) - 1074, spread = (int)(unif() * 60);
     double x[3][3];
-    for (int k = 0; k < 3; k++)
-      for (int i = 0; i < 3; i++) {
-        double m = unif() - 0.5;
-        x[k][i] = ldexp(m, e - (unif() < 0.3 ? spread : 0));
-        if (unif() < 0.05)
-          x[k][i] = 0;
-      }
-    if (n % 97 == 0)
-      memcpy(x[1], x[0], sizeof x[0]);
+    int e = draw_triangle(n, x);
     if (n % 89 == 0) /* a right angle at x0 with zero products: signed zeros */
       for (int i = 0; i < 3; i++) {
         x[1][i] = i == 0 ? x[0][i] + 1 : x[0][i];

@@ -55,12 +55,10 @@ static int cone_exists(struct tr_mesh *m, uint32_t p)
 
 static void remove_all(uint32_t n, uint32_t seed, int dbl)
 {
-  struct tr_mesh *m = mesh_of(n, seed);
+  mpq_t vol;
+  struct tr_mesh *m = box_mesh(n, seed, vol);
   if (!m)
     return;
-  mpq_t vol;
-  mpq_init(vol);
-  mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
   uint32_t removed = 0, stayed = 0, without_cone = 0;
   for (uint32_t p = 0; p < m->nv; p++) {
     if (m->v2t[p] == TR_NONE)

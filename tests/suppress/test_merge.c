@@ -53,12 +53,10 @@ static void check(struct tr_mesh *m, const char *what, uint32_t p, uint32_t q, i
 
 static void merge_case(uint32_t n, uint32_t seed, int dbl)
 {
-  struct tr_mesh *m = mesh_of(n, seed);
+  mpq_t vol;
+  struct tr_mesh *m = box_mesh(n, seed, vol);
   if (!m)
     return;
-  mpq_t vol;
-  mpq_init(vol);
-  mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
   uint32_t k = 0;
   for (uint32_t p = 0; p < m->nv; p++) {
     int done = 0;

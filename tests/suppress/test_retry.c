@@ -41,12 +41,10 @@ static int flip_one(struct tr_mesh *m, const sup_ctx *c, uint32_t p, int dbl, mp
  * skipped), and the dbl = 1 retry then ends as before. */
 static void retry_case(uint32_t n, uint32_t seed, int both)
 {
-  struct tr_mesh *m = mesh_of(n, seed);
+  mpq_t vol;
+  struct tr_mesh *m = box_mesh(n, seed, vol);
   if (!m)
     return;
-  mpq_t vol;
-  mpq_init(vol);
-  mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
   uint32_t k = 0;
   for (uint32_t p = 0; p < m->nv; p++) {
     if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p) || k++ % 3)

@@ -66,12 +66,10 @@ static int fill_one(struct tr_mesh *m, const sup_ctx *c, uint32_t p, int dbl, in
  * expansion, must be refused at dbl = 0 too, the mesh left as it was. */
 static void by_dbl_case(uint32_t n, uint32_t seed)
 {
-  struct tr_mesh *m = mesh_of(n, seed);
+  mpq_t vol;
+  struct tr_mesh *m = box_mesh(n, seed, vol);
   if (!m)
     return;
-  mpq_t vol;
-  mpq_init(vol);
-  mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
   uint32_t k = 0, refused = 0;
   for (uint32_t p = 0; p < m->nv; p++) {
     if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p) || k++ % 3)
@@ -106,12 +104,10 @@ static void by_dbl_case(uint32_t n, uint32_t seed)
 
 static void delaunay_case(uint32_t n, uint32_t seed, int dbl)
 {
-  struct tr_mesh *m = mesh_of(n, seed);
+  mpq_t vol;
+  struct tr_mesh *m = box_mesh(n, seed, vol);
   if (!m)
     return;
-  mpq_t vol;
-  mpq_init(vol);
-  mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
   uint32_t removed = 0, inner = 0;
   for (uint32_t p = 0; p < m->nv; p++) {
     if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p))
@@ -129,12 +125,10 @@ static void delaunay_case(uint32_t n, uint32_t seed, int dbl)
 
 static void expanded_case(uint32_t n, uint32_t seed)
 {
-  struct tr_mesh *m = mesh_of(n, seed);
+  mpq_t vol;
+  struct tr_mesh *m = box_mesh(n, seed, vol);
   if (!m)
     return;
-  mpq_t vol;
-  mpq_init(vol);
-  mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
   uint32_t flipped = 0, plain = 0, refused = 0, expanded = 0, stayed = 0, k = 0;
   for (uint32_t p = 0; p < m->nv; p++) {
     if (m->v2t[p] == TR_NONE || tsup_hull_vertex(m, p) || k++ % 3)

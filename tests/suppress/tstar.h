@@ -1,6 +1,7 @@
-/* Shared by the unit tests of interior point removal (test_flipout.c, test_starfill.c):
- * the Delaunay tetrahedralization of integer points in a box, every tet in region 7, and
- * the mesh as a sorted list of sorted tets, to compare meshes up to slot order. */
+/* Shared by the unit tests of interior point removal (test_flipout.c, test_starfill.c,
+ * test_merge.c, test_retry.c): the Delaunay tetrahedralization of integer points in a box,
+ * every tet in region 7, with the box's volume, and the mesh as a sorted list of sorted
+ * tets, to compare meshes up to slot order. */
 #ifndef TR_TESTS_SUPPRESS_TSTAR_H
 #define TR_TESTS_SUPPRESS_TSTAR_H
 
@@ -74,6 +75,18 @@ static struct tr_mesh *mesh_of(uint32_t n, uint32_t seed)
   EXPECT(tr_mesh_enable_regions(m) == TR_OK, "regions");
   for (uint32_t t = 0; t < m->nt; t++)
     m->region[t] = 7;
+  return m;
+}
+
+/* mesh_of, and vol initialised to six times the box's volume (the validator's measure,
+ * which point removal must keep) when the mesh is made */
+static struct tr_mesh *box_mesh(uint32_t n, uint32_t seed, mpq_t vol)
+{
+  struct tr_mesh *m = mesh_of(n, seed);
+  if (m) {
+    mpq_init(vol);
+    mpq_set_ui(vol, 6 * 64 * 64 * 64, 1);
+  }
   return m;
 }
 
