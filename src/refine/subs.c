@@ -242,38 +242,52 @@ static void input_edge_of(const rf_ctx *c, uint32_t u, uint32_t w, uint32_t tri,
 }
 
 #ifndef NDEBUG
+/* The same map, slot for slot. */
+static int same_map(const tr_vtmap *a, const tr_vtmap *b)
+{
+  return a->cap == b->cap && a->n == b->n &&
+         !memcmp(a->slot, b->slot, sizeof *a->slot * (size_t)a->cap * (a->arity + 1));
+}
+
+/* The plc's own tables (facets, triangle map, cap clusters) of f and c are the same, slot
+ * for slot: check_copy's and check_plc_tables' comparison. */
+static void assert_same_plc_tables(const rf_ctx *f, const rf_ctx *c)
+{
+  const struct tr_plc *plc = c->plc;
+  assert(f->fc.ntris == c->fc.ntris && f->fc.ninner == c->fc.ninner &&
+         f->fc.nmerged == c->fc.nmerged &&
+         !memcmp(f->fc.group, c->fc.group, sizeof *f->fc.group * f->fc.ntris) &&
+         !memcmp(f->fc.member, c->fc.member, sizeof *f->fc.member * f->fc.ntris));
+  assert(same_map(&f->trimap, &c->trimap));
+  assert(f->caps.n == c->caps.n);
+  assert(!f->caps.n ||
+         (!memcmp(f->caps.tri, c->caps.tri, sizeof *f->caps.tri * plc->ntris) &&
+          !memcmp(f->caps.vert, c->caps.vert, sizeof *f->caps.vert * plc->npoints) &&
+          same_map(&f->caps.edge, &c->caps.edge)));
+  (void)plc;
+}
+
 /* The plc's tables copied from the memo (rf_memo_plc_tables) are those a build makes,
  * slot for slot. */
 static void check_plc_tables(const rf_ctx *c)
 {
   const struct tr_plc *plc = c->plc;
-  tr_facets fc = {0};
-  rf_caps caps;
-  memset(&caps, 0, sizeof caps);
-  tr_vtmap tm = {0};
-  if (tr_facets_build(plc, c->par.keep_edges, &fc) != TR_OK ||
-      rf_caps_build(&caps, plc) != TR_OK || tr_vtmap_reserve(&tm, 3, plc->ntris) != TR_OK) {
+  rf_ctx f;
+  memset(&f, 0, sizeof f);
+  f.plc = plc;
+  if (tr_facets_build(plc, c->par.keep_edges, &f.fc) != TR_OK ||
+      rf_caps_build(&f.caps, plc) != TR_OK || tr_vtmap_reserve(&f.trimap, 3, plc->ntris) != TR_OK) {
     tr_error_clear(); /* out of memory: nothing to compare */
   } else {
-    for (uint32_t t = 0; t < plc->ntris; t++)
-      if (rf_face_set(&tm, plc->tris + 3 * (size_t)t, t) != TR_OK)
-        tr_error_clear();
-    assert(fc.ntris == c->fc.ntris && fc.ninner == c->fc.ninner && fc.nmerged == c->fc.nmerged &&
-           !memcmp(fc.group, c->fc.group, sizeof *fc.group * fc.ntris) &&
-           !memcmp(fc.member, c->fc.member, sizeof *fc.member * fc.ntris));
-    assert(caps.n == c->caps.n);
-    assert(!caps.n || (!memcmp(caps.tri, c->caps.tri, sizeof *caps.tri * plc->ntris) &&
-                       !memcmp(caps.vert, c->caps.vert, sizeof *caps.vert * plc->npoints) &&
-                       caps.edge.cap == c->caps.edge.cap && caps.edge.n == c->caps.edge.n &&
-                       !memcmp(caps.edge.slot, c->caps.edge.slot,
-                               sizeof *caps.edge.slot * (size_t)caps.edge.cap *
-                                   (caps.edge.arity + 1))));
-    assert(tm.cap == c->trimap.cap && tm.n == c->trimap.n &&
-           !memcmp(tm.slot, c->trimap.slot, sizeof *tm.slot * (size_t)tm.cap * (tm.arity + 1)));
+    tr_status s = TR_OK;
+    for (uint32_t t = 0; t < plc->ntris && s == TR_OK; t++)
+      s = rf_face_set(&f.trimap, plc->tris + 3 * (size_t)t, t);
+    if (s == TR_OK)
+      assert_same_plc_tables(&f, c);
+    else
+      tr_error_clear();
   }
-  tr_facets_free(&fc);
-  rf_caps_free(&caps);
-  tr_vtmap_free(&tm);
+  rf_tables_free(&f);
 }
 #endif
 
@@ -411,15 +425,8 @@ static void check_copy(const rf_ctx *c, const tr_subfaces *sub)
     assert(!c->sfdead[i] && !c->sfnosplit[i]);
   for (uint32_t i = 0; i < f.nss; i++)
     assert(!c->ssdead[i] && !c->ssnosplit[i]);
-  assert(f.fc.ntris == c->fc.ntris && f.fc.ninner == c->fc.ninner &&
-         f.fc.nmerged == c->fc.nmerged &&
-         !memcmp(f.fc.group, c->fc.group, sizeof *f.fc.group * f.fc.ntris) &&
-         !memcmp(f.fc.member, c->fc.member, sizeof *f.fc.member * f.fc.ntris));
-  const tr_vtmap *a[3] = {&f.fm, &f.trimap, &f.es.m}, *b[3] = {&c->fm, &c->trimap, &c->es.m};
-  for (int i = 0; i < 3; i++)
-    assert(a[i]->cap == b[i]->cap && a[i]->n == b[i]->n &&
-           !memcmp(a[i]->slot, b[i]->slot,
-                   sizeof *a[i]->slot * (size_t)a[i]->cap * (a[i]->arity + 1)));
+  assert_same_plc_tables(&f, c);
+  assert(same_map(&f.fm, &c->fm) && same_map(&f.es.m, &c->es.m));
   free(f.vrad);
   free(f.vspace);
   rf_tables_free(&f); /* last: it zeroes f */
