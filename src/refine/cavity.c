@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "predicates/predicates.h"
+#include "mesh/walk.h"
 #include "refine/refine_impl.h"
 
 static tr_point face_pt(const rf_ctx *c, uint32_t t, int k, int i)
@@ -40,9 +41,12 @@ tr_status rf_locate(rf_ctx *c, uint32_t t, const tr_point *p, uint32_t *found,
   *found = TR_NONE;
   *blocker = TR_NONE;
   uint64_t max = 4 * (uint64_t)m->nt + 64;
+  tr_walk_cycle cyc; /* the start rotates with the step: its period is 4 */
+  tr_walk_cycle_init(&cyc, t);
   for (uint64_t step = 0; step < max; step++) {
-    /* the first face to try rotates with the step: a fixed order can cycle in a mesh
-     * that is not Delaunay; this is deterministic all the same */
+    /* the first face to try rotates with the step: a fixed order cycles more often in a
+     * mesh that is not Delaunay (this one can too: cyc stops it); deterministic all the
+     * same */
     int start = (int)(step % 4), next = -1;
     uint32_t wall = TR_NONE;
     int walled = 0;
@@ -69,6 +73,8 @@ tr_status rf_locate(rf_ctx *c, uint32_t t, const tr_point *p, uint32_t *found,
       return TR_OK;
     }
     t = TR_NEIG(m, t, next);
+    if (tr_walk_cycle_seen(&cyc, t, step + 1, 4))
+      break;
   }
   return TR_OK; /* a walk that does not end: the caller skips the point */
 }
