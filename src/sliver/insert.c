@@ -221,8 +221,8 @@ static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int sc
     const uint32_t *tv = m->tv + 4 * (size_t)cav[i];
     for (int k = 0; k < 4; k++) {
       uint32_t nb = TR_NEIG(m, cav[i], k);
-      if (nb == TR_NONE || !tr_tet_is_real(m, nb) || set_has(in, nb) || set_has(out, nb))
-        continue;
+      if (nb == TR_NONE || set_has(in, nb) || set_has(out, nb) || !tr_tet_is_real(m, nb))
+        continue; /* the sets first: they are in cache, nb's vertices may not be */
       uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
       if (tr_sliver_protected(c, f, 3))
         continue;
@@ -245,7 +245,7 @@ static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int sc
     vis[i] = 0;
     for (int k = 0; k < 4; k++) {
       uint32_t nb = TR_NEIG(m, cav[i], k);
-      if (nb == TR_NONE || !tr_tet_is_real(m, nb) || set_has(in, nb) ||
+      if (nb == TR_NONE || set_has(in, nb) || !tr_tet_is_real(m, nb) ||
           seen(m, cav, i, k, x, screen, vis))
         continue;
       uint32_t f[3] = {tv[tr_face_vtx[k][0]], tv[tr_face_vtx[k][1]], tv[tr_face_vtx[k][2]]};
@@ -463,7 +463,8 @@ static int try_point(const tr_sliver_ctx *c, uint32_t t, const double x[3], int 
                      double floor, trial *z)
 {
   tr_point px = tr_pt_d(x);
-  if (fixed_faces_pass(c, t, x, &px, screen, floor))
+  if (fixed_faces_pass(c, t, x, &px, screen, floor) &&
+      !(screen && tr_sliver_segment_blocked(c, t, x)))
     return try_cavity(c, t, x, screen, floor, z);
 #ifndef NDEBUG
   int full = try_cavity(c, t, x, screen, floor, z); /* the same answer the long way */

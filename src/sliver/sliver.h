@@ -255,6 +255,11 @@ void tr_sliver_forget_flips(tr_sliver_ctx *c);
 /* 1 iff the face / edge (any vertex order) is a constraint the flips must keep. */
 int tr_sliver_protected(const tr_sliver_ctx *c, const uint32_t *v, int nv);
 
+/* 1 when no cavity of the point x that keeps t can pass the insertion's tests (reach.c):
+ * the segment from inside t to x leaves the mesh or crosses a protected face. 0 says
+ * nothing. On the doubles of m->xyz, for the screened candidates. */
+int tr_sliver_segment_blocked(const tr_sliver_ctx *c, uint32_t t, const double x[3]);
+
 /* One flip pass over the tets in slot order (flips.c). */
 tr_status tr_sliver_flip_pass(tr_sliver_ctx *c, tr_sliver_stats *st);
 /* The best flip of tet t (a face or an edge of it) whose new tets' smallest angle beats the
