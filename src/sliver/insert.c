@@ -202,6 +202,25 @@ static int shrink(const struct tr_mesh *m, uint32_t t, const tr_point *x, int sc
   return 1;
 }
 
+/* The flood's time is in memory: each tet it reaches costs a miss for its neighbour
+ * links, one for its neighbours' vertices and one for the vertex they do not share (65395.stl:
+ * half of try_cavity's samples on those loads). The links of a tet in the cavity are asked
+ * for next, so its neighbours' slots are fetched ahead while its faces are tested. */
+static inline void prefetch_neighbours(const struct tr_mesh *m, uint32_t t)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  const uint32_t *tn = m->tn + 4 * (size_t)t;
+  for (int k = 0; k < 4; k++)
+    if (tn[k] != TR_NONE) {
+      __builtin_prefetch(m->tv + 4 * (size_t)(tn[k] >> 2));
+      __builtin_prefetch(m->tn + 4 * (size_t)(tn[k] >> 2));
+    }
+#else
+  (void)m;
+  (void)t;
+#endif
+}
+
 /* The cavity of x from sliver t: t, grown through faces that are not sub-faces to real tets
  * whose circumsphere strictly holds x and to those behind a face x does not strictly see,
  * carved off the vertices it swallowed when onb is given (carve), then shrunk (a tet with
@@ -219,6 +238,7 @@ static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int sc
   set_add(in, t);
   for (uint32_t i = 0; i < *n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)cav[i];
+    prefetch_neighbours(m, cav[i]);
     for (int k = 0; k < 4; k++) {
       uint32_t nb = TR_NEIG(m, cav[i], k);
       if (nb == TR_NONE || set_has(in, nb) || set_has(out, nb) || !tr_tet_is_real(m, nb))
@@ -242,6 +262,7 @@ static void cavity(const tr_sliver_ctx *c, uint32_t t, const tr_point *x, int sc
    * cavity: a point off the sliver (above a sub-face) lies in a tet next to it */
   for (uint32_t i = 0; i < *n; i++) {
     const uint32_t *tv = m->tv + 4 * (size_t)cav[i];
+    prefetch_neighbours(m, cav[i]);
     vis[i] = 0;
     for (int k = 0; k < 4; k++) {
       uint32_t nb = TR_NEIG(m, cav[i], k);
