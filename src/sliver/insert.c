@@ -427,6 +427,7 @@ static int try_cavity(const tr_sliver_ctx *c, uint32_t t, const double x[3], int
   uint8_t apex[4 * SL_MAX_CAVITY];
   double oldmin = INFINITY, was = 0;
   z->nf = 0;
+  tr_sliver_tet_min_prefetch(c, z->cav, z->n);
   for (uint32_t i = 0; i < z->n; i++) {
     double rr;
     const uint32_t *tv = m->tv + 4 * (size_t)z->cav[i];

@@ -164,6 +164,20 @@ double tr_sliver_tet_min(const tr_sliver_ctx *c, uint32_t t, double *ratio)
   return e->dih;
 }
 
+void tr_sliver_tet_min_prefetch(const tr_sliver_ctx *c, const uint32_t *t, uint32_t n)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  const struct tr_sliver_shapes *S = c->shapes;
+  for (uint32_t i = 0; S && i < n; i++)
+    if (t[i] < S->cap)
+      __builtin_prefetch(S->e + t[i]);
+#else
+  (void)c;
+  (void)t;
+  (void)n;
+#endif
+}
+
 void tr_sliver_forget(const tr_sliver_ctx *c, uint32_t t)
 {
   if (c->shapes && t < c->shapes->cap)

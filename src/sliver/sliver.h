@@ -214,6 +214,9 @@ double tr_sliver_ratio_at(const struct tr_mesh *m, const uint32_t t[4], uint32_t
  * measured again; a vertex move must call tr_sliver_forget on the tets of its star, and
  * any other change of coordinates tr_sliver_forget_all. */
 double tr_sliver_tet_min(const tr_sliver_ctx *c, uint32_t t, double *ratio);
+/* Fetches the cache entries of tr_sliver_tet_min for tets t[0..n) ahead of their use: a
+ * cavity's tets are asked for one after the other, each a miss in a big mesh. */
+void tr_sliver_tet_min_prefetch(const tr_sliver_ctx *c, const uint32_t *t, uint32_t n);
 void tr_sliver_forget(const tr_sliver_ctx *c, uint32_t t);
 void tr_sliver_forget_all(const tr_sliver_ctx *c);
 /* Forgets the entries that name a vertex id from nv on: ids given back (a trial undone)
