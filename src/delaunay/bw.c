@@ -63,7 +63,7 @@ static tr_status insert(dt *D, uint32_t pi)
   uint32_t nloc = 1;
   const uint32_t stb = D->stamp << 8;
   for (int k = 0; k < 4; k++)
-    PREFETCH(m->tv + 4 * (size_t)(m->tn[4 * (size_t)t0 + k] >> 2));
+    TR_PREFETCH(m->tv + 4 * (size_t)(m->tn[4 * (size_t)t0 + k] >> 2));
   for (uint32_t i = 0; i < ncav; i++) {
     /* the face a tet was entered by leads back into the cavity: skip it (t0: none) */
     const uint32_t t = cav[i] >> 2;
@@ -76,7 +76,7 @@ static tr_status insert(dt *D, uint32_t pi)
     if (i + 1 < ncav) {
       const uint32_t *tnn = m->tn + 4 * (size_t)(cav[i + 1] >> 2);
       for (int k = 0; k < 4; k++)
-        PREFETCH(m->tv + 4 * (size_t)(tnn[k] >> 2));
+        TR_PREFETCH(m->tv + 4 * (size_t)(tnn[k] >> 2));
     }
     /* every vertex of a cavity tet is on the cavity boundary: number them here, while
      * their points are still in cache from the conflict tests */
@@ -113,7 +113,7 @@ static tr_status insert(dt *D, uint32_t pi)
       if (w[0] & MARK)
         continue;
       /* u's neighbours if it joins the cavity, else the face glued to a new tet */
-      PREFETCH(m->tn + 4 * (size_t)u);
+      TR_PREFETCH(m->tn + 4 * (size_t)u);
       /* Both outcomes are written and the count keeps one: whether u conflicts
        * follows no pattern, and a mispredicted branch costs more than the stores. */
       const uint32_t cf = (uint32_t)conflict(D, u, p, pi);

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/prefetch.h"
 #include "delaunay.h"
 #include "det2.h"
 #include "dtstat.h"
@@ -21,12 +22,6 @@
  * per point) cost less to test again than marks, a list and a clearing pass. */
 #define MARK 0x80000000u
 
-/* A hint only: the BFS knows which tets it reads and writes next before it gets there. */
-#if defined(__GNUC__) || defined(__clang__)
-#define PREFETCH(p) __builtin_prefetch(p)
-#else
-#define PREFETCH(p) ((void)(p))
-#endif
 
 typedef struct bface {
   uint32_t v[4]; /* vertices of the new tet (p already in slot k) */

@@ -28,18 +28,12 @@
 
 #include "delaunay.h"
 #include "core/hugepage.h"
+#include "core/prefetch.h"
 #include "dtstat.h"
 
 #define CANON_MAX_THREADS 64
 /* records or tets ahead whose random accesses are started early (a hint) */
 #define AHEAD 16
-#if defined(__GNUC__) || defined(__clang__)
-#define PREFETCH(p) __builtin_prefetch(p)
-#define PREFETCH_W(p) __builtin_prefetch(p, 1)
-#else
-#define PREFETCH(p) ((void)(p))
-#define PREFETCH_W(p) ((void)(p))
-#endif
 #define NR_NONE UINT64_MAX
 
 
@@ -169,9 +163,9 @@ static void phase_scatter(cjob *J)
      * two distances ahead, the record's (where it would go if nothing came between)
      * one distance ahead, once the counter is in cache */
     if (t + 2 * AHEAD < J->t1 && J->nr[t + 2 * AHEAD] != NR_NONE)
-      PREFETCH(&J->cnt[J->nr[t + 2 * AHEAD] >> 8]);
+      TR_PREFETCH(&J->cnt[J->nr[t + 2 * AHEAD] >> 8]);
     if (t + AHEAD < J->t1 && J->nr[t + AHEAD] != NR_NONE)
-      PREFETCH_W(&J->sk[J->cnt[J->nr[t + AHEAD] >> 8]]);
+      TR_PREFETCH_W(&J->sk[J->cnt[J->nr[t + AHEAD] >> 8]]);
     if (J->nr[t] != NR_NONE) {
       const uint32_t *v = m->tv + 4 * (size_t)t;
       const uint8_t *p = PERM[J->nr[t] & 255];
@@ -222,11 +216,11 @@ static void phase_sort(cjob *J)
        * not sorted yet, but its old slot all the same; past the range, none) */
       if (i + AHEAD < rend) {
         const skey *a = &sk[i + AHEAD];
-        PREFETCH_W(&nr[a->t]);
+        TR_PREFETCH_W(&nr[a->t]);
         /* and the v2t entries it will set (input indices: random on a random input) */
         if (order)
           for (int j = 0; j < 3; j++)
-            PREFETCH_W(&v2t[order[a->v[j] < nv ? a->v[j] : 0]]);
+            TR_PREFETCH_W(&v2t[order[a->v[j] < nv ? a->v[j] : 0]]);
       }
       nr[k.t] = (uint64_t)i << 8 | (nr[k.t] & 255);
       skey w = {{w0, k.v[0], k.v[1]}, k.v[2]};
@@ -259,8 +253,8 @@ static void phase_write(cjob *J)
     if (t + AHEAD < J->t1 && nr[t + AHEAD] != NR_NONE) {
       const uint32_t *ta = otn + 4 * (size_t)(t + AHEAD);
       for (int j = 0; j < 4; j++)
-        PREFETCH(&nr[ta[j] >> 2]);
-      PREFETCH_W(&tn[4 * (size_t)(nr[t + AHEAD] >> 8)]); /* its new slot: random too */
+        TR_PREFETCH(&nr[ta[j] >> 2]);
+      TR_PREFETCH_W(&tn[4 * (size_t)(nr[t + AHEAD] >> 8)]); /* its new slot: random too */
     }
     const uint64_t x = nr[t];
     if (x == NR_NONE)

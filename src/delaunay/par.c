@@ -234,7 +234,7 @@ static int pinsert(worker *W, uint32_t pi)
   bface *bf = D->bf;
   uint32_t room = D->capcav < D->capbf ? D->capcav : D->capbf;
   for (int k = 0; k < 4; k++)
-    PREFETCH(m->tv + 4 * (size_t)(m->tn[4 * (size_t)t0 + k] >> 2));
+    TR_PREFETCH(m->tv + 4 * (size_t)(m->tn[4 * (size_t)t0 + k] >> 2));
   /* the serial kernel's search (bw.c insert: prefetches one cavity tet ahead, local ids
    * of the vertex across the entry face only, both outcomes of a test written), plus a
    * take of every tet read */
@@ -245,8 +245,8 @@ static int pinsert(worker *W, uint32_t pi)
     if (i + 1 < ncav) {
       const uint32_t *tnn = m->tn + 4 * (size_t)(cav[i + 1] >> 2);
       for (int k = 0; k < 4; k++) {
-        PREFETCH(m->tv + 4 * (size_t)(tnn[k] >> 2));
-        PREFETCH(own + (tnn[k] >> 2));
+        TR_PREFETCH(m->tv + 4 * (size_t)(tnn[k] >> 2));
+        TR_PREFETCH(own + (tnn[k] >> 2));
       }
     }
     if (ncav + nbf + 4 > room) {
@@ -283,7 +283,7 @@ static int pinsert(worker *W, uint32_t pi)
       uint32_t *w = m->tv + 4 * (size_t)u;
       if (w[0] & MARK)
         continue;
-      PREFETCH(m->tn + 4 * (size_t)u);
+      TR_PREFETCH(m->tn + 4 * (size_t)u);
       /* conflict() reads the real tet behind a ghost */
       if (w[3] == TR_GHOST && !take(W, m->tn[4 * (size_t)u + 3] >> 2)) {
         ok = 0;

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/prefetch.h"
 #include "predicates/predicates.h"
 #include "refine/quality.h"
 #include "sliver/sliver.h"
@@ -208,17 +209,12 @@ static int shrink(const struct tr_mesh *m, uint32_t t, const tr_point *x, int sc
  * for next, so its neighbours' slots are fetched ahead while its faces are tested. */
 static inline void prefetch_neighbours(const struct tr_mesh *m, uint32_t t)
 {
-#if defined(__GNUC__) || defined(__clang__)
   const uint32_t *tn = m->tn + 4 * (size_t)t;
   for (int k = 0; k < 4; k++)
     if (tn[k] != TR_NONE) {
-      __builtin_prefetch(m->tv + 4 * (size_t)(tn[k] >> 2));
-      __builtin_prefetch(m->tn + 4 * (size_t)(tn[k] >> 2));
+      TR_PREFETCH(m->tv + 4 * (size_t)(tn[k] >> 2));
+      TR_PREFETCH(m->tn + 4 * (size_t)(tn[k] >> 2));
     }
-#else
-  (void)m;
-  (void)t;
-#endif
 }
 
 /* The cavity of x from sliver t: t, grown through faces that are not sub-faces to real tets

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "core/facets.h"
+#include "core/prefetch.h"
 #include "refine/quality.h"
 #include "refine/refine_impl.h" /* rf_volume_above: the bound decided as refinement does */
 #include "refine/refine_stage.h"
@@ -166,16 +167,10 @@ double tr_sliver_tet_min(const tr_sliver_ctx *c, uint32_t t, double *ratio)
 
 void tr_sliver_tet_min_prefetch(const tr_sliver_ctx *c, const uint32_t *t, uint32_t n)
 {
-#if defined(__GNUC__) || defined(__clang__)
   const struct tr_sliver_shapes *S = c->shapes;
   for (uint32_t i = 0; S && i < n; i++)
     if (t[i] < S->cap)
-      __builtin_prefetch(S->e + t[i]);
-#else
-  (void)c;
-  (void)t;
-  (void)n;
-#endif
+      TR_PREFETCH(S->e + t[i]);
 }
 
 void tr_sliver_forget(const tr_sliver_ctx *c, uint32_t t)
